@@ -1,0 +1,35 @@
+// paver: the command-line driver of the Paver pipeline.
+#include "commands.h"
+
+#include "paver/input_error.h"
+
+#include <CLI/CLI.hpp>
+
+#include <exception>
+#include <iostream>
+
+int main(int argc, char** argv) {
+  CLI::App app{"Paver: element-based pattern creation on 3D free-form surfaces"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "paver 0.1.0");
+  const auto run_param = paver::cli::add_param_command(app);
+  const auto run_run = paver::cli::add_run_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // CLI11 uses exit code 106 etc.; usage errors are input errors here.
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+  try {
+    if (app.got_subcommand("param")) return run_param();
+    if (app.got_subcommand("run")) return run_run();
+  } catch (const paver::InputError& e) {
+    std::cerr << "paver: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "paver: internal error: " << e.what() << "\n";
+    return 1;
+  }
+  return 2;
+}

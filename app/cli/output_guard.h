@@ -1,0 +1,15 @@
+#pragma once
+// Nothing a user wrote is ever overwritten: outputs that would land on an input are refused.
+#include <filesystem>
+#include <vector>
+
+namespace paver::cli {
+
+// Throws InputError when any output path names the same file as any input path.
+void refuse_overwriting_inputs(const std::vector<std::filesystem::path>& inputs,
+                               const std::vector<std::filesystem::path>& outputs);
+
+// Creates the output folder (and parents); throws InputError naming it on failure.
+void make_output_folder(const std::filesystem::path& folder);
+
+}  // namespace paver::cli

@@ -1,0 +1,78 @@
+// Engine benchmarks: parameterization time and distortion per asset, lifting throughput.
+// JSON: build/bin/paver-bench --benchmark_format=json
+#include "paver/arap_parameterization.h"
+#include "paver/lifting.h"
+#include "paver/mesh_loader.h"
+#include "paver/surface_map.h"
+
+#include <benchmark/benchmark.h>
+
+#include <filesystem>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<fs::path> bench_surfaces() {
+  std::vector<fs::path> paths;
+  for (const char* name : {"dome", "saddle", "wave", "vase", "torus_section", "pendant", "facade"})
+    paths.push_back(fs::path(PAVER_SOURCE_DIR) / "assets/surfaces" / (std::string(name) + ".obj"));
+  for (const char* name : {"bunnyhead", "lilium", "maze"})
+    paths.push_back(fs::path(PAVER_SHARED_MESHES_DIR) / (std::string(name) + ".obj"));
+  for (const char* name : {"dome_dense", "wave_dense", "facade_dense"})
+    paths.push_back(fs::path(PAVER_BINARY_DIR) / "assets" / (std::string(name) + ".obj"));
+  std::erase_if(paths, [](const fs::path& p) { return !fs::exists(p); });
+  return paths;
+}
+
+void parameterize(benchmark::State& state, fs::path path) {
+  const paver::SurfaceMesh mesh = paver::load_surface(path).mesh;
+  paver::Parameterization p;
+  for (auto _ : state) {
+    p = paver::parameterize_arap(mesh);
+    benchmark::DoNotOptimize(p.uv.data());
+  }
+  state.counters["faces"] = mesh.face_count();
+  state.counters["iterations"] = p.report.iterations;
+  state.counters["flipped"] = p.quality.flipped_triangles;
+  state.counters["boundary_overlaps"] = p.quality.boundary_intersections;
+  state.counters["stretch_mean"] = p.quality.stretch_mean;
+  state.counters["stretch_max"] = p.quality.stretch_max;
+  state.counters["area_distortion_mean"] = p.quality.area_distortion_mean;
+}
+
+void lift(benchmark::State& state, fs::path path) {
+  const paver::SurfaceMap map = paver::build_surface_map(paver::load_surface(path).mesh);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(map.uv_min.x, map.uv_max.x), v(map.uv_min.y, map.uv_max.y);
+  std::vector<glm::dvec2> points(state.range(0));
+  for (auto& p : points) p = {u(rng), v(rng)};
+  paver::LiftedPoints out;
+  out.resize(points.size());
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(paver::lift_points(map, points, out));
+  }
+  state.SetItemsProcessed(state.iterations() * int64_t(points.size()));
+  state.counters["faces"] = map.mesh.face_count();
+}
+
+const bool registered = [] {
+  for (const auto& path : bench_surfaces())
+    benchmark::RegisterBenchmark(("parameterize/" + path.stem().string()).c_str(), parameterize, path)
+        ->Unit(benchmark::kMillisecond);
+  for (const char* name : {"dome", "wave_dense"}) {
+    fs::path path = fs::path(PAVER_SOURCE_DIR) / "assets/surfaces" / (std::string(name) + ".obj");
+    if (!fs::exists(path)) path = fs::path(PAVER_BINARY_DIR) / "assets" / (std::string(name) + ".obj");
+    if (fs::exists(path))
+      benchmark::RegisterBenchmark(("lift/" + std::string(name)).c_str(), lift, path)
+          ->Arg(100000)->Unit(benchmark::kMillisecond);
+  }
+  return true;
+}();
+
+}  // namespace
+
+BENCHMARK_MAIN();

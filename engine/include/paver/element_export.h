@@ -1,0 +1,30 @@
+#pragma once
+// Export of the elements for fabrication and for other tools.
+#include "paver/elements.h"
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <vector>
+
+namespace paver {
+
+// placements.csv: header exactly `id,kind,x,y,z,nx,ny,nz,diameter,u,v`, one row per element,
+// kind V or E, full double precision (17 significant digits).
+void write_placements_csv(const std::filesystem::path& path, const Elements& elements);
+
+// Every element as real geometry: its shape scaled to its diameter, +Z turned onto its normal,
+// moved to its centre. `custom` is the user's shape when any element uses ShapeKind::Custom.
+// `colours` (one RGB per element, optional) colour the element's vertices in the PLY; without
+// them V-elements are blue and E-elements orange, like the paper's figure 4.
+struct ElementMeshOptions {
+  const ShapeMesh* custom = nullptr;
+  const std::vector<std::array<std::uint8_t, 3>>* colours = nullptr;
+};
+void write_elements_ply(const std::filesystem::path& path, const Elements& elements,
+                        const ElementMeshOptions& options = {});
+void write_elements_obj(const std::filesystem::path& path, const Elements& elements,
+                        const ElementMeshOptions& options = {});
+
+}  // namespace paver

@@ -1,0 +1,16 @@
+#pragma once
+// Elements on the pattern (section 4.1): a V-element on every point and the design's E-elements
+// on every non-virtual edge at their t, lifted to the surface (eq. 2) with their normals.
+#include "paver/design.h"
+#include "paver/elements.h"
+#include "paver/pattern.h"
+#include "paver/surface_map.h"
+
+namespace paver {
+
+// `points` are the particle positions to use (the pattern's, or the optimizer's result).
+Elements place_elements(const SurfaceMap& map, const Pattern& pattern,
+                        const std::vector<glm::dvec2>& points, const ElementsDesign& design,
+                        double spacing);
+
+}  // namespace paver

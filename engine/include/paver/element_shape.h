@@ -1,0 +1,33 @@
+#pragma once
+// Element shapes (section 4.1): unit-diameter triangle meshes centred at the origin, with +Z the
+// surface normal they get aligned to. The widest horizontal extent is 1 so that scaling by the
+// element diameter makes the element exactly that wide.
+#include <glm/vec3.hpp>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace paver {
+
+enum class ShapeKind { Sphere, Gem, HexPrism, Disc, Custom };
+
+struct ShapeMesh {
+  std::vector<glm::vec3> positions;   // #V, unit diameter in the XY plane, centred at the origin
+  std::vector<glm::ivec3> triangles;  // #F, counter-clockwise seen from outside
+};
+
+// Built-in shapes: Sphere (UV sphere), Gem (round brilliant cut: table, crown, girdle, pavilion;
+// table towards +Z), HexPrism (height 0.5), Disc (cylinder of height 0.2). Custom throws.
+ShapeMesh make_builtin_shape(ShapeKind kind);
+
+// Loads any surface file OpenMesh reads and normalises it: centred on its bounding box, scaled so
+// its widest XY extent is 1. Throws InputError (file, what is wrong) when it cannot.
+ShapeMesh load_custom_shape(const std::filesystem::path& path);
+
+std::string_view shape_name(ShapeKind kind);  // "sphere", "gem", "hex_prism", "disc", "custom"
+std::optional<ShapeKind> shape_from_name(std::string_view name);
+
+}  // namespace paver

@@ -1,0 +1,32 @@
+#pragma once
+// The bijection g between the surface M and its 2D map M^ (section 4.2) with everything lifting
+// needs: vertex positions and uv, normals, mean curvature, and the point-location grid.
+#include "paver/arap_parameterization.h"
+#include "paver/surface_mesh.h"
+#include "paver/uv_grid.h"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <vector>
+
+namespace paver {
+
+struct SurfaceMap {
+  SurfaceMesh mesh;                    // M: positions, triangles, boundary loop
+  std::vector<glm::dvec2> uv;          // #V: M^, 2D area equals 3D area
+  std::vector<glm::dvec3> normals;     // #V unit vertex normals
+  std::vector<double> curvature;       // #V mean curvature |H|
+  double curvature_min = 0, curvature_max = 0;
+  UvGrid grid;
+  glm::dvec2 uv_min{0}, uv_max{0};     // bounding box of M^ (its centre is O(M^), eq. 12)
+  Parameterization parameterization;   // how the map was made and how good it is
+};
+
+// Parameterizes the mesh (ARAP, bijective) and builds the lifting data.
+SurfaceMap build_surface_map(SurfaceMesh mesh, const ArapOptions& options = {});
+
+// Builds the lifting data for a given map (uv: #V, bijective).
+SurfaceMap make_surface_map(SurfaceMesh mesh, std::vector<glm::dvec2> uv);
+
+}  // namespace paver

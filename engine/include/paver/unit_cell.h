@@ -1,0 +1,84 @@
+#pragma once
+// The periodic unit cell of a tessellation (section 4.1): vertices inside one cell of the lattice
+// spanned by a1, a2, and edges that may reach into neighbouring cells. Edge operators (flip, add,
+// remove) act on the cell, so they propagate to the whole lattice by construction.
+#include <glm/vec2.hpp>
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace paver {
+
+enum class Tessellation { Triangle, Grid, Hexagon };
+
+std::string_view tessellation_name(Tessellation t);  // "tri", "grid", "hex"
+std::optional<Tessellation> tessellation_from_name(std::string_view name);
+
+// Edge from vertex `from` of cell (0,0) to vertex `to` of cell `offset`.
+struct CellEdge {
+  int from = 0;
+  int to = 0;
+  glm::ivec2 offset{0, 0};
+  double rest_length = 0;   // D_ab: the edge's length in the regular design
+  bool is_virtual = false;  // a spring that keeps structure and carries no elements (section 6.1)
+};
+
+struct UnitCell {
+  Tessellation tessellation = Tessellation::Triangle;
+  double spacing = 1;                  // D, the base edge length
+  glm::dvec2 a1{1, 0}, a2{0, 1};       // lattice vectors
+  std::vector<glm::dvec2> vertices;    // positions of the cell's vertices, relative to the cell origin
+  std::vector<CellEdge> edges;
+
+  // Position of vertex v of the cell with lattice index `cell`.
+  glm::dvec2 position(int v, glm::ivec2 cell) const {
+    return vertices[v] + double(cell.x) * a1 + double(cell.y) * a2;
+  }
+  // Vector along an edge in the regular design.
+  glm::dvec2 edge_vector(const CellEdge& e) const { return position(e.to, e.offset) - vertices[e.from]; }
+  double cell_area() const { return a1.x * a2.y - a1.y * a2.x; }
+};
+
+// The regular tessellation with edge length D: Triangle (1 vertex, 3 edges per cell),
+// Grid (1 vertex, 2 edges), Hexagon/honeycomb (2 vertices, 3 edges).
+UnitCell make_unit_cell(Tessellation tessellation, double spacing);
+
+// An edge operator. The edge is named by its end vertices and the cell offset of `to`; an edge
+// also matches when given reversed (to, from, -offset).
+struct EdgeOperator {
+  enum class Kind { Flip, Add, Remove };
+  Kind kind = Kind::Add;
+  int from = 0;
+  int to = 0;
+  glm::ivec2 offset{0, 0};
+  bool is_virtual = false;  // Add only: the new edge is a virtual edge
+};
+
+std::string_view operator_name(EdgeOperator::Kind kind);  // "flip", "add", "remove"
+
+// Applies the operator in place. Throws InputError with a message naming the edge when it cannot
+// (no such edge, edge already there, zero-length edge, flip without a face on both sides).
+// Flip replaces the edge by the one joining, in each of its two faces, the vertex after it:
+// for two triangles this is the classic diagonal flip.
+void apply_operator(UnitCell& cell, const EdgeOperator& op);
+
+// One face of the periodic planar graph, as (vertex, cell) corners in counter-clockwise order.
+struct CellFaceCorner {
+  int vertex;
+  glm::ivec2 cell;
+};
+using CellFace = std::vector<CellFaceCorner>;
+
+// The faces of the periodic graph, one representative per translation class, ignoring virtual
+// edges. Empty when the graph has a vertex of degree < 2.
+std::vector<CellFace> cell_faces(const UnitCell& cell);
+
+// Adds virtual edges across every face with more than three sides (both diagonals of a square,
+// the three long diagonals of a hexagon) so springs keep the structure from shearing or folding.
+void add_bracing_edges(UnitCell& cell);
+
+std::string describe_edge(const CellEdge& e);  // "0->1 @ (1,-1)"
+
+}  // namespace paver
