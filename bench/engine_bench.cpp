@@ -62,13 +62,13 @@ void lift(benchmark::State& state, fs::path path) {
 const bool registered = [] {
   for (const auto& path : bench_surfaces())
     benchmark::RegisterBenchmark(("parameterize/" + path.stem().string()).c_str(), parameterize, path)
-        ->Unit(benchmark::kMillisecond);
+        ->UseRealTime()->Unit(benchmark::kMillisecond);
   for (const char* name : {"dome", "wave_dense"}) {
     fs::path path = fs::path(PAVER_SOURCE_DIR) / "assets/surfaces" / (std::string(name) + ".obj");
     if (!fs::exists(path)) path = fs::path(PAVER_BINARY_DIR) / "assets" / (std::string(name) + ".obj");
     if (fs::exists(path))
       benchmark::RegisterBenchmark(("lift/" + std::string(name)).c_str(), lift, path)
-          ->Arg(100000)->Unit(benchmark::kMillisecond);
+          ->Arg(100000)->UseRealTime()->Unit(benchmark::kMillisecond);
   }
   return true;
 }();

@@ -14,10 +14,12 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <sstream>
 #include <string>
 
 namespace paver::cli {
@@ -58,7 +60,15 @@ int run_run(const RunArgs& args) {
     if (!t) throw InputError("--pattern " + args.pattern + ": use tri, grid or hex");
     design.pattern.tessellation = *t;
   }
-  if (args.spacing) design.pattern.spacing = *args.spacing;
+  if (args.spacing) {
+    // Checked here so that a bad flag is not reported as a fault of the design file.
+    if (!(std::isfinite(*args.spacing) && *args.spacing >= 0)) {
+      std::ostringstream given;
+      given << *args.spacing;
+      throw InputError("--spacing " + given.str() + ": must be finite and >= 0 (0 = derive from the surface)");
+    }
+    design.pattern.spacing = *args.spacing;
+  }
   validate_design(design, args.design.empty() ? "command line" : args.design);
   info.spacing_derived = design.pattern.spacing <= 0;
 

@@ -31,7 +31,10 @@ double estimate_point_count(const SurfaceMap& map, const UnitCell& cell, const P
 Pattern build_pattern(const SurfaceMap& map, const UnitCell& cell, const Placement& placement) {
   const double estimate = estimate_point_count(map, cell, placement);
   if (!(estimate <= kMaxPatternPoints)) {
-    const double ok_spacing = cell.spacing * std::sqrt(estimate / kMaxPatternPoints);
+    // Rounded up to the three digits printed, so the spacing suggested is itself accepted.
+    const double smallest = cell.spacing * std::sqrt(estimate / kMaxPatternPoints);
+    const double digit = std::pow(10.0, std::floor(std::log10(smallest)) - 2);
+    const double ok_spacing = std::ceil(smallest / digit) * digit;
     throw InputError("spacing D = " + format_number(cell.spacing) + " would create about " +
                      format_number(estimate) + " elements on this surface (area " +
                      format_number(map_area(map)) + "); the limit is " + format_number(kMaxPatternPoints) +

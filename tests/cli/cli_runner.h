@@ -1,0 +1,112 @@
+#pragma once
+// Runs the real `paver` binary for the end-to-end tests: one shell command per call, from the
+// source folder (so "assets/surfaces/dome.obj" works as it does for a user), with stdout and
+// stderr captured through files and the exit status decoded.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace paver::cli_test {
+
+namespace fs = std::filesystem;
+
+// What one run of the binary left behind: exit code (-1 if it did not exit normally), stdout
+// and stderr in full, and the command line, for failure messages.
+struct CliResult {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+  std::string command;
+};
+
+inline std::string read_file_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return std::move(text).str();
+}
+
+inline void write_file_text(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  ASSERT_TRUE(out.good()) << "cannot write " << path;
+}
+
+// Single-quotes `arg` for /bin/sh: ' becomes '\''.
+inline std::string shell_quote(const std::string& arg) {
+  std::string quoted = "'";
+  for (char c : arg) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+// Runs `paver args...` with the working directory PAVER_SOURCE_DIR; stdout and stderr go to
+// files in `scratch`, which must exist.
+inline CliResult run_paver(const std::vector<std::string>& args, const fs::path& scratch) {
+  CliResult result;
+  const fs::path out_file = scratch / "paver.stdout";
+  const fs::path err_file = scratch / "paver.stderr";
+  // Appended piece by piece: chained operator+ trips a GCC 12 -Wrestrict false positive.
+  std::string command = "cd ";
+  command += shell_quote(PAVER_SOURCE_DIR);
+  command += " && ";
+  command += shell_quote(PAVER_CLI);
+  for (const std::string& arg : args) {
+    command += ' ';
+    command += shell_quote(arg);
+  }
+  result.command = command;
+  command += " >";
+  command += shell_quote(out_file.string());
+  command += " 2>";
+  command += shell_quote(err_file.string());
+  const int status = std::system(command.c_str());
+  if (status != -1 && WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
+  result.out = read_file_text(out_file);
+  result.err = read_file_text(err_file);
+  std::error_code ignored;
+  fs::remove(out_file, ignored);
+  fs::remove(err_file, ignored);
+  return result;
+}
+
+// For failure messages: the command and everything it printed.
+inline std::string describe(const CliResult& r) {
+  return "command: " + r.command + "\nexit code: " + std::to_string(r.exit_code) + "\n--- stdout ---\n" + r.out +
+         "--- stderr ---\n" + r.err;
+}
+
+// A fresh folder per test under the system temp folder, removed afterwards.
+class CliTest : public ::testing::Test {
+protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() /
+           ("paver_cli_" + std::string(info->test_suite_name()) + "_" + info->name() + "_" +
+            std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::error_code ignored;
+    fs::remove_all(dir_, ignored);
+  }
+
+  CliResult paver(std::initializer_list<std::string> args) const { return run_paver(args, dir_); }
+  CliResult paver(const std::vector<std::string>& args) const { return run_paver(args, dir_); }
+
+  const fs::path& dir() const { return dir_; }
+
+private:
+  fs::path dir_;
+};
+
+}  // namespace paver::cli_test

@@ -1,0 +1,492 @@
+// End-to-end tests of the `paver` command-line tool (app/cli): the real binary is run on the
+// bundled surfaces, and its exit codes, messages and output files are checked.
+#include "cli_runner.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace paver::cli_test {
+namespace {
+
+using nlohmann::json;
+
+const fs::path kSource = PAVER_SOURCE_DIR;
+
+// The dome (assets/surfaces/README.md, app/assetgen/main.cpp dome()): a spherical cap of a
+// sphere of radius 100, half-angle 60 degrees, base at z = 0, so its centre is (0, 0, -50).
+constexpr std::array<double, 3> kDomeCentre = {0.0, 0.0, -50.0};
+constexpr double kDomeRadius = 100.0;
+
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> parts;
+  std::string part;
+  std::istringstream in(text);
+  while (std::getline(in, part, separator)) parts.push_back(part);
+  if (!text.empty() && text.back() == separator) parts.emplace_back();
+  return parts;
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::string line;
+  std::istringstream in(text);
+  while (std::getline(in, line)) lines.push_back(line);
+  return lines;
+}
+
+// The whole field as a double, or nothing ("1.5x" and "" are not numbers).
+std::optional<double> parse_double(const std::string& field) {
+  if (field.empty()) return std::nullopt;
+  char* end = nullptr;
+  const double value = std::strtod(field.c_str(), &end);
+  if (end != field.c_str() + field.size()) return std::nullopt;
+  return value;
+}
+
+json read_json(const fs::path& path) { return json::parse(read_file_text(path)); }
+
+// One row of placements.csv.
+struct Placement {
+  long id = -1;
+  char kind = '?';
+  std::array<double, 3> p{}, n{};
+  double diameter = 0, u = 0, v = 0;
+};
+
+// Parses placements.csv, failing the test (and returning what it has) on any malformed row.
+std::vector<Placement> read_placements(const fs::path& path) {
+  std::vector<Placement> rows;
+  const std::vector<std::string> lines = lines_of(read_file_text(path));
+  EXPECT_FALSE(lines.empty()) << path << " is empty";
+  if (lines.empty()) return rows;
+  EXPECT_EQ(lines[0], "id,kind,x,y,z,nx,ny,nz,diameter,u,v");
+  for (size_t i = 1; i < lines.size(); ++i) {
+    const std::string where = path.filename().string() + " line " + std::to_string(i + 1) + ": " + lines[i];
+    const std::vector<std::string> fields = split(lines[i], ',');
+    EXPECT_EQ(fields.size(), 11u) << where;
+    if (fields.size() != 11) return rows;
+    Placement row;
+    const auto id = parse_double(fields[0]);
+    EXPECT_TRUE(id && *id == std::floor(*id)) << where;
+    row.id = id ? long(*id) : -1;
+    EXPECT_TRUE(fields[1] == "V" || fields[1] == "E") << where;
+    row.kind = fields[1].empty() ? '?' : fields[1][0];
+    std::array<double, 9> numbers{};
+    for (size_t k = 0; k < numbers.size(); ++k) {
+      const auto value = parse_double(fields[k + 2]);
+      EXPECT_TRUE(value && std::isfinite(*value)) << where << " (field " << k + 3 << ")";
+      numbers[k] = value.value_or(0.0);
+    }
+    row.p = {numbers[0], numbers[1], numbers[2]};
+    row.n = {numbers[3], numbers[4], numbers[5]};
+    row.diameter = numbers[6];
+    row.u = numbers[7];
+    row.v = numbers[8];
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+std::vector<fs::path> leftover_temporaries(const fs::path& folder) {
+  std::vector<fs::path> found;
+  for (const auto& entry : fs::directory_iterator(folder))
+    if (entry.path().filename().string().find(".tmp.") != std::string::npos) found.push_back(entry.path());
+  return found;
+}
+
+constexpr const char* kOutputs[] = {"placements.csv", "elements.ply", "elements.obj", "design.json", "report.json"};
+
+// ---------------------------------------------------------------------------------------------
+// paver --version
+
+using PaverCli = CliTest;
+
+TEST_F(PaverCli, VersionExitsZero) {
+  const CliResult r = paver({"--version"});
+  EXPECT_EQ(r.exit_code, 0) << describe(r);
+  EXPECT_NE(r.out.find("paver"), std::string::npos) << describe(r);
+}
+
+// ---------------------------------------------------------------------------------------------
+// paver run
+
+using PaverRun = CliTest;
+
+TEST_F(PaverRun, DomeHexWritesEveryOutputOnTheSurface) {
+  const fs::path out = dir() / "dome";
+  const CliResult r = paver({"run", "assets/surfaces/dome.obj", "--pattern", "hex", "--spacing", "6", "--out",
+                             out.string()});
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  for (const char* name : kOutputs) {
+    EXPECT_TRUE(fs::is_regular_file(out / name)) << name << " missing\n" << describe(r);
+    if (fs::is_regular_file(out / name)) {
+      EXPECT_GT(fs::file_size(out / name), 0u) << name;
+    }
+  }
+  EXPECT_TRUE(leftover_temporaries(out).empty()) << "temporary files left in " << out;
+
+  const std::vector<Placement> rows = read_placements(out / "placements.csv");
+  ASSERT_FALSE(rows.empty());
+  const json report = read_json(out / "report.json");
+  EXPECT_EQ(rows.size(), report["elements"]["total"].get<size_t>());
+  EXPECT_EQ(report["design"]["tessellation"], "hex");
+  EXPECT_EQ(report["design"]["spacing"].get<double>(), 6.0);
+  EXPECT_FALSE(report["design"]["spacing_derived"].get<bool>());
+
+  double worst_radius_error = 0;
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const Placement& row = rows[i];
+    SCOPED_TRACE("element " + std::to_string(i));
+    EXPECT_EQ(row.id, long(i));
+    EXPECT_EQ(row.diameter, 6.0);
+    const double n_length = std::hypot(row.n[0], row.n[1], row.n[2]);
+    EXPECT_NEAR(n_length, 1.0, 1e-6);
+    const std::array<double, 3> d = {row.p[0] - kDomeCentre[0], row.p[1] - kDomeCentre[1],
+                                     row.p[2] - kDomeCentre[2]};
+    const double r_length = std::hypot(d[0], d[1], d[2]);
+    // The mesh is a polygonal approximation of the sphere: points sit a little inside it.
+    EXPECT_NEAR(r_length, kDomeRadius, 0.5);
+    worst_radius_error = std::max(worst_radius_error, std::abs(r_length - kDomeRadius));
+    // Normals point outward, along the sphere's radius.
+    const double cosine = (d[0] * row.n[0] + d[1] * row.n[1] + d[2] * row.n[2]) / (r_length * n_length);
+    EXPECT_GT(cosine, 0.99);
+  }
+  RecordProperty("worst_radius_error", std::to_string(worst_radius_error));
+}
+
+TEST_F(PaverRun, WrittenDesignReproducesTheRun) {
+  const fs::path first = dir() / "first", second = dir() / "second";
+  const CliResult a = paver({"run", "assets/surfaces/dome.obj", "--pattern", "hex", "--spacing", "6", "--out",
+                             first.string()});
+  ASSERT_EQ(a.exit_code, 0) << describe(a);
+  const CliResult b = paver({"run", "assets/surfaces/dome.obj", "--design", (first / "design.json").string(),
+                             "--out", second.string()});
+  ASSERT_EQ(b.exit_code, 0) << describe(b);
+  const std::string placements = read_file_text(first / "placements.csv");
+  EXPECT_FALSE(placements.empty());
+  EXPECT_TRUE(placements == read_file_text(second / "placements.csv")) << "placements.csv differs between runs";
+  EXPECT_EQ(read_file_text(first / "design.json"), read_file_text(second / "design.json"));
+  EXPECT_EQ(read_json(second / "report.json")["design"]["source"], (first / "design.json").string());
+}
+
+TEST_F(PaverRun, FlagsOverrideTheDesign) {
+  const fs::path design = dir() / "hex.json";
+  write_file_text(design, R"({"version": 1, "pattern": {"tessellation": "hex", "spacing": 6}})");
+
+  const fs::path grid = dir() / "grid";
+  const CliResult r = paver({"run", "assets/surfaces/dome.obj", "--design", design.string(), "--pattern", "grid",
+                             "--out", grid.string()});
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const json written = read_json(grid / "design.json");
+  EXPECT_EQ(written["pattern"]["tessellation"], "grid");
+  EXPECT_EQ(written["pattern"]["spacing"].get<double>(), 6.0);  // not overridden: from the design
+  EXPECT_EQ(read_json(grid / "report.json")["design"]["tessellation"], "grid");
+
+  const fs::path wider = dir() / "wider";
+  const CliResult s = paver({"run", "assets/surfaces/dome.obj", "--design", design.string(), "--spacing", "8",
+                             "--out", wider.string()});
+  ASSERT_EQ(s.exit_code, 0) << describe(s);
+  const json widened = read_json(wider / "design.json");
+  EXPECT_EQ(widened["pattern"]["tessellation"], "hex");
+  EXPECT_EQ(widened["pattern"]["spacing"].get<double>(), 8.0);
+  // The design file itself is left as it was.
+  EXPECT_EQ(read_file_text(design), R"({"version": 1, "pattern": {"tessellation": "hex", "spacing": 6}})");
+}
+
+// The surface each bundled design is for, from the table in assets/designs/README.md
+// ("| dome_hex_d6.json | dome.obj | ... |").
+std::map<std::string, std::string> design_surfaces_from_readme(const fs::path& readme) {
+  std::map<std::string, std::string> surfaces;
+  for (const std::string& line : lines_of(read_file_text(readme))) {
+    const std::vector<std::string> cells = split(line, '|');
+    if (cells.size() < 3) continue;
+    const auto trim = [](std::string text) {
+      const size_t first = text.find_first_not_of(" \t`");
+      const size_t last = text.find_last_not_of(" \t`");
+      return first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
+    };
+    const std::string design = trim(cells[1]), surface = trim(cells[2]);
+    if (fs::path(design).extension() == ".json" && !surface.empty()) surfaces[design] = surface;
+  }
+  return surfaces;
+}
+
+// The surface for a bundled design: the README's table, else the surface whose name is the
+// design's name up to the first '_' ("dome_hex_d6.json" -> dome.obj); nothing if that file is
+// not in assets/surfaces.
+std::optional<fs::path> surface_for_design(const fs::path& design,
+                                           const std::map<std::string, std::string>& table) {
+  const std::string name = design.filename().string();
+  const auto listed = table.find(name);
+  const std::string surface = listed != table.end() ? listed->second : name.substr(0, name.find('_')) + ".obj";
+  const fs::path path = fs::path("assets/surfaces") / surface;
+  if (!fs::is_regular_file(kSource / path)) return std::nullopt;
+  return path;
+}
+
+TEST_F(PaverRun, BundledDesignsRun) {
+  const fs::path folder = kSource / "assets/designs";
+  std::vector<fs::path> designs;
+  if (fs::is_directory(folder))
+    for (const auto& entry : fs::directory_iterator(folder))
+      if (entry.path().extension() == ".json") designs.push_back(entry.path());
+  std::sort(designs.begin(), designs.end());
+  if (designs.empty()) GTEST_SKIP() << "no designs in " << folder << " yet";
+  const auto table = design_surfaces_from_readme(folder / "README.md");
+
+  for (const fs::path& design : designs) {
+    SCOPED_TRACE(design.filename().string());
+    const auto surface = surface_for_design(design, table);
+    if (!surface) {
+      ADD_FAILURE() << "no surface for " << design.filename()
+                    << ": list it in assets/designs/README.md with a file in assets/surfaces";
+      continue;
+    }
+    const fs::path out = dir() / design.stem();
+    const CliResult r = paver({"run", surface->string(), "--design", design.string(), "--out", out.string()});
+    EXPECT_EQ(r.exit_code, 0) << describe(r);
+    if (r.exit_code != 0) continue;
+    const json report = read_json(out / "report.json");
+    EXPECT_GT(report["elements"]["total"].get<long>(), 0) << describe(r);
+    // The design's own choices survive the run.
+    const json given = read_json(design);
+    if (given.contains("pattern") && given["pattern"].contains("tessellation")) {
+      EXPECT_EQ(report["design"]["tessellation"], given["pattern"]["tessellation"]);
+    }
+  }
+}
+
+TEST_F(PaverRun, DerivesSpacingWhenNoneGiven) {
+  const fs::path out = dir() / "wave";
+  const CliResult r = paver({"run", "assets/surfaces/wave.obj", "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  EXPECT_NE(r.out.find("no spacing given"), std::string::npos) << describe(r);
+  const json report = read_json(out / "report.json");
+  EXPECT_TRUE(report["design"]["spacing_derived"].get<bool>());
+  EXPECT_GT(report["design"]["spacing"].get<double>(), 0.0);
+  const long points = report["pattern"]["points"].get<long>();
+  EXPECT_GE(points, 700);
+  EXPECT_LE(points, 1400);
+  // The written design holds the spacing that was used, so it reruns the same.
+  EXPECT_EQ(read_json(out / "design.json")["pattern"]["spacing"], report["design"]["spacing"]);
+}
+
+TEST_F(PaverRun, NeverOverwritesItsInputs) {
+  const fs::path surface = dir() / "dome.obj";
+  const fs::path design = dir() / "design.json";
+  fs::copy_file(kSource / "assets/surfaces/dome.obj", surface);
+  const std::string design_text = R"({"version": 1, "pattern": {"tessellation": "hex", "spacing": 6}})" "\n";
+  write_file_text(design, design_text);
+  const std::string surface_bytes = read_file_text(surface);
+
+  const CliResult r = paver({"run", surface.string(), "--design", design.string(), "--out", dir().string()});
+  EXPECT_EQ(r.exit_code, 2) << describe(r);
+  EXPECT_NE(r.err.find("refusing to write"), std::string::npos) << describe(r);
+  EXPECT_NE(r.err.find("design.json"), std::string::npos) << describe(r);
+  EXPECT_EQ(read_file_text(design), design_text);
+  EXPECT_TRUE(read_file_text(surface) == surface_bytes) << "the surface was changed";
+  EXPECT_FALSE(fs::exists(dir() / "placements.csv")) << "a refused run wrote output";
+  EXPECT_TRUE(leftover_temporaries(dir()).empty());
+}
+
+// ---------------------------------------------------------------------------------------------
+// Bad inputs: exit code 2, a message on stderr that names the problem, and no output written.
+
+using PaverRunErrors = CliTest;
+
+// Checks a refused run: exit code 2, every fragment in stderr, and `out` (its --out) not created.
+void expect_input_error(const CliResult& r, const fs::path& out, std::initializer_list<std::string> fragments) {
+  EXPECT_EQ(r.exit_code, 2) << describe(r);
+  for (const std::string& fragment : fragments)
+    EXPECT_NE(r.err.find(fragment), std::string::npos) << "stderr lacks \"" << fragment << "\"\n" << describe(r);
+  EXPECT_FALSE(fs::exists(out)) << "a failed run created " << out;
+}
+
+TEST_F(PaverRunErrors, MissingSurface) {
+  const fs::path out = dir() / "out";
+  const CliResult r = paver({"run", (dir() / "no_such_surface.obj").string(), "--out", out.string()});
+  expect_input_error(r, out, {"no_such_surface.obj", "not found"});
+}
+
+TEST_F(PaverRunErrors, ClosedSurface) {
+  const fs::path tetrahedron = dir() / "tetrahedron.obj";
+  write_file_text(tetrahedron,
+                  "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+                  "f 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n");
+  const fs::path out = dir() / "out";
+  const CliResult r = paver({"run", tetrahedron.string(), "--out", out.string()});
+  expect_input_error(r, out, {"tetrahedron.obj", "cut it open"});
+}
+
+TEST_F(PaverRunErrors, TwoHoles) {
+  // A 5 x 3 grid of unit squares, each split in two, without the squares (1, 1) and (3, 1):
+  // one outer boundary and two holes.
+  constexpr int kW = 6, kH = 4;  // vertices per row, rows
+  std::ostringstream obj;
+  for (int j = 0; j < kH; ++j)
+    for (int i = 0; i < kW; ++i) obj << "v " << i << ' ' << j << " 0\n";
+  const auto index = [](int i, int j) { return j * kW + i + 1; };
+  for (int j = 0; j + 1 < kH; ++j) {
+    for (int i = 0; i + 1 < kW; ++i) {
+      if (j == 1 && (i == 1 || i == 3)) continue;
+      obj << "f " << index(i, j) << ' ' << index(i + 1, j) << ' ' << index(i + 1, j + 1) << '\n';
+      obj << "f " << index(i, j) << ' ' << index(i + 1, j + 1) << ' ' << index(i, j + 1) << '\n';
+    }
+  }
+  const fs::path holes = dir() / "two_holes.obj";
+  write_file_text(holes, obj.str());
+  const fs::path out = dir() / "out";
+  const CliResult r = paver({"run", holes.string(), "--out", out.string()});
+  expect_input_error(r, out, {"two_holes.obj", "boundary loops"});
+}
+
+TEST_F(PaverRunErrors, NanCoordinate) {
+  const fs::path surface = dir() / "nan.obj";
+  write_file_text(surface, "v 0 0 0\nv 1 0 nan\nv 0 1 0\nf 1 2 3\n");
+  const fs::path out = dir() / "out";
+  const CliResult r = paver({"run", surface.string(), "--out", out.string()});
+  expect_input_error(r, out, {"nan.obj", "line 2", "non-finite"});
+}
+
+TEST_F(PaverRunErrors, MalformedObjLine) {
+  const fs::path surface = dir() / "short_vertex.obj";
+  write_file_text(surface, "v 0 0 0\nv 1 0\nv 0 1 0\nf 1 2 3\n");
+  const fs::path out = dir() / "out";
+  const CliResult r = paver({"run", surface.string(), "--out", out.string()});
+  expect_input_error(r, out, {"short_vertex.obj", "line 2"});
+}
+
+TEST_F(PaverRunErrors, DesignJsonSyntaxError) {
+  const fs::path design = dir() / "syntax.json";
+  write_file_text(design, "{\"version\": 1,\n \"pattern\": {\"spacing\": 6,}\n}\n");
+  const fs::path out = dir() / "out";
+  const CliResult r =
+      paver({"run", "assets/surfaces/dome.obj", "--design", design.string(), "--out", out.string()});
+  expect_input_error(r, out, {"syntax.json:2:", "JSON syntax error"});
+}
+
+TEST_F(PaverRunErrors, DesignUnknownKey) {
+  const fs::path design = dir() / "unknown.json";
+  write_file_text(design, R"({"version": 1, "pattern": {"spasing": 6}})");
+  const fs::path out = dir() / "out";
+  const CliResult r =
+      paver({"run", "assets/surfaces/dome.obj", "--design", design.string(), "--out", out.string()});
+  expect_input_error(r, out, {"unknown.json", "unknown key", "pattern.spasing"});
+}
+
+TEST_F(PaverRunErrors, DesignNegativeMargin) {
+  const fs::path design = dir() / "margin.json";
+  write_file_text(design, R"({"version": 1, "solver": {"c": 0.1, "m": -0.3}})");
+  const fs::path out = dir() / "out";
+  const CliResult r =
+      paver({"run", "assets/surfaces/dome.obj", "--design", design.string(), "--out", out.string()});
+  expect_input_error(r, out, {"margin.json", "c + m"});
+}
+
+TEST_F(PaverRunErrors, SpacingTooSmall) {
+  const fs::path out = dir() / "out";
+  const CliResult r = paver({"run", "assets/surfaces/dome.obj", "--spacing", "1e-6", "--out", out.string()});
+  expect_input_error(r, out, {"would create about"});
+}
+
+TEST_F(PaverRunErrors, BadSpacingFlagIsBlamedOnTheFlag) {
+  // The design file is fine; the message must name the flag, not the file.
+  const fs::path design = dir() / "fine.json";
+  write_file_text(design, R"({"version": 1, "pattern": {"tessellation": "hex", "spacing": 6}})");
+  for (const std::string spacing : {"-1", "nan"}) {
+    SCOPED_TRACE("--spacing " + spacing);
+    const fs::path out = dir() / "out";
+    const CliResult r = paver({"run", "assets/surfaces/dome.obj", "--design", design.string(), "--spacing", spacing,
+                               "--out", out.string()});
+    expect_input_error(r, out, {"--spacing"});
+    EXPECT_EQ(r.err.find("fine.json"), std::string::npos) << describe(r);
+  }
+}
+
+TEST_F(PaverRunErrors, UnknownPattern) {
+  const fs::path out = dir() / "out";
+  const CliResult r = paver({"run", "assets/surfaces/dome.obj", "--pattern", "pentagon", "--out", out.string()});
+  expect_input_error(r, out, {"pentagon"});
+}
+
+TEST_F(PaverRunErrors, UnknownFlag) {
+  const fs::path out = dir() / "out";
+  const CliResult r = paver({"run", "assets/surfaces/dome.obj", "--frobnicate", "--out", out.string()});
+  expect_input_error(r, out, {"--frobnicate"});
+}
+
+// ---------------------------------------------------------------------------------------------
+// paver param
+
+using PaverParam = CliTest;
+
+TEST_F(PaverParam, BunnyheadMapIsBijective) {
+  const fs::path uv_obj = dir() / "bunnyhead_uv.obj";
+  const CliResult r =
+      paver({"param", std::string(PAVER_SHARED_MESHES_DIR) + "/bunnyhead.obj", "--out", uv_obj.string()});
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  EXPECT_NE(r.out.find("flipped triangles: 0"), std::string::npos) << describe(r);
+  EXPECT_NE(r.out.find("bijective"), std::string::npos) << describe(r);
+  EXPECT_EQ(r.out.find("NOT bijective"), std::string::npos) << describe(r);
+  ASSERT_TRUE(fs::is_regular_file(uv_obj));
+  EXPECT_TRUE(leftover_temporaries(dir()).empty());
+
+  std::vector<std::array<double, 2>> uv;
+  std::vector<std::array<int, 3>> faces;
+  size_t positions = 0;
+  for (const std::string& line : lines_of(read_file_text(uv_obj))) {
+    std::istringstream in(line);
+    std::string tag;
+    in >> tag;
+    if (tag == "v") {
+      ++positions;
+    } else if (tag == "vt") {
+      std::array<double, 2> t{};
+      ASSERT_TRUE(in >> t[0] >> t[1]) << line;
+      uv.push_back(t);
+    } else if (tag == "f") {
+      std::array<int, 3> face{};
+      std::string corner, extra;
+      for (int& index : face) {
+        ASSERT_TRUE(in >> corner) << line;
+        const std::vector<std::string> parts = split(corner, '/');
+        ASSERT_EQ(parts.size(), 2u) << "corner '" << corner << "' is not a/a: " << line;
+        ASSERT_EQ(parts[0], parts[1]) << "vertex and texture index differ: " << line;
+        const auto value = parse_double(parts[0]);
+        ASSERT_TRUE(value && *value >= 1 && *value == std::floor(*value)) << line;
+        index = int(*value);
+      }
+      ASSERT_FALSE(in >> extra) << "more than 3 corners: " << line;
+      faces.push_back(face);
+    }
+  }
+  EXPECT_EQ(positions, 1550u);
+  EXPECT_EQ(uv.size(), 1550u);
+  ASSERT_EQ(faces.size(), 3000u);
+
+  int non_positive = 0;
+  for (const auto& f : faces) {
+    ASSERT_LE(size_t(std::max({f[0], f[1], f[2]})), uv.size());
+    const auto& a = uv[size_t(f[0] - 1)];
+    const auto& b = uv[size_t(f[1] - 1)];
+    const auto& c = uv[size_t(f[2] - 1)];
+    const double twice_area = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    if (!(twice_area > 0)) ++non_positive;
+  }
+  EXPECT_EQ(non_positive, 0) << "faces with zero or negative signed area in the map";
+}
+
+}  // namespace
+}  // namespace paver::cli_test

@@ -1,0 +1,43 @@
+#pragma once
+// Shared fixtures: the bundled surfaces, the real scanned meshes, and small meshes made in code.
+#include "paver/mesh_loader.h"
+#include "paver/surface_mesh.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace paver::test {
+
+inline std::filesystem::path source_dir() { return PAVER_SOURCE_DIR; }
+inline std::filesystem::path shared_meshes_dir() { return PAVER_SHARED_MESHES_DIR; }
+
+inline std::vector<std::string> bundled_surface_names() {
+  return {"dome", "saddle", "wave", "vase", "torus_section", "pendant", "facade"};
+}
+inline std::vector<std::string> scanned_mesh_names() { return {"bunnyhead", "lilium", "maze"}; }
+
+inline std::filesystem::path bundled_surface(const std::string& name) {
+  return source_dir() / "assets/surfaces" / (name + ".obj");
+}
+inline std::filesystem::path scanned_mesh(const std::string& name) {
+  return shared_meshes_dir() / (name + ".obj");
+}
+
+// A regular triangulated grid of nu x nv quads over [0,1]^2, mapped through `f(u, v)` to 3D.
+template <class F>
+SurfaceMesh grid_surface(int nu, int nv, F&& f) {
+  std::vector<glm::dvec3> positions;
+  std::vector<std::vector<int>> faces;
+  for (int j = 0; j <= nv; ++j)
+    for (int i = 0; i <= nu; ++i) positions.push_back(f(double(i) / nu, double(j) / nv));
+  auto id = [&](int i, int j) { return j * (nu + 1) + i; };
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return make_surface(std::move(positions), faces, "grid_surface").mesh;
+}
+
+}  // namespace paver::test
