@@ -326,63 +326,37 @@ Mesh facade(int target) {
   return fit_faces([&](double h) { return height_field(hf, h); }, 10.0, target);
 }
 
-// Disk made of rings along a profile curve (r, z) that starts on the axis (r = 0): ring k sits
-// at arc length k * h' along the profile and gets 6 r / h' vertices, which is exactly 6k on a
-// flat start and keeps tangential spacing ~1.05 h' elsewhere.
-Mesh revolve(const Polyline& profile, double h) {
-  const int n = std::max(1, rounded(profile.length() / h));
-  const double step = profile.length() / n;
-  Mesh m;
-  const dvec2 c = profile.at(0.0);
-  const int centre = m.add({0.0, 0.0, c.y});
-  std::vector<Row> rs;
-  for (int k = 1; k <= n; ++k) {
-    const dvec2 p = profile.at(static_cast<double>(k) / n);
-    const int count = std::max(6, rounded(6.0 * p.x / step));
-    rs.push_back(make_ring(m, count, [&](double t) {
-      const double th = 2.0 * kPi * t;
-      return dvec3(p.x * std::cos(th), p.x * std::sin(th), p.y);
-    }));
-  }
-  stitch_rings(m, centre, rs);
-  return m;
-}
-
-// Vase, 120 high, open at the top: a flat bottom (radius 30) rounded into the wall by a
-// 6 mm fillet, belly r = 42 near z = 39, neck r = 24 near z = 100, lip r = 32. Normals outward.
+// Vase, 120 high: the wall of a surface of revolution (belly r = 42 near z = 39, neck r = 24
+// near z = 100, lip r = 32) over 270 degrees, open along a vertical seam like an architectural
+// vase facade. A full cup with a bottom would be a disk too, but flattening it bends the map so
+// much (singular-value ratios above 10) that no regular lattice survives the lift. Rows of
+// constant height each get as many segments as their length needs. Normals point outward.
 Mesh vase(int target) {
   const auto radius = [](double z) {
     return 30.0 + 12.0 * std::sin(z / 25.0) + 14.0 * std::pow(z / 120.0, 8.0);
   };
   constexpr double kHeight = 120.0;
-  constexpr double kFillet = 6.0;
-  constexpr double kStep = 0.05;  // profile sampling, far below the mesh spacing
-  // Fillet between the bottom (direction +r) and the wall's tangent at z = 0; the wall is
-  // straight to within 0.01 mm over the fillet's few millimetres, so the tangent line stands in.
-  const dvec2 corner(radius(0.0), 0.0);
-  const dvec2 up = glm::normalize(dvec2((radius(1e-4) - radius(-1e-4)) / 2e-4, 1.0));
-  const double turn = std::acos(up.x);
-  const double tangent = kFillet * std::tan(turn / 2.0);
-  const dvec2 p1 = corner - dvec2(tangent, 0.0);
-  const dvec2 p2 = corner + tangent * up;
-  const dvec2 arc_centre = p1 + dvec2(0.0, kFillet);
-
+  const double sweep = 1.5 * kPi;
+  // Arc length along the profile, so rows are evenly spaced on the wall.
   std::vector<dvec2> pts;
-  for (double r = 0.0; r < p1.x; r += kStep) pts.emplace_back(r, 0.0);
-  const int arc_samples = std::max(8, rounded(kFillet * turn / kStep));
-  for (int i = 0; i <= arc_samples; ++i) {
-    const double a = -kPi / 2.0 + turn * i / arc_samples;
-    pts.push_back(arc_centre + kFillet * dvec2(std::cos(a), std::sin(a)));
-  }
-  for (double z = p2.y + kStep; z < kHeight; z += kStep) pts.emplace_back(radius(z), z);
+  for (double z = 0.0; z < kHeight; z += 0.05) pts.emplace_back(radius(z), z);
   pts.emplace_back(radius(kHeight), kHeight);
   const Polyline profile(std::move(pts));
-
   return fit_faces(
       [&](double h) {
-        Mesh m = revolve(profile, h);
-        // Outside is away from the axis on the wall and -z under the bottom.
-        orient(m, [](dvec3 p) { return dvec3(p.x, p.y, -1.0); });
+        const int rows = std::max(1, rounded(profile.length() / (h * std::sqrt(3.0) / 2.0)));
+        Mesh m;
+        std::vector<Row> rs;
+        for (int i = 0; i <= rows; ++i) {
+          const dvec2 p = profile.at(static_cast<double>(i) / rows);
+          const int segments = std::max(1, rounded(p.x * sweep / h));
+          rs.push_back(make_row(m, segments, [&](double t) {
+            const double th = sweep * t;
+            return dvec3(p.x * std::cos(th), p.x * std::sin(th), p.y);
+          }));
+        }
+        for (std::size_t i = 1; i < rs.size(); ++i) stitch(m, rs[i - 1], rs[i], false);
+        orient(m, [](dvec3 q) { return dvec3(q.x, q.y, 0.0); });
         return m;
       },
       5.0, target);
@@ -670,7 +644,10 @@ double clean(double x) { return std::abs(x) < 1e-7 ? 0.0 : x; }
 // parallel build) never sees half a file.
 void write_obj(const fs::path& dir, std::string_view name, const Mesh& m) {
   const fs::path final_path = dir / (std::string(name) + ".obj");
-  const fs::path tmp_path = dir / ("." + std::string(name) + ".obj.tmp");
+  std::string tmp_name = ".";  // built piecewise: chained operator+ trips a GCC 12 -Wrestrict false positive
+  tmp_name += name;
+  tmp_name += ".obj.tmp";
+  const fs::path tmp_path = dir / tmp_name;
   std::FILE* out = std::fopen(tmp_path.c_str(), "wb");
   if (out == nullptr) fail(name, "cannot write " + tmp_path.string() + " (is the directory writable?)");
   std::fprintf(out, "# generated by paver-assetgen: %.*s, %zu faces\n", static_cast<int>(name.size()), name.data(),
@@ -701,7 +678,7 @@ std::vector<Surface> small_set() {
       {"dome", [] { return dome(20); }, [](dvec3 p) { return p - dvec3(0.0, 0.0, -50.0); }},
       {"saddle", [] { return saddle(2000); }, up},
       {"wave", [] { return wave(720); }, up},
-      {"vase", [] { return vase(2100); }, [](dvec3 p) { return dvec3(p.x, p.y, -1.0); }},
+      {"vase", [] { return vase(2100); }, [](dvec3 p) { return dvec3(p.x, p.y, 0.0); }},
       {"torus_section", [] { return torus_section(900); },
        [](dvec3 p) {
          const double phi = std::atan2(p.y, p.x);

@@ -5,6 +5,7 @@
 #include "paver/atomic_file.h"
 #include "paver/design_io.h"
 #include "paver/element_export.h"
+#include "paver/element_proximity.h"
 #include "paver/input_error.h"
 #include "paver/mesh_loader.h"
 #include "paver/pavement.h"
@@ -21,6 +22,8 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace paver::cli {
 namespace {
@@ -34,6 +37,13 @@ struct RunArgs {
   std::string pattern;
   std::optional<double> spacing;
   std::string out = "out";
+  bool no_optimize = false;
+  bool no_postprocess = false;
+  int threads = 0;
+  // Section 5 parameters given on the command line, applied over the design's.
+  std::vector<std::pair<double SolverParams::*, std::optional<double>>> solver_values;
+  std::optional<int> iterations;
+  std::string filter_base;
 };
 
 double ms_since(Clock::time_point t0) {
@@ -60,6 +70,10 @@ int run_run(const RunArgs& args) {
     if (!t) throw InputError("--pattern " + args.pattern + ": use tri, grid or hex");
     design.pattern.tessellation = *t;
   }
+  for (const auto& [member, value] : args.solver_values)
+    if (value) design.solver.*member = *value;
+  if (args.iterations) design.solver.iterations = *args.iterations;
+  if (!args.filter_base.empty()) design.solver.filter_base = *filter_base_from_name(args.filter_base);
   if (args.spacing) {
     // Checked here so that a bad flag is not reported as a fault of the design file.
     if (!(std::isfinite(*args.spacing) && *args.spacing >= 0)) {
@@ -88,7 +102,11 @@ int run_run(const RunArgs& args) {
   if (!map.parameterization.quality.bijective())
     throw std::runtime_error("the parameterization is not bijective; please report this surface");
 
-  Pavement pavement = make_pavement(map, design);
+  PavementOptions options;
+  options.optimize = !args.no_optimize;
+  options.postprocess = !args.no_postprocess;
+  options.threads = args.threads;
+  Pavement pavement = make_pavement(map, design, options);
   timings.insert(timings.end(), pavement.timings.begin(), pavement.timings.end());
   if (info.spacing_derived)
     std::printf("no spacing given: using D = %g, about 1000 points over this surface\n",
@@ -98,6 +116,9 @@ int run_run(const RunArgs& args) {
   make_output_folder(out);
   ElementMeshOptions mesh_options;
   if (custom) mesh_options.custom = &*custom;
+  // Elements coloured like the paper's figures: red (too close) to green (loose).
+  const auto colours = neighbor_ratio_colours(nearest_neighbor_ratios(pavement.elements));
+  mesh_options.colours = &colours;
   write_placements_csv(out / "placements.csv", pavement.elements);
   write_elements_ply(out / "elements.ply", pavement.elements, mesh_options);
   write_elements_obj(out / "elements.obj", pavement.elements, mesh_options);
@@ -119,8 +140,17 @@ int run_run(const RunArgs& args) {
               pavement.design.pattern.spacing, pavement.pattern.point_count(),
               r["pattern"]["edges"].get<long long>(), r["pattern"]["virtual_edges"].get<long long>(),
               r["pattern"]["boundary_crossing_edges"].get<long long>());
+  std::printf("optimize %d iterations, %s (last max step %.3g); %d filled, %d eliminated at the boundary\n",
+              pavement.solve.iterations, std::string(stop_reason_name(pavement.solve.reason)).c_str(),
+              pavement.solve.last_max_step, pavement.filled, pavement.eliminated);
   std::printf("elements %zu (%lld V, %lld E)\n", pavement.elements.size(), r["elements"]["vertex"].get<long long>(),
               r["elements"]["edge"].get<long long>());
+  std::printf("quality           collisions  worst overlap  NN ratio min / p5 / median / p95   cv     crossings\n");
+  for (const auto& [label, q] : {std::pair{"  initial", &pavement.before}, std::pair{"  paper's method", &pavement.paper},
+                                 std::pair{"  final", &pavement.after}})
+    std::printf("%-17s %10ld  %13.3f  %.3f / %.3f / %.3f / %.3f  %.3f  %ld\n", label, q->collisions,
+                q->worst_overlap, q->neighbor_ratio.min, q->neighbor_ratio.p5, q->neighbor_ratio.median,
+                q->neighbor_ratio.p95, q->neighbor_ratio.cv, q->boundary_crossings);
   std::printf("time    ");
   for (const auto& [stage, ms] : timings) std::printf(" %s %.1f ms,", stage.c_str(), ms);
   std::printf(" total %.1f ms\n", r["timings_ms"]["total"].get<double>());
@@ -139,6 +169,36 @@ std::function<int()> add_run_command(CLI::App& app) {
   cmd->add_option("--pattern", args->pattern, "Tessellation: tri, grid or hex");
   cmd->add_option("--spacing", args->spacing, "Edge length D in surface units (default: from the surface size)");
   cmd->add_option("--out", args->out, "Output folder")->capture_default_str();
+  cmd->add_flag("--no-optimize", args->no_optimize, "Skip the section 5 optimizer (initial pavement only)");
+  cmd->add_flag("--no-postprocess", args->no_postprocess, "Skip boundary filling and elimination (5.4)");
+  cmd->add_option("--threads", args->threads, "Solver threads (0 = all cores)")->check(CLI::Range(0, 1024));
+  // Every section 5 parameter, named as in design.json's "solver" object.
+  const std::pair<const char*, double SolverParams::*> solver_flags[] = {
+      {"c", &SolverParams::c},
+      {"m", &SolverParams::m},
+      {"alpha", &SolverParams::alpha},
+      {"beta", &SolverParams::beta},
+      {"gamma", &SolverParams::gamma},
+      {"lambda-r", &SolverParams::lambda_r},
+      {"lambda-l", &SolverParams::lambda_l},
+      {"lambda-g", &SolverParams::lambda_g},
+      {"dt", &SolverParams::dt},
+      {"threshold", &SolverParams::threshold},
+      {"mu-compressed", &SolverParams::mu_compressed},
+      {"mu-stretched", &SolverParams::mu_stretched},
+      {"filter-max", &SolverParams::filter_max},
+  };
+  args->solver_values.reserve(std::size(solver_flags));
+  for (const auto& [name, member] : solver_flags) {
+    args->solver_values.emplace_back(member, std::nullopt);
+    cmd->add_option(std::string("--") + name, args->solver_values.back().second,
+                    std::string("solver.") + name + " (see design.json)")
+        ->group("Solver (section 5)");
+  }
+  cmd->add_option("--iterations", args->iterations, "solver.iterations: iteration limit")->group("Solver (section 5)");
+  cmd->add_option("--filter-base", args->filter_base, "solver.filter_base: current or initial")
+      ->check(CLI::IsMember({"current", "initial"}))
+      ->group("Solver (section 5)");
   return [args] { return run_run(*args); };
 }
 

@@ -7,6 +7,14 @@
 #include <string>
 
 namespace paver {
+
+std::string_view filter_base_name(FilterBase b) { return b == FilterBase::Initial ? "initial" : "current"; }
+
+std::optional<FilterBase> filter_base_from_name(std::string_view name) {
+  if (name == "current") return FilterBase::Current;
+  if (name == "initial") return FilterBase::Initial;
+  return std::nullopt;
+}
 namespace {
 
 // Shortest text that reads back as the same double, so messages show exactly what was given.
@@ -105,6 +113,8 @@ void validate_solver(const Validator& v, const SolverParams& s) {
   v.unit_interval(s.mu_stretched, "solver.mu_stretched");
   v.require(std::isfinite(s.filter_max) && s.filter_max >= 1, "solver.filter_max", "finite and >= 1",
             s.filter_max);
+  v.require(s.stray_patience >= 0 && s.stray_patience <= 1000000, "solver.stray_patience", "in [0, 1000000]",
+            s.stray_patience);
 }
 
 }  // namespace

@@ -23,6 +23,7 @@ namespace {
 using nlohmann::json;
 
 constexpr Tessellation kTessellations[] = {Tessellation::Triangle, Tessellation::Grid, Tessellation::Hexagon};
+constexpr FilterBase kFilterBases[] = {FilterBase::Current, FilterBase::Initial};
 constexpr ShapeKind kShapes[] = {ShapeKind::Sphere, ShapeKind::Gem, ShapeKind::HexPrism, ShapeKind::Disc,
                                  ShapeKind::Custom};
 constexpr EdgeOperator::Kind kOperatorKinds[] = {EdgeOperator::Kind::Flip, EdgeOperator::Kind::Add,
@@ -135,6 +136,9 @@ public:
   void read(const json& value, const std::string& path, Tessellation& out) const {
     read_name(value, path, out, kTessellations, tessellation_name);
   }
+  void read(const json& value, const std::string& path, FilterBase& out) const {
+    read_name(value, path, out, kFilterBases, filter_base_name);
+  }
   void read(const json& value, const std::string& path, ShapeKind& out) const {
     read_name(value, path, out, kShapes, shape_name);
   }
@@ -182,10 +186,11 @@ public:
   }
 
   void read(const json& value, const std::string& path, ElementsDesign& out) const {
-    check_object(value, path, {"vertex", "edge", "custom_shape"});
+    check_object(value, path, {"vertex", "edge", "custom_shape", "allow_overlap"});
     field(value, path, "vertex", out.vertex);
     field(value, path, "edge", out.edge);
     field(value, path, "custom_shape", out.custom_shape);
+    field(value, path, "allow_overlap", out.allow_overlap);
   }
 
   void read(const json& value, const std::string& path, Placement& out) const {
@@ -198,7 +203,7 @@ public:
   void read(const json& value, const std::string& path, SolverParams& out) const {
     check_object(value, path,
                  {"c", "m", "alpha", "beta", "gamma", "lambda_r", "lambda_l", "lambda_g", "dt", "iterations",
-                  "threshold", "mu_compressed", "mu_stretched", "filter_max"});
+                  "threshold", "mu_compressed", "mu_stretched", "filter_max", "filter_base", "stray_patience"});
     field(value, path, "c", out.c);
     field(value, path, "m", out.m);
     field(value, path, "alpha", out.alpha);
@@ -213,6 +218,8 @@ public:
     field(value, path, "mu_compressed", out.mu_compressed);
     field(value, path, "mu_stretched", out.mu_stretched);
     field(value, path, "filter_max", out.filter_max);
+    field(value, path, "filter_base", out.filter_base);
+    field(value, path, "stray_patience", out.stray_patience);
   }
 
 private:
@@ -304,6 +311,7 @@ Json to_json(const Design& design) {
   elements_json["vertex"] = std::move(vertex);
   elements_json["edge"] = std::move(edges);
   elements_json["custom_shape"] = elements.custom_shape;
+  elements_json["allow_overlap"] = elements.allow_overlap;
 
   Json placement = Json::object();
   placement["offset"] = Json::array({design.placement.offset.x, design.placement.offset.y});
@@ -326,6 +334,8 @@ Json to_json(const Design& design) {
   solver["mu_compressed"] = s.mu_compressed;
   solver["mu_stretched"] = s.mu_stretched;
   solver["filter_max"] = s.filter_max;
+  solver["filter_base"] = std::string(filter_base_name(s.filter_base));
+  solver["stray_patience"] = s.stray_patience;
 
   Json root = Json::object();
   root["version"] = Design::kVersion;

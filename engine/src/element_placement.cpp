@@ -18,7 +18,7 @@ bool on_cell_edge(const EdgeElementDesign& spec, int cell_edge) {
 
 Elements place_elements(const SurfaceMap& map, const Pattern& pattern,
                         const std::vector<glm::dvec2>& points, const ElementsDesign& design,
-                        double spacing) {
+                        double spacing, const std::vector<std::uint8_t>* retired) {
   // Gather every element centre in 2D first, then lift them in one parallel call.
   struct Pending {
     ElementKind kind;
@@ -30,6 +30,7 @@ Elements place_elements(const SurfaceMap& map, const Pattern& pattern,
   std::vector<glm::dvec2> centres;
   if (design.vertex.enabled)
     for (int p = 0; p < pattern.point_count(); ++p) {
+      if (retired && (*retired)[p]) continue;
       pending.push_back({ElementKind::Vertex, p, 0, design.vertex.scale * spacing, design.vertex.shape});
       centres.push_back(points[p]);
     }

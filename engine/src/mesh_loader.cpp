@@ -353,7 +353,8 @@ TextScan prescan_obj(std::string_view text, const std::string& source) {
         if (index < 0) {
           if (vertices + index < 0)
             fail(source, at_line(number) + "relative index " + std::to_string(index) +
-                             " points before the first vertex: only " + count_of(vertices, "vertex is", "vertices are") +
+                             " points before the first vertex: only " +
+                             count_of(vertices, "vertex is", "vertices are") +
                              " defined above this line");
           index = vertices + index + 1;
         } else if (index > vertices) {
@@ -436,7 +437,8 @@ TextScan prescan_off(std::string_view text, const std::string& source) {
     data.push_back({line, reader.number()});
   }
 
-  if (data.empty()) fail(source, "the file ends after the OFF header; it contains no faces (the counts line is missing)");
+  if (data.empty())
+    fail(source, "the file ends after the OFF header; it contains no faces (the counts line is missing)");
   split_tokens(data[0].text, tokens);
   const int counts_line = data[0].number;
   long long counts[3] = {0, 0, 0};
@@ -444,7 +446,8 @@ TextScan prescan_off(std::string_view text, const std::string& source) {
   for (size_t i = 0; i < 3 && counts_ok; ++i)
     counts_ok = parse_integer(tokens[i], counts[i]) && counts[i] >= 0 && counts[i] <= INT_MAX;
   if (!counts_ok)
-    fail(source, at_line(counts_line) + "expected the counts '<vertices> <faces> <edges>' after the OFF header, found '" +
+    fail(source, at_line(counts_line) +
+                     "expected the counts '<vertices> <faces> <edges>' after the OFF header, found '" +
                      std::string(data[0].text.substr(0, 40)) + "'");
   const long long vertex_count = counts[0], face_count = counts[1];
   const std::string declared = "the counts on line " + std::to_string(counts_line) + " declare " +
@@ -514,7 +517,7 @@ TextScan prescan_off(std::string_view text, const std::string& source) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Binary formats: cheap explanations for when OpenMesh fails
+// STL and PLY: explanations for when OpenMesh fails, and guards for where it would crash
 
 std::uint32_t read_u32_le(std::string_view bytes, size_t offset) {
   std::uint32_t value = 0;
@@ -555,14 +558,37 @@ std::string diagnose_stl(std::string_view bytes) {
          " bytes (truncated or not an STL file)";
 }
 
+// PLY: the header is read strictly and the data walked before OpenMesh sees the file, because
+// OpenMesh's PLY reader crashes on some malformed headers (a property before any element) and
+// hangs on malformed ASCII data (its stream fails and it keeps reading uninitialised counts).
+struct PlyProperty {
+  std::string name;
+  bool list = false;
+  size_t size = 0;        // scalar size, or the list's item size
+  size_t count_size = 0;  // lists: size of the length prefix
+  bool integer = false;   // the scalar or item type is an integer type
+};
+
+struct PlyElement {
+  std::string name;
+  long long count = 0;
+  std::vector<PlyProperty> properties;
+};
+
 struct PlyHeader {
   std::string error;  // why the header is unusable, with its line; empty if it is well-formed
   std::string format;
+  std::vector<PlyElement> elements;
   size_t data_offset = 0;
+  int data_line = 0;  // line number of the first data line (ASCII)
   long long vertices = 0, faces = 0;
-  size_t min_data_bytes = 0;  // binary: the least the declared elements can take
 };
 
+bool ply_type_is_integer(std::string_view type) {
+  return type != "float" && type != "float32" && type != "double" && type != "float64";
+}
+
+// Size in bytes of a PLY scalar type; 0 if unknown.
 size_t ply_type_size(std::string_view type) {
   if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
   if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
@@ -572,14 +598,17 @@ size_t ply_type_size(std::string_view type) {
   return 0;
 }
 
-// Reads the header strictly: OpenMesh's PLY reader crashes on some malformed headers (a property
-// before any element), so it must only ever see well-formed ones.
+bool is_face_index_list(const PlyElement& element, const PlyProperty& property) {
+  return element.name == "face" && property.list &&
+         (property.name == "vertex_indices" || property.name == "vertex_index");
+}
+
 PlyHeader parse_ply_header(std::string_view bytes) {
   PlyHeader header;
   LineReader reader(bytes);
   std::string_view line;
   std::vector<std::string_view> tokens;
-  if (!reader.next(line) || line != "ply") {
+  if (!reader.next(line) || (line != "ply" && line != "PLY")) {
     header.error = "it does not start with the 'ply' magic line";
     return header;
   }
@@ -587,53 +616,83 @@ PlyHeader parse_ply_header(std::string_view bytes) {
     header.error = at_line(reader.number()) + what;
     return header;
   };
-  long long element_count = -1;  // -1: no element yet
-  std::string_view element;
-  bool vertex_xyz[3] = {false, false, false};
   while (reader.next(line)) {
     split_tokens(line, tokens);
     if (tokens.empty()) continue;
     const std::string_view keyword = tokens[0];
-    if (keyword == "comment" || keyword == "obj_info") continue;
+    // OpenMesh takes the three words after 'ply' as the format line, whatever they are.
+    if (header.format.empty() && keyword != "format") return bad("expected the 'format' line right after 'ply'");
+    if (keyword == "comment") continue;
+    if (keyword == "obj_info") {
+      // OpenMesh reads obj_info text word by word, as if each word were a keyword.
+      for (std::string_view word : tokens)
+        if (word == "element" || word == "property" || word == "end_header" || word == "comment")
+          return bad("OpenMesh misreads an obj_info line containing '" + std::string(word) + "'; delete the line");
+      continue;
+    }
     if (keyword == "end_header") {
       if (header.format.empty()) return bad("the header has no 'format' line");
-      if (!(vertex_xyz[0] && vertex_xyz[1] && vertex_xyz[2]))
-        return bad("the header declares no vertex element with x, y and z properties");
+      const PlyElement* vertex = nullptr;
+      const PlyElement* face = nullptr;
+      for (const PlyElement& element : header.elements) {
+        if (element.name == "vertex") vertex = &element;
+        if (element.name == "face") face = &element;
+      }
+      int axes = 0;
+      for (const PlyProperty& property : vertex ? vertex->properties : std::vector<PlyProperty>())
+        axes += !property.list && (property.name == "x" || property.name == "y" || property.name == "z");
+      if (axes != 3) return bad("the header declares no vertex element with x, y and z properties");
+      if (face && std::none_of(face->properties.begin(), face->properties.end(),
+                               [&](const PlyProperty& p) { return is_face_index_list(*face, p); }))
+        return bad("the face element has no 'vertex_indices' list");
       const size_t end = bytes.find('\n', size_t(line.data() - bytes.data()));
       header.data_offset = end == std::string_view::npos ? bytes.size() : end + 1;
+      header.data_line = reader.number() + 1;
       return header;
     }
     if (keyword == "format") {
-      if (tokens.size() != 3 || (tokens[1] != "ascii" && tokens[1] != "binary_little_endian" &&
-                                 tokens[1] != "binary_big_endian"))
+      double version = 0.0;
+      if (!header.format.empty() || tokens.size() != 3 ||
+          (tokens[1] != "ascii" && tokens[1] != "binary_little_endian" && tokens[1] != "binary_big_endian") ||
+          !parse_double(tokens[2], version) || version != 1.0)
         return bad("expected 'format ascii|binary_little_endian|binary_big_endian 1.0'");
       header.format = std::string(tokens[1]);
     } else if (keyword == "element") {
-      if (tokens.size() != 3 || !parse_integer(tokens[2], element_count) || element_count < 0 ||
-          element_count > INT_MAX)
+      PlyElement& element = header.elements.emplace_back();
+      if (tokens.size() != 3 || !parse_integer(tokens[2], element.count) || element.count < 0 ||
+          element.count > INT_MAX)
         return bad("expected 'element <name> <count>'");
-      element = tokens[1];
-      if (element == "vertex") header.vertices = element_count;
-      if (element == "face") header.faces = element_count;
+      element.name = std::string(tokens[1]);
+      if (element.name == "vertex") header.vertices = element.count;
+      if (element.name == "face") header.faces = element.count;
     } else if (keyword == "property") {
-      if (element_count < 0) return bad("a property before any element");
-      size_t record = 0;
+      if (header.elements.empty()) return bad("a property before any element");
+      PlyElement& element = header.elements.back();
+      PlyProperty property;
       if (tokens.size() == 5 && tokens[1] == "list") {
-        // A list holds at least its count; a face's vertex list at least 3 indices.
-        const size_t count_size = ply_type_size(tokens[2]), item_size = ply_type_size(tokens[3]);
-        if (count_size == 0 || item_size == 0) return bad("unknown list type");
-        record = count_size + (element == "face" ? 3 * item_size : 0);
+        property.list = true;
+        property.count_size = ply_type_size(tokens[2]);
+        property.size = ply_type_size(tokens[3]);
+        property.integer = ply_type_is_integer(tokens[3]);
+        property.name = std::string(tokens[4]);
+        if (property.count_size == 0 || property.size == 0) return bad("unknown list type");
+        if (tokens[2] != "uchar" && tokens[2] != "uint8" && tokens[2] != "uint16" && tokens[2] != "int")
+          return bad("OpenMesh reads list lengths of type uchar, uint8, uint16 or int only, not '" +
+                     std::string(tokens[2].substr(0, 40)) + "'");
       } else if (tokens.size() == 3 && tokens[1] != "list") {
-        record = ply_type_size(tokens[1]);
-        if (record == 0) return bad("unknown property type '" + std::string(tokens[1]) + "'");
-        constexpr std::string_view axes[3] = {"x", "y", "z"};
-        if (element == "vertex")
-          for (int axis = 0; axis < 3; ++axis)
-            if (tokens[2] == axes[axis]) vertex_xyz[axis] = true;
+        property.size = ply_type_size(tokens[1]);
+        property.integer = ply_type_is_integer(tokens[1]);
+        property.name = std::string(tokens[2]);
+        if (property.size == 0) return bad("unknown property type '" + std::string(tokens[1].substr(0, 40)) + "'");
       } else {
         return bad("expected 'property <type> <name>' or 'property list <count type> <item type> <name>'");
       }
-      header.min_data_bytes += record * size_t(element_count);
+      // OpenMesh skips unknown properties one value at a time, so it can only read the lists it knows.
+      if (property.list && !is_face_index_list(element, property) &&
+          !(element.name == "face" && property.name == "texcoord"))
+        return bad("OpenMesh cannot read the list property '" + property.name + "' of element '" + element.name +
+                   "'; export without it");
+      element.properties.push_back(std::move(property));
     } else {
       return bad("'" + std::string(keyword.substr(0, 40)) + "' is not a PLY header keyword");
     }
@@ -642,17 +701,122 @@ PlyHeader parse_ply_header(std::string_view bytes) {
   return header;
 }
 
+// Whitespace-separated tokens of a text, with the line each is on.
+class TokenReader {
+public:
+  TokenReader(std::string_view text, int first_line) : lines_(text), first_line_(first_line) {}
+  bool next(std::string_view& token) {
+    while (index_ >= tokens_.size()) {
+      std::string_view line;
+      if (!lines_.next(line)) return false;
+      split_tokens(line, tokens_);
+      index_ = 0;
+    }
+    token = tokens_[index_++];
+    return true;
+  }
+  int line() const { return first_line_ + lines_.number() - 1; }
+
+private:
+  LineReader lines_;
+  int first_line_;
+  std::vector<std::string_view> tokens_;
+  size_t index_ = 0;
+};
+
+// Walks the ASCII data as OpenMesh will, naming the line of the first value it could not read.
+void prescan_ply_ascii(std::string_view bytes, const PlyHeader& header, const std::string& source) {
+  TokenReader reader(bytes.substr(header.data_offset), header.data_line);
+  NonFinite nonfinite;
+  std::string_view token;
+  for (const PlyElement& element : header.elements) {
+    for (long long record = 0; record < element.count; ++record) {
+      bool counted = false;
+      for (const PlyProperty& property : element.properties) {
+        auto next = [&] {
+          if (!reader.next(token))
+            fail(source, "the PLY data ends early, in " + element.name + " " + std::to_string(record) +
+                             " (counting from 0) of the " + std::to_string(element.count) +
+                             " the header declares (truncated file?)");
+        };
+        long long length = 1;
+        if (property.list) {
+          next();
+          if (!parse_integer(token, length) || length < 0)
+            fail(source, at_line(reader.line()) + "expected the length of the list '" + property.name + "' of " +
+                             element.name + " " + std::to_string(record) + ", found '" +
+                             std::string(token.substr(0, 40)) + "'");
+        }
+        for (long long i = 0; i < length; ++i) {
+          next();
+          double value = 0.0;
+          long long index = 0;
+          const bool ok = property.integer ? parse_integer(token, index) : parse_double(token, value);
+          if (!ok)
+            fail(source, at_line(reader.line()) + "'" + std::string(token.substr(0, 40)) + "' is not " +
+                             (property.integer ? "an integer" : "a number") + " (property '" + property.name +
+                             "' of " + element.name + " " + std::to_string(record) + ")");
+          if (is_face_index_list(element, property) && (index < 0 || index >= header.vertices))
+            fail(source, at_line(reader.line()) + "face " + std::to_string(record) +
+                             " (counting from 0) refers to vertex " +
+                             std::to_string(index) + ", but the header declares " +
+                             count_of(header.vertices, "vertex", "vertices") + " (PLY indices count from 0)");
+          if (element.name == "vertex" && !property.integer &&
+              (property.name == "x" || property.name == "y" || property.name == "z")) {
+            check_single_precision(source, reader.line(), token, value);  // OpenMesh reads floats here
+            nonfinite.check(token, value, reader.line(), record, counted);
+          }
+        }
+      }
+    }
+    if (element.name == "face") break;  // OpenMesh stops reading after the faces
+  }
+  if (nonfinite.count > 0)
+    fail(source, at_line(nonfinite.first_line) + "vertex " + std::to_string(nonfinite.first_vertex) +
+                     " (counting from 0) has a non-finite coordinate '" + nonfinite.first_token + "'; " +
+                     count_of(nonfinite.count, "vertex has", "vertices have") +
+                     " NaN or infinite coordinates: fix them in the modelling tool and export again");
+}
+
+// Walks the binary records, so that a truncated file or a corrupt list length is reported
+// instead of read past.
+std::string check_ply_binary(std::string_view bytes, const PlyHeader& header) {
+  const bool big_endian = header.format == "binary_big_endian";
+  auto read_unsigned = [&](size_t at, size_t size) {
+    std::uint64_t value = 0;
+    for (size_t i = 0; i < size; ++i)
+      value |= std::uint64_t(static_cast<unsigned char>(bytes[at + (big_endian ? size - 1 - i : i)])) << (8 * i);
+    return value;
+  };
+  size_t at = header.data_offset;
+  for (const PlyElement& element : header.elements) {
+    for (long long record = 0; record < element.count; ++record) {
+      for (const PlyProperty& property : element.properties) {
+        std::uint64_t length = 1;
+        if (property.list) {
+          if (bytes.size() - at < property.count_size) at = bytes.size() + 1;
+          else {
+            length = read_unsigned(at, property.count_size);
+            at += property.count_size;
+          }
+        }
+        if (at > bytes.size() || (bytes.size() - at) / property.size < length)
+          return "binary PLY size mismatch: the data ends inside " + element.name + " " + std::to_string(record) +
+                 " (counting from 0) of the " + std::to_string(element.count) + " the header declares; the file has " +
+                 std::to_string(bytes.size()) + " bytes (truncated file?)";
+        at += property.size * length;
+      }
+    }
+    if (element.name == "face") break;  // OpenMesh stops reading after the faces
+  }
+  return {};
+}
+
 std::string diagnose_ply(std::string_view bytes) {
   const PlyHeader header = parse_ply_header(bytes);
   if (!header.error.empty()) return header.error;
-  const size_t data = bytes.size() - header.data_offset;
-  const std::string declared = "the header declares " + count_of(header.vertices, "vertex", "vertices") + " and " +
-                               count_of(header.faces, "face", "faces");
-  if (header.format == "ascii") return declared + "; the ASCII data does not match them (truncated file?)";
-  if (data < header.min_data_bytes)
-    return "binary PLY size mismatch: " + declared + ", which take at least " + std::to_string(header.min_data_bytes) +
-           " bytes after the header, but only " + std::to_string(data) + " bytes follow (truncated file?)";
-  return declared + "; the binary data does not match them";
+  return "the header declares " + count_of(header.vertices, "vertex", "vertices") + " and " +
+         count_of(header.faces, "face", "faces") + ", but the data does not match them";
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -808,21 +972,62 @@ std::string edge_between(int a, int b, const std::vector<glm::dvec3>& positions)
          format_point(positions[a]) + " - " + format_point(positions[b]);
 }
 
-LoadedSurface check_and_repair(std::vector<glm::dvec3> positions, const std::vector<std::vector<int>>& polygons,
-                               const std::string& source, int collapsed_faces) {
-  LoadedSurface loaded;
-  const long long vertex_count = static_cast<long long>(positions.size());
+// The triangles' sides grouped by undirected edge (sorting, not hashing: faster at this size).
+struct Edges {
+  std::vector<Side> sides;                        // sorted by key
+  std::vector<std::pair<size_t, size_t>> ranges;  // per edge, its [begin, end) in `sides`
+};
 
-  if (polygons.empty() && collapsed_faces == 0)
-    fail(source, "contains no faces (" + count_of(vertex_count, "vertex", "vertices") +
-                     "); Paver needs a surface, not a point cloud: export the faces too");
+Edges collect_edges(const std::vector<glm::ivec3>& triangles) {
+  Edges edges;
+  edges.sides.reserve(triangles.size() * 3);
+  for (int f = 0; f < int(triangles.size()); ++f)
+    for (int c = 0; c < 3; ++c) edges.sides.push_back({edge_key(triangles[f][c], triangles[f][(c + 1) % 3]), f, c});
+  std::sort(edges.sides.begin(), edges.sides.end(), [](const Side& a, const Side& b) {
+    return a.key != b.key ? a.key < b.key : a.triangle != b.triangle ? a.triangle < b.triangle : a.corner < b.corner;
+  });
+  edges.ranges.reserve(edges.sides.size() / 2 + 1);
+  for (size_t begin = 0; begin < edges.sides.size();) {
+    size_t end = begin + 1;
+    while (end < edges.sides.size() && edges.sides[end].key == edges.sides[begin].key) ++end;
+    edges.ranges.emplace_back(begin, end);
+    begin = end;
+  }
+  return edges;
+}
+
+// Where each face's sides lead: the face across side c of face f, and whether that face runs the
+// shared edge in the same direction (an orientation conflict).
+struct Adjacency {
+  std::vector<int> neighbour;         // #F*3, -1 on the boundary
+  std::vector<char> same_direction;   // #F*3
+};
+
+Adjacency face_adjacency(const std::vector<glm::ivec3>& triangles, const Edges& edges) {
+  Adjacency adjacency{std::vector<int>(triangles.size() * 3, -1), std::vector<char>(triangles.size() * 3, 0)};
+  for (const auto& [begin, end] : edges.ranges) {
+    if (end - begin != 2) continue;
+    const Side& s = edges.sides[begin];
+    const Side& r = edges.sides[begin + 1];
+    const bool same = triangles[r.triangle][r.corner] == triangles[s.triangle][s.corner];
+    adjacency.neighbour[s.triangle * 3 + s.corner] = r.triangle;
+    adjacency.neighbour[r.triangle * 3 + r.corner] = s.triangle;
+    adjacency.same_direction[s.triangle * 3 + s.corner] = adjacency.same_direction[r.triangle * 3 + r.corner] = same;
+  }
+  return adjacency;
+}
+
+// `polygons` must index `positions`, and every position be finite: otherwise nothing else is
+// meaningful.
+void check_indices_and_coordinates(const std::vector<glm::dvec3>& positions,
+                                   const std::vector<std::vector<int>>& polygons, const std::string& source) {
+  const long long vertex_count = static_cast<long long>(positions.size());
   for (size_t f = 0; f < polygons.size(); ++f)
     for (int index : polygons[f])
       if (index < 0 || index >= vertex_count)
         fail(source, "face " + std::to_string(f) + " (counting from 0) refers to vertex " + std::to_string(index) +
                          " but there are only " + count_of(vertex_count, "vertex", "vertices") +
                          "; the file is corrupt: export it again");
-
   int nonfinite = 0, first_nonfinite = -1;
   for (size_t v = 0; v < positions.size(); ++v) {
     const glm::dvec3& p = positions[v];
@@ -834,8 +1039,10 @@ LoadedSurface check_and_repair(std::vector<glm::dvec3> positions, const std::vec
                      format_point(positions[first_nonfinite]) + "; " +
                      count_of(nonfinite, "vertex has", "vertices have") +
                      " NaN or infinite coordinates: fix them in the modelling tool and export again");
+}
 
-  // Degenerate faces, relative to the size of the referenced geometry.
+// Below this area a face counts as degenerate: relative to the size of the referenced geometry.
+double degenerate_area(const std::vector<glm::dvec3>& positions, const std::vector<std::vector<int>>& polygons) {
   glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
   for (const std::vector<int>& polygon : polygons)
     for (int index : polygon) {
@@ -843,152 +1050,114 @@ LoadedSurface check_and_repair(std::vector<glm::dvec3> positions, const std::vec
       hi = glm::max(hi, positions[index]);
     }
   const double diagonal = polygons.empty() ? 0.0 : glm::length(hi - lo);
-  const double min_area = 1e-12 * diagonal * diagonal;
-  Triangulation triangulation = triangulate(positions, polygons, min_area);
-  std::vector<glm::ivec3>& all_triangles = triangulation.triangles;
-  const int degenerate = triangulation.degenerate + collapsed_faces;
-  loaded.dropped_degenerate_faces = degenerate;
-  if (all_triangles.empty())
-    fail(source, "contains no faces after dropping " + count_of(degenerate, "degenerate face", "degenerate faces") +
-                     " (zero area or repeated vertices); check the export");
-  if (degenerate > 0)
-    loaded.warnings.push_back(source + ": dropped " + count_of(degenerate, "degenerate face", "degenerate faces") +
-                              " (zero area or repeated vertices)");
+  return 1e-12 * diagonal * diagonal;
+}
 
-  std::vector<char> referenced(positions.size(), 0);
-  for (const glm::ivec3& t : all_triangles) referenced[t.x] = referenced[t.y] = referenced[t.z] = 1;
-  const long long unreferenced = std::count(referenced.begin(), referenced.end(), 0);
-  if (unreferenced > 0)
-    loaded.warnings.push_back(source + ": dropped " +
-                              count_of(unreferenced, "unreferenced vertex", "unreferenced vertices") +
-                              " (not used by any face)");
+struct Components {
+  int count = 0;
+  long long dropped_faces = 0;
+};
 
-  // Components through shared vertices; keep the largest (see the comment at the top).
-  DisjointSets vertex_sets(positions.size());
-  for (const glm::ivec3& t : all_triangles) {
-    vertex_sets.unite(t.x, t.y);
-    vertex_sets.unite(t.x, t.z);
+// Keeps the triangles of the largest component (through shared vertices; see the top comment).
+Components keep_largest_component(std::vector<glm::ivec3>& triangles, size_t vertex_count) {
+  DisjointSets sets(vertex_count);
+  for (const glm::ivec3& t : triangles) {
+    sets.unite(t.x, t.y);
+    sets.unite(t.x, t.z);
   }
-  std::vector<int> component_faces(positions.size(), 0);
-  for (const glm::ivec3& t : all_triangles) ++component_faces[vertex_sets.find(t.x)];
-  int components = 0, largest = -1;
-  for (size_t root = 0; root < component_faces.size(); ++root) {
-    if (component_faces[root] == 0) continue;
-    ++components;
-    if (largest < 0 || component_faces[root] > component_faces[largest]) largest = int(root);
+  std::vector<int> faces(vertex_count, 0);  // per root
+  for (const glm::ivec3& t : triangles) ++faces[sets.find(t.x)];
+  Components components;
+  int largest = -1;
+  for (size_t root = 0; root < vertex_count; ++root) {
+    if (faces[root] == 0) continue;
+    ++components.count;
+    if (largest < 0 || faces[root] > faces[largest]) largest = int(root);
   }
-  std::vector<glm::ivec3> triangles;
-  if (components > 1) {
-    triangles.reserve(component_faces[largest]);
-    for (const glm::ivec3& t : all_triangles)
-      if (vertex_sets.find(t.x) == largest) triangles.push_back(t);
-    const long long dropped = static_cast<long long>(all_triangles.size() - triangles.size());
-    loaded.dropped_components = components - 1;
-    loaded.warnings.push_back(source + ": the surface has " + std::to_string(components) +
-                              " connected components; kept the largest (" +
-                              count_of(long(triangles.size()), "face", "faces") + ") and dropped the other " +
-                              std::to_string(components - 1) + " (" + count_of(dropped, "face", "faces") + ")");
-  } else {
-    triangles = std::move(all_triangles);
+  if (components.count > 1) {
+    const size_t before = triangles.size();
+    std::erase_if(triangles, [&](const glm::ivec3& t) { return sets.find(t.x) != largest; });
+    components.dropped_faces = static_cast<long long>(before - triangles.size());
   }
-  const std::string kept_note =
-      components > 1 ? " (in its largest connected component, the one Paver keeps; the file has " +
-                           std::to_string(components) + ")"
-                     : "";
-  const int face_count = int(triangles.size());
+  return components;
+}
 
-  // Edges: group the triangle sides by undirected edge.
-  std::vector<Side> sides;
-  sides.reserve(size_t(face_count) * 3);
-  for (int f = 0; f < face_count; ++f)
-    for (int c = 0; c < 3; ++c) sides.push_back({edge_key(triangles[f][c], triangles[f][(c + 1) % 3]), f, c});
-  std::sort(sides.begin(), sides.end(), [](const Side& a, const Side& b) {
-    return a.key != b.key ? a.key < b.key : a.triangle != b.triangle ? a.triangle < b.triangle : a.corner < b.corner;
-  });
-  std::vector<std::pair<size_t, size_t>> edges;  // [begin, end) ranges of `sides`
-  edges.reserve(sides.size() / 2 + 1);
-  for (size_t begin = 0; begin < sides.size();) {
-    size_t end = begin + 1;
-    while (end < sides.size() && sides[end].key == sides[begin].key) ++end;
-    edges.emplace_back(begin, end);
-    begin = end;
-  }
-
-  int nonmanifold_edges = 0;
+// Every edge on at most 2 faces, and the faces around every vertex one fan.
+void check_manifold(const std::vector<glm::ivec3>& triangles, const Edges& edges,
+                    const std::vector<glm::dvec3>& positions, const std::string& source, const std::string& note) {
+  int bad_edges = 0;
   size_t example_edge = 0;
-  for (size_t e = 0; e < edges.size(); ++e) {
-    if (edges[e].second - edges[e].first <= 2) continue;
-    if (nonmanifold_edges++ == 0) example_edge = e;
+  for (size_t e = 0; e < edges.ranges.size(); ++e) {
+    if (edges.ranges[e].second - edges.ranges[e].first <= 2) continue;
+    if (bad_edges++ == 0) example_edge = e;
   }
-  if (nonmanifold_edges > 0) {
-    const Side& side = sides[edges[example_edge].first];
+  if (bad_edges > 0) {
+    const auto [begin, end] = edges.ranges[example_edge];
+    const Side& side = edges.sides[begin];
     const glm::ivec3& t = triangles[side.triangle];
-    fail(source, "has " + count_of(nonmanifold_edges, "non-manifold edge", "non-manifold edges") +
+    fail(source, "has " + count_of(bad_edges, "non-manifold edge", "non-manifold edges") +
                      " (shared by more than 2 faces), e.g. " +
                      edge_between(t[side.corner], t[(side.corner + 1) % 3], positions) + ", shared by " +
-                     std::to_string(edges[example_edge].second - edges[example_edge].first) +
-                     " faces; Paver needs a manifold surface: remove the extra (duplicated or fin) faces" + kept_note);
+                     std::to_string(end - begin) +
+                     " faces; Paver needs a manifold surface: remove the extra (duplicated or fin) faces" + note);
   }
 
-  // Non-manifold vertices: corners around a vertex joined across shared edges form its fans.
-  std::vector<int> neighbour(size_t(face_count) * 3, -1);  // across side c of face f
-  std::vector<char> same_direction(size_t(face_count) * 3, 0);
-  DisjointSets corner_sets(size_t(face_count) * 3);
-  for (const auto& [begin, end] : edges) {
+  // Corners of the same vertex joined across shared edges form that vertex's fans.
+  DisjointSets corners(triangles.size() * 3);
+  for (const auto& [begin, end] : edges.ranges) {
     if (end - begin != 2) continue;
-    const Side& s = sides[begin];
-    const Side& r = sides[begin + 1];
+    const Side& s = edges.sides[begin];
+    const Side& r = edges.sides[begin + 1];
     const glm::ivec3& ts = triangles[s.triangle];
     const glm::ivec3& tr = triangles[r.triangle];
-    const int a = ts[s.corner], b = ts[(s.corner + 1) % 3];
-    corner_sets.unite(s.triangle * 3 + s.corner, r.triangle * 3 + corner_of(tr, a));
-    corner_sets.unite(s.triangle * 3 + (s.corner + 1) % 3, r.triangle * 3 + corner_of(tr, b));
-    const bool same = tr[r.corner] == a;
-    neighbour[s.triangle * 3 + s.corner] = r.triangle;
-    neighbour[r.triangle * 3 + r.corner] = s.triangle;
-    same_direction[s.triangle * 3 + s.corner] = same_direction[r.triangle * 3 + r.corner] = same;
+    for (int vertex : {ts[s.corner], ts[(s.corner + 1) % 3]})
+      corners.unite(s.triangle * 3 + corner_of(ts, vertex), r.triangle * 3 + corner_of(tr, vertex));
   }
   std::vector<int> fans(positions.size(), 0);
-  for (int f = 0; f < face_count; ++f)
-    for (int c = 0; c < 3; ++c)
-      if (corner_sets.find(f * 3 + c) == f * 3 + c) ++fans[triangles[f][c]];
-  int nonmanifold_vertices = 0, example_vertex = -1;
+  for (int corner = 0; corner < int(triangles.size() * 3); ++corner)
+    if (corners.find(corner) == corner) ++fans[triangles[corner / 3][corner % 3]];
+  int bad_vertices = 0, example_vertex = -1;
   for (size_t v = 0; v < fans.size(); ++v) {
     if (fans[v] <= 1) continue;
-    if (nonmanifold_vertices++ == 0) example_vertex = int(v);
+    if (bad_vertices++ == 0) example_vertex = int(v);
   }
-  if (nonmanifold_vertices > 0)
-    fail(source, "has " + count_of(nonmanifold_vertices, "non-manifold vertex", "non-manifold vertices") +
-                     ", e.g. vertex " + std::to_string(example_vertex) + " (counting from 0) at " +
+  if (bad_vertices > 0)
+    fail(source, "has " + count_of(bad_vertices, "non-manifold vertex", "non-manifold vertices") + ", e.g. vertex " +
+                     std::to_string(example_vertex) + " (counting from 0) at " +
                      format_point(positions[example_vertex]) + ", where " + std::to_string(fans[example_vertex]) +
                      " separate fans of faces meet at a single point (like two cones touching at their tips, or a "
                      "bowtie); Paver needs a manifold surface: pull the pieces apart or split the vertex" +
-                     kept_note);
+                     note);
+}
 
-  // Orientation: spread each face's orientation to its neighbours; keep the majority's.
-  std::vector<signed char> flip(size_t(face_count), -1);
+// Flips faces so that neighbours run their shared edge in opposite directions, keeping the
+// orientation most faces already have. Returns how many faces were flipped.
+long long orient_consistently(std::vector<glm::ivec3>& triangles, const Edges& edges,
+                              const std::vector<glm::dvec3>& positions, const std::string& source,
+                              const std::string& note) {
+  const Adjacency adjacency = face_adjacency(triangles, edges);
+  const int face_count = int(triangles.size());
+  std::vector<signed char> flip(size_t(face_count), -1);  // -1: not reached yet
   std::vector<int> queue;
   queue.reserve(size_t(face_count));
   for (int seed = 0; seed < face_count; ++seed) {
     if (flip[seed] >= 0) continue;
     flip[seed] = 0;
-    queue.clear();
-    queue.push_back(seed);
+    queue.assign(1, seed);
     for (size_t head = 0; head < queue.size(); ++head) {
       const int f = queue[head];
       for (int c = 0; c < 3; ++c) {
-        const int g = neighbour[f * 3 + c];
+        const int g = adjacency.neighbour[f * 3 + c];
         if (g < 0) continue;
-        // Neighbours must run their shared edge in opposite directions.
-        const signed char wanted = static_cast<signed char>(flip[f] ^ same_direction[f * 3 + c]);
+        const signed char wanted = static_cast<signed char>(flip[f] ^ adjacency.same_direction[f * 3 + c]);
         if (flip[g] < 0) {
           flip[g] = wanted;
           queue.push_back(g);
         } else if (flip[g] != wanted) {
-          fail(source, "is not orientable (like a Moebius strip): its faces cannot be oriented consistently, "
-                       "as seen at " +
+          fail(source, "is not orientable (like a Moebius strip): its faces cannot be oriented consistently, as "
+                       "seen at " +
                            edge_between(triangles[f][c], triangles[f][(c + 1) % 3], positions) +
-                           "; Paver needs a two-sided surface" + kept_note);
+                           "; Paver needs a two-sided surface" + note);
         }
       }
     }
@@ -998,37 +1167,37 @@ LoadedSurface check_and_repair(std::vector<glm::dvec3> positions, const std::vec
   if (invert) flipped = face_count - flipped;
   for (int f = 0; f < face_count; ++f)
     if ((flip[f] == 1) != invert) std::swap(triangles[f].y, triangles[f].z);
-  if (flipped > 0)
-    loaded.warnings.push_back(source + ": reoriented " + count_of(flipped, "face", "faces") +
-                              " to match their neighbours");
+  return flipped;
+}
 
-  // Boundary loops, following the direction of the boundary sides.
-  std::vector<int> boundary_next(positions.size(), -1);
-  int boundary_edges = 0, first_boundary = -1;
-  for (const auto& [begin, end] : edges) {
+// The one boundary loop of consistently oriented, manifold triangles, following the direction of
+// its sides and starting at its lowest vertex.
+std::vector<int> single_boundary_loop(const std::vector<glm::ivec3>& triangles, const Edges& edges,
+                                      size_t vertex_count, const std::string& source, const std::string& note) {
+  std::vector<int> next(vertex_count, -1);
+  int first = -1;
+  for (const auto& [begin, end] : edges.ranges) {
     if (end - begin != 1) continue;
-    // Faces may have been flipped since `sides` was built: read the direction off the face.
-    const glm::ivec3& t = triangles[sides[begin].triangle];
+    // The face may have been flipped since `edges` was collected: read the direction off the face.
+    const glm::ivec3& t = triangles[edges.sides[begin].triangle];
     int c = 0;
-    while (edge_key(t[c], t[(c + 1) % 3]) != sides[begin].key) ++c;
-    const int from = t[c], to = t[(c + 1) % 3];
-    boundary_next[from] = to;
-    ++boundary_edges;
-    if (first_boundary < 0 || from < first_boundary) first_boundary = from;
+    while (edge_key(t[c], t[(c + 1) % 3]) != edges.sides[begin].key) ++c;
+    next[t[c]] = t[(c + 1) % 3];
+    if (first < 0 || t[c] < first) first = t[c];
   }
-  if (boundary_edges == 0)
+  if (first < 0)
     fail(source, "is a closed surface (it has no boundary edges); Paver needs an open surface with one boundary "
                  "loop; cut it open first" +
-                     kept_note);
-  std::vector<char> on_loop(positions.size(), 0);
+                     note);
+  std::vector<char> visited(vertex_count, 0);
   std::vector<int> loop_sizes;
   std::vector<int> loop;
-  for (int start = 0; start < int(positions.size()); ++start) {
-    if (boundary_next[start] < 0 || on_loop[start]) continue;
+  for (int start = 0; start < int(vertex_count); ++start) {
+    if (next[start] < 0 || visited[start]) continue;
     int size = 0;
-    for (int v = start; v >= 0 && !on_loop[v]; v = boundary_next[v]) {
-      on_loop[v] = 1;
-      if (start == first_boundary) loop.push_back(v);
+    for (int v = start; v >= 0 && !visited[v]; v = next[v]) {
+      visited[v] = 1;
+      if (start == first) loop.push_back(v);
       ++size;
     }
     loop_sizes.push_back(size);
@@ -1042,29 +1211,77 @@ LoadedSurface check_and_repair(std::vector<glm::dvec3> positions, const std::vec
     fail(source, "has " + std::to_string(loop_sizes.size()) + " boundary loops (holes) of " + sizes +
                      " edges; Paver needs exactly one: fill the holes or cut the surface so that its boundary is a "
                      "single loop" +
-                     kept_note);
+                     note);
   }
+  return loop;
+}
 
-  // One boundary loop on a connected orientable surface: a disk exactly when V - E + F = 1.
+LoadedSurface check_and_repair(std::vector<glm::dvec3> positions, const std::vector<std::vector<int>>& polygons,
+                               const std::string& source, int collapsed_faces) {
+  LoadedSurface loaded;
+  if (polygons.empty() && collapsed_faces == 0)
+    fail(source, "contains no faces (" + count_of(static_cast<long long>(positions.size()), "vertex", "vertices") +
+                     "); Paver needs a surface, not a point cloud: export the faces too");
+  check_indices_and_coordinates(positions, polygons, source);
+
+  Triangulation triangulation = triangulate(positions, polygons, degenerate_area(positions, polygons));
+  std::vector<glm::ivec3>& triangles = triangulation.triangles;
+  loaded.dropped_degenerate_faces = triangulation.degenerate + collapsed_faces;
+  const std::string degenerate = count_of(loaded.dropped_degenerate_faces, "degenerate face", "degenerate faces");
+  if (triangles.empty())
+    fail(source,
+         "contains no faces after dropping " + degenerate + " (zero area or repeated vertices); check the export");
+  if (loaded.dropped_degenerate_faces > 0)
+    loaded.warnings.push_back(source + ": dropped " + degenerate + " (zero area or repeated vertices)");
+
   std::vector<char> used(positions.size(), 0);
   for (const glm::ivec3& t : triangles) used[t.x] = used[t.y] = used[t.z] = 1;
-  long long used_vertices = 0;
-  std::vector<int> new_index(positions.size(), -1);
-  for (size_t v = 0; v < positions.size(); ++v)
-    if (used[v]) new_index[v] = int(used_vertices++);
-  const long long euler = used_vertices - static_cast<long long>(edges.size()) + face_count;
-  if (euler != 1) {
-    const long long genus = (1 - euler) / 2;
-    fail(source, "is not a topological disk: it has one boundary loop but " + count_of(genus, "handle", "handles") +
-                     " (V - E + F = " + std::to_string(euler) +
-                     ", a disk has 1); Paver needs a disk-like surface: cut through the handles or fill them" +
-                     kept_note);
+  const long long unreferenced = std::count(used.begin(), used.end(), 0);
+  if (unreferenced > 0)
+    loaded.warnings.push_back(source + ": dropped " +
+                              count_of(unreferenced, "unreferenced vertex", "unreferenced vertices") +
+                              " (not used by any face)");
+
+  const Components components = keep_largest_component(triangles, positions.size());
+  std::string note;  // appended to topology errors when other components were dropped
+  if (components.count > 1) {
+    loaded.dropped_components = components.count - 1;
+    loaded.warnings.push_back(source + ": the surface has " + std::to_string(components.count) +
+                              " connected components; kept the largest (" +
+                              count_of(static_cast<long long>(triangles.size()), "face", "faces") +
+                              ") and dropped the other " + std::to_string(components.count - 1) + " (" +
+                              count_of(components.dropped_faces, "face", "faces") + ")");
+    note = " (in its largest connected component, the one Paver keeps; the file has " +
+           std::to_string(components.count) + ")";
   }
 
+  const Edges edges = collect_edges(triangles);
+  check_manifold(triangles, edges, positions, source, note);
+  const long long flipped = orient_consistently(triangles, edges, positions, source, note);
+  if (flipped > 0)
+    loaded.warnings.push_back(source + ": reoriented " + count_of(flipped, "face", "faces") +
+                              " to match their neighbours");
+  const std::vector<int> loop = single_boundary_loop(triangles, edges, positions.size(), source, note);
+
+  // Compact the vertices to those the kept faces use.
+  std::fill(used.begin(), used.end(), 0);
+  for (const glm::ivec3& t : triangles) used[t.x] = used[t.y] = used[t.z] = 1;
+  std::vector<int> new_index(positions.size(), -1);
   SurfaceMesh& mesh = loaded.mesh;
-  mesh.positions.resize(size_t(used_vertices));
   for (size_t v = 0; v < positions.size(); ++v)
-    if (new_index[v] >= 0) mesh.positions[new_index[v]] = positions[v];
+    if (used[v]) {
+      new_index[v] = int(mesh.positions.size());
+      mesh.positions.push_back(positions[v]);
+    }
+
+  // One boundary loop on a connected, orientable surface: a disk exactly when V - E + F = 1.
+  const long long euler = static_cast<long long>(mesh.positions.size()) -
+                          static_cast<long long>(edges.ranges.size()) + static_cast<long long>(triangles.size());
+  if (euler != 1)
+    fail(source, "is not a topological disk: it has one boundary loop but " +
+                     count_of((1 - euler) / 2, "handle", "handles") + " (V - E + F = " + std::to_string(euler) +
+                     ", a disk has 1); Paver needs a disk-like surface: cut through the handles or fill them" + note);
+
   mesh.triangles.reserve(triangles.size());
   for (const glm::ivec3& t : triangles) mesh.triangles.emplace_back(new_index[t.x], new_index[t.y], new_index[t.z]);
   mesh.boundary_loop.reserve(loop.size());
@@ -1107,6 +1324,11 @@ LoadedSurface load_surface(const std::filesystem::path& path) {
     if (header.faces == 0)
       fail(source, "contains no faces (the PLY header declares " + count_of(header.vertices, "vertex", "vertices") +
                        " and no faces); Paver needs a surface, not a point cloud: export the faces too");
+    if (header.format == "ascii") {
+      prescan_ply_ascii(bytes, header, source);
+    } else if (const std::string error = check_ply_binary(bytes, header); !error.empty()) {
+      fail(source, "OpenMesh could not parse it as PLY: " + error);
+    }
   }
   int collapsed_faces = scan.collapsed_faces;
 
@@ -1117,7 +1339,8 @@ LoadedSurface load_surface(const std::filesystem::path& path) {
     OpenMesh::IO::Options options;  // positions and faces only
     read = OpenMesh::IO::IOManager().read(source, soup, options);
   }
-  const std::string format = extension == ".obj" ? "OBJ" : extension == ".off" ? "OFF" : extension == ".ply" ? "PLY" : "STL";
+  std::string format = extension.substr(1);
+  for (char& c : format) c = char(std::toupper(static_cast<unsigned char>(c)));
   if (!read) {
     std::string what = "the file looked well-formed, so this is unexpected; try exporting it again";
     if (extension == ".ply") what = diagnose_ply(bytes);
@@ -1133,12 +1356,14 @@ LoadedSurface load_surface(const std::filesystem::path& path) {
                      count_of(scan.vertices, "vertex", "vertices") + " and " + count_of(scan.faces, "face", "faces") +
                      "; try exporting it again");
   if (extension == ".stl") {
-    if (soup.polygons.empty() && (!stl_is_binary(bytes) || stl_facet_count(bytes) == 0))
-      fail(source, "OpenMesh could not parse it as STL: " +
-                       (stl_is_binary(bytes) ? std::string("the binary STL declares 0 triangles, so it contains no faces")
-                                             : diagnose_stl(bytes)));
+    const long long facets = stl_facet_count(bytes);
+    if (soup.positions.empty() && facets == 0)
+      fail(source, starts_with_solid(bytes) || stl_is_binary(bytes)
+                       ? "contains no faces (the STL file has no triangles)"
+                       : "OpenMesh could not parse it as STL: " + diagnose_stl(bytes));
+    if (soup.positions.empty()) fail(source, "OpenMesh could not parse it as STL: " + diagnose_stl(bytes));
     // OpenMesh merges equal positions and drops triangles left with a repeated vertex.
-    collapsed_faces = int(std::max(0LL, stl_facet_count(bytes) - static_cast<long long>(soup.polygons.size())));
+    collapsed_faces = int(std::max(0LL, facets - static_cast<long long>(soup.polygons.size())));
   }
   if (extension == ".ply" && soup.polygons.empty())
     fail(source, "OpenMesh could not parse it as PLY: it found no faces; " + diagnose_ply(bytes));

@@ -1,6 +1,8 @@
 #include "paver/pavement.h"
 
+#include "paver/boundary_postprocess.h"
 #include "paver/default_spacing.h"
+#include "paver/design_overlap.h"
 #include "paver/element_placement.h"
 #include "paver/input_error.h"
 
@@ -29,7 +31,19 @@ UnitCell make_design_cell(const PatternDesign& pattern) {
   return cell;
 }
 
-Pavement make_pavement(const SurfaceMap& map, Design design) {
+PlacedElements place_all_elements(const SurfaceMap& map, const Pattern& pattern, const std::vector<glm::dvec2>& points,
+                                  const Design& design, bool postprocess, const std::vector<std::uint8_t>* retired) {
+  PlacedElements placed;
+  placed.elements = place_elements(map, pattern, points, design.elements, design.pattern.spacing, retired);
+  if (postprocess) {
+    placed.filled = fill_boundary_edges(map, pattern, points, design.elements, design.pattern.spacing, placed.elements,
+                                        retired);
+    placed.eliminated = eliminate_boundary_elements(map, placed.elements);
+  }
+  return placed;
+}
+
+Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptions& options) {
   Pavement pavement;
   auto t0 = Clock::now();
   if (design.pattern.spacing <= 0)
@@ -41,13 +55,56 @@ Pavement make_pavement(const SurfaceMap& map, Design design) {
         throw InputError("elements.edge[" + std::to_string(s) + "].cell_edges: edge " + std::to_string(e) +
                          " does not exist; the unit cell has edges 0.." +
                          std::to_string(pavement.cell.edges.size() - 1));
+  if (!design.elements.allow_overlap)
+    check_design_overlaps(pavement.cell, design.elements, design.pattern.spacing);
   pavement.pattern = build_pattern(map, pavement.cell, design.placement);
   pavement.points = pavement.pattern.points;
   pavement.timings.emplace_back("pattern", ms_since(t0));
 
   t0 = Clock::now();
-  pavement.elements = place_elements(map, pavement.pattern, pavement.points, design.elements, design.pattern.spacing);
-  pavement.timings.emplace_back("elements", ms_since(t0));
+  const PlacedElements initial = place_all_elements(map, pavement.pattern, pavement.points, design, options.postprocess);
+  pavement.before = measure_pavement(map, pavement.pattern, pavement.points, initial.elements, design.solver);
+  pavement.timings.emplace_back("measure_initial", ms_since(t0));
+
+  pavement.retired.assign(pavement.points.size(), 0);
+  const auto place = [&](const std::vector<glm::dvec2>& points, const std::vector<std::uint32_t>& stray_count) {
+    for (size_t i = 0; i < stray_count.size(); ++i) pavement.retired[i] = stray_count[i] == kRetired ? 1 : 0;
+    PlacedElements placed =
+        place_all_elements(map, pavement.pattern, points, design, options.postprocess, &pavement.retired);
+    pavement.filled = placed.filled;
+    pavement.eliminated = placed.eliminated;
+    return std::move(placed.elements);
+  };
+  if (options.optimize && pavement.pattern.point_count() > 0) {
+    t0 = Clock::now();
+    const SolverSurface surface = make_solver_surface(map);
+    SpringSystem system = make_spring_system(pavement.pattern);
+    {
+      CpuSpringSolver solver(surface, system, design.solver, design.pattern.spacing, options.threads);
+      pavement.solve = solver.solve(options.observer);
+    }
+    for (int i = 0; i < system.particle_count(); ++i) pavement.points[i] = glm::dvec2(system.position[i]);
+    pavement.timings.emplace_back("optimize", ms_since(t0));
+
+    t0 = Clock::now();
+    pavement.elements = place(pavement.points, system.stray_count);
+    pavement.paper = measure_pavement(map, pavement.pattern, pavement.points, pavement.elements, design.solver);
+    pavement.timings.emplace_back("measure_paper", ms_since(t0));
+    // Designs that overlap on purpose keep their overlaps.
+    if (options.resolve_collisions && !design.elements.allow_overlap) {
+      t0 = Clock::now();
+      pavement.elements = resolve_collisions(map, surface, system, pavement.pattern, design, pavement.points, place,
+                                             options.resolution, pavement.resolution);
+      pavement.timings.emplace_back("resolve_collisions", ms_since(t0));
+    }
+  } else {
+    pavement.elements = place(pavement.points, {});
+    pavement.paper = pavement.before;
+  }
+
+  t0 = Clock::now();
+  pavement.after = measure_pavement(map, pavement.pattern, pavement.points, pavement.elements, design.solver);
+  pavement.timings.emplace_back("measure", ms_since(t0));
   pavement.design = std::move(design);
   return pavement;
 }

@@ -1,5 +1,7 @@
 #include "paver/run_report.h"
 
+#include "paver/pavement_quality.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -68,7 +70,22 @@ nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const
       {"elements", {{"total", elements.size()},
                     {"vertex", vertex_elements},
                     {"edge", long(elements.size()) - vertex_elements}}},
-      {"optimization", {{"status", "not run (the optimizer comes with Engine II)"}}},
+      {"optimization", {{"iterations", pavement.solve.iterations},
+                        {"stop_reason", stop_reason_name(pavement.solve.reason)},
+                        {"converged", pavement.solve.reason == StopReason::Converged},
+                        {"last_max_step", pavement.solve.last_max_step},
+                        {"strays_pulled_back", pavement.solve.strays_pulled_back},
+                        {"retired_particles", std::count(pavement.retired.begin(), pavement.retired.end(), 1)},
+                        {"milliseconds", pavement.solve.milliseconds}}},
+      {"postprocess", {{"filled", pavement.filled}, {"eliminated", pavement.eliminated}}},
+      {"collision_resolution", {{"rounds", pavement.resolution.rounds},
+                                {"contact_springs", pavement.resolution.contact_springs},
+                                {"solver_iterations", pavement.resolution.solver_iterations},
+                                {"removed", pavement.resolution.removed},
+                                {"milliseconds", pavement.resolution.milliseconds}}},
+      {"quality_before", to_json(pavement.before)},
+      {"quality_paper_method", to_json(pavement.paper)},
+      {"quality_after", to_json(pavement.after)},
       {"timings_ms", timing},
   };
 }

@@ -38,6 +38,7 @@ Design non_default_design() {
   d.elements.edge.push_back({1.0 / 7.0, 1, ShapeKind::Custom, {}});
   d.elements.edge.push_back({0, 0.125, ShapeKind::Disc, {1}});
   d.elements.custom_shape = "/shapes/star.obj";
+  d.elements.allow_overlap = true;
   d.placement.offset = {-1.5, 2.0 / 3.0};
   d.placement.rotation_deg = -37.5;
   d.placement.scale = 1.7;
@@ -55,6 +56,8 @@ Design non_default_design() {
   d.solver.mu_compressed = 0.75;
   d.solver.mu_stretched = 0.25;
   d.solver.filter_max = 2;
+  d.solver.filter_base = FilterBase::Initial;
+  d.solver.stray_patience = 25;
   return d;
 }
 
@@ -87,6 +90,7 @@ void expect_same(const Design& a, const Design& b) {
     EXPECT_EQ(x.cell_edges, y.cell_edges);
   }
   EXPECT_EQ(a.elements.custom_shape, b.elements.custom_shape);
+  EXPECT_EQ(a.elements.allow_overlap, b.elements.allow_overlap);
   EXPECT_EQ(a.placement.offset, b.placement.offset);
   EXPECT_EQ(a.placement.rotation_deg, b.placement.rotation_deg);
   EXPECT_EQ(a.placement.scale, b.placement.scale);
@@ -106,6 +110,8 @@ void expect_same(const Design& a, const Design& b) {
   EXPECT_EQ(s.mu_compressed, t.mu_compressed);
   EXPECT_EQ(s.mu_stretched, t.mu_stretched);
   EXPECT_EQ(s.filter_max, t.filter_max);
+  EXPECT_EQ(s.filter_base, t.filter_base);
+  EXPECT_EQ(s.stray_patience, t.stray_patience);
 }
 
 // The InputError message `action` throws, or "" when it throws nothing.
@@ -144,10 +150,10 @@ TEST(DesignIo, WritesEveryKey) {
   const json j = design_to_json(Design{});
   EXPECT_EQ(j.at("version"), 1);
   EXPECT_EQ(j.at("pattern").size(), 4u);
-  EXPECT_EQ(j.at("elements").size(), 3u);
+  EXPECT_EQ(j.at("elements").size(), 4u);
   EXPECT_EQ(j.at("elements").at("vertex").size(), 3u);
   EXPECT_EQ(j.at("placement").size(), 3u);
-  EXPECT_EQ(j.at("solver").size(), 14u);
+  EXPECT_EQ(j.at("solver").size(), 16u);
   const json full = design_to_json(non_default_design());
   EXPECT_EQ(full.at("pattern").at("operators").at(1).size(), 5u);
   EXPECT_EQ(full.at("pattern").at("operators").at(1).at("op"), "add");
@@ -317,6 +323,7 @@ TEST(DesignValidate, EachRangeRuleNamesKeyRangeAndValue) {
       {[](Design& d) { d.solver.mu_compressed = 1.5; }, "'solver.mu_compressed' must be in [0, 1], got 1.5"},
       {[](Design& d) { d.solver.mu_stretched = -0.5; }, "'solver.mu_stretched' must be in [0, 1]"},
       {[](Design& d) { d.solver.filter_max = 0.9; }, "'solver.filter_max' must be finite and >= 1, got 0.9"},
+      {[](Design& d) { d.solver.stray_patience = -1; }, "'solver.stray_patience' must be in [0, 1000000], got -1"},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.expected);

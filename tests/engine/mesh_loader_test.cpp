@@ -254,6 +254,16 @@ TEST_F(MeshLoaderTest, ReadsAsciiStlAndMergesCorners) {
   expect_valid_surface(loaded.mesh);
 }
 
+TEST_F(MeshLoaderTest, StlDegenerateFacetIsCounted) {
+  // OpenMesh merges the repeated corner and drops the facet itself; it must still be reported.
+  const LoadedSurface loaded = load_surface(write(
+      "square.stl", "solid square\n" + stl_facet("0 0 0", "1 0 0", "1 1 0") + stl_facet("0 0 0", "1 1 0", "0 1 0") +
+                        stl_facet("0 0 0", "0 0 0", "0 1 0") + "endsolid square\n"));
+  EXPECT_EQ(loaded.mesh.face_count(), 2);
+  EXPECT_EQ(loaded.dropped_degenerate_faces, 1);
+  EXPECT_TRUE(any_warning_contains(loaded, "dropped 1 degenerate face"));
+}
+
 TEST_F(MeshLoaderTest, ReadsBinaryStl) {
   std::string bytes(80, ' ');
   auto put_u32 = [&](std::uint32_t v) {
@@ -389,6 +399,13 @@ TEST_F(MeshLoaderTest, OffHeaderMustBeOff) {
   EXPECT_TRUE(Contains(message, "'OFF'"));
 }
 
+TEST_F(MeshLoaderTest, OffCountsOnTheHeaderLineAreNamed) {
+  // OpenMesh would silently read nothing from this file.
+  const std::string message = load_error(write("bad.off", "OFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
+  EXPECT_TRUE(Contains(message, "line 1"));
+  EXPECT_TRUE(Contains(message, "'3 1 0'"));
+}
+
 TEST_F(MeshLoaderTest, OffCountsMustFollowHeader) {
   const std::string message = load_error(write("bad.off", "OFF\nthree 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
   EXPECT_TRUE(Contains(message, "line 2"));
@@ -410,7 +427,8 @@ TEST_F(MeshLoaderTest, OffFaceIndexOutOfRange) {
 }
 
 TEST_F(MeshLoaderTest, OffCommentIsNamed) {
-  const std::string message = load_error(write("bad.off", "OFF\n3 1 0\n# made by hand\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
+  const std::string message =
+      load_error(write("bad.off", "OFF\n3 1 0\n# made by hand\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
   EXPECT_TRUE(Contains(message, "line 3"));
   EXPECT_TRUE(Contains(message, "comment"));
 }
@@ -419,6 +437,63 @@ TEST_F(MeshLoaderTest, PlyThatOpenMeshCannotParse) {
   const std::string message = load_error(write("bad.ply", "this is not a ply file\n"));
   EXPECT_TRUE(Contains(message, "OpenMesh could not parse it as PLY"));
   EXPECT_TRUE(Contains(message, "'ply'"));
+}
+
+const char* const kPlyHeader =
+    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+    "element face 1\nproperty list uchar int vertex_indices\nend_header\n";  // data starts on line 10
+
+TEST_F(MeshLoaderTest, PlyAsciiValueNamesLine) {
+  const std::string message =
+      load_error(write("bad.ply", std::string(kPlyHeader) + "0 0 0\n1 0 0\n0 one 0\n3 0 1 2\n"));
+  EXPECT_TRUE(Contains(message, "line 12"));
+  EXPECT_TRUE(Contains(message, "'one' is not a number"));
+}
+
+TEST_F(MeshLoaderTest, PlyAsciiFaceIndexOutOfRange) {
+  const std::string message = load_error(write("bad.ply", std::string(kPlyHeader) + "0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n"));
+  EXPECT_TRUE(Contains(message, "line 13"));
+  EXPECT_TRUE(Contains(message, "refers to vertex 3"));
+}
+
+TEST_F(MeshLoaderTest, PlyAsciiNanNamesLine) {
+  const std::string message =
+      load_error(write("nan.ply", std::string(kPlyHeader) + "0 0 0\n1 0 0\n0 nan 0\n3 0 1 2\n"));
+  EXPECT_TRUE(Contains(message, "line 12"));
+  EXPECT_TRUE(Contains(message, "1 vertex has NaN or infinite"));
+}
+
+TEST_F(MeshLoaderTest, PlyHeaderIsCheckedBeforeOpenMesh) {
+  // OpenMesh's reader crashes on a property before any element.
+  const std::string message = load_error(write("bad.ply", "ply\nformat ascii 1.0\nproperty float x\nend_header\n"));
+  EXPECT_TRUE(Contains(message, "OpenMesh could not parse it as PLY"));
+  EXPECT_TRUE(Contains(message, "line 3"));
+}
+
+TEST_F(MeshLoaderTest, PlyPointCloudContainsNoFaces) {
+  const std::string message = load_error(write("points.ply",
+                                               "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
+                                               "property float y\nproperty float z\nend_header\n0 0 0\n"));
+  EXPECT_TRUE(Contains(message, "contains no faces"));
+}
+
+TEST_F(MeshLoaderTest, ReadsBinaryPly) {
+  std::string bytes =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  const float corners[12] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+  for (float x : corners) {
+    std::uint32_t v;
+    std::memcpy(&v, &x, 4);
+    for (int i = 0; i < 4; ++i) bytes.push_back(char((v >> (8 * i)) & 0xff));
+  }
+  bytes.push_back(4);
+  for (int index : {0, 1, 2, 3})
+    for (int i = 0; i < 4; ++i) bytes.push_back(char((std::uint32_t(index) >> (8 * i)) & 0xff));
+  const LoadedSurface loaded = load_surface(write("square.ply", bytes));
+  EXPECT_EQ(loaded.mesh.face_count(), 2);
+  EXPECT_NEAR(surface_area(loaded.mesh), 1.0, 1e-12);
+  expect_valid_surface(loaded.mesh);
 }
 
 TEST_F(MeshLoaderTest, TruncatedBinaryPlyIsMeasured) {

@@ -6,11 +6,15 @@
 #include "paver/pattern.h"
 #include "paver/surface_map.h"
 
+#include <cstdint>
+#include <vector>
+
 namespace paver {
 
-// `points` are the particle positions to use (the pattern's, or the optimizer's result).
+// `points` are the particle positions to use (the pattern's, or the optimizer's result);
+// `retired` (optional, #P) marks particles the optimizer retired: they carry no V-element.
 Elements place_elements(const SurfaceMap& map, const Pattern& pattern,
                         const std::vector<glm::dvec2>& points, const ElementsDesign& design,
-                        double spacing);
+                        double spacing, const std::vector<std::uint8_t>* retired = nullptr);
 
 }  // namespace paver

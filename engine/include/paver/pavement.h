@@ -3,9 +3,12 @@
 // design's operators, the trimmed pattern, and the elements lifted to the surface. The CLI and the
 // editor both call make_pavement; the map is built once per surface (build_surface_map), the
 // pavement again on every design change.
+#include "paver/collision_resolution.h"
 #include "paver/design.h"
 #include "paver/elements.h"
 #include "paver/pattern.h"
+#include "paver/pavement_quality.h"
+#include "paver/spring_solver.h"
 #include "paver/surface_map.h"
 #include "paver/unit_cell.h"
 
@@ -18,12 +21,29 @@ namespace paver {
 // Wall-clock milliseconds per named stage, in pipeline order.
 using StageTimings = std::vector<std::pair<std::string, double>>;
 
+struct PavementOptions {
+  bool optimize = true;              // run the section 5 solver
+  bool postprocess = true;           // section 5.4: fill boundary edges, eliminate crossing elements
+  bool resolve_collisions = true;    // beyond the paper: contact springs until no pair collides
+  CollisionResolutionOptions resolution;
+  int threads = 0;                   // solver threads, 0 = all cores
+  SolverObserver observer;           // called after every solver iteration
+};
+
 struct Pavement {
   Design design;                     // as used: spacing resolved
   UnitCell cell;                     // after operators and bracing
   Pattern pattern;                   // trimmed pattern S^
-  std::vector<glm::dvec2> points;    // particle positions (the pattern's, until optimised)
-  Elements elements;
+  std::vector<glm::dvec2> points;    // particle positions: optimised (or the pattern's)
+  std::vector<std::uint8_t> retired; // #P 1 for particles the optimizer retired (pushed out for good)
+  Elements elements;                 // final elements
+  int filled = 0;                    // E-elements added by boundary filling
+  int eliminated = 0;                // elements removed for crossing the boundary
+  SolveReport solve;                 // iterations, stop reason, time
+  CollisionResolutionReport resolution;
+  PavementQuality before;            // the initial pavement, post-processed the same way
+  PavementQuality paper;             // after the paper's optimizer and post-processing alone
+  PavementQuality after;             // the final pavement
   StageTimings timings;
 };
 
@@ -33,6 +53,15 @@ UnitCell make_design_cell(const PatternDesign& pattern);
 
 // Resolves spacing 0 to the surface's default and checks design references against the unit
 // cell (E-element cell_edges), then builds pattern and elements.
-Pavement make_pavement(const SurfaceMap& map, Design design);
+Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptions& options = {});
+
+// Elements on `points`: V and E elements, then (if asked) boundary filling and elimination.
+struct PlacedElements {
+  Elements elements;
+  int filled = 0, eliminated = 0;
+};
+PlacedElements place_all_elements(const SurfaceMap& map, const Pattern& pattern, const std::vector<glm::dvec2>& points,
+                                  const Design& design, bool postprocess,
+                                  const std::vector<std::uint8_t>* retired = nullptr);
 
 }  // namespace paver

@@ -1,0 +1,71 @@
+#pragma once
+// The CPU reference solver of section 5: the iteration of solver_kernels.h over all particles
+// and springs, in parallel with TBB. Deterministic: every item is computed independently and in
+// a fixed order, so the result is bit-identical whatever the thread count.
+#include "paver/design.h"
+#include "paver/solver_kernels.h"
+#include "paver/solver_surface.h"
+#include "paver/spring_system.h"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace paver {
+
+// Called after every iteration with the iteration count and the positions; return false to stop.
+// The editor draws the solve live through it, the CLI a progress bar.
+using SolverObserver = std::function<bool(int iteration, const std::vector<glm::vec2>& positions)>;
+
+enum class StopReason { Converged, IterationLimit, Observer };
+std::string_view stop_reason_name(StopReason r);  // "converged", "iteration limit", "stopped"
+
+struct SolveReport {
+  int iterations = 0;
+  StopReason reason = StopReason::IterationLimit;
+  float last_max_step = 0;      // max |dp dt| of the last iteration, map units
+  int strays_pulled_back = 0;   // particle lifts that needed a pull back onto the map
+  double milliseconds = 0;
+};
+
+SolverConstants make_solver_constants(const SolverParams& params, const SolverSurface& surface);
+
+class CpuSpringSolver {
+public:
+  // `spacing` (D) scales the convergence threshold. threads = 0: all cores.
+  CpuSpringSolver(const SolverSurface& surface, SpringSystem& system, const SolverParams& params,
+                  double spacing, int threads = 0);
+
+  // One iteration; returns max |dp dt|.
+  float step();
+  SolveReport solve(const SolverObserver& observer = {});
+
+  const std::vector<glm::vec3>& lifted() const { return lifted_; }      // #P surface positions
+  const std::vector<float>& spring_ratio() const { return ratio_; }     // #E |P_a P_b| / L_ab
+
+private:
+  void lift_all();
+  void update_springs(bool first);
+  void measure_springs();
+
+  const SolverSurface& surface_;
+  SpringSystem& system_;
+  SolverParams params_;
+  SolverConstants constants_;
+  float threshold_;
+  int threads_;
+  int iterations_ = 0;
+  int strays_ = 0;
+  std::vector<glm::vec3> lifted_;
+  std::vector<float> curvature_;
+  std::vector<std::uint8_t> pulled_back_;  // #P 1 when the last lift pulled the particle back
+  std::vector<float> ratio_;
+  std::vector<glm::vec2> next_;
+  std::vector<float> steps_;
+};
+
+}  // namespace paver

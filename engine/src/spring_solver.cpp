@@ -1,0 +1,171 @@
+#include "paver/spring_solver.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace paver {
+namespace {
+
+// Small systems run in one chunk: the per-iteration task overhead would dominate.
+constexpr std::size_t kGrain = 2048;
+
+template <class F>
+void for_each_index(int n, F&& f) {
+  tbb::parallel_for(tbb::blocked_range<int>(0, n, kGrain), [&](const tbb::blocked_range<int>& r) {
+    for (int i = r.begin(); i != r.end(); ++i) f(i);
+  });
+}
+
+}  // namespace
+
+std::string_view stop_reason_name(StopReason r) {
+  switch (r) {
+    case StopReason::Converged: return "converged";
+    case StopReason::IterationLimit: return "iteration limit";
+    case StopReason::Observer: return "stopped";
+  }
+  return "?";
+}
+
+SolverConstants make_solver_constants(const SolverParams& p, const SolverSurface& surface) {
+  SolverConstants k{};
+  k.c = float(p.c), k.m = float(p.m);
+  k.alpha = float(p.alpha), k.beta = float(p.beta), k.gamma = float(p.gamma);
+  k.lambda_r = float(p.lambda_r), k.lambda_l = float(p.lambda_l), k.lambda_g = float(p.lambda_g);
+  k.dt = float(p.dt);
+  k.mu_compressed = float(p.mu_compressed), k.mu_stretched = float(p.mu_stretched);
+  k.filter_max = float(p.filter_max);
+  k.curvature_min = surface.curvature_min;
+  const float range = surface.curvature_max - surface.curvature_min;
+  // A surface of constant curvature has no variation to follow: every edge gets m * 0.
+  k.curvature_inv_range = range > 0.0f ? 1.0f / range : 0.0f;
+  k.centre = surface.centre;
+  k.filter_base_initial = p.filter_base == FilterBase::Initial ? 1u : 0u;
+  k.stray_patience = std::uint32_t(p.stray_patience);
+  return k;
+}
+
+CpuSpringSolver::CpuSpringSolver(const SolverSurface& surface, SpringSystem& system,
+                                 const SolverParams& params, double spacing, int threads)
+    : surface_(surface),
+      system_(system),
+      params_(params),
+      constants_(make_solver_constants(params, surface)),
+      threshold_(float(params.threshold * spacing)),
+      threads_(threads > 0 ? threads : tbb::this_task_arena::max_concurrency()) {
+  const int n = system.particle_count(), e = system.spring_count();
+  lifted_.resize(n);
+  pulled_back_.assign(n, 0);
+  curvature_.resize(n);
+  ratio_.resize(e);
+  next_.resize(n);
+  steps_.resize(n);
+  // Springs without a target (a new system, or contact springs just added) start from the
+  // unfiltered target; the others keep their filter state.
+  std::vector<std::uint8_t> fresh(e);
+  for (int s = 0; s < e; ++s) fresh[s] = system_.target[s] <= 0.0f ? 1 : 0;
+  tbb::task_arena arena(threads_);
+  arena.execute([&] {
+    lift_all();
+    update_springs(false);
+  });
+  for (int s = 0; s < e; ++s)
+    if (fresh[s]) system_.initial_target[s] = system_.target[s];
+}
+
+void CpuSpringSolver::lift_all() {
+  std::atomic<int> strays{0};
+  for_each_index(system_.particle_count(), [&](int a) {
+    const glm::vec2 before = system_.position[a];
+    const kernels::LiftedParticle l = kernels::lift_particle(surface_, system_.position[a]);
+    if (std::isnan(l.position.x)) throw std::runtime_error("solver: a particle could not be lifted");
+    const bool pulled = system_.position[a] != before;
+    pulled_back_[a] = pulled ? 1 : 0;
+    system_.stray_count[a] = kernels::next_stray_count(constants_, system_.stray_count[a], pulled);
+    if (pulled) strays.fetch_add(1, std::memory_order_relaxed);
+    lifted_[a] = l.position;
+    curvature_[a] = l.curvature;
+  });
+  strays_ += strays.load();
+}
+
+void CpuSpringSolver::measure_springs() {
+  for_each_index(system_.spring_count(), [&](int s) {
+    const int a = system_.spring_a[s], b = system_.spring_b[s];
+    const glm::vec3 d = lifted_[b] - lifted_[a];
+    const float target3 = (system_.spring_flags[s] & kSpringContact) != 0u
+        ? system_.rest_length[s]
+        : kernels::target_length_3d(constants_, system_.rest_length[s], curvature_[a], curvature_[b]);
+    ratio_[s] = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z) / target3;
+  });
+}
+
+void CpuSpringSolver::update_springs(bool first) {
+  for_each_index(system_.spring_count(), [&](int s) {
+    const int a = system_.spring_a[s], b = system_.spring_b[s];
+    const kernels::SpringState st = kernels::update_spring(
+        constants_, system_.position[a], system_.position[b], lifted_[a], lifted_[b], curvature_[a],
+        curvature_[b], system_.rest_length[s], system_.target[s], system_.initial_target[s],
+        first || system_.target[s] <= 0.0f || pulled_back_[a] != 0 || pulled_back_[b] != 0,
+        system_.spring_flags[s]);
+    system_.target[s] = st.target;
+    ratio_[s] = st.ratio_3d;
+  });
+}
+
+float CpuSpringSolver::step() {
+  float max_step = 0;
+  tbb::task_arena arena(threads_);
+  arena.execute([&] {
+    if (iterations_ > 0) {
+      lift_all();
+      update_springs(false);
+    }
+    for_each_index(system_.particle_count(), [&](int a) {
+      const kernels::Move mv = kernels::move_particle(constants_, system_, a, system_.position);
+      next_[a] = mv.position;
+      steps_[a] = mv.step;
+    });
+  });
+  system_.position.swap(next_);
+  for (float s : steps_) max_step = std::max(max_step, s);
+  ++iterations_;
+  return max_step;
+}
+
+SolveReport CpuSpringSolver::solve(const SolverObserver& observer) {
+  const auto t0 = std::chrono::steady_clock::now();
+  SolveReport report;
+  report.reason = StopReason::IterationLimit;
+  for (int it = 0; it < params_.iterations; ++it) {
+    report.last_max_step = step();
+    report.iterations = it + 1;
+    if (observer && !observer(report.iterations, system_.position)) {
+      report.reason = StopReason::Observer;
+      break;
+    }
+    if (report.last_max_step < threshold_) {
+      report.reason = StopReason::Converged;
+      break;
+    }
+  }
+  // Leave the lifted state consistent with the final positions (strays pulled back too),
+  // without another filter step.
+  tbb::task_arena arena(threads_);
+  arena.execute([&] {
+    lift_all();
+    measure_springs();
+  });
+  report.strays_pulled_back = strays_;
+  report.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return report;
+}
+
+}  // namespace paver
