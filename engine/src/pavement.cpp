@@ -88,7 +88,8 @@ Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptio
 
     t0 = Clock::now();
     pavement.elements = place(pavement.points, system.stray_count);
-    pavement.paper = measure_pavement(map, pavement.pattern, pavement.points, pavement.elements, design.solver);
+    pavement.paper =
+        measure_pavement(map, pavement.pattern, pavement.points, pavement.elements, design.solver, &pavement.retired);
     pavement.timings.emplace_back("measure_paper", ms_since(t0));
     // Designs that overlap on purpose keep their overlaps.
     if (options.resolve_collisions && !design.elements.allow_overlap) {
@@ -103,7 +104,8 @@ Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptio
   }
 
   t0 = Clock::now();
-  pavement.after = measure_pavement(map, pavement.pattern, pavement.points, pavement.elements, design.solver);
+  pavement.after =
+      measure_pavement(map, pavement.pattern, pavement.points, pavement.elements, design.solver, &pavement.retired);
   pavement.timings.emplace_back("measure", ms_since(t0));
   pavement.design = std::move(design);
   return pavement;

@@ -75,7 +75,8 @@ Distribution distribution_of(std::vector<double> values) {
 }
 
 std::vector<double> spring_length_ratios(const SurfaceMap& map, const Pattern& pattern,
-                                         const std::vector<glm::dvec2>& points, const SolverParams& params) {
+                                         const std::vector<glm::dvec2>& points, const SolverParams& params,
+                                         const std::vector<std::uint8_t>* retired) {
   const LiftedPoints lifted = lift_all(map, points);
   const double range = map.curvature_max - map.curvature_min;
   std::vector<double> ratios;
@@ -83,6 +84,7 @@ std::vector<double> spring_length_ratios(const SurfaceMap& map, const Pattern& p
     if (pattern.edge_virtual[e]) continue;
     const int a = pattern.edge_a[e], b = pattern.edge_b[e];
     if (lifted.triangle[a] < 0 || lifted.triangle[b] < 0) continue;
+    if (retired && ((*retired)[a] || (*retired)[b])) continue;
     const double kappa = std::max(lifted.curvature[a], lifted.curvature[b]);
     const double normalised = range > 0 ? std::clamp((kappa - map.curvature_min) / range, 0.0, 1.0) : 0.0;
     const double rest = pattern.edge_rest_length[e];
@@ -92,31 +94,26 @@ std::vector<double> spring_length_ratios(const SurfaceMap& map, const Pattern& p
   return ratios;
 }
 
-double spacing_curvature_correlation(const SurfaceMap& map, const Pattern& pattern,
-                                     const std::vector<glm::dvec2>& points) {
-  const LiftedPoints lifted = lift_all(map, points);
-  std::vector<double> sum(points.size(), 0);
-  std::vector<int> count(points.size(), 0);
-  for (int e = 0; e < pattern.edge_count(); ++e) {
-    if (pattern.edge_virtual[e]) continue;
-    const int a = pattern.edge_a[e], b = pattern.edge_b[e];
-    if (lifted.triangle[a] < 0 || lifted.triangle[b] < 0) continue;
-    // Spacing relative to the design length, so operator edges (D sqrt 2) compare with base ones.
-    const double rel = glm::length(lifted.position[b] - lifted.position[a]) / pattern.edge_rest_length[e];
-    sum[a] += rel, sum[b] += rel, ++count[a], ++count[b];
+double spacing_curvature_correlation(const SurfaceMap& map, const Elements& elements) {
+  Elements vertex_elements;
+  for (size_t i = 0; i < elements.size(); ++i)
+    if (elements.kind[i] == ElementKind::Vertex)
+      vertex_elements.push_back(elements.kind[i], elements.source[i], elements.spec[i], elements.uv[i],
+                                elements.position[i], elements.normal[i], elements.diameter[i], elements.shape[i]);
+  const std::vector<double> spacing = nearest_neighbor_ratios(vertex_elements);
+  const LiftedPoints lifted = lift_all(map, vertex_elements.uv);
+  std::vector<double> s, k;
+  for (size_t i = 0; i < spacing.size(); ++i) {
+    if (!std::isfinite(spacing[i]) || lifted.triangle[i] < 0) continue;
+    s.push_back(spacing[i]);
+    k.push_back(lifted.curvature[i]);
   }
-  std::vector<double> spacing, curvature;
-  for (size_t i = 0; i < points.size(); ++i) {
-    if (count[i] == 0 || lifted.triangle[i] < 0) continue;
-    spacing.push_back(sum[i] / count[i]);
-    curvature.push_back(lifted.curvature[i]);
-  }
-  return pearson(ranks(spacing), ranks(curvature));
+  return pearson(ranks(s), ranks(k));
 }
 
 PavementQuality measure_pavement(const SurfaceMap& map, const Pattern& pattern,
                                  const std::vector<glm::dvec2>& points, const Elements& elements,
-                                 const SolverParams& params) {
+                                 const SolverParams& params, const std::vector<std::uint8_t>* retired) {
   PavementQuality q;
   q.elements = long(elements.size());
   q.vertex_elements = std::count(elements.kind.begin(), elements.kind.end(), ElementKind::Vertex);
@@ -125,7 +122,7 @@ PavementQuality measure_pavement(const SurfaceMap& map, const Pattern& pattern,
   q.collisions = long(collisions.size());
   for (const Collision& c : collisions) q.worst_overlap = std::max(q.worst_overlap, c.overlap);
   q.neighbor_ratio = distribution_of(nearest_neighbor_ratios(elements));
-  std::vector<double> deviation = spring_length_ratios(map, pattern, points, params);
+  std::vector<double> deviation = spring_length_ratios(map, pattern, points, params, retired);
   for (double& r : deviation) r = std::abs(r - 1);
   const Distribution dev = distribution_of(deviation);
   q.spring_deviation_median = dev.median;
@@ -137,7 +134,7 @@ PavementQuality measure_pavement(const SurfaceMap& map, const Pattern& pattern,
     disc_area += std::numbers::pi * 0.25 * elements.diameter[i] * elements.diameter[i];
   }
   q.coverage = disc_area / surface_area(map.mesh);
-  q.spacing_curvature_spearman = spacing_curvature_correlation(map, pattern, points);
+  q.spacing_curvature_spearman = spacing_curvature_correlation(map, elements);
   return q;
 }
 

@@ -3,7 +3,10 @@
 #include "paver/mesh_loader.h"
 #include "paver/surface_mesh.h"
 
+#include <algorithm>
 #include <filesystem>
+#include <map>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -38,6 +41,32 @@ SurfaceMesh grid_surface(int nu, int nv, F&& f) {
       faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
     }
   return make_surface(std::move(positions), faces, "grid_surface").mesh;
+}
+
+}  // namespace paver::test
+
+namespace paver::test {
+
+// Midpoint subdivision (each triangle into four): the same geometry with four times the faces.
+// Turns the real scanned meshes into 20k+ face test cases without inventing any shape.
+inline SurfaceMesh subdivide(const SurfaceMesh& mesh) {
+  std::vector<glm::dvec3> positions = mesh.positions;
+  std::map<std::pair<int, int>, int> midpoint;
+  auto mid = [&](int a, int b) {
+    const auto key = std::minmax(a, b);
+    const auto [it, added] = midpoint.emplace(key, int(positions.size()));
+    if (added) positions.push_back(0.5 * (mesh.positions[a] + mesh.positions[b]));
+    return it->second;
+  };
+  std::vector<std::vector<int>> faces;
+  for (const auto& t : mesh.triangles) {
+    const int ab = mid(t.x, t.y), bc = mid(t.y, t.z), ca = mid(t.z, t.x);
+    faces.push_back({t.x, ab, ca});
+    faces.push_back({ab, t.y, bc});
+    faces.push_back({ca, bc, t.z});
+    faces.push_back({ab, bc, ca});
+  }
+  return make_surface(std::move(positions), faces, "subdivided").mesh;
 }
 
 }  // namespace paver::test

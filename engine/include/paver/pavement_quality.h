@@ -35,18 +35,19 @@ struct PavementQuality {
   double spacing_curvature_spearman = 0;  // rank correlation of local spacing and curvature
 };
 
-// |P_a P_b| / L_ab for every non-virtual pattern edge, lifted in double (eq. 5, 6).
+// |P_a P_b| / L_ab for every non-virtual pattern edge whose ends are both in use (not retired),
+// lifted in double (eq. 5, 6).
 std::vector<double> spring_length_ratios(const SurfaceMap& map, const Pattern& pattern,
-                                         const std::vector<glm::dvec2>& points, const SolverParams& params);
+                                         const std::vector<glm::dvec2>& points, const SolverParams& params,
+                                         const std::vector<std::uint8_t>* retired = nullptr);
 
-// Spearman correlation between the local spacing at each point (mean 3D length of its pattern
-// edges) and the surface's mean curvature there. 0 when either does not vary.
-double spacing_curvature_correlation(const SurfaceMap& map, const Pattern& pattern,
-                                     const std::vector<glm::dvec2>& points);
+// Spearman correlation between the local spacing at each V-element (its nearest-neighbour
+// distance) and the surface's mean curvature there. 0 when either does not vary.
+double spacing_curvature_correlation(const SurfaceMap& map, const Elements& elements);
 
 PavementQuality measure_pavement(const SurfaceMap& map, const Pattern& pattern,
                                  const std::vector<glm::dvec2>& points, const Elements& elements,
-                                 const SolverParams& params);
+                                 const SolverParams& params, const std::vector<std::uint8_t>* retired = nullptr);
 
 nlohmann::json to_json(const PavementQuality& q);
 
