@@ -71,8 +71,8 @@ CpuSpringSolver::CpuSpringSolver(const SolverSurface& surface, SpringSystem& sys
   // unfiltered target; the others keep their filter state.
   std::vector<std::uint8_t> fresh(e);
   for (int s = 0; s < e; ++s) fresh[s] = system_.target[s] <= 0.0f ? 1 : 0;
-  tbb::task_arena arena(threads_);
-  arena.execute([&] {
+  arena_ = std::make_unique<tbb::task_arena>(threads_);
+  arena_->execute([&] {
     lift_all();
     update_springs(false);
   });
@@ -122,8 +122,7 @@ void CpuSpringSolver::update_springs(bool first) {
 
 float CpuSpringSolver::step() {
   float max_step = 0;
-  tbb::task_arena arena(threads_);
-  arena.execute([&] {
+  arena_->execute([&] {
     if (iterations_ > 0) {
       lift_all();
       update_springs(false);
@@ -131,7 +130,9 @@ float CpuSpringSolver::step() {
     for_each_index(system_.particle_count(), [&](int a) {
       const kernels::Move mv = kernels::move_particle(constants_, system_, a, system_.position);
       next_[a] = mv.position;
-      steps_[a] = mv.step;
+      // Convergence looks at settled particles: one being pulled back onto the boundary (or
+      // retired) is in transit and would keep the maximum up without changing the pattern.
+      steps_[a] = system_.stray_count[a] == 0u ? mv.step : 0.0f;
     });
   });
   system_.position.swap(next_);
@@ -158,8 +159,7 @@ SolveReport CpuSpringSolver::solve(const SolverObserver& observer) {
   }
   // Leave the lifted state consistent with the final positions (strays pulled back too),
   // without another filter step.
-  tbb::task_arena arena(threads_);
-  arena.execute([&] {
+  arena_->execute([&] {
     lift_all();
     measure_springs();
   });

@@ -61,7 +61,7 @@ struct SolverParams {
   double dt = 0.3;              // step size (eq. 14); the paper uses 0.01 to 0.6, 0.5 on flat
                                 // surfaces; 0.3 is the largest that measured stable here (docs/solver.md)
   int iterations = 200;         // iteration limit
-  double threshold = 1e-4;      // stop when every |dp| < threshold * D
+  double threshold = 1e-3;      // stop when every settled particle moves less than threshold * D
   double mu_compressed = 1;     // filter learning rate for compressed springs (eq. 16)
   double mu_stretched = 0.5;    // filter learning rate for stretched springs
   double filter_max = 1.5;      // clamp l^{t+1} to [l_ab, filter_max * l_ab]

@@ -31,7 +31,9 @@ struct SolverConstants {
 
 namespace kernels {
 
-inline float length2(glm::vec2 v) { return std::sqrt(v.x * v.x + v.y * v.y); }
+// min / max as GLSL defines them for non-NaN input, inlined (std::fmin is a library call).
+inline float min_f(float a, float b) { return b < a ? b : a; }
+inline float max_f(float a, float b) { return a < b ? b : a; }
 
 // Barycentric coordinates of p in triangle (a, b, c); same expression as uv_grid.cpp in double.
 inline glm::vec3 barycentric(glm::vec2 p, glm::vec2 a, glm::vec2 b, glm::vec2 c) {
@@ -55,7 +57,7 @@ inline int locate(const SolverSurface& s, glm::vec2 p, glm::vec3& bary) {
     const int t = s.grid_triangles[i];
     const glm::vec3 b = barycentric(p, s.uv[s.triangles[3 * t]], s.uv[s.triangles[3 * t + 1]],
                                     s.uv[s.triangles[3 * t + 2]]);
-    const float lowest = std::fmin(b.x, std::fmin(b.y, b.z));
+    const float lowest = min_f(b.x, min_f(b.y, b.z));
     if (lowest >= 0.0f) {
       bary = b;
       return t;
@@ -67,7 +69,7 @@ inline int locate(const SolverSurface& s, glm::vec2 p, glm::vec3& bary) {
     }
   }
   if (best >= 0) {
-    bary = glm::vec3(std::fmax(bary.x, 0.0f), std::fmax(bary.y, 0.0f), std::fmax(bary.z, 0.0f));
+    bary = glm::vec3(max_f(bary.x, 0.0f), max_f(bary.y, 0.0f), max_f(bary.z, 0.0f));
     const float sum = bary.x + bary.y + bary.z;
     bary = glm::vec3(bary.x / sum, bary.y / sum, bary.z / sum);
   }
@@ -85,7 +87,7 @@ inline glm::vec2 pull_back(const SolverSurface& s, glm::vec2 p, int& segment) {
     const glm::vec2 ab = b - a, ap = p - a;
     const float len2 = ab.x * ab.x + ab.y * ab.y;
     float t = len2 > 0.0f ? (ap.x * ab.x + ap.y * ab.y) / len2 : 0.0f;
-    t = std::fmin(std::fmax(t, 0.0f), 1.0f);
+    t = min_f(max_f(t, 0.0f), 1.0f);
     const glm::vec2 q(a.x + t * ab.x, a.y + t * ab.y);
     const glm::vec2 d = p - q;
     const float dist2 = d.x * d.x + d.y * d.y;
@@ -128,18 +130,21 @@ inline LiftedParticle lift_particle(const SolverSurface& s, glm::vec2& p) {
   return out;
 }
 
-// New stray count of a particle after a lift that did (or did not) pull it back.
+// New stray count of a particle after a lift that did (or did not) pull it back: +2 for a pull
+// back, -1 otherwise, so a particle pushed out every iteration retires after `stray_patience`
+// iterations and one that goes out every other iteration after about twice that, while an
+// occasional stray recovers.
 inline std::uint32_t next_stray_count(const SolverConstants& k, std::uint32_t count, bool pulled_back) {
   if (count == kRetired) return kRetired;
-  if (!pulled_back) return 0u;
-  const std::uint32_t next = count + 1u;
-  return k.stray_patience != 0u && next >= k.stray_patience ? kRetired : next;
+  if (!pulled_back) return count > 0u ? count - 1u : 0u;
+  const std::uint32_t next = count + 2u;
+  return k.stray_patience != 0u && next >= 2u * k.stray_patience ? kRetired : next;
 }
 
 // 3D target length L_ab (eq. 4-6).
 inline float target_length_3d(const SolverConstants& k, float rest, float kappa_a, float kappa_b) {
-  float normalised = (std::fmax(kappa_a, kappa_b) - k.curvature_min) * k.curvature_inv_range;
-  normalised = std::fmin(std::fmax(normalised, 0.0f), 1.0f);
+  float normalised = (max_f(kappa_a, kappa_b) - k.curvature_min) * k.curvature_inv_range;
+  normalised = min_f(max_f(normalised, 0.0f), 1.0f);
   return (k.c + k.m * normalised) * rest + rest;
 }
 
@@ -168,7 +173,7 @@ inline SpringState update_spring(const SolverConstants& k, glm::vec2 pa, glm::ve
   const float mu = len3 < target3 ? k.mu_compressed : k.mu_stretched;
   const float w = 1.0f + mu * (1.0f - len3 / target3);
   const float base = k.filter_base_initial != 0u ? initial : raw;
-  const float filtered = std::fmin(std::fmax(w * previous, base), k.filter_max * base);
+  const float filtered = min_f(max_f(w * previous, base), k.filter_max * base);
   return {filtered, len3 / target3};
 }
 

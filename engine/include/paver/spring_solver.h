@@ -9,9 +9,11 @@
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <tbb/task_arena.h>
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -40,7 +42,7 @@ public:
   CpuSpringSolver(const SolverSurface& surface, SpringSystem& system, const SolverParams& params,
                   double spacing, int threads = 0);
 
-  // One iteration; returns max |dp dt|.
+  // One iteration; returns max |dp dt| over settled particles (stray count 0).
   float step();
   SolveReport solve(const SolverObserver& observer = {});
 
@@ -58,6 +60,7 @@ private:
   SolverConstants constants_;
   float threshold_;
   int threads_;
+  std::unique_ptr<tbb::task_arena> arena_;  // the solver's threads, made once
   int iterations_ = 0;
   int strays_ = 0;
   std::vector<glm::vec3> lifted_;
