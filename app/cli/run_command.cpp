@@ -43,7 +43,9 @@ struct RunArgs {
   // Section 5 parameters given on the command line, applied over the design's.
   std::vector<std::pair<double SolverParams::*, std::optional<double>>> solver_values;
   std::optional<int> iterations;
+  std::optional<int> stray_patience;
   std::string filter_base;
+  bool no_resolve = false;
 };
 
 double ms_since(Clock::time_point t0) {
@@ -73,6 +75,7 @@ int run_run(const RunArgs& args) {
   for (const auto& [member, value] : args.solver_values)
     if (value) design.solver.*member = *value;
   if (args.iterations) design.solver.iterations = *args.iterations;
+  if (args.stray_patience) design.solver.stray_patience = *args.stray_patience;
   if (!args.filter_base.empty()) design.solver.filter_base = *filter_base_from_name(args.filter_base);
   if (args.spacing) {
     // Checked here so that a bad flag is not reported as a fault of the design file.
@@ -106,6 +109,7 @@ int run_run(const RunArgs& args) {
   options.optimize = !args.no_optimize;
   options.postprocess = !args.no_postprocess;
   options.threads = args.threads;
+  options.resolve_collisions = !args.no_resolve;
   Pavement pavement = make_pavement(map, design, options);
   timings.insert(timings.end(), pavement.timings.begin(), pavement.timings.end());
   if (info.spacing_derived)
@@ -191,11 +195,16 @@ std::function<int()> add_run_command(CLI::App& app) {
   args->solver_values.reserve(std::size(solver_flags));
   for (const auto& [name, member] : solver_flags) {
     args->solver_values.emplace_back(member, std::nullopt);
-    cmd->add_option(std::string("--") + name, args->solver_values.back().second,
-                    std::string("solver.") + name + " (see design.json)")
+    std::string key = name;
+    std::replace(key.begin(), key.end(), '-', '_');
+    cmd->add_option(std::string("--") + name, args->solver_values.back().second, "solver." + key + " (see design.json)")
         ->group("Solver (section 5)");
   }
   cmd->add_option("--iterations", args->iterations, "solver.iterations: iteration limit")->group("Solver (section 5)");
+  cmd->add_option("--stray-patience", args->stray_patience,
+                  "solver.stray_patience: pull-backs before a particle retires (0 = never)")
+      ->group("Solver (section 5)");
+  cmd->add_flag("--no-resolve", args->no_resolve, "Skip the contact-spring collision resolution (paper's method only)");
   cmd->add_option("--filter-base", args->filter_base, "solver.filter_base: current or initial")
       ->check(CLI::IsMember({"current", "initial"}))
       ->group("Solver (section 5)");

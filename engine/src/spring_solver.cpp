@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace paver {
 namespace {
@@ -73,25 +74,31 @@ CpuSpringSolver::CpuSpringSolver(const SolverSurface& surface, SpringSystem& sys
   for (int s = 0; s < e; ++s) fresh[s] = system_.target[s] <= 0.0f ? 1 : 0;
   arena_ = std::make_unique<tbb::task_arena>(threads_);
   arena_->execute([&] {
-    lift_all();
+    lift_all(true);
     update_springs(false);
   });
   for (int s = 0; s < e; ++s)
     if (fresh[s]) system_.initial_target[s] = system_.target[s];
 }
 
-void CpuSpringSolver::lift_all() {
+void CpuSpringSolver::lift_all(bool count_strays) {
   std::atomic<int> strays{0};
   for_each_index(system_.particle_count(), [&](int a) {
     const glm::vec2 before = system_.position[a];
-    const kernels::LiftedParticle l = kernels::lift_particle(surface_, system_.position[a]);
+    // A non-finite position would be hidden by the pull back (it lands on a boundary triangle).
+    if (!std::isfinite(before.x) || !std::isfinite(before.y))
+      throw std::runtime_error("solver: particle " + std::to_string(a) + " has a non-finite position");
+    const kernels::LiftedParticle l =
+        kernels::lift_particle(surface_, system_.position[a], system_.triangle_hint[a]);
     if (std::isnan(l.position.x)) throw std::runtime_error("solver: a particle could not be lifted");
+    lifted_[a] = l.position;
+    curvature_[a] = l.curvature;
+    // The closing lift of solve() only refreshes the lifted state; it is not an iteration.
+    if (!count_strays) return;
     const bool pulled = system_.position[a] != before;
     pulled_back_[a] = pulled ? 1 : 0;
     system_.stray_count[a] = kernels::next_stray_count(constants_, system_.stray_count[a], pulled);
     if (pulled) strays.fetch_add(1, std::memory_order_relaxed);
-    lifted_[a] = l.position;
-    curvature_[a] = l.curvature;
   });
   strays_ += strays.load();
 }
@@ -124,7 +131,7 @@ float CpuSpringSolver::step() {
   float max_step = 0;
   arena_->execute([&] {
     if (iterations_ > 0) {
-      lift_all();
+      lift_all(true);
       update_springs(false);
     }
     for_each_index(system_.particle_count(), [&](int a) {
@@ -160,7 +167,7 @@ SolveReport CpuSpringSolver::solve(const SolverObserver& observer) {
   // Leave the lifted state consistent with the final positions (strays pulled back too),
   // without another filter step.
   arena_->execute([&] {
-    lift_all();
+    lift_all(false);
     measure_springs();
   });
   report.strays_pulled_back = strays_;

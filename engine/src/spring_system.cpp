@@ -33,6 +33,7 @@ SpringSystem make_spring_system(const Pattern& pattern) {
   sys.position.reserve(pattern.points.size());
   for (const auto& p : pattern.points) sys.position.emplace_back(float(p.x), float(p.y));
   sys.stray_count.assign(pattern.points.size(), 0u);
+  sys.triangle_hint.assign(pattern.points.size(), -1);
   const int e = pattern.edge_count();
   sys.spring_a.assign(pattern.edge_a.begin(), pattern.edge_a.end());
   sys.spring_b.assign(pattern.edge_b.begin(), pattern.edge_b.end());

@@ -106,10 +106,17 @@ struct LiftedParticle {
   float curvature;
 };
 
-// Lifts particle p; strays are first pulled back (p is updated in place).
-inline LiftedParticle lift_particle(const SolverSurface& s, glm::vec2& p) {
-  glm::vec3 b;
-  int t = locate(s, p, b);
+// Lifts particle p; strays are first pulled back (p is updated in place). `hint` is the triangle
+// the particle was in last time: particles move little per iteration, so it usually still
+// contains p and the grid search is skipped. It is updated.
+inline LiftedParticle lift_particle(const SolverSurface& s, glm::vec2& p, std::int32_t& hint) {
+  glm::vec3 b(0.0f);
+  int t = -1;
+  if (hint >= 0) {
+    b = barycentric(p, s.uv[s.triangles[3 * hint]], s.uv[s.triangles[3 * hint + 1]], s.uv[s.triangles[3 * hint + 2]]);
+    if (b.x >= 0.0f && b.y >= 0.0f && b.z >= 0.0f) t = hint;
+  }
+  if (t < 0) t = locate(s, p, b);
   if (t < 0) {
     int segment = 0;
     p = pull_back(s, p, segment);
@@ -121,6 +128,7 @@ inline LiftedParticle lift_particle(const SolverSurface& s, glm::vec2& p) {
     }
     if (t < 0) return {glm::vec3(NAN), 0.0f};  // cannot happen for a valid map; caught by the caller
   }
+  hint = t;
   const int i = s.triangles[3 * t], j = s.triangles[3 * t + 1], k = s.triangles[3 * t + 2];
   const glm::vec4 pi = s.position[i], pj = s.position[j], pk = s.position[k];
   LiftedParticle out;
@@ -207,11 +215,14 @@ inline Move move_particle(const SolverConstants& k, const SpringSystem& sys, int
     const glm::vec2 d = pb - pa;
     const float len = std::sqrt(d.x * d.x + d.y * d.y);
     if ((sys.spring_flags[spring] & kSpringContact) != 0u && len >= l) continue;  // contacts only push
-    const float kc = spring_constant(k, len / l);
-    if (len > 0.0f) {
-      const float f = kc * (len - l) / len;  // F_ab = k_c (|p_a p_b| - l_ab) unit(p_b - p_a)
-      force = glm::vec2(force.x + f * d.x, force.y + f * d.y);
-    }
+    // k_c is clamped at r = 0.1: below it alpha / r^12 overflows (inf - inf = NaN at r = 0).
+    const float kc = spring_constant(k, max_f(len / l, 0.1f));
+    // F_ab = k_c (|p_a p_b| - l_ab) unit(p_b - p_a). Coincident ends have no direction: they
+    // separate along x, the lower index to the left, so the two sides push apart.
+    const glm::vec2 unit = len > 1e-6f * l ? glm::vec2(d.x / len, d.y / len)
+                                           : glm::vec2(sys.neighbor[i] > a ? 1.0f : -1.0f, 0.0f);
+    const float f = kc * (len - l);
+    force = glm::vec2(force.x + f * unit.x, force.y + f * unit.y);
     ++used;
     k_sum = k_sum + kc;
     centroid = glm::vec2(centroid.x + pb.x / l, centroid.y + pb.y / l);  // eq. 11 with p_b

@@ -50,7 +50,7 @@ public:
   const std::vector<float>& spring_ratio() const { return ratio_; }     // #E |P_a P_b| / L_ab
 
 private:
-  void lift_all();
+  void lift_all(bool count_strays);
   void update_springs(bool first);
   void measure_springs();
 

@@ -18,6 +18,7 @@ struct SpringSystem {
   // out persistently is retired (kRetired): it would be eliminated at the boundary anyway, and
   // held there it would only jam the pattern behind it.
   std::vector<std::uint32_t> stray_count;       // #P
+  std::vector<std::int32_t> triangle_hint;      // #P triangle of M^ the particle was last in (-1: none)
   // CSR: the springs of particle a are neighbor_spring[neighbor_start[a] .. neighbor_start[a+1]),
   // leading to particles neighbor[...].
   std::vector<std::int32_t> neighbor_start;     // #P + 1

@@ -1,0 +1,115 @@
+// Engine II benchmarks, JSON with --benchmark_format=json:
+//   design/<name>       the whole pavement (pattern, optimizer, post-processing, collision
+//                       resolution, quality) per bundled design; stage times as counters.
+//   solver/<N>/<threads> CPU solver milliseconds per iteration at N particles on the dense wave.
+#include "paver/design_io.h"
+#include "paver/mesh_loader.h"
+#include "paver/pavement.h"
+#include "paver/spring_solver.h"
+
+#include <benchmark/benchmark.h>
+#include <tbb/task_arena.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <regex>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::map<std::string, std::string> design_surfaces() {
+  std::ifstream readme(fs::path(PAVER_SOURCE_DIR) / "assets/designs/README.md");
+  std::map<std::string, std::string> out;
+  const std::regex row(R"(^\|\s*([a-z0-9_]+)\.json\s*\|\s*([a-z0-9_]+\.obj)\s*\|)");
+  std::string line;
+  std::smatch m;
+  while (std::getline(readme, line))
+    if (std::regex_search(line, m, row)) out[m[1]] = m[2];
+  return out;
+}
+
+void design(benchmark::State& state, std::string name, std::string surface) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const paver::SurfaceMap map =
+      paver::build_surface_map(paver::load_surface(fs::path(PAVER_SOURCE_DIR) / "assets/surfaces" / surface).mesh);
+  const double map_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  const paver::Design d = paver::load_design(fs::path(PAVER_SOURCE_DIR) / "assets/designs" / (name + ".json"));
+  paver::Pavement p;
+  for (auto _ : state) p = paver::make_pavement(map, d);
+  state.counters["load_and_map_ms"] = map_ms;
+  for (const auto& [stage, ms] : p.timings) state.counters[stage + "_ms"] = ms;
+  state.counters["elements"] = double(p.elements.size());
+  state.counters["iterations"] = p.solve.iterations;
+  state.counters["converged"] = p.solve.reason == paver::StopReason::Converged;
+  state.counters["collisions_initial"] = double(p.before.collisions);
+  state.counters["collisions_paper"] = double(p.paper.collisions);
+  state.counters["collisions_final"] = double(p.after.collisions);
+  state.counters["removed"] = p.resolution.removed;
+  state.counters["nn_p5"] = p.after.neighbor_ratio.p5;
+  state.counters["nn_median"] = p.after.neighbor_ratio.median;
+}
+
+// The dense wave (100k faces) with a hexagonal pattern of about n particles.
+struct SolverCase {
+  paver::SurfaceMap map;
+  paver::SolverSurface surface;
+  paver::Pattern pattern;
+  double spacing = 1;
+};
+
+const SolverCase& solver_case(int n) {
+  static std::map<int, std::unique_ptr<SolverCase>> cases;
+  auto& c = cases[n];
+  if (!c) {
+    static const paver::SurfaceMap map =
+        paver::build_surface_map(paver::load_surface(fs::path(PAVER_BINARY_DIR) / "assets/wave_dense.obj").mesh);
+    c = std::make_unique<SolverCase>();
+    c->map = map;
+    c->surface = paver::make_solver_surface(map);
+    // Hexagonal lattice: 2 points per cell of area 3 sqrt(3) / 2 D^2.
+    c->spacing = std::sqrt(paver::surface_area(map.mesh) * 2 / (1.5 * std::sqrt(3.0)) / n);
+    paver::PatternDesign pd;
+    pd.tessellation = paver::Tessellation::Hexagon;
+    pd.spacing = c->spacing;
+    c->pattern = paver::build_pattern(map, paver::make_design_cell(pd), {});
+  }
+  return *c;
+}
+
+void solver(benchmark::State& state) {
+  const SolverCase& c = solver_case(int(state.range(0)));
+  const int threads = state.range(1) > 0 ? int(state.range(1)) : tbb::this_task_arena::max_concurrency();
+  paver::SpringSystem system = paver::make_spring_system(c.pattern);
+  paver::SolverParams params;
+  paver::CpuSpringSolver s(c.surface, system, params, c.spacing, threads);
+  for (auto _ : state) benchmark::DoNotOptimize(s.step());
+  state.counters["particles"] = system.particle_count();
+  state.counters["springs"] = system.spring_count();
+  state.counters["threads"] = threads;
+  state.counters["iterations_per_second"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
+}
+
+const bool registered = [] {
+  for (const auto& [name, surface] : design_surfaces())
+    benchmark::RegisterBenchmark(("design/" + name).c_str(), design, name, surface)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime()
+        ->Iterations(3);
+  if (fs::exists(fs::path(PAVER_BINARY_DIR) / "assets/wave_dense.obj"))
+    benchmark::RegisterBenchmark("solver", solver)
+        ->ArgsProduct({{1000, 10000, 100000, 1000000}, {1, 0}})
+        ->ArgNames({"particles", "threads"})
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
+  return true;
+}();
+
+}  // namespace
+
+BENCHMARK_MAIN();
