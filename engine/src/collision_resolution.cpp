@@ -6,8 +6,6 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <chrono>
 #include <map>
 #include <utility>
@@ -62,8 +60,8 @@ ElementAnchor element_anchor(const Pattern& pattern, const Elements& elements, i
 
 Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface, SpringSystem& system,
                             const Pattern& pattern, const Design& design, std::vector<glm::dvec2>& points,
-                            const ElementPlacer& place, const CollisionResolutionOptions& options,
-                            CollisionResolutionReport& report) {
+                            const ElementPlacer& place, const SolverFactory& solver,
+                            const CollisionResolutionOptions& options, CollisionResolutionReport& report) {
   const auto t0 = std::chrono::steady_clock::now();
   Elements elements = place(points, system.stray_count);
   std::map<std::pair<int, int>, int> contact_of;  // particle pair -> its contact spring
@@ -71,7 +69,6 @@ Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface,
   for (int round = 0; round < options.max_rounds; ++round) {
     const std::vector<Collision> collisions = find_collisions(elements);
     if (collisions.empty()) break;
-    if (std::getenv("PAVER_DEBUG_CONTACTS")) std::fprintf(stderr, "round %d: %zu collisions\n", round, collisions.size());
     ++report.rounds;
     lifted.resize(points.size());
     lift_points(map, points, lifted);
@@ -88,9 +85,6 @@ Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface,
       const double particles = glm::length(lifted.position[pi] - lifted.position[pj]);
       const float rest = float(std::max(particles * stretch, need));
       const auto key = std::minmax(pi, pj);
-      if (std::getenv("PAVER_DEBUG_CONTACTS"))
-        std::fprintf(stderr, "  pair %d-%d particles %d-%d dist %.3f need %.3f particles3d %.3f rest %.3f uv %.2f,%.2f %.2f,%.2f\n", c.i, c.j, pi, pj,
-                     c.distance, need, particles, rest, points[pi].x, points[pi].y, points[pj].x, points[pj].y);
       const auto found = contact_of.find(key);
       if (found != contact_of.end()) {
         system.rest_length[found->second] = std::max(system.rest_length[found->second], rest);
@@ -103,8 +97,7 @@ Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface,
     rebuild_neighbors(system);
     SolverParams params = design.solver;
     params.iterations = options.iterations_per_round;
-    CpuSpringSolver solver(surface, system, params, design.pattern.spacing, options.threads);
-    report.solver_iterations += solver.solve().iterations;
+    report.solver_iterations += solver(surface, system, params, design.pattern.spacing)->solve().iterations;
     for (int i = 0; i < system.particle_count(); ++i) points[i] = glm::dvec2(system.position[i]);
     elements = place(points, system.stray_count);
   }

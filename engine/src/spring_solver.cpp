@@ -35,6 +35,12 @@ std::string_view stop_reason_name(StopReason r) {
   return "?";
 }
 
+SolverFactory cpu_solver_factory(int threads) {
+  return [threads](const SolverSurface& surface, SpringSystem& system, const SolverParams& params, double spacing) {
+    return std::unique_ptr<SpringSolverBackend>(new CpuSpringSolver(surface, system, params, spacing, threads));
+  };
+}
+
 SolverConstants make_solver_constants(const SolverParams& p, const SolverSurface& surface) {
   SolverConstants k{};
   k.c = float(p.c), k.m = float(p.m);
@@ -68,17 +74,11 @@ CpuSpringSolver::CpuSpringSolver(const SolverSurface& surface, SpringSystem& sys
   ratio_.resize(e);
   next_.resize(n);
   steps_.resize(n);
-  // Springs without a target (a new system, or contact springs just added) start from the
-  // unfiltered target; the others keep their filter state.
-  std::vector<std::uint8_t> fresh(e);
-  for (int s = 0; s < e; ++s) fresh[s] = system_.target[s] <= 0.0f ? 1 : 0;
   arena_ = std::make_unique<tbb::task_arena>(threads_);
   arena_->execute([&] {
     lift_all(true);
-    update_springs(false);
+    update_springs();
   });
-  for (int s = 0; s < e; ++s)
-    if (fresh[s]) system_.initial_target[s] = system_.target[s];
 }
 
 void CpuSpringSolver::lift_all(bool count_strays) {
@@ -114,15 +114,18 @@ void CpuSpringSolver::measure_springs() {
   });
 }
 
-void CpuSpringSolver::update_springs(bool first) {
+void CpuSpringSolver::update_springs() {
   for_each_index(system_.spring_count(), [&](int s) {
     const int a = system_.spring_a[s], b = system_.spring_b[s];
+    // A spring without a target (a new system, or a contact spring just added) starts from the
+    // unfiltered target, which is also its l_ab at initialisation.
+    const bool fresh = system_.target[s] <= 0.0f;
     const kernels::SpringState st = kernels::update_spring(
         constants_, system_.position[a], system_.position[b], lifted_[a], lifted_[b], curvature_[a],
         curvature_[b], system_.rest_length[s], system_.target[s], system_.initial_target[s],
-        first || system_.target[s] <= 0.0f || pulled_back_[a] != 0 || pulled_back_[b] != 0,
-        system_.spring_flags[s]);
+        fresh || pulled_back_[a] != 0 || pulled_back_[b] != 0, system_.spring_flags[s]);
     system_.target[s] = st.target;
+    if (fresh) system_.initial_target[s] = st.target;
     ratio_[s] = st.ratio_3d;
   });
 }
@@ -132,7 +135,7 @@ float CpuSpringSolver::step() {
   arena_->execute([&] {
     if (iterations_ > 0) {
       lift_all(true);
-      update_springs(false);
+      update_springs();
     }
     for_each_index(system_.particle_count(), [&](int a) {
       const kernels::Move mv = kernels::move_particle(constants_, system_, a, system_.position);

@@ -24,7 +24,6 @@ struct CollisionResolutionOptions {
   int max_rounds = 8;              // detect + relax rounds
   int iterations_per_round = 60;   // solver iterations after each round of new contact springs
   double clearance = 1.01;         // contact rest length = clearance * (r_i + r_j)
-  int threads = 0;
 };
 
 struct CollisionResolutionReport {
@@ -51,7 +50,7 @@ using ElementPlacer =
 // are updated in place.
 Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface, SpringSystem& system,
                             const Pattern& pattern, const Design& design, std::vector<glm::dvec2>& points,
-                            const ElementPlacer& place, const CollisionResolutionOptions& options,
-                            CollisionResolutionReport& report);
+                            const ElementPlacer& place, const SolverFactory& solver,
+                            const CollisionResolutionOptions& options, CollisionResolutionReport& report);
 
 }  // namespace paver

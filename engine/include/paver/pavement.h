@@ -26,7 +26,8 @@ struct PavementOptions {
   bool postprocess = true;           // section 5.4: fill boundary edges, eliminate crossing elements
   bool resolve_collisions = true;    // beyond the paper: contact springs until no pair collides
   CollisionResolutionOptions resolution;
-  int threads = 0;                   // solver threads, 0 = all cores
+  int threads = 0;                   // CPU solver threads, 0 = all cores
+  SolverFactory solver;              // the backend; empty = the CPU reference with `threads`
   SolverObserver observer;           // called after every solver iteration
 };
 

@@ -3,6 +3,7 @@
 // and springs, in parallel with TBB. Deterministic: every item is computed independently and in
 // a fixed order, so the result is bit-identical whatever the thread count.
 #include "paver/design.h"
+#include "paver/solver_backend.h"
 #include "paver/solver_kernels.h"
 #include "paver/solver_surface.h"
 #include "paver/spring_system.h"
@@ -12,31 +13,15 @@
 #include <tbb/task_arena.h>
 
 #include <cstdint>
-#include <functional>
 #include <memory>
-#include <string>
+#include <string_view>
 #include <vector>
 
 namespace paver {
 
-// Called after every iteration with the iteration count and the positions; return false to stop.
-// The editor draws the solve live through it, the CLI a progress bar.
-using SolverObserver = std::function<bool(int iteration, const std::vector<glm::vec2>& positions)>;
-
-enum class StopReason { Converged, IterationLimit, Observer };
-std::string_view stop_reason_name(StopReason r);  // "converged", "iteration limit", "stopped"
-
-struct SolveReport {
-  int iterations = 0;
-  StopReason reason = StopReason::IterationLimit;
-  float last_max_step = 0;      // max |dp dt| of the last iteration, map units
-  int strays_pulled_back = 0;   // particle lifts that needed a pull back onto the map
-  double milliseconds = 0;
-};
-
 SolverConstants make_solver_constants(const SolverParams& params, const SolverSurface& surface);
 
-class CpuSpringSolver {
+class CpuSpringSolver final : public SpringSolverBackend {
 public:
   // `spacing` (D) scales the convergence threshold. threads = 0: all cores.
   CpuSpringSolver(const SolverSurface& surface, SpringSystem& system, const SolverParams& params,
@@ -44,14 +29,15 @@ public:
 
   // One iteration; returns max |dp dt| over settled particles (stray count 0).
   float step();
-  SolveReport solve(const SolverObserver& observer = {});
+  SolveReport solve(const SolverObserver& observer = {}) override;
+  std::string_view backend_name() const override { return "cpu"; }
 
   const std::vector<glm::vec3>& lifted() const { return lifted_; }      // #P surface positions
   const std::vector<float>& spring_ratio() const { return ratio_; }     // #E |P_a P_b| / L_ab
 
 private:
   void lift_all(bool count_strays);
-  void update_springs(bool first);
+  void update_springs();
   void measure_springs();
 
   const SolverSurface& surface_;
