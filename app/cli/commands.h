@@ -10,5 +10,6 @@ namespace paver::cli {
 // process exit code.
 std::function<int()> add_param_command(CLI::App& app);
 std::function<int()> add_run_command(CLI::App& app);
+std::function<int()> add_devices_command(CLI::App& app);
 
 }  // namespace paver::cli

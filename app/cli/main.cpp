@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "paver 0.1.0");
   const auto run_param = paver::cli::add_param_command(app);
   const auto run_run = paver::cli::add_run_command(app);
+  const auto run_devices = paver::cli::add_devices_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -24,6 +25,7 @@ int main(int argc, char** argv) {
   try {
     if (app.got_subcommand("param")) return run_param();
     if (app.got_subcommand("run")) return run_run();
+    if (app.got_subcommand("devices")) return run_devices();
   } catch (const paver::InputError& e) {
     std::cerr << "paver: error: " << e.what() << "\n";
     return 2;

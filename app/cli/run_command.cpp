@@ -1,4 +1,5 @@
 // `paver run SURFACE [--design F] [--pattern P] [--spacing D] [--out DIR]`: the whole pipeline.
+#include "backend_choice.h"
 #include "commands.h"
 #include "output_guard.h"
 
@@ -46,6 +47,8 @@ struct RunArgs {
   std::optional<int> stray_patience;
   std::string filter_base;
   bool no_resolve = false;
+  std::string backend = "auto";
+  std::string device;
 };
 
 double ms_since(Clock::time_point t0) {
@@ -110,6 +113,8 @@ int run_run(const RunArgs& args) {
   options.postprocess = !args.no_postprocess;
   options.threads = args.threads;
   options.resolve_collisions = !args.no_resolve;
+  const BackendChoice backend = choose_backend(args.backend, args.device, args.threads);
+  options.solver = backend.factory;
   Pavement pavement = make_pavement(map, design, options);
   timings.insert(timings.end(), pavement.timings.begin(), pavement.timings.end());
   if (info.spacing_derived)
@@ -144,8 +149,8 @@ int run_run(const RunArgs& args) {
               pavement.design.pattern.spacing, pavement.pattern.point_count(),
               r["pattern"]["edges"].get<long long>(), r["pattern"]["virtual_edges"].get<long long>(),
               r["pattern"]["boundary_crossing_edges"].get<long long>());
-  std::printf("optimize %d iterations, %s (last max step %.3g); %d filled, %d eliminated at the boundary\n",
-              pavement.solve.iterations, std::string(stop_reason_name(pavement.solve.reason)).c_str(),
+  std::printf("optimize %s%s%s: %d iterations, %s (last max step %.3g); %d filled, %d eliminated at the boundary\n",
+              backend.name.c_str(), backend.device.empty() ? "" : " on ", backend.device.c_str(), pavement.solve.iterations, std::string(stop_reason_name(pavement.solve.reason)).c_str(),
               pavement.solve.last_max_step, pavement.filled, pavement.eliminated);
   std::printf("elements %zu (%lld V, %lld E)\n", pavement.elements.size(), r["elements"]["vertex"].get<long long>(),
               r["elements"]["edge"].get<long long>());
@@ -176,6 +181,10 @@ std::function<int()> add_run_command(CLI::App& app) {
   cmd->add_flag("--no-optimize", args->no_optimize, "Skip the section 5 optimizer (initial pavement only)");
   cmd->add_flag("--no-postprocess", args->no_postprocess, "Skip boundary filling and elimination (5.4)");
   cmd->add_option("--threads", args->threads, "Solver threads (0 = all cores)")->check(CLI::Range(0, 1024));
+  cmd->add_option("--backend", args->backend, "Solver backend: cpu, vulkan, or auto (Vulkan on a GPU, else CPU)")
+      ->check(CLI::IsMember({"cpu", "vulkan", "auto"}))
+      ->capture_default_str();
+  cmd->add_option("--device", args->device, "Vulkan device: a substring of its name (see `paver devices`)");
   // Every section 5 parameter, named as in design.json's "solver" object.
   const std::pair<const char*, double SolverParams::*> solver_flags[] = {
       {"c", &SolverParams::c},

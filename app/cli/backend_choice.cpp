@@ -1,0 +1,39 @@
+#include "backend_choice.h"
+
+#include "paver/input_error.h"
+
+#ifdef PAVER_WITH_VULKAN
+#include "paver/compute/vulkan_context.h"
+#include "paver/compute/vulkan_spring_solver.h"
+#endif
+
+namespace paver::cli {
+
+BackendChoice choose_backend(const std::string& backend, const std::string& device, int threads) {
+  BackendChoice choice{cpu_solver_factory(threads), "cpu", ""};
+  if (backend == "cpu") return choice;
+#ifdef PAVER_WITH_VULKAN
+  gpu::ContextOptions options;
+  options.device = device;
+  auto context = gpu::VulkanContext::create(options);
+  if (!context) {
+    if (backend == "vulkan") throw InputError("--backend vulkan: " + context.error().message);
+    return choice;  // auto: no Vulkan, stay on the CPU
+  }
+  // auto takes a real GPU only: on a CPU implementation (lavapipe) the CPU solver is as fast.
+  const std::string type = context.value()->device().type;
+  if (backend == "auto" && type != "discrete" && type != "integrated" && type != "virtual") return choice;
+  auto session = gpu::VulkanSolverSession::create(context.value());
+  if (!session) {
+    if (backend == "vulkan") throw InputError("--backend vulkan: " + session.error().message);
+    return choice;
+  }
+  return {gpu::vulkan_solver_factory(session.value()), "vulkan", context.value()->device().name};
+#else
+  (void)device;
+  if (backend == "vulkan") throw InputError("--backend vulkan: this paver was built without Vulkan");
+  return choice;
+#endif
+}
+
+}  // namespace paver::cli

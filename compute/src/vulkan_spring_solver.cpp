@@ -1,0 +1,368 @@
+#include "paver/compute/vulkan_spring_solver.h"
+
+#include "gpu_buffer.h"
+#include "gpu_solver_layout.h"
+#include "paver/spring_solver.h"
+#include "vulkan_context_impl.h"
+
+#include <cstdint>
+// SPIR-V embedded at build time by glslangValidator --vn (compute/CMakeLists.txt).
+#include "solver_finish_spv.h"
+#include "solver_lift_spv.h"
+#include "solver_move_spv.h"
+#include "solver_springs_spv.h"
+
+#include <array>
+#include <chrono>
+#include <cstring>
+#include <span>
+
+namespace paver::gpu {
+namespace {
+
+constexpr std::uint32_t kGroupSize = 64;  // local_size_x in solver_common.glsl
+
+std::uint32_t groups(int items) { return std::uint32_t((items + int(kGroupSize) - 1) / int(kGroupSize)); }
+
+// FNV-1a over the surface's arrays: cheap next to an upload, and it tells a changed surface from
+// an unchanged one even when a new SolverSurface sits at the same address.
+std::uint64_t fingerprint(const SolverSurface& s) {
+  std::uint64_t h = 1469598103934665603ull;
+  auto mix = [&](const void* data, std::size_t bytes) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < bytes; ++i) h = (h ^ p[i]) * 1099511628211ull;
+  };
+  mix(s.uv.data(), s.uv.size() * sizeof(glm::vec2));
+  mix(s.position.data(), s.position.size() * sizeof(glm::vec4));
+  mix(s.curvature.data(), s.curvature.size() * sizeof(float));
+  mix(s.triangles.data(), s.triangles.size() * sizeof(std::int32_t));
+  mix(&s.grid_nx, sizeof s.grid_nx);
+  mix(&s.grid_cell_size, sizeof s.grid_cell_size);
+  return h;
+}
+
+template <class T>
+std::size_t bytes_of(const std::vector<T>& v) {
+  return v.size() * sizeof(T);
+}
+
+struct Push {
+  std::uint32_t first = 0, second = 0;
+};
+
+}  // namespace
+
+struct VulkanSolverSession::Impl {
+  std::shared_ptr<VulkanContext> context;
+  VulkanContext::Impl* ctx = nullptr;
+  std::optional<vk::raii::DescriptorSetLayout> set_layout;
+  std::optional<vk::raii::PipelineLayout> pipeline_layout;
+  std::optional<vk::raii::Pipeline> lift, springs, move, finish;
+  std::optional<vk::raii::DescriptorPool> pool;
+  std::vector<vk::raii::DescriptorSet> sets;  // [0]: positions A -> B, [1]: B -> A
+  std::array<GpuBuffer, kBindingCount> buffers;
+  GpuBuffer second_positions;
+  GpuBuffer params;
+  std::uint64_t surface_key = 0;
+  int surface_uploads = 0;
+  bool descriptors_dirty = true;
+
+  vk::raii::Pipeline make_pipeline(std::span<const std::uint32_t> spirv) {
+    vk::raii::ShaderModule module(*ctx->device, vk::ShaderModuleCreateInfo({}, spirv.size_bytes(), spirv.data()));
+    vk::PipelineShaderStageCreateInfo stage({}, vk::ShaderStageFlagBits::eCompute, *module, "main");
+    return vk::raii::Pipeline(*ctx->device, nullptr, vk::ComputePipelineCreateInfo({}, stage, **pipeline_layout));
+  }
+
+  void create() {
+    std::vector<vk::DescriptorSetLayoutBinding> bindings;
+    for (std::uint32_t b = 0; b < kBindingCount; ++b)
+      bindings.emplace_back(b, b == kParams ? vk::DescriptorType::eUniformBuffer : vk::DescriptorType::eStorageBuffer, 1,
+                            vk::ShaderStageFlagBits::eCompute);
+    set_layout.emplace(*ctx->device, vk::DescriptorSetLayoutCreateInfo({}, bindings));
+    const vk::PushConstantRange push(vk::ShaderStageFlagBits::eCompute, 0, sizeof(Push));
+    const vk::DescriptorSetLayout raw_layout = **set_layout;
+    pipeline_layout.emplace(*ctx->device, vk::PipelineLayoutCreateInfo({}, raw_layout, push));
+    lift.emplace(make_pipeline(solver_lift_spv));
+    springs.emplace(make_pipeline(solver_springs_spv));
+    move.emplace(make_pipeline(solver_move_spv));
+    finish.emplace(make_pipeline(solver_finish_spv));
+    const vk::DescriptorPoolSize sizes[] = {{vk::DescriptorType::eUniformBuffer, 2},
+                                            {vk::DescriptorType::eStorageBuffer, 2 * (kBindingCount - 1)}};
+    pool.emplace(*ctx->device,
+                 vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 2, sizes));
+    const vk::DescriptorSetLayout layouts[] = {raw_layout, raw_layout};
+    sets = vk::raii::DescriptorSets(*ctx->device, vk::DescriptorSetAllocateInfo(**pool, layouts));
+    params = GpuBuffer(*ctx, sizeof(GpuSolverParams), vk::BufferUsageFlagBits::eUniformBuffer,
+                       vk::MemoryPropertyFlagBits::eHostVisible | vk::MemoryPropertyFlagBits::eHostCoherent, {});
+  }
+
+  // Makes binding `b` at least `bytes` large; returns true when it had to be reallocated.
+  bool reserve(std::uint32_t b, std::size_t bytes) {
+    GpuBuffer& buffer = b == kPositionOut ? second_positions : buffers[b];
+    if (buffer.valid() && buffer.size() >= bytes) return false;
+    // Grow by half again so systems that gain a few contact springs keep their allocation.
+    buffer = GpuBuffer(*ctx, std::max<std::size_t>(bytes + bytes / 2, 64),
+                       vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferDst |
+                           vk::BufferUsageFlagBits::eTransferSrc);
+    descriptors_dirty = true;
+    return true;
+  }
+
+  void write_descriptors() {
+    if (!descriptors_dirty) return;
+    std::vector<vk::DescriptorBufferInfo> infos(2 * kBindingCount);
+    std::vector<vk::WriteDescriptorSet> writes;
+    for (int set = 0; set < 2; ++set)
+      for (std::uint32_t b = 0; b < kBindingCount; ++b) {
+        vk::Buffer buffer = b == kParams ? params.handle() : buffers[b].handle();
+        if (b == kPositionIn) buffer = set == 0 ? buffers[kPositionIn].handle() : second_positions.handle();
+        if (b == kPositionOut) buffer = set == 0 ? second_positions.handle() : buffers[kPositionIn].handle();
+        infos[set * kBindingCount + b] = vk::DescriptorBufferInfo(buffer, 0, VK_WHOLE_SIZE);
+        writes.emplace_back(*sets[set], b, 0, 1,
+                            b == kParams ? vk::DescriptorType::eUniformBuffer : vk::DescriptorType::eStorageBuffer,
+                            nullptr, &infos[set * kBindingCount + b]);
+      }
+    ctx->device->updateDescriptorSets(writes, {});
+    descriptors_dirty = false;
+  }
+};
+
+VulkanSolverSession::VulkanSolverSession() : impl_(std::make_unique<Impl>()) {}
+VulkanSolverSession::~VulkanSolverSession() {
+  if (impl_ && impl_->ctx && impl_->ctx->device) impl_->ctx->device->waitIdle();
+}
+VulkanContext& VulkanSolverSession::context() { return *impl_->context; }
+int VulkanSolverSession::surface_uploads() const { return impl_->surface_uploads; }
+
+Result<std::shared_ptr<VulkanSolverSession>> VulkanSolverSession::create(std::shared_ptr<VulkanContext> context) {
+  std::shared_ptr<VulkanSolverSession> session(new VulkanSolverSession());
+  session->impl_->context = std::move(context);
+  session->impl_->ctx = &session->impl_->context->impl();
+  try {
+    session->impl_->create();
+  } catch (const std::exception& e) {
+    return vulkan_error("creating the solver's pipelines", e);
+  }
+  return session;
+}
+
+namespace {
+
+class VulkanSpringSolver final : public SpringSolverBackend {
+public:
+  VulkanSpringSolver(std::shared_ptr<VulkanSolverSession> session, const SolverSurface& surface, SpringSystem& system,
+                     const SolverParams& params, double spacing, int batch)
+      : session_(std::move(session)), s_(session_->impl()), surface_(surface), system_(system), params_(params),
+        threshold_(float(params.threshold * spacing)), batch_(std::max(1, batch)) {}
+
+  std::string_view backend_name() const override { return "vulkan"; }
+
+  SolveReport solve(const SolverObserver& observer) override {
+    try {
+      return run(observer);
+    } catch (const vk::SystemError& e) {
+      throw std::runtime_error(vulkan_error("running the solver", e).message);
+    }
+  }
+
+private:
+  void upload_inputs(Transfers& t) {
+    auto& d = s_;
+    const std::uint64_t key = fingerprint(surface_);
+    bool surface_changed = key != d.surface_key;
+    const SolverSurface& s = surface_;
+    surface_changed |= d.reserve(kUv, bytes_of(s.uv));
+    surface_changed |= d.reserve(kSurfacePosition, bytes_of(s.position));
+    surface_changed |= d.reserve(kSurfaceCurvature, bytes_of(s.curvature));
+    surface_changed |= d.reserve(kTriangles, bytes_of(s.triangles));
+    surface_changed |= d.reserve(kGridStart, bytes_of(s.grid_start));
+    surface_changed |= d.reserve(kGridTriangles, bytes_of(s.grid_triangles));
+    surface_changed |= d.reserve(kBoundaryUv, bytes_of(s.boundary_uv));
+    surface_changed |= d.reserve(kBoundaryInward, bytes_of(s.boundary_inward));
+    if (surface_changed) {
+      t.upload(d.buffers[kUv], s.uv.data(), bytes_of(s.uv));
+      t.upload(d.buffers[kSurfacePosition], s.position.data(), bytes_of(s.position));
+      t.upload(d.buffers[kSurfaceCurvature], s.curvature.data(), bytes_of(s.curvature));
+      t.upload(d.buffers[kTriangles], s.triangles.data(), bytes_of(s.triangles));
+      t.upload(d.buffers[kGridStart], s.grid_start.data(), bytes_of(s.grid_start));
+      t.upload(d.buffers[kGridTriangles], s.grid_triangles.data(), bytes_of(s.grid_triangles));
+      t.upload(d.buffers[kBoundaryUv], s.boundary_uv.data(), bytes_of(s.boundary_uv));
+      t.upload(d.buffers[kBoundaryInward], s.boundary_inward.data(), bytes_of(s.boundary_inward));
+      d.surface_key = key;
+      ++d.surface_uploads;
+    }
+    // The system changes between solves (new design, contact springs): always uploaded.
+    const SpringSystem& y = system_;
+    const int n = y.particle_count(), e = y.spring_count();
+    pulled_.assign(n, 0u);
+    d.reserve(kPositionIn, bytes_of(y.position));
+    d.reserve(kPositionOut, bytes_of(y.position));
+    d.reserve(kStrayCount, bytes_of(y.stray_count));
+    d.reserve(kTriangleHint, bytes_of(y.triangle_hint));
+    d.reserve(kPulledBack, bytes_of(pulled_));
+    d.reserve(kLifted, std::size_t(n) * sizeof(glm::vec4));
+    d.reserve(kNeighborStart, bytes_of(y.neighbor_start));
+    d.reserve(kNeighbor, bytes_of(y.neighbor));
+    d.reserve(kNeighborSpring, bytes_of(y.neighbor_spring));
+    d.reserve(kSpringA, bytes_of(y.spring_a));
+    d.reserve(kSpringB, bytes_of(y.spring_b));
+    d.reserve(kRestLength, bytes_of(y.rest_length));
+    d.reserve(kSpringFlags, bytes_of(y.spring_flags));
+    d.reserve(kTarget, bytes_of(y.target));
+    d.reserve(kInitialTarget, bytes_of(y.initial_target));
+    d.reserve(kControl, kControlSlots * sizeof(std::uint32_t));
+    t.upload(d.buffers[kPositionIn], y.position.data(), bytes_of(y.position));
+    t.upload(d.buffers[kStrayCount], y.stray_count.data(), bytes_of(y.stray_count));
+    t.upload(d.buffers[kTriangleHint], y.triangle_hint.data(), bytes_of(y.triangle_hint));
+    t.upload(d.buffers[kPulledBack], pulled_.data(), bytes_of(pulled_));
+    t.upload(d.buffers[kNeighborStart], y.neighbor_start.data(), bytes_of(y.neighbor_start));
+    t.upload(d.buffers[kNeighbor], y.neighbor.data(), bytes_of(y.neighbor));
+    t.upload(d.buffers[kNeighborSpring], y.neighbor_spring.data(), bytes_of(y.neighbor_spring));
+    t.upload(d.buffers[kSpringA], y.spring_a.data(), bytes_of(y.spring_a));
+    t.upload(d.buffers[kSpringB], y.spring_b.data(), bytes_of(y.spring_b));
+    t.upload(d.buffers[kRestLength], y.rest_length.data(), bytes_of(y.rest_length));
+    t.upload(d.buffers[kSpringFlags], y.spring_flags.data(), bytes_of(y.spring_flags));
+    t.upload(d.buffers[kTarget], y.target.data(), bytes_of(y.target));
+    t.upload(d.buffers[kInitialTarget], y.initial_target.data(), bytes_of(y.initial_target));
+    control_.fill(0u);
+    t.upload(d.buffers[kControl], control_.data(), sizeof(control_));
+
+    // Parameters: the same float32 constants the CPU kernels use.
+    const SolverConstants k = make_solver_constants(params_, s);
+    GpuSolverParams p{};
+    p.c = k.c, p.m = k.m, p.alpha = k.alpha, p.beta = k.beta;
+    p.gamma = k.gamma, p.lambda_r = k.lambda_r, p.lambda_l = k.lambda_l, p.lambda_g = k.lambda_g;
+    p.dt = k.dt, p.mu_compressed = k.mu_compressed, p.mu_stretched = k.mu_stretched, p.filter_max = k.filter_max;
+    p.curvature_min = k.curvature_min, p.curvature_inv_range = k.curvature_inv_range, p.threshold = threshold_;
+    p.grid_cell_size = s.grid_cell_size;
+    p.centre[0] = k.centre.x, p.centre[1] = k.centre.y;
+    p.grid_origin[0] = s.grid_origin.x, p.grid_origin[1] = s.grid_origin.y;
+    p.grid_nx = s.grid_nx, p.grid_ny = s.grid_ny, p.boundary_count = int(s.boundary_uv.size());
+    p.particle_count = n, p.spring_count = e;
+    p.filter_base_initial = k.filter_base_initial, p.stray_patience = k.stray_patience;
+    std::memcpy(d.params.mapped(), &p, sizeof p);
+    d.write_descriptors();
+  }
+
+  void barrier(vk::raii::CommandBuffer& cb) {
+    const vk::MemoryBarrier b(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eShaderRead | vk::AccessFlagBits::eShaderWrite);
+    cb.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eComputeShader, {}, b, {}, {});
+  }
+
+  void dispatch(vk::raii::CommandBuffer& cb, const vk::raii::Pipeline& pipeline, int set, std::uint32_t count,
+                Push push = {}) {
+    cb.bindPipeline(vk::PipelineBindPoint::eCompute, *pipeline);
+    cb.bindDescriptorSets(vk::PipelineBindPoint::eCompute, **s_.pipeline_layout, 0, *s_.sets[set], {});
+    cb.pushConstants<Push>(**s_.pipeline_layout, vk::ShaderStageFlagBits::eCompute, 0, push);
+    if (count > 0) cb.dispatch(count, 1, 1);
+    barrier(cb);
+  }
+
+  // Iteration `it` (0-based, over the whole solve), on descriptor set it % 2.
+  void record_iteration(vk::raii::CommandBuffer& cb, int it) {
+    const int set = it % 2;
+    const int n = system_.particle_count(), e = system_.spring_count();
+    if (it > 0) {
+      dispatch(cb, *s_.lift, set, groups(n), {1u, 0u});
+      dispatch(cb, *s_.springs, set, groups(e), {0u, 0u});
+    }
+    dispatch(cb, *s_.move, set, groups(n));
+    dispatch(cb, *s_.finish, set, 1);
+  }
+
+  // Records `body`, then the downloads, submits and waits, then copies the downloads out.
+  void submit(Transfers& t, const std::function<void(vk::raii::CommandBuffer&)>& body) {
+    s_.ctx->submit_and_wait([&](vk::raii::CommandBuffer& cb) {
+      t.record_uploads(cb);
+      body(cb);
+      t.record_downloads(cb);
+    });
+    t.finish();
+  }
+
+  SolveReport run(const SolverObserver& observer) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const int n = system_.particle_count(), e = system_.spring_count();
+    Transfers t(*s_.ctx);
+    upload_inputs(t);
+    // The initial lift and spring pass, like CpuSpringSolver's constructor.
+    bool init_pending = true;
+    int recorded = 0;
+    SolveReport report;
+    report.reason = StopReason::IterationLimit;
+    std::vector<glm::vec2> observed;
+    while (recorded < params_.iterations) {
+      const int count = std::min(batch_, params_.iterations - recorded);
+      if (observer) observed.resize(n);
+      t.download(s_.buffers[kControl], control_.data(), sizeof(control_));
+      const int end = recorded + count;
+      if (observer) t.download(end % 2 == 0 ? s_.buffers[kPositionIn] : s_.second_positions, observed.data(), bytes_of(observed));
+      submit(t, [&](vk::raii::CommandBuffer& cb) {
+        if (init_pending) {
+          dispatch(cb, *s_.lift, 0, groups(n), {1u, 1u});
+          dispatch(cb, *s_.springs, 0, groups(e), {1u, 0u});
+        }
+        for (int it = recorded; it < end; ++it) record_iteration(cb, it);
+      });
+      init_pending = false;
+      recorded = end;
+      check_errors();
+      if (control_[kControlDone] != 0u) {
+        report.reason = StopReason::Converged;
+        break;
+      }
+      if (observer && !observer(int(control_[kControlIterations]), observed)) {
+        report.reason = StopReason::Observer;
+        break;
+      }
+    }
+    // The closing lift (no stray counting), then read the state back into the system.
+    const int final_set = recorded % 2;
+    t.download(final_set == 0 ? s_.buffers[kPositionIn] : s_.second_positions, system_.position.data(),
+               bytes_of(system_.position));
+    t.download(s_.buffers[kStrayCount], system_.stray_count.data(), bytes_of(system_.stray_count));
+    t.download(s_.buffers[kTriangleHint], system_.triangle_hint.data(), bytes_of(system_.triangle_hint));
+    t.download(s_.buffers[kTarget], system_.target.data(), bytes_of(system_.target));
+    t.download(s_.buffers[kInitialTarget], system_.initial_target.data(), bytes_of(system_.initial_target));
+    t.download(s_.buffers[kControl], control_.data(), sizeof(control_));
+    submit(t, [&](vk::raii::CommandBuffer& cb) {
+      if (init_pending) {  // zero iterations asked for: still initialise like the CPU does
+        dispatch(cb, *s_.lift, 0, groups(n), {1u, 1u});
+        dispatch(cb, *s_.springs, 0, groups(e), {1u, 0u});
+      }
+      dispatch(cb, *s_.lift, final_set, groups(n), {0u, 1u});
+    });
+    check_errors();
+    report.iterations = int(control_[kControlIterations]);
+    std::memcpy(&report.last_max_step, &control_[kControlLastMaxStep], sizeof(float));
+    report.strays_pulled_back = int(control_[kControlStrays]);
+    report.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    return report;
+  }
+
+  void check_errors() const {
+    if (control_[kControlError] & 1u) throw std::runtime_error("vulkan solver: a particle has a non-finite position");
+    if (control_[kControlError] & 2u) throw std::runtime_error("vulkan solver: a particle could not be lifted");
+  }
+
+  std::shared_ptr<VulkanSolverSession> session_;
+  VulkanSolverSession::Impl& s_;
+  const SolverSurface& surface_;
+  SpringSystem& system_;
+  SolverParams params_;
+  float threshold_;
+  int batch_;
+  std::vector<std::uint32_t> pulled_;
+  std::array<std::uint32_t, kControlSlots> control_{};
+};
+
+}  // namespace
+
+SolverFactory vulkan_solver_factory(std::shared_ptr<VulkanSolverSession> session, int batch) {
+  return [session, batch](const SolverSurface& surface, SpringSystem& system, const SolverParams& params,
+                          double spacing) -> std::unique_ptr<SpringSolverBackend> {
+    return std::make_unique<VulkanSpringSolver>(session, surface, system, params, spacing, batch);
+  };
+}
+
+}  // namespace paver::gpu

@@ -1,0 +1,250 @@
+// The Vulkan solver against the CPU reference, on lavapipe in CI (a real GPU where there is one),
+// with the validation layer (and synchronization validation) on: any message fails the suite.
+#include "paver/compute/vulkan_context.h"
+#include "paver/compute/vulkan_spring_solver.h"
+#include "vulkan_context_impl.h"  // white-box: the positive control below makes a raw Vulkan call
+#include "paver/design_io.h"
+#include "paver/mesh_loader.h"
+#include "paver/pavement.h"
+#include "paver/spring_solver.h"
+#include "test_meshes.h"
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <regex>
+
+namespace paver {
+namespace {
+
+// One validated context and session for the whole suite; null when there is no Vulkan at all.
+struct Gpu {
+  std::shared_ptr<gpu::VulkanContext> context;
+  std::shared_ptr<gpu::VulkanSolverSession> session;
+  std::string why_not;
+};
+
+const Gpu& gpu_or_null() {
+  static const Gpu g = [] {
+    Gpu out;
+    gpu::ContextOptions options;
+    options.validation = true;
+    auto context = gpu::VulkanContext::create(options);
+    if (!context) {
+      out.why_not = context.error().message;
+      return out;
+    }
+    auto session = gpu::VulkanSolverSession::create(context.value());
+    if (!session) {
+      out.why_not = session.error().message;
+      return out;
+    }
+    out.context = context.value();
+    out.session = session.value();
+    return out;
+  }();
+  return g;
+}
+
+// Skips only when no Vulkan device exists at all, and says so loudly.
+#define REQUIRE_VULKAN()                                                                                  \
+  do {                                                                                                    \
+    if (!gpu_or_null().context) {                                                                         \
+      std::fprintf(stderr, "\n*** NO VULKAN DEVICE: the Vulkan solver tests are SKIPPED: %s ***\n\n",     \
+                   gpu_or_null().why_not.c_str());                                                        \
+      GTEST_SKIP() << "no Vulkan device: " << gpu_or_null().why_not;                                      \
+    }                                                                                                     \
+  } while (0)
+
+bool on_lavapipe() { return gpu_or_null().context->device().type == "cpu"; }
+
+std::map<std::string, std::string> bundled_designs() {
+  std::ifstream readme(test::source_dir() / "assets/designs/README.md");
+  std::map<std::string, std::string> out;
+  const std::regex row(R"(^\|\s*([a-z0-9_]+\.json)\s*\|\s*([a-z0-9_]+\.obj)\s*\|)");
+  std::string line;
+  std::smatch m;
+  while (std::getline(readme, line))
+    if (std::regex_search(line, m, row)) out[m[1]] = m[2];
+  return out;
+}
+
+const SurfaceMap& map_of(const std::string& surface) {
+  static std::map<std::string, SurfaceMap> cache;
+  auto it = cache.find(surface);
+  if (it == cache.end())
+    it = cache.emplace(surface, build_surface_map(load_surface(test::source_dir() / "assets/surfaces" / surface).mesh)).first;
+  return it->second;
+}
+
+struct Case {
+  SolverSurface surface;
+  Pavement initial;  // design resolved, pattern built, not optimised
+};
+
+Case make_case(const std::string& design_file) {
+  const std::string surface = bundled_designs().at(design_file);
+  const SurfaceMap& map = map_of(surface);
+  PavementOptions options;
+  options.optimize = false;
+  Case c{make_solver_surface(map), make_pavement(map, load_design(test::source_dir() / "assets/designs" / design_file),
+                                                options)};
+  return c;
+}
+
+double max_difference(const std::vector<glm::vec2>& a, const std::vector<glm::vec2>& b) {
+  double worst = 0;
+  for (size_t i = 0; i < a.size(); ++i) worst = std::max(worst, double(glm::length(a[i] - b[i])));
+  return worst;
+}
+
+class VulkanParity : public ::testing::TestWithParam<std::string> {};
+
+// Positions after 1, 10 and the full iteration count: bit-identical on lavapipe, within
+// 1e-6 D / 1e-4 D (lavapipe) or 1e-3 D (other GPUs) as the issue allows at the least.
+TEST_P(VulkanParity, PositionsMatchTheCpuReference) {
+  REQUIRE_VULKAN();
+  const Case c = make_case(GetParam());
+  const double d = c.initial.design.pattern.spacing;
+  const int full = c.initial.design.solver.iterations;
+  for (int iterations : {1, 10, full}) {
+    SolverParams params = c.initial.design.solver;
+    params.iterations = iterations;
+    if (iterations != full) params.threshold = 0;  // exactly this many iterations
+    SpringSystem cpu_system = make_spring_system(c.initial.pattern), gpu_system = cpu_system;
+    const SolveReport cpu = cpu_solver_factory(0)(c.surface, cpu_system, params, d)->solve();
+    const SolveReport gpu =
+        gpu::vulkan_solver_factory(gpu_or_null().session)(c.surface, gpu_system, params, d)->solve();
+    EXPECT_EQ(gpu.iterations, cpu.iterations) << GetParam() << " @ " << iterations;
+    EXPECT_EQ(gpu.reason, cpu.reason) << GetParam() << " @ " << iterations;
+    EXPECT_EQ(gpu.strays_pulled_back, cpu.strays_pulled_back) << GetParam() << " @ " << iterations;
+    EXPECT_EQ(gpu_system.stray_count, cpu_system.stray_count) << GetParam() << " @ " << iterations;
+    const double diff = max_difference(gpu_system.position, cpu_system.position) / d;
+    if (on_lavapipe()) {
+      EXPECT_EQ(diff, 0.0) << GetParam() << " @ " << iterations << ": not bit-identical";
+      EXPECT_EQ(gpu_system.target, cpu_system.target) << GetParam() << " @ " << iterations;
+    } else {
+      EXPECT_LT(diff, iterations == full ? 1e-3 : 1e-6) << GetParam() << " @ " << iterations;
+    }
+  }
+  EXPECT_EQ(gpu_or_null().context->validation_message_count(), 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(BundledDesigns, VulkanParity, ::testing::ValuesIn([] {
+                           std::vector<std::string> names;
+                           for (const auto& [design, surface] : bundled_designs()) names.push_back(design);
+                           return names;
+                         }()),
+                         [](const auto& info) { return info.param.substr(0, info.param.size() - 5); });
+
+// The whole pipeline (contact springs included) gives the same pavement on either backend.
+TEST(VulkanPipeline, SamePavementAsTheCpu) {
+  REQUIRE_VULKAN();
+  for (const char* name : {"dome_hex_d6.json", "pendant_tri_gems.json", "saddle_tri_d18.json"}) {
+    const std::string surface = bundled_designs().at(name);
+    const Design design = load_design(test::source_dir() / "assets/designs" / name);
+    PavementOptions cpu_options, gpu_options;
+    gpu_options.solver = gpu::vulkan_solver_factory(gpu_or_null().session);
+    const Pavement cpu = make_pavement(map_of(surface), design, cpu_options);
+    const Pavement gpu = make_pavement(map_of(surface), design, gpu_options);
+    EXPECT_EQ(gpu.elements.size(), cpu.elements.size()) << name;
+    EXPECT_EQ(gpu.after.collisions, 0) << name;
+    EXPECT_EQ(gpu.after.collisions, cpu.after.collisions) << name;
+    EXPECT_EQ(gpu.after.boundary_crossings, cpu.after.boundary_crossings) << name;
+    EXPECT_EQ(gpu.resolution.removed, cpu.resolution.removed) << name;
+    if (on_lavapipe()) {
+      EXPECT_EQ(gpu.elements.position, cpu.elements.position) << name;
+    }
+  }
+  EXPECT_EQ(gpu_or_null().context->validation_message_count(), 0);
+}
+
+TEST(VulkanSession, SurfaceBuffersAreReusedAcrossRuns) {
+  REQUIRE_VULKAN();
+  auto session = gpu::VulkanSolverSession::create(gpu_or_null().context).value();
+  const Case dome = make_case("dome_hex_d6.json");
+  SolverParams params = dome.initial.design.solver;
+  params.iterations = 3;
+  for (int run = 0; run < 3; ++run) {
+    SpringSystem system = make_spring_system(dome.initial.pattern);
+    gpu::vulkan_solver_factory(session)(dome.surface, system, params, 6.0)->solve();
+  }
+  EXPECT_EQ(session->surface_uploads(), 1);
+  const Case saddle = make_case("saddle_hex_d18.json");
+  SpringSystem system = make_spring_system(saddle.initial.pattern);
+  gpu::vulkan_solver_factory(session)(saddle.surface, system, params, 18.0)->solve();
+  EXPECT_EQ(session->surface_uploads(), 2);
+}
+
+TEST(VulkanSession, ObserverSeesBatchesAndCanStop) {
+  REQUIRE_VULKAN();
+  const Case dome = make_case("dome_hex_d6.json");
+  SolverParams params = dome.initial.design.solver;
+  params.threshold = 0;
+  params.iterations = 100;
+  SpringSystem system = make_spring_system(dome.initial.pattern);
+  std::vector<int> seen;
+  const SolveReport r = gpu::vulkan_solver_factory(gpu_or_null().session, 16)(dome.surface, system, params, 6.0)
+                            ->solve([&](int iteration, const std::vector<glm::vec2>& positions) {
+                              seen.push_back(iteration);
+                              EXPECT_EQ(positions.size(), system.position.size());
+                              return iteration < 40;
+                            });
+  EXPECT_EQ(seen, (std::vector<int>{16, 32, 48}));
+  EXPECT_EQ(r.reason, StopReason::Observer);
+  EXPECT_EQ(r.iterations, 48);
+}
+
+TEST(VulkanContext, DeviceSelectionByName) {
+  REQUIRE_VULKAN();
+  const auto devices = gpu::list_devices();
+  ASSERT_TRUE(devices.ok());
+  ASSERT_FALSE(devices.value().empty());
+  const std::string name = gpu_or_null().context->device().name;
+  gpu::ContextOptions by_name;
+  by_name.device = name.substr(0, 4);
+  auto picked = gpu::VulkanContext::create(by_name);
+  ASSERT_TRUE(picked.ok()) << picked.error().message;
+  EXPECT_NE(picked.value()->device().name.find(name.substr(0, 4)), std::string::npos);
+  gpu::ContextOptions nothing;
+  nothing.device = "no-such-device-xyz";
+  auto missing = gpu::VulkanContext::create(nothing);
+  ASSERT_FALSE(missing.ok());
+  EXPECT_NE(missing.error().message.find("no-such-device-xyz"), std::string::npos);
+  EXPECT_NE(missing.error().message.find(name), std::string::npos) << "the error lists what was found";
+}
+
+// The messenger really reports: an invalid call on a separate validated context is caught. Without
+// this, "no messages" above could mean "validation was not listening".
+TEST(VulkanValidation, MessengerCatchesAnInvalidCall) {
+  REQUIRE_VULKAN();
+  gpu::ContextOptions options;
+  options.validation = true;
+  auto context = gpu::VulkanContext::create(options);
+  ASSERT_TRUE(context.ok()) << context.error().message;
+  auto& impl = context.value()->impl();
+  // A zero-sized buffer breaks VUID-VkBufferCreateInfo-size-00912.
+  VkBufferCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
+  info.size = 0;
+  info.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+  VkBuffer buffer = VK_NULL_HANDLE;
+  const VkResult result = impl.device->getDispatcher()->vkCreateBuffer(**impl.device, &info, nullptr, &buffer);
+  if (result == VK_SUCCESS && buffer) impl.device->getDispatcher()->vkDestroyBuffer(**impl.device, buffer, nullptr);
+  EXPECT_GE(context.value()->validation_message_count(), 1);
+}
+
+// Runs last (gtest keeps declaration order within a file): nothing the suite did produced a
+// validation message.
+TEST(VulkanValidation, NoMessagesFromTheWholeSuite) {
+  REQUIRE_VULKAN();
+  EXPECT_TRUE(gpu_or_null().context->validation_enabled());
+  for (const auto& m : gpu_or_null().context->validation_messages()) ADD_FAILURE() << m;
+}
+
+}  // namespace
+}  // namespace paver
