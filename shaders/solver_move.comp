@@ -1,11 +1,12 @@
 #version 450
 // Pass 3 of an iteration, per particle: gather R (eq. 7-9), L (eq. 10-11 with p_b), G (eq. 12)
 // over the CSR neighbours and move (eq. 13-14); the largest step of settled particles is reduced
-// per workgroup and combined with one atomicMax. Mirrors kernels::move_particle.
+// per subgroup and combined with one atomicMax per subgroup (a workgroup barrier would make
+// lavapipe run every invocation as a coroutine). Mirrors kernels::move_particle.
 #extension GL_GOOGLE_include_directive : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
+#extension GL_KHR_shader_subgroup_basic : require
 #include "solver_common.glsl"
-
-shared uint group_max[64];
 
 float spring_constant(float r) {
   precise float r2 = r * r;
@@ -17,7 +18,6 @@ float spring_constant(float r) {
 
 void main() {
   int a = int(gl_GlobalInvocationID.x);
-  uint local = gl_LocalInvocationID.x;
   float settled_step = 0.0;
   if (a < P.particle_count) {
     vec2 pa = position_in[a];
@@ -68,11 +68,7 @@ void main() {
     position_out[a] = next;
     settled_step = stray_count[a] == 0u ? step_length : 0.0;
   }
-  group_max[local] = floatBitsToUint(settled_step);
-  barrier();
-  for (uint stride = 32u; stride > 0u; stride >>= 1u) {
-    if (local < stride) group_max[local] = max(group_max[local], group_max[local + stride]);
-    barrier();
-  }
-  if (local == 0u && group_max[0] != 0u) atomicMax(control[3], group_max[0]);
+  // Steps are >= 0, so their bit patterns order like the floats.
+  uint subgroup_max = subgroupMax(floatBitsToUint(settled_step));
+  if (subgroupElect() && subgroup_max != 0u) atomicMax(control[3], subgroup_max);
 }

@@ -1,0 +1,184 @@
+// paver-backend-bench: the solver on every backend in one run, so ratios compare like with like.
+//   ms per iteration and iterations/s at 1k, 10k, 100k and 1M particles (hexagonal pattern on the
+//   dense wave, 100k faces) for the CPU with one thread, the CPU with all threads, and Vulkan on
+//   every device found; and the end-to-end pavement time of each bundled design per backend.
+// Prints a table (with GPU/CPU ratios) and writes JSON: paver-backend-bench [--json FILE]
+//   [--sizes 1000,10000] [--skip-designs]
+#include "paver/compute/vulkan_context.h"
+#include "paver/compute/vulkan_spring_solver.h"
+#include "paver/design_io.h"
+#include "paver/mesh_loader.h"
+#include "paver/pavement.h"
+#include "paver/spring_solver.h"
+
+#include <nlohmann/json.hpp>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+struct Backend {
+  std::string name;  // "cpu 1 thread", "cpu 2 threads", "vulkan: <device>"
+  paver::SolverFactory factory;
+  bool gpu = false;
+};
+
+double seconds_of(const std::function<void()>& f) {
+  const auto t0 = Clock::now();
+  f();
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// Per-iteration time: (time of 1 + m iterations - time of 1 iteration) / m, best of 3, so
+// uploads, initialisation and read-back are not counted.
+double ms_per_iteration(const Backend& b, const paver::SolverSurface& surface, const paver::Pattern& pattern,
+                        double spacing, int m) {
+  auto solve = [&](int iterations) {
+    paver::SpringSystem system = paver::make_spring_system(pattern);
+    paver::SolverParams params;
+    params.iterations = iterations;
+    params.threshold = 0;  // run them all
+    auto solver = b.factory(surface, system, params, spacing);
+    return seconds_of([&] { solver->solve(); });
+  };
+  double best = 1e30;
+  for (int rep = 0; rep < 3; ++rep) best = std::min(best, (solve(1 + m) - solve(1)) / m);
+  return 1e3 * std::max(best, 1e-9);
+}
+
+std::map<std::string, std::string> design_surfaces() {
+  std::ifstream readme(fs::path(PAVER_SOURCE_DIR) / "assets/designs/README.md");
+  std::map<std::string, std::string> out;
+  const std::regex row(R"(^\|\s*([a-z0-9_]+)\.json\s*\|\s*([a-z0-9_]+\.obj)\s*\|)");
+  std::string line;
+  std::smatch match;
+  while (std::getline(readme, line))
+    if (std::regex_search(line, match, row)) out[match[1]] = match[2];
+  return out;
+}
+
+std::vector<int> parse_sizes(const std::string& text) {
+  std::vector<int> out;
+  std::stringstream s(text);
+  for (std::string item; std::getline(s, item, ',');) out.push_back(std::stoi(item));
+  return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string json_path;
+  std::vector<int> sizes = {1000, 10000, 100000, 1000000};
+  bool designs = true;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--json" && i + 1 < argc) json_path = argv[++i];
+    else if (a == "--sizes" && i + 1 < argc) sizes = parse_sizes(argv[++i]);
+    else if (a == "--skip-designs") designs = false;
+    else {
+      std::fprintf(stderr, "usage: paver-backend-bench [--json FILE] [--sizes 1000,10000,...] [--skip-designs]\n");
+      return 2;
+    }
+  }
+  const int cores = tbb::this_task_arena::max_concurrency();
+  std::vector<Backend> backends = {{"cpu 1 thread", paver::cpu_solver_factory(1), false},
+                                   {"cpu " + std::to_string(cores) + " threads", paver::cpu_solver_factory(0), false}};
+  nlohmann::json out = {{"cores", cores}, {"devices", nlohmann::json::array()}};
+  if (auto devices = paver::gpu::list_devices()) {
+    for (const auto& d : devices.value()) {
+      out["devices"].push_back({{"name", d.name}, {"type", d.type}, {"vulkan", d.api_version}});
+      if (!d.compute) continue;
+      paver::gpu::ContextOptions options;
+      options.device = d.name;
+      auto context = paver::gpu::VulkanContext::create(options);
+      if (!context) continue;
+      auto session = paver::gpu::VulkanSolverSession::create(context.value());
+      if (session) backends.push_back({"vulkan: " + d.name, paver::gpu::vulkan_solver_factory(session.value(), 256), true});
+    }
+  } else {
+    std::printf("no Vulkan: %s\n", devices.error().message.c_str());
+  }
+
+  // Per-iteration cost at growing sizes.
+  const fs::path dense = fs::path(PAVER_BINARY_DIR) / "assets/wave_dense.obj";
+  const paver::SurfaceMap map = paver::build_surface_map(paver::load_surface(dense).mesh);
+  const paver::SolverSurface surface = paver::make_solver_surface(map);
+  out["iteration"] = nlohmann::json::array();
+  std::printf("\nSolver ms per iteration (hexagonal pattern on %s, %d faces)\n", dense.filename().c_str(),
+              map.mesh.face_count());
+  std::printf("%10s", "particles");
+  for (const auto& b : backends) std::printf(" | %28.28s", b.name.c_str());
+  for (size_t g = 2; g < backends.size(); ++g) std::printf(" | %14s", "GPU/CPU(all)");
+  std::printf("\n");
+  for (int n : sizes) {
+    paver::PatternDesign pd;
+    pd.tessellation = paver::Tessellation::Hexagon;
+    pd.spacing = std::sqrt(paver::surface_area(map.mesh) * 2 / (1.5 * std::sqrt(3.0)) / n);
+    const paver::Pattern pattern = paver::build_pattern(map, paver::make_design_cell(pd), {});
+    const int m = std::max(4, std::min(200, 2000000 / std::max(1, pattern.point_count())));
+    std::vector<double> ms;
+    std::printf("%10d", pattern.point_count());
+    for (const auto& b : backends) {
+      ms.push_back(ms_per_iteration(b, surface, pattern, pd.spacing, m));
+      std::printf(" | %12.3f ms %9.0f it/s", ms.back(), 1000.0 / ms.back());
+      std::fflush(stdout);
+      out["iteration"].push_back({{"backend", b.name}, {"particles", pattern.point_count()},
+                                  {"springs", pattern.edge_count()}, {"ms_per_iteration", ms.back()},
+                                  {"iterations_per_second", 1000.0 / ms.back()}});
+    }
+    for (size_t g = 2; g < backends.size(); ++g) {
+      std::printf(" | %13.2fx", ms[1] / ms[g]);
+      out["iteration"].back()["speedup_over_cpu_all_threads"] = ms[1] / ms[g];
+    }
+    std::printf("\n");
+  }
+
+  if (designs) {
+    std::printf("\nWhole pavement per bundled design, ms (map built once, not counted)\n%-26s", "design");
+    for (const auto& b : backends) std::printf(" | %28.28s", b.name.c_str());
+    std::printf(" | identical\n");
+    out["designs"] = nlohmann::json::array();
+    for (const auto& [name, surface_file] : design_surfaces()) {
+      const paver::SurfaceMap design_map =
+          paver::build_surface_map(paver::load_surface(fs::path(PAVER_SOURCE_DIR) / "assets/surfaces" / surface_file).mesh);
+      const paver::Design design = paver::load_design(fs::path(PAVER_SOURCE_DIR) / "assets/designs" / (name + ".json"));
+      std::printf("%-26s", name.c_str());
+      std::vector<paver::Elements> results;
+      for (const auto& b : backends) {
+        paver::PavementOptions options;
+        options.solver = b.factory;
+        paver::Pavement p;
+        const double ms = 1e3 * seconds_of([&] { p = paver::make_pavement(design_map, design, options); });
+        results.push_back(p.elements);
+        std::printf(" | %25.1f ms", ms);
+        std::fflush(stdout);
+        out["designs"].push_back({{"design", name}, {"backend", b.name}, {"ms", ms}, {"elements", p.elements.size()},
+                                  {"iterations", p.solve.iterations}, {"collisions", p.after.collisions}});
+      }
+      bool same = true;
+      for (const auto& r : results) same = same && r.position == results.front().position;
+      std::printf(" | %s\n", same ? "yes" : "no");
+    }
+  }
+  if (!json_path.empty()) {
+    std::ofstream(json_path) << out.dump(2) << "\n";
+    std::printf("\nwrote %s\n", json_path.c_str());
+  } else {
+    std::printf("\n%s\n", out.dump(2).c_str());
+  }
+  return 0;
+}
