@@ -490,3 +490,71 @@ TEST_F(PaverParam, BunnyheadMapIsBijective) {
 
 }  // namespace
 }  // namespace paver::cli_test
+
+namespace paver::cli_test {
+namespace {
+
+// The optimizer runs by default and the report shows what it did.
+TEST_F(PaverRun, OptimizedPavementReportsZeroCollisions) {
+  const fs::path out = dir() / "optimized";
+  const CliResult r = paver({"run", "assets/surfaces/dome.obj", "--design", "assets/designs/dome_hex_d6.json",
+                             "--backend", "cpu", "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const json report = read_json(out / "report.json");
+  EXPECT_GT(report["quality_before"]["collisions"].get<long>(), 0);
+  EXPECT_EQ(report["quality_after"]["collisions"].get<long>(), 0);
+  EXPECT_EQ(report["quality_after"]["boundary_crossings"].get<long>(), 0);
+  EXPECT_GE(report["quality_after"]["neighbor_ratio"]["p5"].get<double>(), 0.99);
+  EXPECT_GT(report["optimization"]["iterations"].get<int>(), 0);
+  EXPECT_TRUE(report.contains("quality_paper_method"));
+  for (const char* stage : {"load", "parameterize", "pattern", "optimize", "export", "total"})
+    EXPECT_TRUE(report["timings_ms"].contains(stage)) << stage;
+  EXPECT_NE(r.out.find("final"), std::string::npos) << describe(r);
+
+  // --no-optimize leaves the initial pavement, collisions and all.
+  const fs::path raw = dir() / "raw";
+  const CliResult r2 = paver({"run", "assets/surfaces/dome.obj", "--design", "assets/designs/dome_hex_d6.json",
+                              "--no-optimize", "--out", raw.string()});
+  ASSERT_EQ(r2.exit_code, 0) << describe(r2);
+  EXPECT_GT(read_json(raw / "report.json")["quality_after"]["collisions"].get<long>(), 0);
+}
+
+
+TEST_F(PaverRun, VulkanBackendWritesTheSamePlacements) {
+  if (paver({"devices"}).exit_code != 0) {
+    std::fprintf(stderr, "\n*** NO VULKAN DEVICE: PaverRun.VulkanBackendWritesTheSamePlacements is SKIPPED ***\n\n");
+    GTEST_SKIP() << "no Vulkan device";
+  }
+  const fs::path cpu = dir() / "cpu", gpu = dir() / "gpu";
+  const CliResult a = paver({"run", "assets/surfaces/saddle.obj", "--design", "assets/designs/saddle_tri_d18.json",
+                             "--backend", "cpu", "--out", cpu.string()});
+  const CliResult b = paver({"run", "assets/surfaces/saddle.obj", "--design", "assets/designs/saddle_tri_d18.json",
+                             "--backend", "vulkan", "--out", gpu.string()});
+  ASSERT_EQ(a.exit_code, 0) << describe(a);
+  ASSERT_EQ(b.exit_code, 0) << describe(b);
+  EXPECT_NE(b.out.find("optimize vulkan"), std::string::npos) << describe(b);
+  const json ra = read_json(cpu / "report.json"), rb = read_json(gpu / "report.json");
+  EXPECT_EQ(ra["elements"]["total"], rb["elements"]["total"]);
+  EXPECT_EQ(ra["optimization"]["iterations"], rb["optimization"]["iterations"]);
+  EXPECT_EQ(rb["quality_after"]["collisions"].get<long>(), 0);
+  // lavapipe computes exactly what the CPU computes; a real GPU may differ in the last bits.
+  if (b.out.find("llvmpipe") != std::string::npos) {
+    EXPECT_EQ(read_file_text(cpu / "placements.csv"), read_file_text(gpu / "placements.csv"));
+  }
+}
+
+TEST_F(PaverCli, DevicesAndBadDeviceName) {
+  const CliResult devices = paver({"devices"});
+  if (devices.exit_code != 0) {
+    EXPECT_NE(devices.out.find("no Vulkan"), std::string::npos) << describe(devices);
+    return;
+  }
+  EXPECT_NE(devices.out.find("--backend vulkan uses:"), std::string::npos) << describe(devices);
+  const CliResult bad = paver({"run", "assets/surfaces/wave.obj", "--backend", "vulkan", "--device",
+                               "no-such-gpu-xyz", "--out", (dir() / "x").string()});
+  EXPECT_EQ(bad.exit_code, 2) << describe(bad);
+  EXPECT_NE(bad.err.find("no-such-gpu-xyz"), std::string::npos) << describe(bad);
+}
+
+}  // namespace
+}  // namespace paver::cli_test
