@@ -1,4 +1,4 @@
-#include "gpu_buffer.h"
+#include "paver/compute/gpu_buffer.h"
 
 #include <cstring>
 

@@ -1,4 +1,4 @@
-#include "vulkan_context_impl.h"
+#include "paver/compute/vulkan_objects.h"
 
 #include <algorithm>
 #include <cctype>
@@ -43,11 +43,23 @@ std::string version_text(std::uint32_t v) {
   return s.str();
 }
 
-std::optional<std::uint32_t> compute_queue_family(const vk::raii::PhysicalDevice& device) {
+// A queue family with compute (and graphics, and presentation, when asked for).
+std::optional<std::uint32_t> queue_family(const vk::raii::Instance* instance, const vk::raii::PhysicalDevice& device,
+                                          const ContextOptions& options) {
   const auto families = device.getQueueFamilyProperties();
-  for (std::uint32_t i = 0; i < families.size(); ++i)
-    if (families[i].queueFlags & vk::QueueFlagBits::eCompute) return i;
+  for (std::uint32_t i = 0; i < families.size(); ++i) {
+    if (!(families[i].queueFlags & vk::QueueFlagBits::eCompute)) continue;
+    if (options.graphics && !(families[i].queueFlags & vk::QueueFlagBits::eGraphics)) continue;
+    if (options.can_present && instance &&
+        !options.can_present(static_cast<VkInstance>(**instance), static_cast<VkPhysicalDevice>(*device), i))
+      continue;
+    return i;
+  }
   return std::nullopt;
+}
+
+std::optional<std::uint32_t> compute_queue_family(const vk::raii::PhysicalDevice& device) {
+  return queue_family(nullptr, device, ContextOptions{});
 }
 
 DeviceInfo describe(const vk::raii::PhysicalDevice& device) {
@@ -77,9 +89,11 @@ bool has_layer(const vk::raii::Context& context, const char* name) {
 }
 
 vk::raii::Instance make_instance(const vk::raii::Context& context, bool validation,
-                                 vk::DebugUtilsMessengerCreateInfoEXT* messenger_info) {
+                                 vk::DebugUtilsMessengerCreateInfoEXT* messenger_info,
+                                 const std::vector<std::string>& extra_extensions = {}) {
   vk::ApplicationInfo app("paver", 1, "paver", 1, VK_API_VERSION_1_2);
   std::vector<const char*> layers, extensions;
+  for (const auto& e : extra_extensions) extensions.push_back(e.c_str());
   if (validation) {
     layers.push_back(kValidationLayer);
     extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
@@ -160,7 +174,7 @@ Result<std::shared_ptr<VulkanContext>> VulkanContext::create(const ContextOption
         {}, vk::DebugUtilsMessageSeverityFlagBitsEXT::eWarning | vk::DebugUtilsMessageSeverityFlagBitsEXT::eError,
         vk::DebugUtilsMessageTypeFlagBitsEXT::eValidation | vk::DebugUtilsMessageTypeFlagBitsEXT::ePerformance,
         &on_validation_message, &d);
-    d.instance.emplace(make_instance(d.context, validation, &messenger_info));
+    d.instance.emplace(make_instance(d.context, validation, &messenger_info, options.instance_extensions));
     d.validation = validation;
     if (validation) d.messenger.emplace(*d.instance, messenger_info);
 
@@ -174,21 +188,25 @@ Result<std::shared_ptr<VulkanContext>> VulkanContext::create(const ContextOption
     for (int i = 0; i < int(devices.size()); ++i) {
       const DeviceInfo info = describe(devices[i]);
       seen += (seen.empty() ? "" : ", ") + info.name + " (" + info.type + ")";
-      if (!info.compute) continue;
+      if (!info.compute || !queue_family(&*d.instance, devices[i], options)) continue;
       if (!wanted.empty() && lower(info.name).find(lower(wanted)) == std::string::npos) continue;
       const int rank = preference(devices[i].getProperties().deviceType);
       if (rank < best_rank) best_rank = rank, best = i;
     }
     if (best < 0)
-      return Error{wanted.empty() ? "no Vulkan 1.2 device with a compute queue among: " + seen
+      return Error{wanted.empty() ? std::string("no Vulkan 1.2 device with a ") +
+                                        (options.graphics ? "graphics and compute" : "compute") + " queue" +
+                                        (options.can_present ? " that can present" : "") + " among: " + seen
                                   : "no Vulkan device matches \"" + wanted + "\"; found: " + seen};
     d.physical_device.emplace(std::move(devices[best]));
     d.info = describe(*d.physical_device);
-    d.queue_family = *compute_queue_family(*d.physical_device);
+    d.queue_family = *queue_family(&*d.instance, *d.physical_device, options);
     d.memory = d.physical_device->getMemoryProperties();
     const float priority = 1.0f;
     vk::DeviceQueueCreateInfo queue_info({}, d.queue_family, 1, &priority);
-    d.device.emplace(*d.physical_device, vk::DeviceCreateInfo({}, queue_info));
+    std::vector<const char*> device_extensions;
+    if (options.can_present) device_extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+    d.device.emplace(*d.physical_device, vk::DeviceCreateInfo({}, queue_info, {}, device_extensions));
     d.queue.emplace(*d.device, d.queue_family, 0);
     d.command_pool.emplace(*d.device, vk::CommandPoolCreateInfo(vk::CommandPoolCreateFlagBits::eResetCommandBuffer,
                                                                 d.queue_family));

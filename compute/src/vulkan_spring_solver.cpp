@@ -1,9 +1,9 @@
 #include "paver/compute/vulkan_spring_solver.h"
 
-#include "gpu_buffer.h"
+#include "paver/compute/gpu_buffer.h"
 #include "gpu_solver_layout.h"
 #include "paver/spring_solver.h"
-#include "vulkan_context_impl.h"
+#include "paver/compute/vulkan_objects.h"
 
 #include <cstdint>
 // SPIR-V embedded at build time by glslangValidator --vn (compute/CMakeLists.txt).

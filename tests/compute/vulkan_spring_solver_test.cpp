@@ -2,7 +2,7 @@
 // with the validation layer (and synchronization validation) on: any message fails the suite.
 #include "paver/compute/vulkan_context.h"
 #include "paver/compute/vulkan_spring_solver.h"
-#include "vulkan_context_impl.h"  // white-box: the positive control below makes a raw Vulkan call
+#include "paver/compute/vulkan_objects.h"  // white-box: the positive control below makes a raw Vulkan call
 #include "paver/design_io.h"
 #include "paver/mesh_loader.h"
 #include "paver/pavement.h"

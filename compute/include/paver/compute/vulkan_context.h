@@ -4,6 +4,8 @@
 // substring (ContextOptions::device or $PAVER_VULKAN_DEVICE) overrides the preference.
 #include "paver/compute/result.h"
 
+#include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -21,6 +23,11 @@ struct ContextOptions {
   std::string device;       // case-insensitive substring of the device name; empty: $PAVER_VULKAN_DEVICE
   bool validation = false;  // VK_LAYER_KHRONOS_validation with synchronization validation
                             // (also on when $PAVER_VULKAN_VALIDATION=1)
+  bool graphics = false;    // the queue must do graphics as well as compute (the renderer)
+  // For a window: instance extensions (e.g. from glfwGetRequiredInstanceExtensions), and a test
+  // that a queue family of a device can present; the device then gets VK_KHR_swapchain.
+  std::vector<std::string> instance_extensions;
+  std::function<bool(void* instance, void* physical_device, std::uint32_t queue_family)> can_present;
 };
 
 // Every physical device the loader finds. An Error when there is no Vulkan at all.
@@ -39,7 +46,7 @@ public:
   int validation_message_count() const;
   std::vector<std::string> validation_messages() const;
 
-  struct Impl;  // Vulkan-Hpp RAII objects; see compute/src/vulkan_context_impl.h
+  struct Impl;  // Vulkan-Hpp RAII objects; see paver/compute/vulkan_objects.h
   Impl& impl() { return *impl_; }
 
 private:

@@ -1,7 +1,7 @@
 #pragma once
-// A storage buffer in device memory with its allocation, RAII-owned (private to compute/).
+// A buffer with its memory allocation, RAII-owned (compute/ and the renderer).
 // Uploads and downloads go through host-visible staging buffers.
-#include "vulkan_context_impl.h"
+#include "paver/compute/vulkan_objects.h"
 
 #include <cstddef>
 #include <optional>

@@ -1,6 +1,7 @@
 #pragma once
-// The Vulkan objects behind VulkanContext (private to compute/): RAII-owned by Vulkan-Hpp, so a
-// failure anywhere unwinds cleanly and nothing leaks a handle.
+// The Vulkan objects behind VulkanContext, for compute/ and the renderer in app/: RAII-owned by
+// Vulkan-Hpp, so a failure anywhere unwinds cleanly and nothing leaks a handle. Includes
+// vulkan_raii.hpp (slow to compile): include it only where Vulkan calls are made.
 #include "paver/compute/vulkan_context.h"
 
 #include <vulkan/vulkan_raii.hpp>
