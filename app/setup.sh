@@ -37,9 +37,10 @@ cmake --build build -j"$jobs"
 case "$mode" in
   demo)
     out=out/demo
-    build/bin/paver run assets/surfaces/dome.obj --design assets/designs/dome_hex_d6.json --out "$out"
+    build/bin/paver run assets/surfaces/dome.obj --design assets/designs/dome_hex_d6.json --out "$out" --png
     echo
-    echo "setup: results are in $(pwd)/$out (placements.csv, elements.ply/.obj, design.json, report.json)"
+    echo "setup: results are in $(pwd)/$out (placements.csv, elements.ply/.obj, design.json, report.json,"
+    echo "       preview.png: the paved surface, param.png: the pattern on the 2D map)"
     ;;
   test)
     ctest --test-dir build --output-on-failure -j"$jobs"

@@ -52,7 +52,7 @@ int run_param(const ParamArgs& args) {
   std::printf("  area ratio 2D/3D: min %.4f, max %.4f, mean |ratio - 1| %.4f\n", q.area_ratio_min,
               q.area_ratio_max, q.area_distortion_mean);
   if (!args.out.empty()) {
-    refuse_overwriting_inputs({args.surface}, {args.out});
+    app::refuse_overwriting_inputs({args.surface}, {args.out});
     write_uv_map_obj(args.out, loaded.mesh, param.uv);
     std::printf("wrote %s\n", args.out.c_str());
   }

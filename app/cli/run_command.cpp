@@ -2,6 +2,8 @@
 #include "backend_choice.h"
 #include "commands.h"
 #include "output_guard.h"
+#include "run_outputs.h"
+#include "preview_images.h"
 
 #include "paver/atomic_file.h"
 #include "paver/design_io.h"
@@ -49,6 +51,7 @@ struct RunArgs {
   bool no_resolve = false;
   std::string backend = "auto";
   std::string device;
+  bool png = false;
 };
 
 double ms_since(Clock::time_point t0) {
@@ -97,10 +100,11 @@ int run_run(const RunArgs& args) {
 
   // Refuse before any work is written if an output would replace an input.
   const fs::path out = args.out;
-  const std::vector<fs::path> outputs = {out / "placements.csv", out / "elements.ply", out / "elements.obj",
-                                         out / "design.json", out / "report.json"};
+  std::vector<fs::path> outputs = {out / "placements.csv", out / "elements.ply", out / "elements.obj",
+                                   out / "design.json", out / "report.json"};
+  if (args.png) outputs.insert(outputs.end(), {out / "preview.png", out / "param.png"});
   const std::vector<fs::path> inputs = {args.surface, args.design, design.elements.custom_shape};
-  refuse_overwriting_inputs(inputs, outputs);
+  app::refuse_overwriting_inputs(inputs, outputs);
 
   t0 = Clock::now();
   const SurfaceMap map = build_surface_map(std::move(loaded.mesh));
@@ -113,7 +117,7 @@ int run_run(const RunArgs& args) {
   options.postprocess = !args.no_postprocess;
   options.threads = args.threads;
   options.resolve_collisions = !args.no_resolve;
-  const BackendChoice backend = choose_backend(args.backend, args.device, args.threads);
+  const app::BackendChoice backend = app::choose_backend(args.backend, args.device, args.threads);
   options.solver = backend.factory;
   Pavement pavement = make_pavement(map, design, options);
   timings.insert(timings.end(), pavement.timings.begin(), pavement.timings.end());
@@ -122,19 +126,14 @@ int run_run(const RunArgs& args) {
                 pavement.design.pattern.spacing);
 
   t0 = Clock::now();
-  make_output_folder(out);
-  ElementMeshOptions mesh_options;
-  if (custom) mesh_options.custom = &*custom;
-  // Elements coloured like the paper's figures: red (too close) to green (loose).
-  const auto colours = neighbor_ratio_colours(nearest_neighbor_ratios(pavement.elements));
-  mesh_options.colours = &colours;
-  write_placements_csv(out / "placements.csv", pavement.elements);
-  write_elements_ply(out / "elements.ply", pavement.elements, mesh_options);
-  write_elements_obj(out / "elements.obj", pavement.elements, mesh_options);
-  save_design(out / "design.json", pavement.design);
+  app::write_run_files(out, pavement, {.custom = custom ? &*custom : nullptr});
   timings.emplace_back("export", ms_since(t0));
-  const nlohmann::json report = make_run_report(info, map, pavement, timings);
-  write_text_atomically(out / "report.json", report.dump(2) + "\n");
+  if (args.png) {
+    t0 = Clock::now();
+    write_preview_images(out, map, pavement, custom ? &*custom : nullptr);
+    timings.emplace_back("png", ms_since(t0));
+  }
+  const nlohmann::json report = app::write_run_report(out, info, map, pavement, timings);
 
   const auto& q = map.parameterization.quality;
   const auto& pr = map.parameterization.report;
@@ -163,8 +162,8 @@ int run_run(const RunArgs& args) {
   std::printf("time    ");
   for (const auto& [stage, ms] : timings) std::printf(" %s %.1f ms,", stage.c_str(), ms);
   std::printf(" total %.1f ms\n", r["timings_ms"]["total"].get<double>());
-  std::printf("wrote    %s/{placements.csv, elements.ply, elements.obj, design.json, report.json}\n",
-              out.string().c_str());
+  std::printf("wrote    %s/{placements.csv, elements.ply, elements.obj, design.json, report.json%s}\n",
+              out.string().c_str(), args.png ? ", preview.png, param.png" : "");
   return 0;
 }
 
@@ -185,6 +184,7 @@ std::function<int()> add_run_command(CLI::App& app) {
       ->check(CLI::IsMember({"cpu", "vulkan", "auto"}))
       ->capture_default_str();
   cmd->add_option("--device", args->device, "Vulkan device: a substring of its name (see `paver devices`)");
+  cmd->add_flag("--png", args->png, "Also render preview.png (3D) and param.png (2D) offscreen with Vulkan");
   // Every section 5 parameter, named as in design.json's "solver" object.
   const std::pair<const char*, double SolverParams::*> solver_flags[] = {
       {"c", &SolverParams::c},

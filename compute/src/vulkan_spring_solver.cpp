@@ -7,10 +7,10 @@
 
 #include <cstdint>
 // SPIR-V embedded at build time by glslangValidator --vn (compute/CMakeLists.txt).
-#include "solver_finish_spv.h"
-#include "solver_lift_spv.h"
-#include "solver_move_spv.h"
-#include "solver_springs_spv.h"
+#include "solver_finish_comp_spv.h"
+#include "solver_lift_comp_spv.h"
+#include "solver_move_comp_spv.h"
+#include "solver_springs_comp_spv.h"
 
 #include <array>
 #include <chrono>
@@ -82,10 +82,10 @@ struct VulkanSolverSession::Impl {
     const vk::PushConstantRange push(vk::ShaderStageFlagBits::eCompute, 0, sizeof(Push));
     const vk::DescriptorSetLayout raw_layout = **set_layout;
     pipeline_layout.emplace(*ctx->device, vk::PipelineLayoutCreateInfo({}, raw_layout, push));
-    lift.emplace(make_pipeline(solver_lift_spv));
-    springs.emplace(make_pipeline(solver_springs_spv));
-    move.emplace(make_pipeline(solver_move_spv));
-    finish.emplace(make_pipeline(solver_finish_spv));
+    lift.emplace(make_pipeline(solver_lift_comp_spv));
+    springs.emplace(make_pipeline(solver_springs_comp_spv));
+    move.emplace(make_pipeline(solver_move_comp_spv));
+    finish.emplace(make_pipeline(solver_finish_comp_spv));
     const vk::DescriptorPoolSize sizes[] = {{vk::DescriptorType::eUniformBuffer, 2},
                                             {vk::DescriptorType::eStorageBuffer, 2 * (kBindingCount - 1)}};
     pool.emplace(*ctx->device,

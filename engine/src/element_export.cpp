@@ -176,6 +176,20 @@ private:
   double scale_;
 };
 
+// The one per-element transform every mesh writer uses: calls emit(i, shape, placed) for each
+// element in order, with `placed` its shape's vertices as they sit on the surface.
+template <class Emit>
+void for_each_placed_element(const Elements& elements, const ShapeTable& shapes, Emit&& emit) {
+  std::vector<glm::dvec3> placed;
+  for (std::size_t i = 0; i < elements.size(); ++i) {
+    const ShapeMesh& shape = shapes[elements.shape[i]];
+    const Instancer place(elements, i);
+    placed.resize(shape.positions.size());
+    for (std::size_t k = 0; k < placed.size(); ++k) placed[k] = place(shape.positions[k]);
+    emit(i, shape, placed);
+  }
+}
+
 struct MeshCounts {
   std::size_t vertices = 0;
   std::size_t faces = 0;
@@ -237,13 +251,11 @@ void write_elements_ply(const std::filesystem::path& path, const Elements& eleme
            "element face " + std::to_string(counts.faces) +
            "\nproperty list uchar int vertex_indices\nend_header\n");
 
-    for (std::size_t i = 0; i < elements.size(); ++i) {
-      const Instancer place(elements, i);
+    for_each_placed_element(elements, shapes, [&](std::size_t i, const ShapeMesh&, const std::vector<glm::dvec3>& placed) {
       const Colour colour = options.colours ? (*options.colours)[i]
                             : elements.kind[i] == ElementKind::Vertex ? kVertexColour
                                                                       : kEdgeColour;
-      for (const glm::vec3& local : shapes[elements.shape[i]].positions) {
-        const glm::dvec3 p = place(local);
+      for (const glm::dvec3& p : placed) {
         char* c = w.room(15);
         c = put_f32_le(c, static_cast<float>(p.x));
         c = put_f32_le(c, static_cast<float>(p.y));
@@ -251,7 +263,7 @@ void write_elements_ply(const std::filesystem::path& path, const Elements& eleme
         for (const std::uint8_t channel : colour) c = put_u8(c, channel);
         w.advance(c);
       }
-    }
+    });
 
     std::int32_t first = 0;  // index of the element's first vertex
     for (std::size_t i = 0; i < elements.size(); ++i) {
@@ -281,10 +293,8 @@ void write_elements_obj(const std::filesystem::path& path, const Elements& eleme
     w.text("# Paver elements: " + std::to_string(elements.size()) + "\n# vertices: " +
            std::to_string(counts.vertices) + ", faces: " + std::to_string(counts.faces) + "\n");
 
-    for (std::size_t i = 0; i < elements.size(); ++i) {
-      const Instancer place(elements, i);
-      for (const glm::vec3& local : shapes[elements.shape[i]].positions) {
-        const glm::dvec3 p = place(local);
+    for_each_placed_element(elements, shapes, [&](std::size_t, const ShapeMesh&, const std::vector<glm::dvec3>& placed) {
+      for (const glm::dvec3& p : placed) {
         w.text("v ");
         w.shortest(static_cast<float>(p.x));
         w.character(' ');
@@ -293,7 +303,7 @@ void write_elements_obj(const std::filesystem::path& path, const Elements& eleme
         w.shortest(static_cast<float>(p.z));
         w.character('\n');
       }
-    }
+    });
 
     long long first = 1;  // OBJ counts vertices from 1
     for (std::size_t i = 0; i < elements.size(); ++i) {
@@ -309,6 +319,45 @@ void write_elements_obj(const std::filesystem::path& path, const Elements& eleme
       }
       first += static_cast<long long>(shape.positions.size());
     }
+    w.flush();
+  });
+}
+
+void write_elements_stl(const std::filesystem::path& path, const Elements& elements,
+                        const ElementMeshOptions& options) {
+  check_sizes(elements);
+  const ShapeTable shapes(elements, options, path);
+  const MeshCounts counts = count(elements, shapes);
+  if (counts.faces > std::numeric_limits<std::uint32_t>::max())
+    throw InputError("cannot write " + path.string() + ": its " + std::to_string(counts.faces) +
+                     " triangles are more than binary STL can count; use fewer elements or a lighter shape");
+
+  write_file_atomically(path, [&](std::ostream& out) {
+    ChunkedWriter w(out);
+    std::string header = "Paver elements: " + std::to_string(elements.size());
+    header.resize(80, ' ');  // the 80-byte header must not start with "solid" (ASCII STL)
+    w.text(header);
+    char* c = w.room(4);
+    w.advance(put_u32_le(c, static_cast<std::uint32_t>(counts.faces)));
+
+    for_each_placed_element(elements, shapes, [&](std::size_t, const ShapeMesh& shape, const std::vector<glm::dvec3>& placed) {
+      for (const glm::ivec3& t : shape.triangles) {
+        const glm::dvec3 a = placed[t.x], b = placed[t.y], d = placed[t.z];
+        const glm::dvec3 cross = glm::cross(b - a, d - a);
+        const double length = glm::length(cross);
+        // A sliver gets a zero normal, which STL readers take as "compute it from the vertices".
+        const glm::dvec3 n = length > 0 && std::isfinite(length) ? cross / length : glm::dvec3(0);
+        char* p = w.room(50);
+        for (const glm::dvec3& v : {n, a, b, d}) {
+          p = put_f32_le(p, static_cast<float>(v.x));
+          p = put_f32_le(p, static_cast<float>(v.y));
+          p = put_f32_le(p, static_cast<float>(v.z));
+        }
+        p = put_u8(p, 0);  // attribute byte count: unused
+        p = put_u8(p, 0);
+        w.advance(p);
+      }
+    });
     w.flush();
   });
 }

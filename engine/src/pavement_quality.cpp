@@ -159,19 +159,21 @@ nlohmann::json to_json(const PavementQuality& q) {
 }
 
 std::vector<std::array<std::uint8_t, 3>> neighbor_ratio_colours(const std::vector<double>& ratios) {
-  // Stops: 0.90 red, 0.99 orange (the collision threshold), 1.02 green, 1.30 light green.
+  // Stops: red below 0.90, orange to yellow up to the collision threshold 0.99, dark green at
+  // touching (1.0, the target of a uniform design), light green when loose (1.3 and more).
   struct Stop {
     double ratio;
     double r, g, b;
   };
-  static constexpr Stop stops[] = {
-      {0.90, 215, 25, 28}, {0.99, 253, 174, 97}, {1.02, 26, 150, 65}, {1.30, 199, 233, 160}};
+  static constexpr Stop stops[] = {{0.90, 215, 25, 28},  {0.97, 244, 109, 67}, {0.99, 254, 224, 139},
+                                   {1.00, 26, 152, 80},  {1.30, 199, 233, 160}};
   std::vector<std::array<std::uint8_t, 3>> colours(ratios.size());
   for (size_t i = 0; i < ratios.size(); ++i) {
-    const double x = std::isfinite(ratios[i]) ? ratios[i] : stops[3].ratio;
+    const Stop& last = stops[std::size(stops) - 1];
+    const double x = std::isfinite(ratios[i]) ? ratios[i] : last.ratio;
     const Stop* hi = std::find_if(std::begin(stops), std::end(stops), [&](const Stop& s) { return x <= s.ratio; });
     if (hi == std::begin(stops) || hi == std::end(stops)) {
-      const Stop& s = hi == std::end(stops) ? stops[3] : stops[0];
+      const Stop& s = hi == std::end(stops) ? last : stops[0];
       colours[i] = {std::uint8_t(s.r), std::uint8_t(s.g), std::uint8_t(s.b)};
       continue;
     }

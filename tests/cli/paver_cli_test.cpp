@@ -558,3 +558,26 @@ TEST_F(PaverCli, DevicesAndBadDeviceName) {
 
 }  // namespace
 }  // namespace paver::cli_test
+
+namespace paver::cli_test {
+namespace {
+
+TEST_F(PaverRun, PngPreviewsAreWritten) {
+  if (paver({"devices"}).exit_code != 0) {
+    std::fprintf(stderr, "\n*** NO VULKAN DEVICE: PaverRun.PngPreviewsAreWritten is SKIPPED ***\n\n");
+    GTEST_SKIP() << "no Vulkan device";
+  }
+  const fs::path out = dir() / "png";
+  const CliResult r = paver({"run", "assets/surfaces/saddle.obj", "--design", "assets/designs/saddle_hex_d18.json",
+                             "--png", "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  for (const char* name : {"preview.png", "param.png"}) {
+    const std::string bytes = read_file_text(out / name);
+    ASSERT_GT(bytes.size(), 10000u) << name;
+    EXPECT_EQ(bytes.substr(1, 3), "PNG") << name;
+  }
+  EXPECT_TRUE(leftover_temporaries(out).empty());
+}
+
+}  // namespace
+}  // namespace paver::cli_test

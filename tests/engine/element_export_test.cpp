@@ -323,12 +323,55 @@ TEST_F(ElementExport, CustomShapeIsUsedAndRequired) {
   EXPECT_NEAR(ply.positions[3].z, 0.4, 1e-6);
 }
 
+TEST_F(ElementExport, StlHasEveryShapeTriangleAndTheBinaryLayout) {
+  const Elements e = sample_elements();
+  const auto path = folder_ / "elements.stl";
+  write_elements_stl(path, e);
+  const std::string bytes = read_all(path);
+  const std::size_t triangles = total_faces(e);
+  ASSERT_EQ(bytes.size(), 84 + 50 * triangles);
+  EXPECT_FALSE(bytes.starts_with("solid")) << "an ASCII STL reader would take it for text";
+  std::uint32_t count = 0;
+  std::memcpy(&count, bytes.data() + 80, 4);
+  EXPECT_EQ(count, triangles);
+
+  // The vertices are the PLY's (same transform), and each normal is the unit face normal.
+  write_elements_ply(folder_ / "same.ply", e);
+  const Ply ply = read_ply(folder_ / "same.ply");
+  ASSERT_EQ(ply.faces.size(), triangles);
+  for (std::size_t f = 0; f < triangles; ++f) {
+    float v[12];
+    std::memcpy(v, bytes.data() + 84 + 50 * f, sizeof v);
+    for (int corner = 0; corner < 3; ++corner)
+      for (int k = 0; k < 3; ++k)
+        ASSERT_EQ(v[3 + 3 * corner + k], float(ply.positions[ply.faces[f][corner]][k])) << "triangle " << f;
+    const glm::dvec3 a(v[3], v[4], v[5]), b(v[6], v[7], v[8]), c(v[9], v[10], v[11]);
+    const glm::dvec3 cross = glm::cross(b - a, c - a);
+    if (glm::length(cross) < 1e-9) continue;  // float rounding makes slivers' normals arbitrary
+    EXPECT_NEAR(glm::dot(glm::dvec3(v[0], v[1], v[2]), glm::normalize(cross)), 1.0, 1e-3) << "triangle " << f;
+  }
+}
+
+TEST_F(ElementExport, StlTriangleCountIsTheSumOfTheShapes) {
+  Elements e;
+  for (int i = 0; i < 10; ++i)
+    e.push_back(ElementKind::Vertex, i, 0, {0, 0}, {double(i), 0, 0}, {0, 0, 1}, 0.5, ShapeKind(i % 4));
+  write_elements_stl(folder_ / "ten.stl", e);
+  const std::string bytes = read_all(folder_ / "ten.stl");
+  std::size_t triangles = 0;
+  for (int i = 0; i < 10; ++i) triangles += make_builtin_shape(ShapeKind(i % 4)).triangles.size();
+  EXPECT_EQ(bytes.size(), 84 + 50 * triangles);
+  EXPECT_THROW(write_elements_stl(folder_ / "no" / "ten.stl", e), InputError);
+}
+
 TEST_F(ElementExport, NoElementsGiveValidEmptyFiles) {
   const Elements e;
   write_placements_csv(folder_ / "empty.csv", e);
   write_elements_ply(folder_ / "empty.ply", e);
   write_elements_obj(folder_ / "empty.obj", e);
+  write_elements_stl(folder_ / "empty.stl", e);
   EXPECT_EQ(read_all(folder_ / "empty.csv"), "id,kind,x,y,z,nx,ny,nz,diameter,u,v\n");
+  EXPECT_EQ(read_all(folder_ / "empty.stl").size(), 84u);
   const Ply ply = read_ply(folder_ / "empty.ply");
   EXPECT_EQ(ply.vertex_count, 0u);
   EXPECT_EQ(ply.face_count, 0u);

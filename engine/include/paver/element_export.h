@@ -26,5 +26,10 @@ void write_elements_ply(const std::filesystem::path& path, const Elements& eleme
                         const ElementMeshOptions& options = {});
 void write_elements_obj(const std::filesystem::path& path, const Elements& elements,
                         const ElementMeshOptions& options = {});
+// Binary STL (for printers and CAM): an 80-byte header, the triangle count, then per triangle its
+// unit normal and three vertices as little-endian float32 and a zero attribute word, so the file
+// is 84 + 50 * triangles bytes. STL has no colours: options.colours is ignored.
+void write_elements_stl(const std::filesystem::path& path, const Elements& elements,
+                        const ElementMeshOptions& options = {});
 
 }  // namespace paver

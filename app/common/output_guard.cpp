@@ -4,7 +4,7 @@
 
 #include <system_error>
 
-namespace paver::cli {
+namespace paver::app {
 
 void refuse_overwriting_inputs(const std::vector<std::filesystem::path>& inputs,
                                const std::vector<std::filesystem::path>& outputs) {
@@ -28,4 +28,4 @@ void make_output_folder(const std::filesystem::path& folder) {
                      (ec ? ec.message() : "a file of that name exists"));
 }
 
-}  // namespace paver::cli
+}  // namespace paver::app

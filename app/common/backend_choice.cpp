@@ -7,7 +7,7 @@
 #include "paver/compute/vulkan_spring_solver.h"
 #endif
 
-namespace paver::cli {
+namespace paver::app {
 
 BackendChoice choose_backend(const std::string& backend, const std::string& device, int threads) {
   BackendChoice choice{cpu_solver_factory(threads), "cpu", ""};
@@ -36,4 +36,4 @@ BackendChoice choose_backend(const std::string& backend, const std::string& devi
 #endif
 }
 
-}  // namespace paver::cli
+}  // namespace paver::app

@@ -1,11 +1,12 @@
 #pragma once
-// Chooses the solver backend by name for the CLI: cpu, vulkan, or auto (Vulkan when a GPU is
-// present, else the CPU).
+// Chooses the solver backend by name for the CLI and the studio: cpu, vulkan, or auto (Vulkan
+// when a GPU is present, else the CPU). Vulkan gets a compute context of its own, so the solver
+// may run on any thread without sharing a queue with a renderer.
 #include "paver/solver_backend.h"
 
 #include <string>
 
-namespace paver::cli {
+namespace paver::app {
 
 struct BackendChoice {
   SolverFactory factory;  // empty: the CPU reference
@@ -16,4 +17,4 @@ struct BackendChoice {
 // Throws InputError when `backend` is vulkan and no device can be made.
 BackendChoice choose_backend(const std::string& backend, const std::string& device, int threads);
 
-}  // namespace paver::cli
+}  // namespace paver::app

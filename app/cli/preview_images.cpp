@@ -1,0 +1,39 @@
+#include "preview_images.h"
+
+#include "paver/input_error.h"
+
+#ifdef PAVER_WITH_VULKAN
+#include "renderer.h"
+#endif
+
+namespace paver::cli {
+
+void write_preview_images(const std::filesystem::path& folder, const SurfaceMap& map, const Pavement& pavement,
+                          const ShapeMesh* custom, PreviewSize size) {
+#ifdef PAVER_WITH_VULKAN
+  gpu::ContextOptions options;
+  options.graphics = true;
+  auto context = gpu::VulkanContext::create(options);
+  if (!context) throw InputError("--png needs a Vulkan device to render with: " + context.error().message);
+  auto renderer = render::Renderer::create(context.value());
+  if (!renderer) throw InputError("--png: " + renderer.error().message);
+  render::Renderer& r = *renderer.value();
+  r.set_surface(map);
+  r.set_elements(pavement.elements, render::element_colours(pavement.elements, render::ColourMode::NeighbourRatio),
+                 custom);
+  r.set_pattern(map, pavement.pattern, pavement.points);
+  render::SceneStyle style;
+  r.render_3d(size.width, size.height, render::frame_surface(map.mesh), style);
+  render::Image preview = r.read_back(0);
+  render::draw_ratio_legend(preview);
+  render::write_png(folder / "preview.png", preview);
+  style.show_lattice = true;
+  r.render_2d(size.width, size.height, render::frame_map(map), style);
+  render::write_png(folder / "param.png", r.read_back(1));
+#else
+  (void)folder, (void)map, (void)pavement, (void)custom, (void)size;
+  throw InputError("--png: this paver was built without Vulkan");
+#endif
+}
+
+}  // namespace paver::cli

@@ -1,0 +1,44 @@
+#include "run_outputs.h"
+
+#include "output_guard.h"
+
+#include "paver/atomic_file.h"
+#include "paver/design_io.h"
+#include "paver/element_export.h"
+#include "paver/element_proximity.h"
+#include "paver/pavement_quality.h"
+
+#include <nlohmann/json.hpp>
+
+namespace paver::app {
+
+namespace fs = std::filesystem;
+
+std::vector<fs::path> run_output_paths(const fs::path& folder, bool stl) {
+  std::vector<fs::path> paths = {folder / "placements.csv", folder / "elements.ply", folder / "elements.obj",
+                                 folder / "design.json", folder / "report.json"};
+  if (stl) paths.push_back(folder / "elements.stl");
+  return paths;
+}
+
+void write_run_files(const fs::path& folder, const Pavement& pavement, const RunOutputOptions& options) {
+  make_output_folder(folder);
+  ElementMeshOptions mesh_options;
+  mesh_options.custom = options.custom;
+  const auto colours = neighbor_ratio_colours(nearest_neighbor_ratios(pavement.elements));
+  mesh_options.colours = &colours;
+  write_placements_csv(folder / "placements.csv", pavement.elements);
+  write_elements_ply(folder / "elements.ply", pavement.elements, mesh_options);
+  write_elements_obj(folder / "elements.obj", pavement.elements, mesh_options);
+  if (options.stl) write_elements_stl(folder / "elements.stl", pavement.elements, mesh_options);
+  save_design(folder / "design.json", pavement.design);
+}
+
+nlohmann::json write_run_report(const fs::path& folder, const RunInfo& info, const SurfaceMap& map,
+                                const Pavement& pavement, const StageTimings& timings) {
+  nlohmann::json report = make_run_report(info, map, pavement, timings);
+  write_text_atomically(folder / "report.json", report.dump(2) + "\n");
+  return report;
+}
+
+}  // namespace paver::app

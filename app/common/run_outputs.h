@@ -1,0 +1,34 @@
+#pragma once
+// The files a pavement run leaves behind, written the same way by `paver run` and by the
+// studio's export: placements.csv, elements.ply, elements.obj (and elements.stl when asked) and
+// design.json, then report.json last so that it can carry the time the others took.
+#include "paver/element_shape.h"
+#include "paver/pavement.h"
+#include "paver/run_report.h"
+#include "paver/surface_map.h"
+
+#include <nlohmann/json_fwd.hpp>
+
+#include <filesystem>
+#include <vector>
+
+namespace paver::app {
+
+struct RunOutputOptions {
+  const ShapeMesh* custom = nullptr;  // the design's custom shape, when an element uses it
+  bool stl = false;                   // also elements.stl (binary STL)
+};
+
+// Every path the two functions below write in `folder`, for refuse_overwriting_inputs.
+std::vector<std::filesystem::path> run_output_paths(const std::filesystem::path& folder, bool stl);
+
+// Creates `folder` if needed and writes the elements (the PLY coloured like the paper's figures:
+// red = too close, through yellow, to green = loose) and the resolved design.
+void write_run_files(const std::filesystem::path& folder, const Pavement& pavement,
+                     const RunOutputOptions& options = {});
+
+// Writes report.json and returns its content.
+nlohmann::json write_run_report(const std::filesystem::path& folder, const RunInfo& info, const SurfaceMap& map,
+                                const Pavement& pavement, const StageTimings& timings);
+
+}  // namespace paver::app

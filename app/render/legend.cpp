@@ -1,0 +1,93 @@
+#include "renderer.h"
+
+#include <cstdio>
+#include <map>
+#include <string>
+
+namespace paver::render {
+namespace {
+
+// A 5x7 bitmap font with just the characters the legend writes.
+const std::map<char, std::array<const char*, 7>>& glyphs() {
+  static const std::map<char, std::array<const char*, 7>> font = {
+      {'0', {" ### ", "#   #", "#  ##", "# # #", "##  #", "#   #", " ### "}},
+      {'1', {"  #  ", " ##  ", "  #  ", "  #  ", "  #  ", "  #  ", " ### "}},
+      {'2', {" ### ", "#   #", "    #", "   # ", "  #  ", " #   ", "#####"}},
+      {'3', {"#####", "   # ", "  #  ", "   # ", "    #", "#   #", " ### "}},
+      {'4', {"   # ", "  ## ", " # # ", "#  # ", "#####", "   # ", "   # "}},
+      {'5', {"#####", "#    ", "#### ", "    #", "    #", "#   #", " ### "}},
+      {'6', {"  ## ", " #   ", "#    ", "#### ", "#   #", "#   #", " ### "}},
+      {'7', {"#####", "    #", "   # ", "  #  ", " #   ", " #   ", " #   "}},
+      {'8', {" ### ", "#   #", "#   #", " ### ", "#   #", "#   #", " ### "}},
+      {'9', {" ### ", "#   #", "#   #", " ####", "    #", "   # ", " ##  "}},
+      {'.', {"     ", "     ", "     ", "     ", "     ", " ##  ", " ##  "}},
+      {' ', {"     ", "     ", "     ", "     ", "     ", "     ", "     "}},
+      {'/', {"    #", "    #", "   # ", "  #  ", " #   ", "#    ", "#    "}},
+      {'N', {"#   #", "##  #", "# # #", "#  ##", "#   #", "#   #", "#   #"}},
+      {'a', {"     ", "     ", " ### ", "    #", " ####", "#   #", " ####"}},
+      {'c', {"     ", "     ", " ### ", "#    ", "#    ", "#   #", " ### "}},
+      {'d', {"    #", "    #", " ## #", "#  ##", "#   #", "#   #", " ####"}},
+      {'e', {"     ", "     ", " ### ", "#   #", "#####", "#    ", " ### "}},
+      {'i', {"  #  ", "     ", " ##  ", "  #  ", "  #  ", "  #  ", " ### "}},
+      {'l', {" ##  ", "  #  ", "  #  ", "  #  ", "  #  ", "  #  ", " ### "}},
+      {'m', {"     ", "     ", "## # ", "# # #", "# # #", "#   #", "#   #"}},
+      {'n', {"     ", "     ", "# ## ", "##  #", "#   #", "#   #", "#   #"}},
+      {'o', {"     ", "     ", " ### ", "#   #", "#   #", "#   #", " ### "}},
+      {'r', {"     ", "     ", "# ## ", "##  #", "#    ", "#    ", "#    "}},
+      {'s', {"     ", "     ", " ####", "#    ", " ### ", "    #", "#### "}},
+      {'t', {" #   ", " #   ", "###  ", " #   ", " #   ", " #  #", "  ## "}},
+  };
+  return font;
+}
+
+void put(Image& image, int x, int y, std::array<std::uint8_t, 3> rgb) {
+  if (x < 0 || y < 0 || x >= image.width || y >= image.height) return;
+  std::uint8_t* p = &image.rgba[(std::size_t(y) * image.width + x) * 4];
+  p[0] = rgb[0], p[1] = rgb[1], p[2] = rgb[2], p[3] = 255;
+}
+
+void text(Image& image, int x, int y, const std::string& s, int scale, std::array<std::uint8_t, 3> rgb) {
+  for (char ch : s) {
+    const auto it = glyphs().find(ch);
+    if (it != glyphs().end())
+      for (int row = 0; row < 7; ++row)
+        for (int col = 0; col < 5; ++col)
+          if (it->second[row][col] == '#')
+            for (int dy = 0; dy < scale; ++dy)
+              for (int dx = 0; dx < scale; ++dx) put(image, x + col * scale + dx, y + row * scale + dy, rgb);
+    x += 6 * scale;
+  }
+}
+
+}  // namespace
+
+void draw_ratio_legend(Image& image) {
+  const auto stops = neighbour_ratio_legend();
+  const int scale = image.height >= 600 ? 2 : 1;
+  const int bar_w = 260 * scale / 2 + 40, bar_h = 14 * scale;
+  const int x0 = 16 * scale, y0 = image.height - 40 * scale - bar_h;
+  const double lo = stops.front().ratio, hi = stops.back().ratio;
+  // Panel behind the legend so it reads on any background.
+  for (int y = y0 - 22 * scale; y < y0 + bar_h + 22 * scale; ++y)
+    for (int x = x0 - 8 * scale; x < x0 + bar_w + 8 * scale; ++x) put(image, x, y, {28, 30, 34});
+  for (int x = 0; x < bar_w; ++x) {
+    const double r = lo + (hi - lo) * x / (bar_w - 1);
+    size_t k = 1;
+    while (k + 1 < stops.size() && stops[k].ratio < r) ++k;
+    const double t = std::clamp((r - stops[k - 1].ratio) / (stops[k].ratio - stops[k - 1].ratio), 0.0, 1.0);
+    std::array<std::uint8_t, 3> c;
+    for (int i = 0; i < 3; ++i) c[i] = std::uint8_t(stops[k - 1].rgb[i] + t * (stops[k].rgb[i] - stops[k - 1].rgb[i]));
+    for (int y = 0; y < bar_h; ++y) put(image, x0 + x, y0 + y, c);
+  }
+  const std::array<std::uint8_t, 3> white{235, 235, 235};
+  text(image, x0, y0 - 12 * scale, "NN distance / diameter", scale, white);
+  for (double tick : {0.90, 1.00, 1.10, 1.20, 1.30}) {
+    const int x = x0 + int((tick - lo) / (hi - lo) * (bar_w - 1));
+    for (int y = 0; y < 4 * scale; ++y) put(image, x, y0 + bar_h + y, white);
+    char label[16];
+    std::snprintf(label, sizeof label, "%.1f", tick);
+    text(image, x - 8 * scale, y0 + bar_h + 6 * scale, label, scale, white);
+  }
+}
+
+}  // namespace paver::render

@@ -1,0 +1,510 @@
+#include "renderer.h"
+
+#include "paver/compute/gpu_buffer.h"
+#include "paver/compute/vulkan_objects.h"
+#include "paver/element_proximity.h"
+#include "paver/lifting.h"
+#include "paver/mean_curvature.h"
+#include "paver/pavement_quality.h"
+#include "render_targets.h"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <map>
+#include <span>
+// SPIR-V embedded at build time (app/render/CMakeLists.txt).
+#include "disk_frag_spv.h"
+#include "disk_vert_spv.h"
+#include "element_frag_spv.h"
+#include "element_vert_spv.h"
+#include "flat_frag_spv.h"
+#include "flat_vert_spv.h"
+#include "surface_frag_spv.h"
+#include "surface_vert_spv.h"
+
+namespace paver::render {
+namespace {
+
+struct FramePush {
+  glm::mat4 view_projection;
+  glm::vec4 eye;
+  glm::vec4 light;
+};
+static_assert(sizeof(FramePush) == 96);
+
+struct SurfaceVertex {
+  glm::vec3 position, normal;
+};
+struct FlatVertex {
+  glm::vec3 position;
+  std::uint32_t colour;  // RGBA8
+};
+struct ElementInstance {
+  glm::vec3 centre, normal;
+  float diameter;
+  std::uint32_t colour;
+};
+static_assert(sizeof(ElementInstance) == 32);
+struct DiskInstance {
+  glm::vec2 centre;
+  float radius;
+  std::uint32_t colour;
+};
+
+std::uint32_t pack(std::array<std::uint8_t, 3> c, std::uint8_t a = 255) {
+  return std::uint32_t(c[0]) | std::uint32_t(c[1]) << 8 | std::uint32_t(c[2]) << 16 | std::uint32_t(a) << 24;
+}
+
+constexpr ShapeKind kShapes[] = {ShapeKind::Sphere, ShapeKind::Gem, ShapeKind::HexPrism, ShapeKind::Disc,
+                                 ShapeKind::Custom};
+
+}  // namespace
+
+struct Renderer::Impl {
+  std::shared_ptr<gpu::VulkanContext> context;
+  gpu::VulkanContext::Impl* vk = nullptr;
+  std::optional<vk::raii::RenderPass> pass;
+  std::optional<vk::raii::PipelineLayout> layout;
+  std::optional<vk::raii::Pipeline> surface_pipe, element_pipe, lines3d_pipe, tris2d_pipe, lines2d_pipe, disk_pipe;
+  std::optional<vk::raii::Sampler> sampler;
+  std::array<RenderTarget, 2> targets;
+
+  // Scene buffers (host-visible: rewritten whenever the scene changes).
+  gpu::GpuBuffer surface_vertices, surface_indices, map_triangles, map_lines, shape_vertices, instances,
+      lattice3d, lattice2d, disks;
+  std::uint32_t surface_index_count = 0, map_triangle_count = 0, map_line_count = 0, lattice3d_count = 0,
+                lattice2d_count = 0, disk_count = 0;
+  std::map<ShapeKind, std::pair<std::uint32_t, std::uint32_t>> shape_range;     // first vertex, count
+  std::map<ShapeKind, std::pair<std::uint32_t, std::uint32_t>> instance_range;  // first instance, count
+  glm::vec3 scene_centre{0};
+  float scene_size = 1;
+
+  vk::raii::ShaderModule module(std::span<const std::uint32_t> spirv) {
+    return vk::raii::ShaderModule(*vk->device, vk::ShaderModuleCreateInfo({}, spirv.size_bytes(), spirv.data()));
+  }
+
+  void create() {
+    const vk::AttachmentDescription attachments[] = {
+        {{}, kColourFormat, vk::SampleCountFlagBits::e1, vk::AttachmentLoadOp::eClear, vk::AttachmentStoreOp::eStore,
+         vk::AttachmentLoadOp::eDontCare, vk::AttachmentStoreOp::eDontCare, vk::ImageLayout::eUndefined,
+         vk::ImageLayout::eShaderReadOnlyOptimal},
+        {{}, kDepthFormat, vk::SampleCountFlagBits::e1, vk::AttachmentLoadOp::eClear, vk::AttachmentStoreOp::eDontCare,
+         vk::AttachmentLoadOp::eDontCare, vk::AttachmentStoreOp::eDontCare, vk::ImageLayout::eUndefined,
+         vk::ImageLayout::eDepthStencilAttachmentOptimal}};
+    const vk::AttachmentReference colour_ref(0, vk::ImageLayout::eColorAttachmentOptimal);
+    const vk::AttachmentReference depth_ref(1, vk::ImageLayout::eDepthStencilAttachmentOptimal);
+    const vk::SubpassDescription subpass({}, vk::PipelineBindPoint::eGraphics, {}, colour_ref, {}, &depth_ref);
+    // Earlier samplings/copies of the image finish before we draw; later ones (the studio's ImGui
+    // pass, a PNG copy) wait for the drawing.
+    const vk::SubpassDependency dependencies[] = {
+        {VK_SUBPASS_EXTERNAL, 0,
+         vk::PipelineStageFlagBits::eFragmentShader | vk::PipelineStageFlagBits::eTransfer |
+             vk::PipelineStageFlagBits::eColorAttachmentOutput | vk::PipelineStageFlagBits::eEarlyFragmentTests,
+         vk::PipelineStageFlagBits::eColorAttachmentOutput | vk::PipelineStageFlagBits::eEarlyFragmentTests,
+         vk::AccessFlagBits::eShaderRead | vk::AccessFlagBits::eTransferRead,
+         vk::AccessFlagBits::eColorAttachmentWrite | vk::AccessFlagBits::eDepthStencilAttachmentWrite},
+        {0, VK_SUBPASS_EXTERNAL, vk::PipelineStageFlagBits::eColorAttachmentOutput,
+         vk::PipelineStageFlagBits::eFragmentShader | vk::PipelineStageFlagBits::eTransfer,
+         vk::AccessFlagBits::eColorAttachmentWrite, vk::AccessFlagBits::eShaderRead | vk::AccessFlagBits::eTransferRead}};
+    pass.emplace(*vk->device, vk::RenderPassCreateInfo({}, attachments, subpass, dependencies));
+    const vk::PushConstantRange push(vk::ShaderStageFlagBits::eVertex | vk::ShaderStageFlagBits::eFragment, 0,
+                                     sizeof(FramePush));
+    layout.emplace(*vk->device, vk::PipelineLayoutCreateInfo({}, {}, push));
+    sampler.emplace(*vk->device, vk::SamplerCreateInfo({}, vk::Filter::eLinear, vk::Filter::eLinear,
+                                                       vk::SamplerMipmapMode::eNearest,
+                                                       vk::SamplerAddressMode::eClampToEdge,
+                                                       vk::SamplerAddressMode::eClampToEdge,
+                                                       vk::SamplerAddressMode::eClampToEdge));
+
+    using B = vk::VertexInputBindingDescription;
+    using A = vk::VertexInputAttributeDescription;
+    const B surface_b[] = {{0, sizeof(SurfaceVertex), vk::VertexInputRate::eVertex}};
+    const A surface_a[] = {{0, 0, vk::Format::eR32G32B32Sfloat, 0},
+                           {1, 0, vk::Format::eR32G32B32Sfloat, offsetof(SurfaceVertex, normal)}};
+    surface_pipe.emplace(make_pipeline(surface_vert_spv, surface_frag_spv, surface_b, surface_a,
+                                       vk::PrimitiveTopology::eTriangleList, true));
+    const B element_b[] = {{0, sizeof(glm::vec3), vk::VertexInputRate::eVertex},
+                           {1, sizeof(ElementInstance), vk::VertexInputRate::eInstance}};
+    const A element_a[] = {{0, 0, vk::Format::eR32G32B32Sfloat, 0},
+                           {1, 1, vk::Format::eR32G32B32Sfloat, offsetof(ElementInstance, centre)},
+                           {2, 1, vk::Format::eR32G32B32Sfloat, offsetof(ElementInstance, normal)},
+                           {3, 1, vk::Format::eR32Sfloat, offsetof(ElementInstance, diameter)},
+                           {4, 1, vk::Format::eR8G8B8A8Unorm, offsetof(ElementInstance, colour)}};
+    element_pipe.emplace(make_pipeline(element_vert_spv, element_frag_spv, element_b, element_a,
+                                       vk::PrimitiveTopology::eTriangleList, true));
+    const B flat_b[] = {{0, sizeof(FlatVertex), vk::VertexInputRate::eVertex}};
+    const A flat_a[] = {{0, 0, vk::Format::eR32G32B32Sfloat, 0},
+                        {1, 0, vk::Format::eR8G8B8A8Unorm, offsetof(FlatVertex, colour)}};
+    lines3d_pipe.emplace(make_pipeline(flat_vert_spv, flat_frag_spv, flat_b, flat_a, vk::PrimitiveTopology::eLineList, true));
+    tris2d_pipe.emplace(make_pipeline(flat_vert_spv, flat_frag_spv, flat_b, flat_a, vk::PrimitiveTopology::eTriangleList, false));
+    lines2d_pipe.emplace(make_pipeline(flat_vert_spv, flat_frag_spv, flat_b, flat_a, vk::PrimitiveTopology::eLineList, false));
+    const B disk_b[] = {{0, sizeof(DiskInstance), vk::VertexInputRate::eInstance}};
+    const A disk_a[] = {{0, 0, vk::Format::eR32G32Sfloat, offsetof(DiskInstance, centre)},
+                        {1, 0, vk::Format::eR32Sfloat, offsetof(DiskInstance, radius)},
+                        {2, 0, vk::Format::eR8G8B8A8Unorm, offsetof(DiskInstance, colour)}};
+    disk_pipe.emplace(make_pipeline(disk_vert_spv, disk_frag_spv, disk_b, disk_a, vk::PrimitiveTopology::eTriangleList, false));
+  }
+
+  vk::raii::Pipeline make_pipeline(std::span<const std::uint32_t> vert, std::span<const std::uint32_t> frag,
+                                   std::span<const vk::VertexInputBindingDescription> bindings,
+                                   std::span<const vk::VertexInputAttributeDescription> attributes,
+                                   vk::PrimitiveTopology topology, bool depth) {
+    const vk::raii::ShaderModule vs = module(vert), fs = module(frag);
+    const vk::PipelineShaderStageCreateInfo stages[] = {{{}, vk::ShaderStageFlagBits::eVertex, *vs, "main"},
+                                                        {{}, vk::ShaderStageFlagBits::eFragment, *fs, "main"}};
+    const vk::PipelineVertexInputStateCreateInfo input({}, std::uint32_t(bindings.size()), bindings.data(),
+                                                       std::uint32_t(attributes.size()), attributes.data());
+    const vk::PipelineInputAssemblyStateCreateInfo assembly({}, topology);
+    const vk::PipelineViewportStateCreateInfo viewport({}, 1, nullptr, 1, nullptr);
+    // Lines in 3D sit a hair in front of the surface they were lifted onto.
+    const bool lines = topology == vk::PrimitiveTopology::eLineList;
+    const vk::PipelineRasterizationStateCreateInfo raster({}, false, false, vk::PolygonMode::eFill, vk::CullModeFlagBits::eNone,
+                                                          vk::FrontFace::eCounterClockwise, false, 0, 0, 0, 1.0f);
+    const vk::PipelineMultisampleStateCreateInfo multisample({}, vk::SampleCountFlagBits::e1);
+    const vk::PipelineDepthStencilStateCreateInfo depth_state({}, depth, depth && !lines, vk::CompareOp::eLessOrEqual);
+    const vk::PipelineColorBlendAttachmentState blend(false, {}, {}, {}, {}, {}, {},
+                                                      vk::ColorComponentFlagBits::eR | vk::ColorComponentFlagBits::eG |
+                                                          vk::ColorComponentFlagBits::eB | vk::ColorComponentFlagBits::eA);
+    const vk::PipelineColorBlendStateCreateInfo blending({}, false, vk::LogicOp::eCopy, blend);
+    const vk::DynamicState dynamic[] = {vk::DynamicState::eViewport, vk::DynamicState::eScissor};
+    const vk::PipelineDynamicStateCreateInfo dynamic_state({}, dynamic);
+    const vk::GraphicsPipelineCreateInfo info({}, stages, &input, &assembly, nullptr, &viewport, &raster, &multisample,
+                                              &depth_state, &blending, &dynamic_state, **layout, **pass, 0);
+    return vk::raii::Pipeline(*vk->device, nullptr, info);
+  }
+
+  template <class T>
+  gpu::GpuBuffer host_buffer(const std::vector<T>& data, vk::BufferUsageFlags usage) {
+    gpu::GpuBuffer b(*vk, std::max<std::size_t>(data.size() * sizeof(T), 16), usage,
+                     vk::MemoryPropertyFlagBits::eHostVisible | vk::MemoryPropertyFlagBits::eHostCoherent, {});
+    if (!data.empty()) std::memcpy(b.mapped(), data.data(), data.size() * sizeof(T));
+    return b;
+  }
+
+  void begin(vk::raii::CommandBuffer& cb, RenderTarget& t, const SceneStyle& style) {
+    const vk::ClearValue clears[] = {vk::ClearColorValue(std::array<float, 4>{style.background[0], style.background[1],
+                                                                               style.background[2], 1.0f}),
+                                     vk::ClearDepthStencilValue(1.0f, 0)};
+    cb.beginRenderPass(vk::RenderPassBeginInfo(**pass, **t.framebuffer,
+                                               vk::Rect2D({0, 0}, {std::uint32_t(t.width), std::uint32_t(t.height)}), clears),
+                       vk::SubpassContents::eInline);
+    // Flip y so +y is up, as in the maps and the camera.
+    cb.setViewport(0, vk::Viewport(0, float(t.height), float(t.width), -float(t.height), 0, 1));
+    cb.setScissor(0, vk::Rect2D({0, 0}, {std::uint32_t(t.width), std::uint32_t(t.height)}));
+  }
+
+  void push(vk::raii::CommandBuffer& cb, const FramePush& f) {
+    cb.pushConstants<FramePush>(**layout, vk::ShaderStageFlagBits::eVertex | vk::ShaderStageFlagBits::eFragment, 0, f);
+  }
+};
+
+glm::mat4 OrbitCamera::view_projection(float aspect) const {
+  const glm::mat4 view = glm::lookAt(eye(), target, glm::vec3(0, 0, 1));
+  const glm::mat4 proj = glm::perspective(glm::radians(fov_deg), aspect, 0.01f * distance, 100.0f * distance);
+  return proj * view;
+}
+
+glm::vec3 OrbitCamera::eye() const {
+  const float p = std::clamp(pitch, -1.5f, 1.5f);
+  return target + distance * glm::vec3(std::cos(p) * std::cos(yaw), std::cos(p) * std::sin(yaw), std::sin(p));
+}
+
+OrbitCamera frame_surface(const SurfaceMesh& mesh) {
+  glm::dvec3 lo(1e300), hi(-1e300), normal_sum(0);
+  for (const auto& p : mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  double area = 0;
+  for (const auto& t : mesh.triangles) {
+    const glm::dvec3 n = glm::cross(mesh.positions[t.y] - mesh.positions[t.x], mesh.positions[t.z] - mesh.positions[t.x]);
+    normal_sum += n;
+    area += glm::length(n);
+  }
+  OrbitCamera c;
+  c.target = glm::vec3(0.5 * (lo + hi));
+  // The sphere around the bounding box's centre that holds every point: tighter than the box.
+  double radius = 0;
+  for (const auto& p : mesh.positions) radius = std::max(radius, glm::length(p - glm::dvec3(c.target)));
+  c.distance = float(radius) / std::sin(glm::radians(c.fov_deg) * 0.5f);
+  // Look from the side the surface faces (its mean normal), turned a little for a 3/4 view;
+  // surfaces that face every way (a vase) get the default view.
+  if (glm::length(normal_sum) > 0.3 * area) {
+    const glm::dvec3 n = glm::normalize(normal_sum);
+    c.pitch = float(std::clamp(std::asin(n.z) * 0.8, -1.2, 1.2));
+    // Facing up: look from the -y side so x runs across the image, as a plan is read.
+    c.yaw = std::abs(n.z) > 0.9 ? -1.3f : float(std::atan2(n.y, n.x)) + 0.35f;
+  }
+  return c;
+}
+
+glm::mat4 MapView::projection(float aspect) const {
+  return glm::ortho(centre.x - half_height * aspect, centre.x + half_height * aspect, centre.y - half_height,
+                    centre.y + half_height, -1.0f, 1.0f);
+}
+
+MapView frame_map(const SurfaceMap& map) {
+  MapView v;
+  v.centre = glm::vec2(0.5 * (map.uv_min + map.uv_max));
+  const glm::dvec2 extent = map.uv_max - map.uv_min;
+  // Fit the taller side with a margin; render_2d widens by the aspect ratio.
+  v.half_height = float(0.55 * std::max(extent.y, extent.x / 1.6));
+  return v;
+}
+
+std::vector<LegendStop> neighbour_ratio_legend() {
+  const std::vector<double> ratios = {0.90, 0.95, 0.99, 1.00, 1.02, 1.10, 1.20, 1.30};
+  const auto colours = neighbor_ratio_colours(ratios);
+  std::vector<LegendStop> out;
+  for (size_t i = 0; i < ratios.size(); ++i) out.push_back({ratios[i], colours[i]});
+  return out;
+}
+
+std::vector<std::array<std::uint8_t, 3>> element_colours(const Elements& elements, ColourMode mode) {
+  if (mode == ColourMode::NeighbourRatio) return neighbor_ratio_colours(nearest_neighbor_ratios(elements));
+  std::vector<std::array<std::uint8_t, 3>> out(elements.size());
+  for (size_t i = 0; i < elements.size(); ++i)
+    out[i] = elements.kind[i] == ElementKind::Vertex ? std::array<std::uint8_t, 3>{52, 101, 164}
+                                                     : std::array<std::uint8_t, 3>{237, 125, 49};
+  return out;
+}
+
+Renderer::Renderer() : impl_(std::make_unique<Impl>()) {}
+Renderer::~Renderer() {
+  if (impl_ && impl_->vk && impl_->vk->device) impl_->vk->device->waitIdle();
+}
+
+gpu::Result<std::unique_ptr<Renderer>> Renderer::create(std::shared_ptr<gpu::VulkanContext> context) {
+  std::unique_ptr<Renderer> r(new Renderer());
+  r->impl_->context = std::move(context);
+  r->impl_->vk = &r->impl_->context->impl();
+  try {
+    r->impl_->create();
+  } catch (const std::exception& e) {
+    return gpu::vulkan_error("creating the renderer", e);
+  }
+  return r;
+}
+
+void Renderer::set_surface(const SurfaceMap& map) {
+  Impl& d = *impl_;
+  std::vector<SurfaceVertex> vertices;
+  for (int v = 0; v < map.mesh.vertex_count(); ++v)
+    vertices.push_back({glm::vec3(map.mesh.positions[v]), glm::vec3(map.normals[v])});
+  std::vector<std::uint32_t> indices;
+  for (const auto& t : map.mesh.triangles) indices.insert(indices.end(), {std::uint32_t(t.x), std::uint32_t(t.y), std::uint32_t(t.z)});
+  d.surface_vertices = d.host_buffer(vertices, vk::BufferUsageFlagBits::eVertexBuffer);
+  d.surface_indices = d.host_buffer(indices, vk::BufferUsageFlagBits::eIndexBuffer);
+  d.surface_index_count = std::uint32_t(indices.size());
+
+  // The map: filled triangles, a light wireframe and the boundary in a darker line.
+  std::vector<FlatVertex> tris, lines;
+  const std::uint32_t fill = pack({206, 209, 214}), wire = pack({170, 174, 182}), edge = pack({60, 64, 72});
+  for (const auto& t : map.mesh.triangles) {
+    for (int c : {t.x, t.y, t.z}) tris.push_back({glm::vec3(glm::vec2(map.uv[c]), 0), fill});
+    const int corners[3] = {t.x, t.y, t.z};
+    for (int k = 0; k < 3; ++k) {
+      const int a = corners[k], b = corners[(k + 1) % 3];
+      if (a < b) {  // each interior edge once (it appears as a < b in one of its triangles)
+        lines.push_back({glm::vec3(glm::vec2(map.uv[a]), 0), wire});
+        lines.push_back({glm::vec3(glm::vec2(map.uv[b]), 0), wire});
+      }
+    }
+  }
+  const auto& loop = map.mesh.boundary_loop;
+  for (size_t i = 0; i < loop.size(); ++i) {
+    lines.push_back({glm::vec3(glm::vec2(map.uv[loop[i]]), 0), edge});
+    lines.push_back({glm::vec3(glm::vec2(map.uv[loop[(i + 1) % loop.size()]]), 0), edge});
+  }
+  d.map_triangles = d.host_buffer(tris, vk::BufferUsageFlagBits::eVertexBuffer);
+  d.map_lines = d.host_buffer(lines, vk::BufferUsageFlagBits::eVertexBuffer);
+  d.map_triangle_count = std::uint32_t(tris.size());
+  d.map_line_count = std::uint32_t(lines.size());
+  glm::dvec3 lo(1e300), hi(-1e300);
+  for (const auto& p : map.mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  d.scene_centre = glm::vec3(0.5 * (lo + hi));
+  d.scene_size = float(glm::length(hi - lo));
+  d.lattice3d_count = d.lattice2d_count = d.disk_count = 0;
+  d.instance_range.clear();
+}
+
+void Renderer::set_elements(const Elements& elements, const std::vector<std::array<std::uint8_t, 3>>& colours,
+                            const ShapeMesh* custom) {
+  Impl& d = *impl_;
+  // All shapes' triangles in one vertex buffer (expanded: the fragment shader makes flat normals).
+  std::vector<glm::vec3> shape_vertices;
+  d.shape_range.clear();
+  for (ShapeKind kind : kShapes) {
+    ShapeMesh mesh;
+    if (kind == ShapeKind::Custom) {
+      if (!custom) continue;
+      mesh = *custom;
+    } else {
+      mesh = make_builtin_shape(kind);
+    }
+    const std::uint32_t first = std::uint32_t(shape_vertices.size());
+    for (const auto& t : mesh.triangles)
+      for (int c : {t.x, t.y, t.z}) shape_vertices.push_back(mesh.positions[c]);
+    d.shape_range[kind] = {first, std::uint32_t(shape_vertices.size()) - first};
+  }
+  d.shape_vertices = d.host_buffer(shape_vertices, vk::BufferUsageFlagBits::eVertexBuffer);
+
+  std::vector<ElementInstance> instances;
+  std::vector<DiskInstance> disks;
+  d.instance_range.clear();
+  for (ShapeKind kind : kShapes) {
+    if (!d.shape_range.count(kind)) continue;
+    const std::uint32_t first = std::uint32_t(instances.size());
+    for (size_t i = 0; i < elements.size(); ++i) {
+      if (elements.shape[i] != kind) continue;
+      const std::uint32_t colour = pack(i < colours.size() ? colours[i] : std::array<std::uint8_t, 3>{200, 200, 200});
+      instances.push_back({glm::vec3(elements.position[i]), glm::vec3(elements.normal[i]), float(elements.diameter[i]), colour});
+      disks.push_back({glm::vec2(elements.uv[i]), float(0.5 * elements.diameter[i]), colour});
+    }
+    d.instance_range[kind] = {first, std::uint32_t(instances.size()) - first};
+  }
+  d.instances = d.host_buffer(instances, vk::BufferUsageFlagBits::eVertexBuffer);
+  d.disks = d.host_buffer(disks, vk::BufferUsageFlagBits::eVertexBuffer);
+  d.disk_count = std::uint32_t(disks.size());
+}
+
+void Renderer::set_pattern(const SurfaceMap& map, const Pattern& pattern, const std::vector<glm::dvec2>& points) {
+  Impl& d = *impl_;
+  // 2D: straight edges. 3D: each edge lifted at a few points so it follows the surface, raised a
+  // hair along the normal so it is not hidden in it.
+  constexpr int kSamples = 4;
+  std::vector<FlatVertex> lines2d, lines3d;
+  std::vector<glm::dvec2> samples;
+  const std::uint32_t real = pack({30, 90, 200}), virtual_colour = pack({140, 170, 220});
+  for (int e = 0; e < pattern.edge_count(); ++e) {
+    const glm::dvec2 a = points[pattern.edge_a[e]], b = points[pattern.edge_b[e]];
+    const std::uint32_t c = pattern.edge_virtual[e] ? virtual_colour : real;
+    lines2d.push_back({glm::vec3(glm::vec2(a), 0), c});
+    lines2d.push_back({glm::vec3(glm::vec2(b), 0), c});
+    if (pattern.edge_virtual[e]) continue;
+    for (int s = 0; s <= kSamples; ++s) samples.push_back(a + (double(s) / kSamples) * (b - a));
+  }
+  LiftedPoints lifted;
+  lifted.resize(samples.size());
+  lift_points(map, samples, lifted);
+  const double raise = 0.002 * d.scene_size;
+  for (size_t i = 0; i + kSamples < samples.size() + 1; i += kSamples + 1)
+    for (int s = 0; s < kSamples; ++s) {
+      const size_t p = i + s, q = i + s + 1;
+      if (lifted.triangle[p] < 0 || lifted.triangle[q] < 0) continue;
+      lines3d.push_back({glm::vec3(lifted.position[p] + raise * lifted.normal[p]), pack({20, 40, 90})});
+      lines3d.push_back({glm::vec3(lifted.position[q] + raise * lifted.normal[q]), pack({20, 40, 90})});
+    }
+  d.lattice2d = d.host_buffer(lines2d, vk::BufferUsageFlagBits::eVertexBuffer);
+  d.lattice3d = d.host_buffer(lines3d, vk::BufferUsageFlagBits::eVertexBuffer);
+  d.lattice2d_count = std::uint32_t(lines2d.size());
+  d.lattice3d_count = std::uint32_t(lines3d.size());
+}
+
+void Renderer::render_3d(int width, int height, const OrbitCamera& camera, const SceneStyle& style) {
+  Impl& d = *impl_;
+  RenderTarget& t = d.targets[0];
+  t.ensure(*d.vk, *d.pass, width, height);
+  FramePush f{camera.view_projection(float(t.width) / float(t.height)), glm::vec4(camera.eye(), 1),
+              glm::vec4(glm::normalize(camera.eye() - camera.target) + glm::vec3(0.3f, 0.2f, 0.8f), 0)};
+  d.vk->submit_and_wait([&](vk::raii::CommandBuffer& cb) {
+    d.begin(cb, t, style);
+    d.push(cb, f);
+    if (style.show_surface && d.surface_index_count > 0) {
+      cb.bindPipeline(vk::PipelineBindPoint::eGraphics, **d.surface_pipe);
+      cb.bindVertexBuffers(0, d.surface_vertices.handle(), {0});
+      cb.bindIndexBuffer(d.surface_indices.handle(), 0, vk::IndexType::eUint32);
+      cb.drawIndexed(d.surface_index_count, 1, 0, 0, 0);
+    }
+    if (style.show_elements && !d.instance_range.empty()) {
+      cb.bindPipeline(vk::PipelineBindPoint::eGraphics, **d.element_pipe);
+      cb.bindVertexBuffers(0, {d.shape_vertices.handle(), d.instances.handle()}, {0, 0});
+      for (const auto& [kind, range] : d.instance_range) {
+        if (range.second == 0) continue;
+        const auto shape = d.shape_range.at(kind);
+        cb.draw(shape.second, range.second, shape.first, range.first);
+      }
+    }
+    if (style.show_lattice && d.lattice3d_count > 0) {
+      cb.bindPipeline(vk::PipelineBindPoint::eGraphics, **d.lines3d_pipe);
+      cb.bindVertexBuffers(0, d.lattice3d.handle(), {0});
+      cb.draw(d.lattice3d_count, 1, 0, 0);
+    }
+    cb.endRenderPass();
+  });
+}
+
+void Renderer::render_2d(int width, int height, const MapView& view, const SceneStyle& style) {
+  Impl& d = *impl_;
+  RenderTarget& t = d.targets[1];
+  t.ensure(*d.vk, *d.pass, width, height);
+  FramePush f{view.projection(float(t.width) / float(t.height)), glm::vec4(0, 0, 1, 1), glm::vec4(0, 0, 1, 0)};
+  d.vk->submit_and_wait([&](vk::raii::CommandBuffer& cb) {
+    d.begin(cb, t, style);
+    d.push(cb, f);
+    if (d.map_triangle_count > 0) {
+      cb.bindPipeline(vk::PipelineBindPoint::eGraphics, **d.tris2d_pipe);
+      cb.bindVertexBuffers(0, d.map_triangles.handle(), {0});
+      cb.draw(d.map_triangle_count, 1, 0, 0);
+    }
+    if (style.show_map_wireframe && d.map_line_count > 0) {
+      cb.bindPipeline(vk::PipelineBindPoint::eGraphics, **d.lines2d_pipe);
+      cb.bindVertexBuffers(0, d.map_lines.handle(), {0});
+      cb.draw(d.map_line_count, 1, 0, 0);
+    }
+    if (style.show_lattice && d.lattice2d_count > 0) {
+      cb.bindPipeline(vk::PipelineBindPoint::eGraphics, **d.lines2d_pipe);
+      cb.bindVertexBuffers(0, d.lattice2d.handle(), {0});
+      cb.draw(d.lattice2d_count, 1, 0, 0);
+    }
+    if (style.show_elements && d.disk_count > 0) {
+      cb.bindPipeline(vk::PipelineBindPoint::eGraphics, **d.disk_pipe);
+      cb.bindVertexBuffers(0, d.disks.handle(), {0});
+      cb.draw(6, d.disk_count, 0, 0);
+    }
+    cb.endRenderPass();
+  });
+}
+
+Image Renderer::read_back(int view) {
+  Impl& d = *impl_;
+  RenderTarget& t = d.targets[view];
+  Image out;
+  out.width = t.width, out.height = t.height;
+  out.rgba.resize(std::size_t(t.width) * t.height * 4);
+  if (out.rgba.empty()) return out;
+  gpu::GpuBuffer staging(*d.vk, out.rgba.size(), vk::BufferUsageFlagBits::eTransferDst,
+                         vk::MemoryPropertyFlagBits::eHostVisible | vk::MemoryPropertyFlagBits::eHostCoherent,
+                         vk::MemoryPropertyFlagBits::eHostCached);
+  const vk::ImageSubresourceRange range(vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1);
+  d.vk->submit_and_wait([&](vk::raii::CommandBuffer& cb) {
+    const vk::ImageMemoryBarrier to_copy(vk::AccessFlagBits::eColorAttachmentWrite, vk::AccessFlagBits::eTransferRead,
+                                         vk::ImageLayout::eShaderReadOnlyOptimal, vk::ImageLayout::eTransferSrcOptimal,
+                                         VK_QUEUE_FAMILY_IGNORED, VK_QUEUE_FAMILY_IGNORED, **t.colour.image, range);
+    cb.pipelineBarrier(vk::PipelineStageFlagBits::eColorAttachmentOutput, vk::PipelineStageFlagBits::eTransfer, {}, {}, {},
+                       to_copy);
+    cb.copyImageToBuffer(**t.colour.image, vk::ImageLayout::eTransferSrcOptimal, staging.handle(),
+                         vk::BufferImageCopy(0, 0, 0, vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eColor, 0, 0, 1),
+                                             {0, 0, 0}, {std::uint32_t(t.width), std::uint32_t(t.height), 1}));
+    const vk::ImageMemoryBarrier back(vk::AccessFlagBits::eTransferRead, vk::AccessFlagBits::eShaderRead,
+                                      vk::ImageLayout::eTransferSrcOptimal, vk::ImageLayout::eShaderReadOnlyOptimal,
+                                      VK_QUEUE_FAMILY_IGNORED, VK_QUEUE_FAMILY_IGNORED, **t.colour.image, range);
+    const vk::BufferMemoryBarrier to_host(vk::AccessFlagBits::eTransferWrite, vk::AccessFlagBits::eHostRead,
+                                          VK_QUEUE_FAMILY_IGNORED, VK_QUEUE_FAMILY_IGNORED, staging.handle(), 0, VK_WHOLE_SIZE);
+    cb.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer,
+                       vk::PipelineStageFlagBits::eFragmentShader | vk::PipelineStageFlagBits::eHost, {}, {}, to_host, back);
+  });
+  std::memcpy(out.rgba.data(), staging.mapped(), out.rgba.size());
+  return out;
+}
+
+void* Renderer::image_view(int view) const {
+  const auto& t = impl_->targets[view];
+  return t.colour.view ? reinterpret_cast<void*>(static_cast<VkImageView>(**t.colour.view)) : nullptr;
+}
+void* Renderer::sampler() const { return reinterpret_cast<void*>(static_cast<VkSampler>(**impl_->sampler)); }
+int Renderer::image_generation(int view) const { return impl_->targets[view].generation; }
+
+}  // namespace paver::render

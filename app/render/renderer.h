@@ -1,0 +1,114 @@
+#pragma once
+// The one Vulkan renderer shared by the CLI (offscreen PNG previews) and Paver Studio (its 3D
+// and 2D views, shown as ImGui images). It draws into its own offscreen colour + depth images;
+// callers read them back (CLI) or sample them (studio).
+//
+// 3D view: the shaded surface and every element instanced by shape (sphere, gem, hex prism,
+// disc, custom mesh), oriented by its normal and coloured per element; optionally the pattern's
+// edges lifted onto the surface. 2D view: the map M^ (triangles and wireframe), the pattern's
+// edges, and the elements as disks.
+#include "paver/compute/result.h"
+#include "paver/compute/vulkan_context.h"
+#include "paver/element_shape.h"
+#include "paver/elements.h"
+#include "paver/pattern.h"
+#include "paver/surface_map.h"
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+namespace paver::render {
+
+// Orbit camera around `target`; yaw/pitch in radians, vertical field of view in degrees.
+struct OrbitCamera {
+  glm::vec3 target{0};
+  float distance = 1;
+  float yaw = 0.6f, pitch = 0.5f;
+  float fov_deg = 35;
+  glm::mat4 view_projection(float aspect) const;
+  glm::vec3 eye() const;
+};
+// A camera that frames the whole surface from above its mean normal, a little to the side.
+OrbitCamera frame_surface(const SurfaceMesh& mesh);
+
+// 2D view: the map point at the image centre and the half height of the visible region.
+struct MapView {
+  glm::vec2 centre{0};
+  float half_height = 1;
+  glm::mat4 projection(float aspect) const;
+};
+MapView frame_map(const SurfaceMap& map);
+
+enum class ColourMode { NeighbourRatio, ElementType };
+
+struct SceneStyle {
+  bool show_surface = true;
+  bool show_elements = true;
+  bool show_lattice = false;   // pattern edges (3D: lifted; 2D: always drawn when set)
+  bool show_map_wireframe = true;  // 2D only
+  std::array<float, 3> background{0.13f, 0.14f, 0.16f};
+};
+
+// Colours of the paper's scale for the legend: (ratio, rgb) stops, red (too close) to green.
+struct LegendStop {
+  double ratio;
+  std::array<std::uint8_t, 3> rgb;
+};
+std::vector<LegendStop> neighbour_ratio_legend();
+
+// Per element colours for a mode: nearest-neighbour ratio scale, or V blue / E orange.
+std::vector<std::array<std::uint8_t, 3>> element_colours(const Elements& elements, ColourMode mode);
+
+struct Image {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> rgba;  // row-major, top row first
+};
+
+class Renderer {
+public:
+  // Needs a context created with ContextOptions::graphics = true.
+  static gpu::Result<std::unique_ptr<Renderer>> create(std::shared_ptr<gpu::VulkanContext> context);
+  ~Renderer();
+
+  // Scene content. Each call uploads what it is given; the rest stays.
+  void set_surface(const SurfaceMap& map);
+  void set_elements(const Elements& elements, const std::vector<std::array<std::uint8_t, 3>>& colours,
+                    const ShapeMesh* custom = nullptr);
+  void set_pattern(const SurfaceMap& map, const Pattern& pattern, const std::vector<glm::dvec2>& points);
+
+  // Renders a view into the renderer's image of that view (0: 3D, 1: 2D), resized as needed.
+  void render_3d(int width, int height, const OrbitCamera& camera, const SceneStyle& style);
+  void render_2d(int width, int height, const MapView& view, const SceneStyle& style);
+
+  // Reads a view's image back (for PNGs and tests).
+  Image read_back(int view);
+
+  // For the studio: the view's image (colour, shader-read-only layout after rendering), its view
+  // handle and a sampler, as raw Vulkan handles (VkImageView, VkSampler).
+  void* image_view(int view) const;
+  void* sampler() const;
+  // Bumps whenever a view's image was re-created (its handles changed).
+  int image_generation(int view) const;
+
+  struct Impl;
+
+private:
+  Renderer();
+  std::unique_ptr<Impl> impl_;
+};
+
+// PNG through stb_image_write, written atomically. Throws InputError naming the path.
+void write_png(const std::filesystem::path& path, const Image& image);
+
+// Draws a colour legend for the nearest-neighbour ratio into the image (bottom left), with
+// numbers in a small built-in bitmap font: the CLI's preview carries its own legend.
+void draw_ratio_legend(Image& image);
+
+}  // namespace paver::render

@@ -1,0 +1,171 @@
+// The shared renderer, offscreen on lavapipe (any Vulkan device), validation layer on: the images
+// show the surface and the elements in the expected colours, and nothing is blank.
+#include "paver/design_io.h"
+#include "paver/mesh_loader.h"
+#include "paver/pavement.h"
+#include "renderer.h"
+#include "test_meshes.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <set>
+
+namespace paver {
+namespace {
+
+struct Fixture {
+  std::shared_ptr<gpu::VulkanContext> context;
+  std::unique_ptr<render::Renderer> renderer;
+  std::string why_not;
+};
+
+Fixture& fixture() {
+  static Fixture f = [] {
+    Fixture out;
+    gpu::ContextOptions options;
+    options.graphics = true;
+    options.validation = true;
+    auto context = gpu::VulkanContext::create(options);
+    if (!context) {
+      out.why_not = context.error().message;
+      return out;
+    }
+    auto renderer = render::Renderer::create(context.value());
+    if (!renderer) {
+      out.why_not = renderer.error().message;
+      return out;
+    }
+    out.context = context.value();
+    out.renderer = std::move(renderer.value());
+    return out;
+  }();
+  return f;
+}
+
+#define REQUIRE_VULKAN()                                                                                     \
+  do {                                                                                                       \
+    if (!fixture().renderer) {                                                                               \
+      std::fprintf(stderr, "\n*** NO VULKAN DEVICE: the renderer tests are SKIPPED: %s ***\n\n",            \
+                   fixture().why_not.c_str());                                                               \
+      GTEST_SKIP() << fixture().why_not;                                                                     \
+    }                                                                                                        \
+  } while (0)
+
+struct Counts {
+  int total = 0, background = 0, grey = 0, green = 0, red = 0, blue = 0;
+  size_t distinct = 0;
+};
+
+Counts count(const render::Image& image) {
+  Counts c;
+  std::set<std::uint32_t> colours;
+  for (size_t i = 0; i + 3 < image.rgba.size(); i += 4) {
+    const int r = image.rgba[i], g = image.rgba[i + 1], b = image.rgba[i + 2];
+    ++c.total;
+    colours.insert(std::uint32_t(r) | std::uint32_t(g) << 8 | std::uint32_t(b) << 16);
+    if (std::abs(r - 33) < 4 && std::abs(g - 36) < 4 && std::abs(b - 41) < 4) ++c.background;
+    else if (std::abs(r - g) < 12 && std::abs(g - b) < 16 && r > 60) ++c.grey;
+    else if (g > r + 30 && g > b + 10) ++c.green;
+    else if (r > g + 60 && r > b + 60) ++c.red;
+    else if (b > r + 40 && b > g + 10) ++c.blue;
+  }
+  c.distinct = colours.size();
+  return c;
+}
+
+const Pavement& dome_pavement(const SurfaceMap& map) {
+  static const Pavement p = make_pavement(map, load_design(test::source_dir() / "assets/designs/dome_hex_d6.json"));
+  return p;
+}
+
+const SurfaceMap& dome_map() {
+  static const SurfaceMap map = build_surface_map(load_surface(test::bundled_surface("dome")).mesh);
+  return map;
+}
+
+TEST(Renderer, PreviewShowsSurfaceAndGreenElements) {
+  REQUIRE_VULKAN();
+  render::Renderer& r = *fixture().renderer;
+  const Pavement& p = dome_pavement(dome_map());
+  r.set_surface(dome_map());
+  r.set_elements(p.elements, render::element_colours(p.elements, render::ColourMode::NeighbourRatio));
+  r.set_pattern(dome_map(), p.pattern, p.points);
+  r.render_3d(640, 400, render::frame_surface(dome_map().mesh), {});
+  const render::Image image = r.read_back(0);
+  ASSERT_EQ(image.width, 640);
+  ASSERT_EQ(image.height, 400);
+  const Counts c = count(image);
+  EXPECT_GT(c.distinct, 500u) << "an image of shaded shapes has many colours";
+  EXPECT_GT(c.background, c.total / 20) << "the surface is framed with some background around it";
+  EXPECT_GT(c.green, c.total / 10) << "the optimized dome's elements are green (no collisions)";
+  EXPECT_LT(c.red, c.total / 200) << "no element is too close";
+  render::write_png(::testing::TempDir() + "/preview.png", image);
+}
+
+TEST(Renderer, ElementTypeColoursAndHiddenElements) {
+  REQUIRE_VULKAN();
+  render::Renderer& r = *fixture().renderer;
+  const Pavement& p = dome_pavement(dome_map());
+  r.set_surface(dome_map());
+  r.set_elements(p.elements, render::element_colours(p.elements, render::ColourMode::ElementType));
+  render::SceneStyle style;
+  r.render_3d(320, 240, render::frame_surface(dome_map().mesh), style);
+  const Counts typed = count(r.read_back(0));
+  EXPECT_GT(typed.blue, typed.total / 10) << "V-elements are blue";
+  style.show_elements = false;
+  r.render_3d(320, 240, render::frame_surface(dome_map().mesh), style);
+  const Counts bare = count(r.read_back(0));
+  EXPECT_EQ(bare.blue, 0);
+  EXPECT_GT(bare.grey, bare.total / 5) << "the bare surface is grey";
+}
+
+TEST(Renderer, ParameterViewShowsTheMapAndDisks) {
+  REQUIRE_VULKAN();
+  render::Renderer& r = *fixture().renderer;
+  const Pavement& p = dome_pavement(dome_map());
+  r.set_surface(dome_map());
+  r.set_elements(p.elements, render::element_colours(p.elements, render::ColourMode::NeighbourRatio));
+  r.set_pattern(dome_map(), p.pattern, p.points);
+  render::SceneStyle style;
+  style.show_lattice = true;
+  r.render_2d(400, 400, render::frame_map(dome_map()), style);
+  const Counts c = count(r.read_back(1));
+  EXPECT_GT(c.green, c.total / 10) << "element disks";
+  EXPECT_GT(c.background, c.total / 50) << "the map does not fill the whole view";
+}
+
+TEST(Renderer, ImagesFollowTheRequestedSize) {
+  REQUIRE_VULKAN();
+  render::Renderer& r = *fixture().renderer;
+  r.set_surface(dome_map());
+  const int before = r.image_generation(0);
+  r.render_3d(200, 100, render::frame_surface(dome_map().mesh), {});
+  r.render_3d(200, 100, render::frame_surface(dome_map().mesh), {});
+  EXPECT_LE(r.image_generation(0), before + 1) << "same size: the image is reused";
+  EXPECT_NE(r.image_view(0), nullptr);
+  EXPECT_NE(r.sampler(), nullptr);
+}
+
+TEST(Renderer, LegendIsDrawnIntoTheImage) {
+  render::Image image;
+  image.width = 800, image.height = 600;
+  image.rgba.assign(size_t(800) * 600 * 4, 0);
+  render::draw_ratio_legend(image);
+  const Counts c = count(image);
+  EXPECT_GT(c.green, 100);
+  EXPECT_GT(c.red, 20);
+}
+
+class NoValidationMessages : public ::testing::Environment {
+public:
+  void TearDown() override {
+    if (!fixture().context) return;
+    for (const auto& m : fixture().context->validation_messages()) ADD_FAILURE() << "validation: " << m;
+    fixture().renderer.reset();
+  }
+};
+const auto* const kNoValidationMessages = ::testing::AddGlobalTestEnvironment(new NoValidationMessages);
+
+}  // namespace
+}  // namespace paver
