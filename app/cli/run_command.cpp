@@ -4,6 +4,7 @@
 #include "output_guard.h"
 #include "run_outputs.h"
 #include "preview_images.h"
+#include "progress_bar.h"
 
 #include "paver/atomic_file.h"
 #include "paver/design_io.h"
@@ -113,6 +114,7 @@ int run_run(const RunArgs& args) {
     throw std::runtime_error("the parameterization is not bijective; please report this surface");
 
   PavementOptions options;
+  options.observer = terminal_progress_bar(design.solver.iterations);
   options.optimize = !args.no_optimize;
   options.postprocess = !args.no_postprocess;
   options.threads = args.threads;
@@ -120,6 +122,7 @@ int run_run(const RunArgs& args) {
   const app::BackendChoice backend = app::choose_backend(args.backend, args.device, args.threads);
   options.solver = backend.factory;
   Pavement pavement = make_pavement(map, design, options);
+  finish_progress_bar();
   timings.insert(timings.end(), pavement.timings.begin(), pavement.timings.end());
   if (info.spacing_derived)
     std::printf("no spacing given: using D = %g, about 1000 points over this surface\n",
