@@ -11,6 +11,8 @@
 #include "paver/pavement.h"
 #include "paver/spring_solver.h"
 
+#include "bundled_designs.h"
+
 #include <nlohmann/json.hpp>
 #include <tbb/task_arena.h>
 
@@ -21,7 +23,6 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -60,14 +61,11 @@ double ms_per_iteration(const Backend& b, const paver::SolverSurface& surface, c
   return 1e3 * std::max(best, 1e-9);
 }
 
+// design name without ".json" -> surface file.
 std::map<std::string, std::string> design_surfaces() {
-  std::ifstream readme(fs::path(PAVER_SOURCE_DIR) / "assets/designs/README.md");
   std::map<std::string, std::string> out;
-  const std::regex row(R"(^\|\s*([a-z0-9_]+)\.json\s*\|\s*([a-z0-9_]+\.obj)\s*\|)");
-  std::string line;
-  std::smatch match;
-  while (std::getline(readme, line))
-    if (std::regex_search(line, match, row)) out[match[1]] = match[2];
+  for (const auto& [design, surface] : paver::test::bundled_design_surfaces(PAVER_SOURCE_DIR))
+    out[design.substr(0, design.size() - 5)] = surface;
   return out;
 }
 

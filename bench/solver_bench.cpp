@@ -7,30 +7,27 @@
 #include "paver/pavement.h"
 #include "paver/spring_solver.h"
 
+#include "bundled_designs.h"
+
 #include <benchmark/benchmark.h>
 #include <tbb/task_arena.h>
 
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <memory>
-#include <regex>
 #include <string>
 
 namespace {
 
 namespace fs = std::filesystem;
 
+// design name without ".json" -> surface file.
 std::map<std::string, std::string> design_surfaces() {
-  std::ifstream readme(fs::path(PAVER_SOURCE_DIR) / "assets/designs/README.md");
   std::map<std::string, std::string> out;
-  const std::regex row(R"(^\|\s*([a-z0-9_]+)\.json\s*\|\s*([a-z0-9_]+\.obj)\s*\|)");
-  std::string line;
-  std::smatch m;
-  while (std::getline(readme, line))
-    if (std::regex_search(line, m, row)) out[m[1]] = m[2];
+  for (const auto& [design, surface] : paver::test::bundled_design_surfaces(PAVER_SOURCE_DIR))
+    out[design.substr(0, design.size() - 5)] = surface;
   return out;
 }
 

@@ -169,66 +169,44 @@ private:
   void upload_inputs(Transfers& t) {
     auto& d = s_;
     const std::uint64_t key = fingerprint(surface_);
-    bool surface_changed = key != d.surface_key;
     const SolverSurface& s = surface_;
-    surface_changed |= d.reserve(kUv, bytes_of(s.uv));
-    surface_changed |= d.reserve(kSurfacePosition, bytes_of(s.position));
-    surface_changed |= d.reserve(kSurfaceCurvature, bytes_of(s.curvature));
-    surface_changed |= d.reserve(kTriangles, bytes_of(s.triangles));
-    surface_changed |= d.reserve(kGridStart, bytes_of(s.grid_start));
-    surface_changed |= d.reserve(kGridTriangles, bytes_of(s.grid_triangles));
-    surface_changed |= d.reserve(kBoundaryUv, bytes_of(s.boundary_uv));
-    surface_changed |= d.reserve(kBoundaryInward, bytes_of(s.boundary_inward));
+    const SpringSystem& y = system_;
+    pulled_.assign(y.particle_count(), 0u);
+    struct Array {
+      std::uint32_t binding;
+      const void* data;
+      std::size_t bytes;
+    };
+    auto array = [](std::uint32_t binding, const auto& v) { return Array{binding, v.data(), bytes_of(v)}; };
+    const Array surface_arrays[] = {
+        array(kUv, s.uv), array(kSurfacePosition, s.position), array(kSurfaceCurvature, s.curvature),
+        array(kTriangles, s.triangles), array(kGridStart, s.grid_start), array(kGridTriangles, s.grid_triangles),
+        array(kBoundaryUv, s.boundary_uv), array(kBoundaryInward, s.boundary_inward)};
+    // The system changes between solves (a new design, contact springs): always uploaded.
+    const Array system_arrays[] = {
+        array(kPositionIn, y.position), array(kStrayCount, y.stray_count), array(kTriangleHint, y.triangle_hint),
+        array(kPulledBack, pulled_), array(kNeighborStart, y.neighbor_start), array(kNeighbor, y.neighbor),
+        array(kNeighborSpring, y.neighbor_spring), array(kSpringA, y.spring_a), array(kSpringB, y.spring_b),
+        array(kRestLength, y.rest_length), array(kSpringFlags, y.spring_flags), array(kTarget, y.target),
+        array(kInitialTarget, y.initial_target)};
+    bool surface_changed = key != d.surface_key;
+    for (const Array& a : surface_arrays) surface_changed |= d.reserve(a.binding, a.bytes);
     if (surface_changed) {
-      t.upload(d.buffers[kUv], s.uv.data(), bytes_of(s.uv));
-      t.upload(d.buffers[kSurfacePosition], s.position.data(), bytes_of(s.position));
-      t.upload(d.buffers[kSurfaceCurvature], s.curvature.data(), bytes_of(s.curvature));
-      t.upload(d.buffers[kTriangles], s.triangles.data(), bytes_of(s.triangles));
-      t.upload(d.buffers[kGridStart], s.grid_start.data(), bytes_of(s.grid_start));
-      t.upload(d.buffers[kGridTriangles], s.grid_triangles.data(), bytes_of(s.grid_triangles));
-      t.upload(d.buffers[kBoundaryUv], s.boundary_uv.data(), bytes_of(s.boundary_uv));
-      t.upload(d.buffers[kBoundaryInward], s.boundary_inward.data(), bytes_of(s.boundary_inward));
+      for (const Array& a : surface_arrays) t.upload(d.buffers[a.binding], a.data, a.bytes);
       d.surface_key = key;
       ++d.surface_uploads;
     }
-    // The system changes between solves (new design, contact springs): always uploaded.
-    const SpringSystem& y = system_;
-    const int n = y.particle_count(), e = y.spring_count();
-    pulled_.assign(n, 0u);
-    d.reserve(kPositionIn, bytes_of(y.position));
+    for (const Array& a : system_arrays) d.reserve(a.binding, a.bytes);
     d.reserve(kPositionOut, bytes_of(y.position));
-    d.reserve(kStrayCount, bytes_of(y.stray_count));
-    d.reserve(kTriangleHint, bytes_of(y.triangle_hint));
-    d.reserve(kPulledBack, bytes_of(pulled_));
-    d.reserve(kLifted, std::size_t(n) * sizeof(glm::vec4));
-    d.reserve(kNeighborStart, bytes_of(y.neighbor_start));
-    d.reserve(kNeighbor, bytes_of(y.neighbor));
-    d.reserve(kNeighborSpring, bytes_of(y.neighbor_spring));
-    d.reserve(kSpringA, bytes_of(y.spring_a));
-    d.reserve(kSpringB, bytes_of(y.spring_b));
-    d.reserve(kRestLength, bytes_of(y.rest_length));
-    d.reserve(kSpringFlags, bytes_of(y.spring_flags));
-    d.reserve(kTarget, bytes_of(y.target));
-    d.reserve(kInitialTarget, bytes_of(y.initial_target));
+    d.reserve(kLifted, std::size_t(y.particle_count()) * sizeof(glm::vec4));
     d.reserve(kControl, kControlSlots * sizeof(std::uint32_t));
-    t.upload(d.buffers[kPositionIn], y.position.data(), bytes_of(y.position));
-    t.upload(d.buffers[kStrayCount], y.stray_count.data(), bytes_of(y.stray_count));
-    t.upload(d.buffers[kTriangleHint], y.triangle_hint.data(), bytes_of(y.triangle_hint));
-    t.upload(d.buffers[kPulledBack], pulled_.data(), bytes_of(pulled_));
-    t.upload(d.buffers[kNeighborStart], y.neighbor_start.data(), bytes_of(y.neighbor_start));
-    t.upload(d.buffers[kNeighbor], y.neighbor.data(), bytes_of(y.neighbor));
-    t.upload(d.buffers[kNeighborSpring], y.neighbor_spring.data(), bytes_of(y.neighbor_spring));
-    t.upload(d.buffers[kSpringA], y.spring_a.data(), bytes_of(y.spring_a));
-    t.upload(d.buffers[kSpringB], y.spring_b.data(), bytes_of(y.spring_b));
-    t.upload(d.buffers[kRestLength], y.rest_length.data(), bytes_of(y.rest_length));
-    t.upload(d.buffers[kSpringFlags], y.spring_flags.data(), bytes_of(y.spring_flags));
-    t.upload(d.buffers[kTarget], y.target.data(), bytes_of(y.target));
-    t.upload(d.buffers[kInitialTarget], y.initial_target.data(), bytes_of(y.initial_target));
+    for (const Array& a : system_arrays) t.upload(d.buffers[a.binding], a.data, a.bytes);
     control_.fill(0u);
     t.upload(d.buffers[kControl], control_.data(), sizeof(control_));
 
     // Parameters: the same float32 constants the CPU kernels use.
     const SolverConstants k = make_solver_constants(params_, s);
+    const int n = y.particle_count(), e = y.spring_count();
     GpuSolverParams p{};
     p.c = k.c, p.m = k.m, p.alpha = k.alpha, p.beta = k.beta;
     p.gamma = k.gamma, p.lambda_r = k.lambda_r, p.lambda_l = k.lambda_l, p.lambda_g = k.lambda_g;

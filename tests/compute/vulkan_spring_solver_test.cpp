@@ -7,6 +7,7 @@
 #include "paver/mesh_loader.h"
 #include "paver/pavement.h"
 #include "paver/spring_solver.h"
+#include "bundled_designs.h"
 #include "test_meshes.h"
 
 #include <glm/geometric.hpp>
@@ -14,9 +15,7 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <map>
-#include <regex>
 
 namespace paver {
 namespace {
@@ -62,16 +61,7 @@ const Gpu& gpu_or_null() {
 
 bool on_lavapipe() { return gpu_or_null().context->device().type == "cpu"; }
 
-std::map<std::string, std::string> bundled_designs() {
-  std::ifstream readme(test::source_dir() / "assets/designs/README.md");
-  std::map<std::string, std::string> out;
-  const std::regex row(R"(^\|\s*([a-z0-9_]+\.json)\s*\|\s*([a-z0-9_]+\.obj)\s*\|)");
-  std::string line;
-  std::smatch m;
-  while (std::getline(readme, line))
-    if (std::regex_search(line, m, row)) out[m[1]] = m[2];
-  return out;
-}
+std::map<std::string, std::string> bundled_designs() { return test::bundled_design_surfaces(test::source_dir()); }
 
 const SurfaceMap& map_of(const std::string& surface) {
   static std::map<std::string, SurfaceMap> cache;

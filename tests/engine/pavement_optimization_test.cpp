@@ -5,29 +5,18 @@
 #include "paver/input_error.h"
 #include "paver/mesh_loader.h"
 #include "paver/pavement.h"
+#include "bundled_designs.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <map>
-#include <regex>
 #include <string>
 
 namespace paver {
 namespace {
 
-// design file -> surface, from assets/designs/README.md's table.
-std::map<std::string, std::string> bundled_design_surfaces() {
-  std::ifstream readme(test::source_dir() / "assets/designs/README.md");
-  std::map<std::string, std::string> out;
-  const std::regex row(R"(^\|\s*([a-z0-9_]+\.json)\s*\|\s*([a-z0-9_]+\.obj)\s*\|)");
-  std::string line;
-  std::smatch m;
-  while (std::getline(readme, line))
-    if (std::regex_search(line, m, row)) out[m[1]] = m[2];
-  return out;
-}
+std::map<std::string, std::string> bundled_design_surfaces() { return test::bundled_design_surfaces(test::source_dir()); }
 
 const SurfaceMap& map_of(const std::string& surface) {
   static std::map<std::string, SurfaceMap> cache;
