@@ -320,15 +320,19 @@ const std::vector<glm::dvec2>& ArapSolver::uv() const { return impl_->uv; }
 double ArapSolver::energy() const { return impl_->energy; }
 const ArapReport& ArapSolver::report() const { return impl_->report; }
 
-Parameterization parameterize_arap(const SurfaceMesh& mesh, const ArapOptions& options) {
-  ArapSolver solver(mesh, options);
-  solver.iterate(options.max_iterations);
+Parameterization finish_parameterization(const SurfaceMesh& mesh, const ArapSolver& solver) {
   Parameterization result;
   result.uv = solver.uv();
   result.report = solver.report();
   detail::scale_to_surface_area(mesh, result.uv);
   result.quality = measure_map(mesh, result.uv);
   return result;
+}
+
+Parameterization parameterize_arap(const SurfaceMesh& mesh, const ArapOptions& options) {
+  ArapSolver solver(mesh, options);
+  solver.iterate(options.max_iterations);
+  return finish_parameterization(mesh, solver);
 }
 
 }  // namespace paver

@@ -70,7 +70,11 @@ private:
   std::unique_ptr<Impl> impl_;
 };
 
-// One call: start map, ARAP to convergence, scale to equal area, measure.
+// The result of a solver that has iterated: its map scaled to the surface's area and centred,
+// and measured. For callers that iterate in chunks (the editor shows progress).
+Parameterization finish_parameterization(const SurfaceMesh& mesh, const ArapSolver& solver);
+
+// One call: start map, ARAP to convergence, then finish_parameterization.
 Parameterization parameterize_arap(const SurfaceMesh& mesh, const ArapOptions& options = {});
 
 }  // namespace paver

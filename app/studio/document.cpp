@@ -1,0 +1,144 @@
+#include "document.h"
+
+#include "paver/design_io.h"
+#include "paver/element_proximity.h"
+#include "paver/input_error.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace paver::studio {
+namespace {
+
+bool uses_custom_shape(const ElementsDesign& e) {
+  if (e.vertex.enabled && e.vertex.shape == ShapeKind::Custom) return true;
+  return std::any_of(e.edge.begin(), e.edge.end(), [](const auto& s) { return s.shape == ShapeKind::Custom; });
+}
+
+void new_revision(Document& doc, bool dragging) {
+  ++doc.revision;
+  doc.changed_at = Clock::now();
+  doc.run_due = doc.changed_at + (dragging ? std::chrono::duration_cast<Clock::duration>(kDragDebounce)
+                                           : Clock::duration::zero());
+}
+
+}  // namespace
+
+bool change_design(Document& doc, const Design& next, bool dragging) {
+  try {
+    validate_design(next, "design");
+  } catch (const InputError& e) {
+    report_error(doc, e.what());
+    return false;
+  }
+  // Design has no operator==; its JSON form is complete and small.
+  if (design_to_json(next) == design_to_json(doc.design)) return true;  // nothing to undo or re-run
+  if (!doc.gesture_open) doc.history.record(doc.design);
+  doc.gesture_open = dragging;
+  doc.design = next;
+  doc.dirty = true;
+  new_revision(doc, dragging);
+  return true;
+}
+
+void end_gesture(Document& doc) { doc.gesture_open = false; }
+
+bool undo(Document& doc) {
+  end_gesture(doc);
+  std::optional<Design> previous = doc.history.undo(doc.design);
+  if (!previous) return false;
+  doc.design = std::move(*previous);
+  doc.dirty = true;
+  new_revision(doc, false);
+  report_status(doc, "undone");
+  return true;
+}
+
+bool redo(Document& doc) {
+  end_gesture(doc);
+  std::optional<Design> next = doc.history.redo(doc.design);
+  if (!next) return false;
+  doc.design = std::move(*next);
+  doc.dirty = true;
+  new_revision(doc, false);
+  report_status(doc, "redone");
+  return true;
+}
+
+void set_surface(Document& doc, Surface surface) {
+  doc.surface = std::move(surface);
+  doc.result = {};
+  new_revision(doc, false);
+}
+
+void set_result(Document& doc, std::shared_ptr<const Pavement> pavement, std::uint64_t revision, double run_ms) {
+  PavementResult& r = doc.result;
+  r = {};
+  r.revision = revision;
+  r.run_ms = run_ms;
+  r.neighbour_ratios = nearest_neighbor_ratios(pavement->elements);
+  r.ratio_histogram.assign(kHistogramBins, 0.0f);
+  for (const double ratio : r.neighbour_ratios) {
+    if (!std::isfinite(ratio)) continue;
+    const double t = (ratio - kHistogramMin) / (kHistogramMax - kHistogramMin);
+    r.ratio_histogram[std::clamp(int(t * kHistogramBins), 0, kHistogramBins - 1)] += 1;
+  }
+  r.pavement = std::move(pavement);
+}
+
+bool open_design_file(Document& doc, const std::filesystem::path& path) {
+  try {
+    const Design loaded = load_design(path);
+    end_gesture(doc);
+    if (!change_design(doc, loaded)) return false;
+    doc.design_path = path;
+    doc.dirty = false;
+    report_status(doc, "loaded design " + path.string());
+    return true;
+  } catch (const std::exception& e) {
+    report_error(doc, e.what());
+    return false;
+  }
+}
+
+bool save_design_file(Document& doc, const std::filesystem::path& path) {
+  try {
+    save_design(path, doc.design);
+    doc.design_path = path;
+    doc.dirty = false;
+    report_status(doc, "saved design " + path.string());
+    return true;
+  } catch (const std::exception& e) {
+    report_error(doc, e.what());
+    return false;
+  }
+}
+
+const ShapeMesh* custom_shape(Document& doc) {
+  const std::string& path = doc.design.elements.custom_shape;
+  if (!uses_custom_shape(doc.design.elements)) return nullptr;
+  if (doc.custom_shape_source == path) return doc.custom_shape ? &*doc.custom_shape : nullptr;
+  doc.custom_shape.reset();
+  doc.custom_shape_source = path;  // tried once per path: a bad file is reported once
+  try {
+    if (path.empty()) throw InputError("an element uses the custom shape: set its OBJ file in the elements panel");
+    doc.custom_shape = load_custom_shape(path);
+  } catch (const std::exception& e) {
+    report_error(doc, e.what());
+    return nullptr;
+  }
+  return &*doc.custom_shape;
+}
+
+void report_status(Document& doc, std::string text) { doc.messages.status = std::move(text); }
+
+void report_error(Document& doc, std::string text) {
+  doc.messages.status = "error: " + text;
+  doc.messages.error = std::move(text);
+  ++doc.messages.error_count;
+}
+
+}  // namespace paver::studio

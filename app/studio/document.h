@@ -1,0 +1,96 @@
+#pragma once
+// The studio's document: the surface, the design being edited with its undo history, and what
+// is derived from them (the last final pavement and its report figures). A plain struct: panels
+// read it and change the design only through change_design, so every change is undoable, marks
+// the design unsaved and re-runs the pavement.
+#include "undo_history.h"
+
+#include "paver/design.h"
+#include "paver/element_shape.h"
+#include "paver/pavement.h"
+#include "paver/surface_map.h"
+
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace paver::studio {
+
+using Clock = std::chrono::steady_clock;
+
+struct Surface {
+  std::filesystem::path path;
+  std::shared_ptr<const SurfaceMap> map;  // null until one is open; shared with background runs
+  std::vector<std::string> warnings;      // repairs made while loading
+  StageTimings timings;                   // load and parameterize, for report.json
+};
+
+// The last final pavement, and the figures the report panel shows of it.
+struct PavementResult {
+  std::shared_ptr<const Pavement> pavement;
+  std::uint64_t revision = 0;             // the document revision it was made for
+  std::vector<double> neighbour_ratios;   // per element: nearest-neighbour distance / (r_i + r_j)
+  std::vector<float> ratio_histogram;     // element counts per bin over [kHistogramMin, kHistogramMax]
+  double run_ms = 0;                      // the background run, wall time
+  double latency_ms = -1;                 // design change to this result on screen; -1 until shown
+};
+inline constexpr double kHistogramMin = 0.8, kHistogramMax = 1.6;
+inline constexpr int kHistogramBins = 32;
+
+struct Messages {
+  std::string status;                     // the status line
+  std::string error;                      // the error dialog's text; empty when none is open
+  int error_count = 0;                    // errors reported so far (a script stops on a new one)
+};
+
+struct Document {
+  Surface surface;
+  Design design;
+  std::filesystem::path design_path;      // where the design was last loaded from or saved to
+  bool dirty = false;                     // changed since it was loaded or saved
+  UndoHistory history;
+
+  std::uint64_t revision = 1;             // bumps whenever the design or the surface changes
+  Clock::time_point changed_at = Clock::now();  // when it last did: the latency's start
+  Clock::time_point run_due = Clock::now();     // debounce: the run for this revision starts then
+  bool gesture_open = false;              // a drag is changing the design: one undo step for it all
+
+  std::optional<ShapeMesh> custom_shape;  // elements.custom_shape, loaded
+  std::optional<std::string> custom_shape_source;  // the path last tried
+
+  PavementResult result;
+  Messages messages;
+};
+
+// How long a dragged slider must rest before the pavement re-runs.
+inline constexpr auto kDragDebounce = std::chrono::milliseconds(200);
+
+// Makes `next` the design if it is valid (else reports why and changes nothing): an undo step
+// (one per drag gesture), unsaved, a new revision. `dragging`: the change comes from a widget
+// still held, so the run waits for it to rest.
+bool change_design(Document& doc, const Design& next, bool dragging = false);
+void end_gesture(Document& doc);  // the held widget was let go
+bool undo(Document& doc);
+bool redo(Document& doc);
+
+// A new surface: a new revision (the design stays).
+void set_surface(Document& doc, Surface surface);
+// A finished run for the current revision becomes the result.
+void set_result(Document& doc, std::shared_ptr<const Pavement> pavement, std::uint64_t revision, double run_ms);
+
+// design.json in and out. Loading is an undoable change; both report errors instead of throwing.
+bool open_design_file(Document& doc, const std::filesystem::path& path);
+bool save_design_file(Document& doc, const std::filesystem::path& path);
+
+// The design's custom shape when an element uses it, loaded once per path; null otherwise or
+// when it cannot be loaded (reported).
+const ShapeMesh* custom_shape(Document& doc);
+
+void report_status(Document& doc, std::string text);
+void report_error(Document& doc, std::string text);  // status line and the error dialog
+
+}  // namespace paver::studio

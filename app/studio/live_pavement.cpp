@@ -1,0 +1,195 @@
+#include "live_pavement.h"
+
+#include "paver/default_spacing.h"
+#include "paver/input_error.h"
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <mutex>
+#include <utility>
+
+namespace paver::studio {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+// Copying the positions every iteration of a big pattern would cost more than the iteration.
+constexpr auto kPublishInterval = std::chrono::milliseconds(30);
+
+}  // namespace
+
+struct LivePavement::Run {
+  std::mutex mutex;
+  std::condition_variable wake;
+  std::atomic<bool> cancelled = false;
+  bool paused = false;
+  int step_budget = 0;  // iterations still let through before pausing again
+  int iteration = 0;
+  LiveSnapshot snapshot;
+  Clock::time_point last_publish;
+  bool finished = false;
+  std::optional<RunOutcome> outcome;  // until taken
+
+  void publish(const std::vector<glm::vec2>& positions) {  // with `mutex` held
+    snapshot.points.assign(positions.begin(), positions.end());
+    snapshot.iteration = iteration;
+    ++snapshot.sequence;
+    last_publish = Clock::now();
+  }
+
+  // After every solver iteration of the main solve: publish, then wait while paused.
+  bool observe(int it, const std::vector<glm::vec2>& positions) {
+    std::unique_lock lock(mutex);
+    iteration = it;
+    if (step_budget > 0 && --step_budget == 0) paused = true;
+    if (paused || Clock::now() - last_publish > kPublishInterval) publish(positions);
+    wake.wait(lock, [&] { return !paused || cancelled; });
+    return !cancelled;
+  }
+};
+
+namespace {
+
+// Every solve of the run (the collision resolution's too, which get no observer) stops as soon
+// as the run is abandoned.
+class CancellableSolver final : public SpringSolverBackend {
+public:
+  CancellableSolver(std::unique_ptr<SpringSolverBackend> inner, std::shared_ptr<LivePavement::Run> run)
+      : inner_(std::move(inner)), run_(std::move(run)) {}
+  SolveReport solve(const SolverObserver& observer) override {
+    return inner_->solve([&](int it, const std::vector<glm::vec2>& positions) {
+      if (run_->cancelled) return false;
+      return observer ? observer(it, positions) : true;
+    });
+  }
+  std::string_view backend_name() const override { return inner_->backend_name(); }
+
+private:
+  std::unique_ptr<SpringSolverBackend> inner_;
+  std::shared_ptr<LivePavement::Run> run_;
+};
+
+void run_pavement(const RunRequest& request, const std::shared_ptr<LivePavement::Run>& run) {
+  const auto t0 = Clock::now();
+  RunOutcome outcome;
+  outcome.revision = request.revision;
+  try {
+    // The pattern for the live view, before the solver moves it. make_pavement builds it again
+    // (it is cheap next to the solve), which keeps the engine's one-call interface.
+    Design design = request.design;
+    if (design.pattern.spacing <= 0)
+      design.pattern.spacing = default_spacing(request.map->mesh, design.pattern.tessellation);
+    auto pattern =
+        std::make_shared<const Pattern>(build_pattern(*request.map, make_design_cell(design.pattern), design.placement));
+    {
+      std::lock_guard lock(run->mutex);
+      run->snapshot.revision = request.revision;
+      run->snapshot.pattern = pattern;
+      run->snapshot.design = design;
+      run->snapshot.points = pattern->points;
+      ++run->snapshot.sequence;
+    }
+
+    PavementOptions options;
+    const SolverFactory inner = request.solver ? request.solver : cpu_solver_factory(0);
+    options.solver = [inner, run](const SolverSurface& surface, SpringSystem& system, const SolverParams& params,
+                                  double spacing) -> std::unique_ptr<SpringSolverBackend> {
+      return std::make_unique<CancellableSolver>(inner(surface, system, params, spacing), run);
+    };
+    options.observer = [run](int it, const std::vector<glm::vec2>& positions) { return run->observe(it, positions); };
+    outcome.pavement = std::make_shared<const Pavement>(make_pavement(*request.map, request.design, options));
+  } catch (const InputError& e) {
+    outcome.error = e.what();
+    outcome.input_error = true;
+  } catch (const std::exception& e) {
+    outcome.error = std::string("the pavement failed: ") + e.what();
+  }
+  outcome.milliseconds = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+  std::lock_guard lock(run->mutex);
+  run->finished = true;
+  if (!run->cancelled) run->outcome = std::move(outcome);
+}
+
+}  // namespace
+
+void LivePavement::start(RunRequest request) {
+  reset();
+  auto run = std::make_shared<Run>();
+  // Sequences grow across runs, so the view never takes a new run's snapshot for an old one.
+  run->snapshot.sequence = ++runs_started_ << 32;
+  run->paused = request.paused;
+  run->step_budget = request.paused ? request.step : 0;
+  if (run->step_budget > 0) run->paused = false;
+  run_ = run;
+  revision_ = request.revision;
+  jobs_.start([request = std::move(request), run](std::stop_token) { run_pavement(request, run); });
+}
+
+void LivePavement::pause() {
+  if (!run_) return;
+  std::lock_guard lock(run_->mutex);
+  run_->paused = true;
+}
+
+void LivePavement::resume() {
+  if (!run_) return;
+  {
+    std::lock_guard lock(run_->mutex);
+    run_->paused = false;
+    run_->step_budget = 0;
+  }
+  run_->wake.notify_all();
+}
+
+void LivePavement::step(int iterations) {
+  if (!run_) return;
+  {
+    std::lock_guard lock(run_->mutex);
+    run_->step_budget = std::max(1, iterations);
+    run_->paused = false;
+  }
+  run_->wake.notify_all();
+}
+
+void LivePavement::reset() {
+  if (run_) {
+    {
+      std::lock_guard lock(run_->mutex);
+      run_->cancelled = true;
+    }
+    run_->wake.notify_all();
+    run_.reset();
+  }
+  jobs_.reap();
+}
+
+RunState LivePavement::state() const {
+  if (!run_) return RunState::Idle;
+  std::lock_guard lock(run_->mutex);
+  if (run_->finished) return RunState::Finished;
+  return run_->paused ? RunState::Paused : RunState::Running;
+}
+
+std::uint64_t LivePavement::revision() const { return revision_; }
+
+int LivePavement::iteration() const {
+  if (!run_) return 0;
+  std::lock_guard lock(run_->mutex);
+  return run_->iteration;
+}
+
+std::optional<LiveSnapshot> LivePavement::snapshot_since(std::uint64_t sequence) const {
+  if (!run_) return std::nullopt;
+  std::lock_guard lock(run_->mutex);
+  if (run_->snapshot.sequence <= sequence || !run_->snapshot.pattern) return std::nullopt;
+  return run_->snapshot;
+}
+
+std::optional<RunOutcome> LivePavement::take_outcome() {
+  jobs_.reap();
+  if (!run_) return std::nullopt;
+  std::lock_guard lock(run_->mutex);
+  return std::exchange(run_->outcome, std::nullopt);
+}
+
+}  // namespace paver::studio

@@ -1,0 +1,79 @@
+// paver-studio: the interactive editor of Paver. One window: the panels on the left, the 3D and
+// 2D views on the right; the pavement re-runs in the background on every design change.
+#include "app_window.h"
+#include "recent_files.h"
+#include "script_runner.h"
+#include "studio.h"
+
+#include "paver/input_error.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <exception>
+#include <optional>
+#include <string>
+
+int main(int argc, char** argv) {
+  using namespace paver::studio;
+  CLI::App app{"Paver Studio: design element patterns on a surface and watch them optimize"};
+  std::string surface, design, script, backend = "auto";
+  WindowOptions window_options;
+  app.add_option("SURFACE", surface, "Open surface to pave: OBJ, OFF, PLY or STL");
+  app.add_option("--design", design, "design.json to start from");
+  app.add_option("--script", script,
+                 "Run the commands in FILE, one per frame, then quit (see app/studio/script.h); "
+                 "a failing command exits non-zero");
+  app.add_option("--backend", backend, "Solver backend: cpu, vulkan, or auto (Vulkan on a GPU, else CPU)")
+      ->check(CLI::IsMember({"cpu", "vulkan", "auto"}))
+      ->capture_default_str();
+  app.add_option("--width", window_options.width, "Window width")->check(CLI::Range(320, 16384))->capture_default_str();
+  app.add_option("--height", window_options.height, "Window height")->check(CLI::Range(240, 16384))->capture_default_str();
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+
+  try {
+    // The script is read first: a typo fails before a window opens.
+    std::optional<ScriptRunner> runner;
+    if (!script.empty()) runner.emplace(load_script(script), script);
+    window_options.vsync = !runner;
+    AppWindow window(window_options);
+    auto renderer = paver::render::Renderer::create(window.context());
+    if (!renderer) throw std::runtime_error("the renderer: " + renderer.error().message);
+
+    Studio s(window, *renderer.value());
+    s.script_mode = runner.has_value();
+    s.recent = load_recent_files(recent_files_path());
+    set_backend(s, backend);
+    if (!surface.empty()) open_surface(s, surface);
+    if (!design.empty()) open_any(s, design);
+
+    while (!s.quit) {
+      handle_close_request(s);
+      if (s.quit || !window.begin_frame()) continue;
+      try {
+        update_studio(s);
+        if (runner) runner->frame(s);
+      } catch (const std::exception& e) {
+        report_error(s.doc, e.what());  // shown; the design and the session go on
+      }
+      draw_studio(s);
+      after_present(s, window.end_frame(s.ui.screenshot.has_value()));
+    }
+    s.live.reset();  // a run still going is abandoned, not waited for
+    // With $PAVER_VULKAN_VALIDATION=1, what the layer said about the window's device.
+    for (const std::string& message : window.context()->validation_messages())
+      std::fprintf(stderr, "paver-studio: Vulkan validation: %s\n", message.c_str());
+    return runner ? runner->exit_code() : 0;
+  } catch (const paver::InputError& e) {
+    std::fprintf(stderr, "paver-studio: error: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "paver-studio: %s\n", e.what());
+    return 1;
+  }
+}

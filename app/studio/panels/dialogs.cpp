@@ -1,0 +1,73 @@
+// The status line, the error dialog (errors never end the session and never touch the design)
+// and the question asked before quitting with unsaved design changes.
+#include "panels.h"
+
+#include "../studio.h"
+
+#include <imgui_stdlib.h>
+
+namespace paver::studio {
+
+void status_bar(Studio& s, ImVec2 pos, ImVec2 size) {
+  ImGui::SetNextWindowPos(pos);
+  ImGui::SetNextWindowSize(size);
+  ImGui::Begin("##status", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                                        ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoScrollbar);
+  const RunState state = s.live.state();
+  if (s.loader.busy())
+    ImGui::Text("[%s %.0f%%]", s.loader.stage().c_str(), 100 * s.loader.progress());
+  else if (state == RunState::Running || state == RunState::Paused)
+    ImGui::Text("[%s: iteration %d]", state == RunState::Running ? "optimizing" : "paused", s.live.iteration());
+  else if (result_is_final(s))
+    ImGui::Text("[final, %.0f ms from the edit]", s.doc.result.latency_ms);
+  else
+    ImGui::TextUnformatted("[ ]");
+  ImGui::SameLine();
+  if (s.doc.dirty) {
+    ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "unsaved");
+    ImGui::SameLine();
+  }
+  const bool error = s.doc.messages.status.starts_with("error:");
+  if (error) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.45f, 0.4f, 1));
+  ImGui::TextUnformatted(s.doc.messages.status.c_str());
+  if (error) ImGui::PopStyleColor();
+  ImGui::End();
+}
+
+void dialogs(Studio& s) {
+  Document& doc = s.doc;
+  if (!doc.messages.error.empty() && !ImGui::IsPopupOpen("Error")) ImGui::OpenPopup("Error");
+  ImGui::SetNextWindowSize(ImVec2(520, 0));
+  if (ImGui::BeginPopupModal("Error", nullptr, ImGuiWindowFlags_NoSavedSettings)) {
+    ImGui::TextWrapped("%s", doc.messages.error.c_str());
+    ImGui::Spacing();
+    ImGui::TextDisabled("The design is unchanged.");
+    if (ImGui::Button("OK", ImVec2(120, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter))) {
+      doc.messages.error.clear();
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+  }
+
+  if (s.ui.quit_dialog && doc.messages.error.empty() && !ImGui::IsPopupOpen("Quit")) ImGui::OpenPopup("Quit");
+  ImGui::SetNextWindowSize(ImVec2(460, 0));
+  if (ImGui::BeginPopupModal("Quit", nullptr, ImGuiWindowFlags_NoSavedSettings)) {
+    ImGui::TextWrapped("The design has changes that are not saved.");
+    if (s.ui.design_path.empty()) s.ui.design_path = doc.design_path.string();
+    ImGui::InputText("design file", &s.ui.design_path);
+    const auto close = [&](bool quit) {
+      s.ui.quit_dialog = false;
+      s.quit = quit;
+      ImGui::CloseCurrentPopup();
+    };
+    if (ImGui::Button("Save", ImVec2(120, 0)) && !s.ui.design_path.empty() && save_design_file(doc, s.ui.design_path))
+      close(true);
+    ImGui::SameLine();
+    if (ImGui::Button("Discard", ImVec2(120, 0))) close(true);
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel", ImVec2(120, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) close(false);
+    ImGui::EndPopup();
+  }
+}
+
+}  // namespace paver::studio

@@ -1,0 +1,114 @@
+// The elements panel: the V-element (on/off, shape, s), the list of E-elements (t, s, shape, the
+// cell edges they sit on) and the custom shape's mesh file.
+#include "panels.h"
+
+#include "../design_edits.h"
+#include "../studio.h"
+
+#include "paver/element_shape.h"
+#include "paver/input_error.h"
+
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <string>
+
+namespace paver::studio {
+namespace {
+
+constexpr ShapeKind kShapes[] = {ShapeKind::Sphere, ShapeKind::Gem, ShapeKind::HexPrism, ShapeKind::Disc,
+                                 ShapeKind::Custom};
+
+bool shape_combo(const char* label, ShapeKind& shape) {
+  bool changed = false;
+  if (ImGui::BeginCombo(label, std::string(shape_name(shape)).c_str())) {
+    for (const ShapeKind kind : kShapes)
+      if (ImGui::Selectable(std::string(shape_name(kind)).c_str(), kind == shape)) {
+        changed = kind != shape;
+        shape = kind;
+      }
+    ImGui::EndCombo();
+  }
+  return changed;
+}
+
+// A slider whose change is a design change; held, it is one undo step and the run waits for it.
+bool fraction_slider(Document& doc, Design& d, const char* label, double& value, double lo, double hi) {
+  if (!ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &lo, &hi, "%.3f")) return false;
+  return change_design(doc, d, ImGui::IsItemActive());
+}
+
+}  // namespace
+
+void elements_panel(Document& doc, UiState& ui) {
+  Design d = doc.design;
+  section("V-elements (on the pattern's vertices)");
+  if (ImGui::Checkbox("enabled", &d.elements.vertex.enabled)) change_design(doc, d);
+  fraction_slider(doc, d, "s##vertex", d.elements.vertex.scale, 0.05, 1.0);
+  help_marker("Diameter = s * D; s in (0, 1].");
+  if (shape_combo("shape##vertex", d.elements.vertex.shape)) change_design(doc, d);
+
+  section("E-elements (on the pattern's edges)");
+  UnitCell cell;
+  try {
+    cell = design_cell_shape(d.pattern);
+  } catch (const InputError&) {
+    // The pattern panel says why; the cell-edge checkboxes are left out meanwhile.
+  }
+  int remove = -1;
+  for (int i = 0; i < int(d.elements.edge.size()); ++i) {
+    EdgeElementDesign& e = d.elements.edge[i];
+    ImGui::PushID(i);
+    if (ImGui::TreeNodeEx("##edge", ImGuiTreeNodeFlags_DefaultOpen, "E-element %d", i)) {
+      fraction_slider(doc, d, "t", e.t, 0.0, 1.0);
+      help_marker("Position along the edge, 0 = its first vertex, 1 = its second.");
+      fraction_slider(doc, d, "s", e.scale, 0.05, 1.0);
+      if (shape_combo("shape", e.shape)) change_design(doc, d);
+      ImGui::TextUnformatted(e.cell_edges.empty() ? "on every cell edge; only on:" : "only on cell edges:");
+      for (int c = 0; c < int(cell.edges.size()); ++c) {
+        if (cell.edges[c].is_virtual) continue;
+        bool on = std::find(e.cell_edges.begin(), e.cell_edges.end(), c) != e.cell_edges.end();
+        ImGui::SameLine();
+        if (ImGui::Checkbox(("##c" + std::to_string(c)).c_str(), &on)) {
+          if (on)
+            e.cell_edges.push_back(c);
+          else
+            std::erase(e.cell_edges, c);
+          std::sort(e.cell_edges.begin(), e.cell_edges.end());
+          change_design(doc, d);
+        }
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("cell edge %d (numbered in the unit cell)", c);
+      }
+      if (ImGui::SmallButton("remove")) remove = i;
+      ImGui::TreePop();
+    }
+    ImGui::PopID();
+  }
+  if (remove >= 0) {
+    d.elements.edge.erase(d.elements.edge.begin() + remove);
+    change_design(doc, d);
+  }
+  if (ImGui::Button("add E-element")) {
+    d.elements.edge.push_back({});
+    change_design(doc, d);
+  }
+
+  section("Custom shape");
+  if (ui.custom_shape_path.empty()) ui.custom_shape_path = d.elements.custom_shape;
+  ImGui::InputText("OBJ / OFF / PLY / STL", &ui.custom_shape_path);
+  if (ImGui::Button("use this mesh")) {
+    try {
+      load_custom_shape(ui.custom_shape_path);  // refuse a bad file here, not at the next run
+      d.elements.custom_shape = ui.custom_shape_path;
+      change_design(doc, d);
+    } catch (const std::exception& e) {
+      report_error(doc, e.what());
+    }
+  }
+  help_marker("Elements whose shape is 'custom' use this mesh, normalised to unit width.");
+  if (ImGui::Checkbox("allow overlapping elements", &d.elements.allow_overlap)) change_design(doc, d);
+  help_marker("Designs whose elements intersect on purpose (paper Fig. 15): no overlap check, no "
+              "collision resolution.");
+}
+
+}  // namespace paver::studio

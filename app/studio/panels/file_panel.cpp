@@ -1,0 +1,101 @@
+// The file panel: open a surface (path box, recent files; or drop a file on the window), load and
+// save the design, export the outputs, and undo / redo.
+#include "panels.h"
+
+#include "../studio.h"
+
+#include "paver/element_export.h"
+#include "paver/input_error.h"
+
+#include <imgui_stdlib.h>
+
+#include <filesystem>
+#include <functional>
+#include <string>
+
+namespace paver::studio {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Runs a file action; its errors go to the error dialog, never further.
+void guarded(Document& doc, const std::function<void()>& action) {
+  try {
+    action();
+  } catch (const std::exception& e) {
+    report_error(doc, e.what());
+  }
+}
+
+// One of the element files alone, into the export folder.
+void export_one(Studio& s, const char* name,
+                const std::function<void(const fs::path&, const Elements&, const ElementMeshOptions&)>& write) {
+  guarded(s.doc, [&] {
+    if (!result_is_final(s)) throw InputError("nothing to export yet: the pavement for this design is not finished");
+    fs::create_directories(s.ui.export_dir);
+    const fs::path path = fs::path(s.ui.export_dir) / name;
+    write(path, s.doc.result.pavement->elements, {.custom = custom_shape(s.doc)});
+    report_status(s.doc, "wrote " + path.string());
+  });
+}
+
+}  // namespace
+
+void file_panel(Studio& s) {
+  Document& doc = s.doc;
+  section("Surface");
+  ImGui::InputText("##surface", &s.ui.surface_path);
+  ImGui::SameLine();
+  if (ImGui::Button("Open") && !s.ui.surface_path.empty()) open_surface(s, s.ui.surface_path);
+  if (s.loader.busy()) ImGui::ProgressBar(s.loader.progress(), ImVec2(-1, 0), s.loader.stage().c_str());
+  if (doc.surface.map)
+    ImGui::TextDisabled("%s: %d vertices, %d faces", doc.surface.path.filename().string().c_str(),
+                        doc.surface.map->mesh.vertex_count(), doc.surface.map->mesh.face_count());
+  ImGui::TextDisabled("or drop a surface or a design .json on the window");
+  if (!s.recent.empty() && ImGui::TreeNode("recent files")) {
+    for (const fs::path& path : std::vector<fs::path>(s.recent))  // opening reorders the list
+      if (ImGui::Selectable(path.string().c_str())) open_any(s, path);
+    ImGui::TreePop();
+  }
+
+  section("Design");
+  if (s.ui.design_path.empty()) s.ui.design_path = doc.design_path.string();
+  ImGui::InputText("##design", &s.ui.design_path);
+  ImGui::SameLine();
+  if (ImGui::Button("Load") && !s.ui.design_path.empty()) open_any(s, s.ui.design_path);
+  ImGui::SameLine();
+  if (ImGui::Button("Save") && !s.ui.design_path.empty()) save_design_file(doc, s.ui.design_path);
+  ImGui::TextDisabled("%s", doc.dirty ? "unsaved changes" : "saved");
+  ImGui::BeginDisabled(!doc.history.can_undo());
+  if (ImGui::Button("Undo")) undo(doc);
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!doc.history.can_redo());
+  if (ImGui::Button("Redo")) redo(doc);
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::TextDisabled("%zu / %zu steps", doc.history.undo_count(), doc.history.redo_count());
+
+  section("Export");
+  ImGui::InputText("folder", &s.ui.export_dir);
+  ImGui::BeginDisabled(!result_is_final(s));
+  if (ImGui::Button("Export all")) guarded(doc, [&] { export_outputs(s, s.ui.export_dir); });
+  help_marker("placements.csv, elements.ply, elements.obj, elements.stl, design.json and report.json, as "
+              "`paver run` writes them.");
+  if (ImGui::Button("placements.csv"))
+    export_one(s, "placements.csv", [](const fs::path& p, const Elements& e, const ElementMeshOptions&) {
+      write_placements_csv(p, e);
+    });
+  ImGui::SameLine();
+  if (ImGui::Button("PLY")) export_one(s, "elements.ply", write_elements_ply);
+  ImGui::SameLine();
+  if (ImGui::Button("OBJ")) export_one(s, "elements.obj", write_elements_obj);
+  ImGui::SameLine();
+  if (ImGui::Button("STL")) export_one(s, "elements.stl", write_elements_stl);
+  ImGui::EndDisabled();
+  ImGui::InputText("##png", &s.ui.png_path);
+  ImGui::SameLine();
+  if (ImGui::Button("3D view PNG")) guarded(doc, [&] { save_view_png(s, s.ui.png_path); });
+}
+
+}  // namespace paver::studio

@@ -1,0 +1,29 @@
+#pragma once
+// The studio's panels: free functions that draw the parts they are given, every frame, and
+// change the design only through change_design (so each change is undoable and re-runs).
+#include <imgui.h>
+
+namespace paver::studio {
+
+struct Document;
+struct Studio;
+struct UiState;
+
+void side_panels(Studio& s, ImVec2 pos, ImVec2 size);  // the tabbed column of the panels below
+void pattern_panel(Document& doc, UiState& ui);        // tessellation, D, operators, unit-cell editor
+void elements_panel(Document& doc, UiState& ui);       // V- and E-elements, custom shape
+void optimization_panel(Studio& s);                    // solver parameters, backend, run control
+void report_panel(const Studio& s);                    // quality figures, iterations, timings, histogram
+void file_panel(Studio& s);                            // open, recent, design, export, undo/redo
+void help_panel();                                     // shortcuts
+
+void views_area(Studio& s, ImVec2 pos, ImVec2 size);   // the 3D and 2D views with their controls
+void status_bar(Studio& s, ImVec2 pos, ImVec2 size);
+void dialogs(Studio& s);                               // the error dialog, quit with unsaved changes
+
+// A "(?)" after the last item, with `text` as its tooltip.
+void help_marker(const char* text);
+// A separator with a title under it.
+void section(const char* title);
+
+}  // namespace paver::studio

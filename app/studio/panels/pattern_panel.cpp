@@ -1,0 +1,213 @@
+// The pattern panel: tessellation, D, bracing, the edge operators, and the unit-cell editor
+// drawn with ImGui's draw list. The editor shows the cell (bright, edge numbers as E-elements use
+// them) and its propagation to the neighbouring cells (dim), so an operator's effect on the
+// whole lattice is visible at once. Flip / Remove: click an edge. Add: click two vertices.
+#include "panels.h"
+
+#include "../design_edits.h"
+#include "../studio.h"
+
+#include "paver/input_error.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace paver::studio {
+namespace {
+
+constexpr int kRange = 1;  // cells drawn around the unit cell: (2 kRange + 1)^2
+constexpr Tessellation kTessellations[] = {Tessellation::Triangle, Tessellation::Grid, Tessellation::Hexagon};
+
+float distance_to_segment(glm::vec2 p, glm::vec2 a, glm::vec2 b) {
+  const glm::vec2 ab = b - a;
+  const float t = std::clamp(glm::dot(p - a, ab) / std::max(glm::dot(ab, ab), 1e-12f), 0.0f, 1.0f);
+  return glm::length(p - (a + t * ab));
+}
+
+// Tries an edit of the pattern; a refusal (the cell cannot take it) is shown, nothing changes.
+template <class Edit>
+void try_edit(Document& doc, Edit&& edit) {
+  try {
+    change_design(doc, edit(doc.design));
+  } catch (const InputError& e) {
+    report_error(doc, e.what());
+  }
+}
+
+void unit_cell_editor(Document& doc, UiState& ui) {
+  UnitCell cell;
+  try {
+    cell = design_cell_shape(doc.design.pattern);
+  } catch (const InputError& e) {
+    ImGui::TextWrapped("The unit cell cannot be built: %s", e.what());
+    return;
+  }
+  const float side = std::max(ImGui::GetContentRegionAvail().x, 120.0f);
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  ImGui::InvisibleButton("unit_cell", ImVec2(side, side));
+  const bool hovered = ImGui::IsItemHovered(), clicked = ImGui::IsItemClicked(ImGuiMouseButton_Left);
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  draw->AddRectFilled(origin, ImVec2(origin.x + side, origin.y + side), IM_COL32(24, 26, 30, 255));
+
+  // Centre the unit cell's vertices and edges, with a margin of about one cell around them.
+  glm::dvec2 centre(0);
+  for (const CellEdge& e : cell.edges) centre += 0.5 * (cell.vertices[e.from] + cell.position(e.to, e.offset));
+  centre /= double(std::max<std::size_t>(cell.edges.size(), 1));
+  const double extent = std::max({glm::length(cell.a1 + cell.a2), glm::length(cell.a1 - cell.a2), 1.0});
+  const float scale = float(side / (2.2 * extent));
+  const auto to_screen = [&](glm::dvec2 p) {
+    const glm::dvec2 q = p - centre;
+    return glm::vec2(origin.x + side * 0.5f + float(q.x) * scale, origin.y + side * 0.5f - float(q.y) * scale);
+  };
+  const ImVec2 mouse_im = ImGui::GetIO().MousePos;
+  const glm::vec2 mouse(mouse_im.x, mouse_im.y);
+  const auto im = [](glm::vec2 v) { return ImVec2(v.x, v.y); };
+  draw->PushClipRect(origin, ImVec2(origin.x + side, origin.y + side), true);
+
+  // The cell's parallelogram.
+  const glm::vec2 c0 = to_screen({0, 0}), c1 = to_screen(cell.a1), c2 = to_screen(cell.a1 + cell.a2),
+                  c3 = to_screen(cell.a2);
+  draw->AddQuadFilled(im(c0), im(c1), im(c2), im(c3), IM_COL32(60, 70, 90, 90));
+
+  // Edges of every drawn cell; the hovered one (by distance to the mouse) is highlighted.
+  struct Hit {
+    int edge = -1;
+    float distance = 8;  // pixels
+  } hit;
+  for (int pass = 0; pass < 2; ++pass)
+    for (int i = -kRange; i <= kRange; ++i)
+      for (int j = -kRange; j <= kRange; ++j)
+        for (int e = 0; e < int(cell.edges.size()); ++e) {
+          const CellEdge& edge = cell.edges[e];
+          const glm::ivec2 at(i, j);
+          const glm::vec2 a = to_screen(cell.position(edge.from, at)), b = to_screen(cell.position(edge.to, at + edge.offset));
+          const bool central = at == glm::ivec2(0, 0);
+          if (pass == 0) {
+            if (hovered && !edge.is_virtual && ui.cell_mode != CellEditMode::Add) {
+              const float d = distance_to_segment(mouse, a, b);
+              if (d < hit.distance) hit = {e, d};
+            }
+            continue;
+          }
+          ImU32 colour = edge.is_virtual ? IM_COL32(110, 110, 120, central ? 150 : 70)
+                                         : central ? IM_COL32(240, 200, 90, 255) : IM_COL32(150, 140, 110, 150);
+          if (e == hit.edge) colour = ui.cell_mode == CellEditMode::Remove ? IM_COL32(240, 80, 70, 255)
+                                                                           : IM_COL32(90, 200, 250, 255);
+          draw->AddLine(im(a), im(b), colour, edge.is_virtual ? 1.0f : central ? 2.5f : 1.5f);
+          if (central && !edge.is_virtual)
+            draw->AddText(im(0.5f * (a + b) + glm::vec2(3, -14)), IM_COL32(240, 220, 160, 255),
+                          std::to_string(e).c_str());
+        }
+
+  // Vertices; in Add mode the hovered one is highlighted and the first pick stays marked.
+  int hovered_vertex = -1;
+  glm::ivec2 hovered_cell(0);
+  for (int i = -kRange; i <= kRange; ++i)
+    for (int j = -kRange; j <= kRange; ++j)
+      for (int v = 0; v < int(cell.vertices.size()); ++v) {
+        const glm::ivec2 at(i, j);
+        const glm::vec2 p = to_screen(cell.position(v, at));
+        const bool central = at == glm::ivec2(0, 0);
+        const bool near = hovered && ui.cell_mode == CellEditMode::Add && glm::length(p - mouse) < 9;
+        if (near) hovered_vertex = v, hovered_cell = at;
+        const bool picked = ui.cell_mode == CellEditMode::Add && ui.add_from_vertex == v && ui.add_from_cell == at;
+        draw->AddCircleFilled(im(p), near || picked ? 6.0f : central ? 4.5f : 3.0f,
+                              picked ? IM_COL32(90, 220, 120, 255)
+                              : near ? IM_COL32(90, 200, 250, 255)
+                              : central ? IM_COL32(250, 250, 250, 255) : IM_COL32(170, 170, 170, 160));
+        if (central) draw->AddText(im(p + glm::vec2(5, 2)), IM_COL32(200, 200, 220, 255), std::to_string(v).c_str());
+      }
+  draw->PopClipRect();
+
+  if (!clicked) return;
+  if (ui.cell_mode == CellEditMode::Add) {
+    if (hovered_vertex < 0) return;
+    if (ui.add_from_vertex < 0) {
+      ui.add_from_vertex = hovered_vertex, ui.add_from_cell = hovered_cell;
+      return;
+    }
+    EdgeOperator op;
+    op.kind = EdgeOperator::Kind::Add;
+    op.from = ui.add_from_vertex;
+    op.to = hovered_vertex;
+    op.offset = hovered_cell - ui.add_from_cell;
+    op.is_virtual = ui.add_virtual;
+    ui.add_from_vertex = -1;
+    try_edit(doc, [&](const Design& d) { return with_operator(d, op); });
+  } else if (hit.edge >= 0) {
+    const CellEdge& edge = cell.edges[hit.edge];
+    EdgeOperator op;
+    op.kind = ui.cell_mode == CellEditMode::Flip ? EdgeOperator::Kind::Flip : EdgeOperator::Kind::Remove;
+    op.from = edge.from;
+    op.to = edge.to;
+    op.offset = edge.offset;
+    try_edit(doc, [&](const Design& d) { return with_operator(d, op); });
+  }
+}
+
+}  // namespace
+
+void pattern_panel(Document& doc, UiState& ui) {
+  Design d = doc.design;
+  int current = int(std::find(std::begin(kTessellations), std::end(kTessellations), d.pattern.tessellation) -
+                    std::begin(kTessellations));
+  const char* names[] = {"triangles (tri)", "squares (grid)", "hexagons (hex)"};
+  if (ImGui::Combo("tessellation", &current, names, 3)) {
+    change_design(doc, with_tessellation(d, kTessellations[current]));
+    ui.add_from_vertex = -1;
+  }
+  help_marker("The regular tessellation of section 4.1. Changing it clears the edge operators and the "
+              "E-elements' cell edges, which name the old cell's edges.");
+
+  double spacing = d.pattern.spacing;
+  if (ImGui::InputDouble("D (spacing)", &spacing, 0.1, 1.0, "%.4g") && spacing >= 0) {
+    d.pattern.spacing = spacing;
+    change_design(doc, d, ImGui::IsItemActive());
+  }
+  help_marker("Edge length of the tessellation in surface units. 0 = derived from the surface "
+              "(about 1000 points).");
+  if (doc.result.pavement && d.pattern.spacing <= 0)
+    ImGui::TextDisabled("derived: D = %.4g", doc.result.pavement->design.pattern.spacing);
+
+  bool bracing = d.pattern.bracing;
+  if (ImGui::Checkbox("bracing (virtual edges across faces)", &bracing)) {
+    d.pattern.bracing = bracing;
+    change_design(doc, d);
+  }
+
+  section("Unit cell");
+  int mode = int(ui.cell_mode);
+  ImGui::RadioButton("flip", &mode, int(CellEditMode::Flip));
+  ImGui::SameLine();
+  ImGui::RadioButton("remove", &mode, int(CellEditMode::Remove));
+  ImGui::SameLine();
+  ImGui::RadioButton("add", &mode, int(CellEditMode::Add));
+  if (mode != int(ui.cell_mode)) ui.add_from_vertex = -1;
+  ui.cell_mode = CellEditMode(mode);
+  if (ui.cell_mode == CellEditMode::Add) {
+    ImGui::SameLine();
+    ImGui::Checkbox("virtual", &ui.add_virtual);
+    ImGui::TextDisabled(ui.add_from_vertex < 0 ? "click the first vertex" : "click the second vertex");
+  } else {
+    ImGui::TextDisabled("click an edge to %s it", ui.cell_mode == CellEditMode::Flip ? "flip" : "remove");
+  }
+  unit_cell_editor(doc, ui);
+
+  section("Operators (in order)");
+  if (d.pattern.operators.empty()) ImGui::TextDisabled("none: the regular tessellation");
+  for (int i = 0; i < int(d.pattern.operators.size()); ++i) {
+    const EdgeOperator& op = d.pattern.operators[i];
+    ImGui::PushID(i);
+    if (ImGui::SmallButton("x")) try_edit(doc, [&](const Design& design) { return without_operator(design, i); });
+    ImGui::SameLine();
+    ImGui::Text("%d. %s %d->%d @ (%d,%d)%s", i, std::string(operator_name(op.kind)).c_str(), op.from, op.to,
+                op.offset.x, op.offset.y, op.is_virtual ? " virtual" : "");
+    ImGui::PopID();
+  }
+}
+
+}  // namespace paver::studio

@@ -1,0 +1,91 @@
+// The report panel: the quality of the initial pavement, of the paper's method alone and of the
+// final result, the solver's iterations and stop reason, times, the edit-to-result latency, and
+// a histogram of the nearest-neighbour ratios.
+#include "panels.h"
+
+#include "../studio.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
+namespace paver::studio {
+namespace {
+
+void quality_table(const Pavement& p) {
+  if (!ImGui::BeginTable("quality", 4, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit))
+    return;
+  ImGui::TableSetupColumn("");
+  ImGui::TableSetupColumn("initial");
+  ImGui::TableSetupColumn("paper's method");
+  ImGui::TableSetupColumn("final");
+  ImGui::TableHeadersRow();
+  const PavementQuality* q[3] = {&p.before, &p.paper, &p.after};
+  const auto row = [&](const char* name, auto&& value, const char* format) {
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(name);
+    for (const PavementQuality* column : q) {
+      ImGui::TableNextColumn();
+      ImGui::Text(format, value(*column));
+    }
+  };
+  row("elements", [](const PavementQuality& x) { return x.elements; }, "%ld");
+  row("collisions", [](const PavementQuality& x) { return x.collisions; }, "%ld");
+  row("worst overlap", [](const PavementQuality& x) { return x.worst_overlap; }, "%.3f");
+  row("NN ratio min", [](const PavementQuality& x) { return x.neighbor_ratio.min; }, "%.3f");
+  row("NN ratio p5", [](const PavementQuality& x) { return x.neighbor_ratio.p5; }, "%.3f");
+  row("NN ratio median", [](const PavementQuality& x) { return x.neighbor_ratio.median; }, "%.3f");
+  row("NN ratio p95", [](const PavementQuality& x) { return x.neighbor_ratio.p95; }, "%.3f");
+  row("NN ratio cv", [](const PavementQuality& x) { return x.neighbor_ratio.cv; }, "%.3f");
+  row("spring dev. median", [](const PavementQuality& x) { return x.spring_deviation_median; }, "%.3f");
+  row("spring dev. p95", [](const PavementQuality& x) { return x.spring_deviation_p95; }, "%.3f");
+  row("boundary crossings", [](const PavementQuality& x) { return x.boundary_crossings; }, "%ld");
+  row("coverage", [](const PavementQuality& x) { return x.coverage; }, "%.3f");
+  row("spacing~curvature", [](const PavementQuality& x) { return x.spacing_curvature_spearman; }, "%.3f");
+  ImGui::EndTable();
+}
+
+}  // namespace
+
+void report_panel(const Studio& s) {
+  const PavementResult& r = s.doc.result;
+  if (!r.pavement) {
+    ImGui::TextWrapped(s.doc.surface.map ? "No pavement yet: it appears when the run finishes."
+                                         : "Open a surface (File) to pave it.");
+    return;
+  }
+  const Pavement& p = *r.pavement;
+  if (r.revision != s.doc.revision) ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "for an earlier design: re-running");
+  ImGui::TextWrapped("%zu elements: %ld V, %ld E; %d filled, %d eliminated at the boundary", p.elements.size(),
+              p.after.vertex_elements, p.after.edge_elements, p.filled, p.eliminated);
+  ImGui::Text("pattern: %d points, %d edges; D = %.4g", p.pattern.point_count(), p.pattern.edge_count(),
+              p.design.pattern.spacing);
+  ImGui::TextWrapped("solver: %d iterations, %s (last max step %.3g), %d pull-backs", p.solve.iterations,
+              std::string(stop_reason_name(p.solve.reason)).c_str(), p.solve.last_max_step, p.solve.strays_pulled_back);
+  ImGui::TextWrapped("contacts: %d rounds, %d springs, %d iterations, %d removed", p.resolution.rounds,
+              p.resolution.contact_springs, p.resolution.solver_iterations, p.resolution.removed);
+  ImGui::Text("run %.0f ms (solver %.0f ms)", r.run_ms, p.solve.milliseconds);
+  if (r.latency_ms >= 0)
+    ImGui::Text("edit to result on screen: %.0f ms", r.latency_ms);
+  help_marker("From the last design change to the frame that showed its final, optimized pavement; it "
+              "includes the wait for a dragged slider to rest.");
+
+  section("Quality");
+  quality_table(p);
+
+  section("Nearest-neighbour ratio");
+  const float peak = r.ratio_histogram.empty() ? 1.0f : *std::max_element(r.ratio_histogram.begin(), r.ratio_histogram.end());
+  char overlay[64];
+  std::snprintf(overlay, sizeof overlay, "%.2f .. %.2f (1 = touching)", kHistogramMin, kHistogramMax);
+  ImGui::PlotHistogram("##ratios", r.ratio_histogram.data(), int(r.ratio_histogram.size()), 0, overlay, 0.0f,
+                       peak * 1.1f, ImVec2(ImGui::GetContentRegionAvail().x, 110));
+  help_marker("Per element: distance to the nearest other element over the sum of their radii. Below 0.99 "
+              "is a collision; values outside the range are counted in the end bins.");
+
+  section("Stages (ms)");
+  for (const auto& [stage, ms] : p.timings) ImGui::BulletText("%s: %.1f", stage.c_str(), ms);
+  for (const auto& [stage, ms] : s.doc.surface.timings) ImGui::BulletText("%s: %.1f (surface)", stage.c_str(), ms);
+}
+
+}  // namespace paver::studio

@@ -1,0 +1,49 @@
+#include "panels.h"
+
+#include "../studio.h"
+
+namespace paver::studio {
+
+void help_marker(const char* text) {
+  ImGui::SameLine();
+  ImGui::TextDisabled("(?)");
+  if (ImGui::IsItemHovered()) {
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30);
+    ImGui::TextUnformatted(text);
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+  }
+}
+
+void section(const char* title) {
+  ImGui::Spacing();
+  ImGui::Separator();
+  ImGui::TextUnformatted(title);
+}
+
+void side_panels(Studio& s, ImVec2 pos, ImVec2 size) {
+  ImGui::SetNextWindowPos(pos);
+  ImGui::SetNextWindowSize(size);
+  ImGui::Begin("Paver Studio", nullptr,
+               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                   ImGuiWindowFlags_NoBringToFrontOnFocus);
+  if (ImGui::BeginTabBar("panels")) {
+    const auto tab = [](const char* name, auto&& draw) {
+      if (ImGui::BeginTabItem(name)) {
+        draw();
+        ImGui::EndTabItem();
+      }
+    };
+    tab("File", [&] { file_panel(s); });
+    tab("Pattern", [&] { pattern_panel(s.doc, s.ui); });
+    tab("Elements", [&] { elements_panel(s.doc, s.ui); });
+    tab("Optimize", [&] { optimization_panel(s); });
+    tab("Report", [&] { report_panel(s); });
+    tab("Help", [] { help_panel(); });
+    ImGui::EndTabBar();
+  }
+  ImGui::End();
+}
+
+}  // namespace paver::studio

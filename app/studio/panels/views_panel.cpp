@@ -1,0 +1,325 @@
+// The views: the 3D view (orbit with a left drag, pan with a right or middle drag, zoom with the
+// wheel) and the 2D map view (pan, zoom; a left drag moves the pattern over the map, the round
+// handle turns it, the square one scales it), one large and the other as an inset. Each view is
+// rendered only when what it shows or how it is looked at changed.
+#include "panels.h"
+
+#include "../studio.h"
+#include "../view_images.h"
+
+#include "paver/pavement.h"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
+#include <glm/trigonometric.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <utility>
+
+namespace paver::studio {
+namespace {
+
+constexpr float kHandleRadius = 7;  // pixels
+
+std::vector<double> style_inputs(const render::SceneStyle& st) {
+  return {double(st.show_surface), double(st.show_elements), double(st.show_lattice), double(st.show_map_wireframe),
+          st.background[0], st.background[1], st.background[2]};
+}
+
+// Renders the view into the renderer's image unless it already shows exactly this.
+void render_if_changed(Studio& s, int view, int width, int height) {
+  std::vector<double> inputs = {double(width), double(height), double(s.scene.generation)};
+  if (view == 0) {
+    const render::OrbitCamera& c = s.views.camera;
+    inputs.insert(inputs.end(), {c.target.x, c.target.y, c.target.z, c.distance, c.yaw, c.pitch, c.fov_deg});
+  } else {
+    const render::MapView& m = s.views.map_view;
+    inputs.insert(inputs.end(), {m.centre.x, m.centre.y, m.half_height});
+  }
+  const std::vector<double> style = style_inputs(s.views.style);
+  inputs.insert(inputs.end(), style.begin(), style.end());
+  if (s.scene.rendered[view] == inputs) return;
+  if (view == 0)
+    s.renderer.render_3d(width, height, s.views.camera, s.views.style);
+  else
+    s.renderer.render_2d(width, height, s.views.map_view, s.views.style);
+  s.scene.rendered[view] = std::move(inputs);
+}
+
+// --- 3D ---------------------------------------------------------------------------------------
+
+void interact_3d(render::OrbitCamera& camera, ImVec2 size) {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
+    camera.yaw -= io.MouseDelta.x * 0.008f;
+    camera.pitch = std::clamp(camera.pitch + io.MouseDelta.y * 0.008f, -1.5f, 1.5f);
+  }
+  if (ImGui::IsItemActive() &&
+      (ImGui::IsMouseDragging(ImGuiMouseButton_Right) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle))) {
+    // Move the target so the point under the cursor follows it, at the target's depth.
+    const glm::mat4 vp = camera.view_projection(size.x / size.y);
+    const glm::vec4 clip = vp * glm::vec4(camera.target, 1);
+    const glm::vec3 ndc = glm::vec3(clip) / clip.w;
+    const glm::vec3 moved = ndc + glm::vec3(2 * io.MouseDelta.x / size.x, -2 * io.MouseDelta.y / size.y, 0);
+    const glm::vec4 world = glm::inverse(vp) * glm::vec4(moved, 1);
+    camera.target -= glm::vec3(world) / world.w - camera.target;
+  }
+  if (ImGui::IsItemHovered() && io.MouseWheel != 0)
+    camera.distance *= std::pow(0.88f, io.MouseWheel);
+}
+
+void ratio_legend(ImDrawList* draw, ImVec2 origin, ImVec2 size) {
+  const std::vector<render::LegendStop> stops = render::neighbour_ratio_legend();
+  if (stops.size() < 2) return;
+  const float width = std::min(300.0f, size.x - 24), height = 12;
+  const ImVec2 at(origin.x + 12, origin.y + size.y - 44);
+  draw->AddRectFilled(ImVec2(at.x - 6, at.y - 20), ImVec2(at.x + width + 14, at.y + height + 22),
+                      IM_COL32(0, 0, 0, 150), 4);
+  draw->AddText(ImVec2(at.x, at.y - 17), IM_COL32(230, 230, 230, 255), "nearest-neighbour distance / (r_i + r_j)");
+  const float step = width / float(stops.size() - 1);
+  const auto colour = [](const render::LegendStop& s) { return IM_COL32(s.rgb[0], s.rgb[1], s.rgb[2], 255); };
+  for (std::size_t i = 0; i + 1 < stops.size(); ++i) {
+    const ImU32 a = colour(stops[i]), b = colour(stops[i + 1]);
+    draw->AddRectFilledMultiColor(ImVec2(at.x + step * i, at.y), ImVec2(at.x + step * (i + 1), at.y + height), a, b, b, a);
+  }
+  for (std::size_t i = 0; i < stops.size(); i += 2) {
+    char label[16];
+    std::snprintf(label, sizeof label, "%.2f", stops[i].ratio);
+    draw->AddText(ImVec2(at.x + step * i - 8, at.y + height + 2), IM_COL32(230, 230, 230, 255), label);
+  }
+}
+
+// --- 2D ---------------------------------------------------------------------------------------
+
+struct MapFrame {  // the 2D view's image on screen and the map region it shows (y up)
+  ImVec2 origin, size;
+  render::MapView view;
+  glm::dvec2 to_map(ImVec2 p) const {
+    const double aspect = size.x / size.y;
+    return {view.centre.x + (2.0 * (p.x - origin.x) / size.x - 1) * view.half_height * aspect,
+            view.centre.y + (1 - 2.0 * (p.y - origin.y) / size.y) * view.half_height};
+  }
+  ImVec2 to_screen(glm::dvec2 q) const {
+    const double aspect = size.x / size.y;
+    return ImVec2(float(origin.x + ((q.x - view.centre.x) / (view.half_height * aspect) + 1) * 0.5 * size.x),
+                  float(origin.y + (1 - (q.y - view.centre.y) / view.half_height) * 0.5 * size.y));
+  }
+};
+
+struct Handles {
+  ImVec2 centre, rotation, scale;
+  float radius;
+};
+
+// The pattern as seen in the map turns by -rotation (q = R(-rotation) (p - offset) / scale), so
+// the round handle sits at angle -rotation: the lattice turns with it. The square handle's
+// distance from the centre is proportional to the scale.
+Handles placement_handles(const MapFrame& f, const SurfaceMap& map, const Placement& placement) {
+  Handles h;
+  h.centre = f.to_screen(0.5 * (map.uv_min + map.uv_max));
+  h.radius = 0.3f * std::min(f.size.x, f.size.y);
+  const double angle = -glm::radians(placement.rotation_deg);
+  h.rotation = ImVec2(h.centre.x + h.radius * float(std::cos(angle)), h.centre.y - h.radius * float(std::sin(angle)));
+  const float d = h.radius * float(std::min(placement.scale, 3.0)) * 0.7071f;
+  h.scale = ImVec2(h.centre.x + d, h.centre.y - d);  // up and right: the inset covers down-right
+  return h;
+}
+
+float distance(ImVec2 a, ImVec2 b) { return std::hypot(a.x - b.x, a.y - b.y); }
+
+// While the placement is dragged, the lattice it gives is drawn at once (the run waits for the
+// drag to rest).
+void lattice_preview(ImDrawList* draw, const MapFrame& f, const Design& design, double spacing) {
+  UnitCell cell;
+  try {
+    PatternDesign pattern = design.pattern;
+    pattern.spacing = spacing;
+    cell = make_design_cell(pattern);
+  } catch (const std::exception&) {
+    return;
+  }
+  // The view's corners in the pattern plane, then in lattice coordinates.
+  const glm::dmat2 basis(cell.a1, cell.a2), to_lattice = glm::inverse(basis);
+  glm::dvec2 lo(1e300), hi(-1e300);
+  for (const ImVec2 corner : {f.origin, ImVec2(f.origin.x + f.size.x, f.origin.y), ImVec2(f.origin.x, f.origin.y + f.size.y),
+                              ImVec2(f.origin.x + f.size.x, f.origin.y + f.size.y)}) {
+    const glm::dvec2 l = to_lattice * design.placement.map_to_pattern(f.to_map(corner));
+    lo = glm::min(lo, l), hi = glm::max(hi, l);
+  }
+  if ((hi.x - lo.x + 3) * (hi.y - lo.y + 3) * double(cell.edges.size()) > 30000) return;  // too fine to see
+  for (int i = int(std::floor(lo.x)) - 1; i <= int(std::ceil(hi.x)); ++i)
+    for (int j = int(std::floor(lo.y)) - 1; j <= int(std::ceil(hi.y)); ++j)
+      for (const CellEdge& e : cell.edges) {
+        if (e.is_virtual) continue;
+        const glm::ivec2 at(i, j);
+        const ImVec2 a = f.to_screen(design.placement.pattern_to_map(cell.position(e.from, at)));
+        const ImVec2 b = f.to_screen(design.placement.pattern_to_map(cell.position(e.to, at + e.offset)));
+        draw->AddLine(a, b, IM_COL32(255, 210, 90, 170), 1.0f);
+      }
+}
+
+void interact_2d(Studio& s, const MapFrame& f, const Handles& h, bool with_handles) {
+  const ImGuiIO& io = ImGui::GetIO();
+  render::MapView& view = s.views.map_view;
+  if (ImGui::IsItemActivated() && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+    const auto near = [&](ImVec2 handle) { return with_handles && distance(io.MousePos, handle) < kHandleRadius + 3; };
+    s.ui.map_drag = near(h.rotation) ? MapDrag::Rotation : near(h.scale) ? MapDrag::Scale : MapDrag::Offset;
+  }
+  if (!ImGui::IsItemActive()) s.ui.map_drag = MapDrag::None;
+  const bool left = ImGui::IsMouseDown(ImGuiMouseButton_Left);
+  if (ImGui::IsItemActive() && left && s.ui.map_drag != MapDrag::None &&
+      (io.MouseDelta.x != 0 || io.MouseDelta.y != 0)) {
+    Design d = s.doc.design;
+    Placement& p = d.placement;
+    if (s.ui.map_drag == MapDrag::Offset) {
+      // The pattern follows the cursor: q' = q + delta for its points means offset -= R(s delta).
+      const glm::dvec2 delta = f.to_map(io.MousePos) - f.to_map(ImVec2(io.MousePos.x - io.MouseDelta.x,
+                                                                         io.MousePos.y - io.MouseDelta.y));
+      p.offset -= p.map_to_pattern(delta) - p.map_to_pattern(glm::dvec2(0));
+    } else if (s.ui.map_drag == MapDrag::Rotation) {
+      const double angle = std::atan2(-(io.MousePos.y - h.centre.y), io.MousePos.x - h.centre.x);
+      p.rotation_deg = -glm::degrees(angle);
+    } else {
+      const float along = ((io.MousePos.x - h.centre.x) - (io.MousePos.y - h.centre.y)) * 0.7071f;
+      p.scale = std::clamp(double(along / (h.radius * 0.7071f)), 0.05, 3.0);
+    }
+    change_design(s.doc, d, true);
+  }
+  if (ImGui::IsItemActive() &&
+      (ImGui::IsMouseDragging(ImGuiMouseButton_Right) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle))) {
+    view.centre.x -= float(2 * io.MouseDelta.x / f.size.x * view.half_height * f.size.x / f.size.y);
+    view.centre.y += float(2 * io.MouseDelta.y / f.size.y * view.half_height);
+  }
+  if (ImGui::IsItemHovered() && io.MouseWheel != 0) {
+    // Zoom about the point under the cursor.
+    const glm::dvec2 anchor = f.to_map(io.MousePos);
+    const float factor = std::pow(0.88f, io.MouseWheel);
+    view.half_height *= factor;
+    view.centre = glm::vec2(anchor + (glm::dvec2(view.centre) - anchor) * double(factor));
+  }
+}
+
+void draw_handles(ImDrawList* draw, const Handles& h, MapDrag active) {
+  // Dark under light, so the handles show on the pale map as on the dark background.
+  const ImU32 shadow = IM_COL32(0, 0, 0, 150), line = IM_COL32(255, 255, 255, 200);
+  for (const auto& [colour, width] : {std::pair{shadow, 3.0f}, std::pair{line, 1.0f}}) {
+    draw->AddCircle(h.centre, h.radius, colour, 96, width);
+    draw->AddLine(h.centre, h.rotation, colour, width);
+    draw->AddLine(h.centre, h.scale, colour, width);
+  }
+  const ImU32 rotation = active == MapDrag::Rotation ? IM_COL32(90, 200, 250, 255) : IM_COL32(250, 250, 250, 255);
+  const ImU32 scale = active == MapDrag::Scale ? IM_COL32(90, 200, 250, 255) : IM_COL32(250, 250, 250, 255);
+  draw->AddCircleFilled(h.rotation, kHandleRadius + 1.5f, shadow);
+  draw->AddCircleFilled(h.rotation, kHandleRadius, rotation);
+  const ImVec2 r(kHandleRadius, kHandleRadius), border(1.5f, 1.5f);
+  draw->AddRectFilled(ImVec2(h.scale.x - r.x - border.x, h.scale.y - r.y - border.y),
+                      ImVec2(h.scale.x + r.x + border.x, h.scale.y + r.y + border.y), shadow);
+  draw->AddRectFilled(ImVec2(h.scale.x - r.x, h.scale.y - r.y), ImVec2(h.scale.x + r.x, h.scale.y + r.y), scale);
+}
+
+// --- both -------------------------------------------------------------------------------------
+
+// One view as an image item filling `size` at the cursor, with its interaction and overlays.
+void view(Studio& s, int which, ImVec2 size, bool large) {
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;
+  render_if_changed(s, which, std::max(1, int(size.x * scale.x)), std::max(1, int(size.y * scale.y)));
+  s.window.view_images().image(s.renderer, which, size);
+  ImGui::SetCursorScreenPos(origin);
+  ImGui::InvisibleButton(which == 0 ? "##view3d" : "##view2d", size,
+                         ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                             ImGuiButtonFlags_MouseButtonMiddle);
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  if (which == 0) {
+    interact_3d(s.views.camera, size);
+    if (large && s.views.show_legend && s.views.colour_mode == render::ColourMode::NeighbourRatio)
+      ratio_legend(draw, origin, size);
+  } else {
+    const MapFrame frame{origin, size, s.views.map_view};
+    const Handles handles = placement_handles(frame, *s.doc.surface.map, s.doc.design.placement);
+    interact_2d(s, frame, handles, large);
+    if (large) {
+      draw->PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
+      if (s.ui.map_drag != MapDrag::None) {
+        const double spacing = s.doc.design.pattern.spacing > 0 ? s.doc.design.pattern.spacing
+                               : s.doc.result.pavement  ? s.doc.result.pavement->design.pattern.spacing
+                                                        : 0;
+        if (spacing > 0) lattice_preview(draw, frame, s.doc.design, spacing);
+      }
+      draw_handles(draw, placement_handles(frame, *s.doc.surface.map, s.doc.design.placement), s.ui.map_drag);
+      draw->PopClipRect();
+    }
+  }
+  draw->AddText(ImVec2(origin.x + 8, origin.y + 6), IM_COL32(220, 220, 220, 200), which == 0 ? "3D" : "2D map");
+}
+
+void toolbar(Studio& s) {
+  render::SceneStyle& st = s.views.style;
+  ImGui::Checkbox("surface", &st.show_surface);
+  ImGui::SameLine();
+  ImGui::Checkbox("elements", &st.show_elements);
+  ImGui::SameLine();
+  ImGui::Checkbox("lattice (L)", &st.show_lattice);
+  ImGui::SameLine();
+  ImGui::Checkbox("map mesh", &st.show_map_wireframe);
+  ImGui::SameLine();
+  int mode = int(s.views.colour_mode);
+  ImGui::SetNextItemWidth(170);
+  const char* modes[] = {"colour: NN ratio", "colour: element type"};
+  if (ImGui::Combo("##colour", &mode, modes, 2)) s.views.colour_mode = render::ColourMode(mode);
+  ImGui::SameLine();
+  ImGui::Checkbox("legend", &s.views.show_legend);
+  ImGui::SameLine();
+  if (ImGui::Button("swap views (V)")) s.views.large_3d = !s.views.large_3d;
+  ImGui::SameLine();
+  if (ImGui::Button("reset view (R)") && s.doc.surface.map) {
+    s.views.camera = render::frame_surface(s.doc.surface.map->mesh);
+    s.views.map_view = render::frame_map(*s.doc.surface.map);
+  }
+}
+
+}  // namespace
+
+void views_area(Studio& s, ImVec2 pos, ImVec2 size) {
+  ImGui::SetNextWindowPos(pos);
+  ImGui::SetNextWindowSize(size);
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(4, 4));
+  ImGui::Begin("Views", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoBringToFrontOnFocus |
+                   ImGuiWindowFlags_NoScrollWithMouse);
+  ImGui::PopStyleVar();
+  toolbar(s);
+  const ImVec2 area = ImGui::GetContentRegionAvail();
+  if (!s.doc.surface.map || area.x < 16 || area.y < 16) {
+    const char* text = s.loader.busy() ? "opening the surface..." : "Open a surface (File), or drop one on the window.";
+    ImGui::SetCursorPos(ImVec2(ImGui::GetCursorPosX() + area.x * 0.5f - ImGui::CalcTextSize(text).x * 0.5f,
+                               ImGui::GetCursorPosY() + area.y * 0.45f));
+    ImGui::TextUnformatted(text);
+    if (s.loader.busy()) {
+      ImGui::SetCursorPosX(ImGui::GetCursorPosX() + area.x * 0.3f);
+      ImGui::ProgressBar(s.loader.progress(), ImVec2(area.x * 0.4f, 0), s.loader.stage().c_str());
+    }
+    ImGui::End();
+    return;
+  }
+  const int large = s.views.large_3d ? 0 : 1;
+  const ImVec2 corner = ImGui::GetCursorScreenPos();
+  view(s, large, area, true);
+
+  // The other view as an inset in the bottom-right corner, in a child window so that the mouse
+  // over it does not reach the large view.
+  const ImVec2 inset(std::max(80.0f, area.x * 0.32f), std::max(60.0f, area.y * 0.32f));
+  ImGui::SetCursorScreenPos(ImVec2(corner.x + area.x - inset.x - 6, corner.y + area.y - inset.y - 6));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+  ImGui::BeginChild("inset", inset, true, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+  view(s, 1 - large, ImGui::GetContentRegionAvail(), false);
+  ImGui::EndChild();
+  ImGui::PopStyleVar();
+  ImGui::End();
+}
+
+}  // namespace paver::studio

@@ -1,0 +1,51 @@
+#include "scene.h"
+
+namespace paver::studio {
+
+bool sync_scene(Scene& scene, render::Renderer& renderer, Document& doc, const LivePavement& live,
+                const ViewSettings& views) {
+  const SurfaceMap* map = doc.surface.map.get();
+  if (!map) return false;
+  if (scene.surface != map) {
+    renderer.set_surface(*map);
+    renderer.set_elements({}, {});
+    scene.surface = map;
+    scene.pavement = nullptr;
+    scene.live_sequence = 0;
+    ++scene.generation;
+  }
+  const bool recolour = scene.colour_mode != views.colour_mode;
+  scene.colour_mode = views.colour_mode;
+
+  // A run in progress for this revision (a new design, or Run / Step again): its particles as
+  // they move. Otherwise the final pavement.
+  const RunState state = live.state();
+  if ((state == RunState::Running || state == RunState::Paused) && live.revision() == doc.revision) {
+    const std::optional<LiveSnapshot> snapshot = live.snapshot_since(recolour ? 0 : scene.live_sequence);
+    if (!snapshot || snapshot->revision != doc.revision) return false;
+    // Post-processing is left out while the particles move: it is the slow part, and only the
+    // final pavement is exported.
+    const PlacedElements placed =
+        place_all_elements(*map, *snapshot->pattern, snapshot->points, snapshot->design, false);
+    renderer.set_elements(placed.elements, render::element_colours(placed.elements, views.colour_mode),
+                          custom_shape(doc));
+    renderer.set_pattern(*map, *snapshot->pattern, snapshot->points);
+    scene.pavement = nullptr;
+    scene.live_sequence = snapshot->sequence;
+    ++scene.generation;
+    return false;
+  }
+
+  const PavementResult& result = doc.result;
+  if (!result.pavement || result.revision != doc.revision) return false;
+  const Pavement& p = *result.pavement;
+  if (scene.pavement == &p && !recolour) return false;
+  renderer.set_elements(p.elements, render::element_colours(p.elements, views.colour_mode), custom_shape(doc));
+  renderer.set_pattern(*map, p.pattern, p.points);
+  const bool first_upload = scene.pavement != &p;
+  scene.pavement = &p;
+  ++scene.generation;
+  return first_upload && result.latency_ms < 0;
+}
+
+}  // namespace paver::studio

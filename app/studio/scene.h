@@ -1,0 +1,31 @@
+#pragma once
+// Keeps what the renderer shows in step with the document and the live run: the surface, and
+// either the live particles (elements placed on them as they move) or the final pavement.
+// Uploads only what changed; `generation` bumps with every upload so the views draw again.
+#include "document.h"
+#include "live_pavement.h"
+#include "view_settings.h"
+
+#include "renderer.h"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace paver::studio {
+
+struct Scene {
+  const SurfaceMap* surface = nullptr;    // the map last uploaded
+  const Pavement* pavement = nullptr;     // the final pavement last uploaded; null while live
+  std::uint64_t live_sequence = 0;        // the live snapshot last uploaded
+  render::ColourMode colour_mode = render::ColourMode::NeighbourRatio;
+  std::uint64_t generation = 0;
+  std::array<std::vector<double>, 2> rendered;  // per view: the inputs its image was drawn with
+};
+
+// Returns true when the document's final pavement was uploaded this frame: once it is presented,
+// the edit-to-result latency is known.
+bool sync_scene(Scene& scene, render::Renderer& renderer, Document& doc, const LivePavement& live,
+                const ViewSettings& views);
+
+}  // namespace paver::studio

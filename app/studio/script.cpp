@@ -1,0 +1,141 @@
+#include "script.h"
+
+#include "paver/input_error.h"
+#include "paver/unit_cell.h"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <utility>
+
+namespace paver::studio {
+namespace {
+
+using Kind = ScriptCommand::Kind;
+
+constexpr std::pair<std::string_view, Kind> kCommands[] = {
+    {"open", Kind::Open},       {"design", Kind::Design}, {"pattern", Kind::Pattern},
+    {"spacing", Kind::Spacing}, {"set", Kind::Set},       {"optimize", Kind::Optimize},
+    {"undo", Kind::Undo},       {"redo", Kind::Redo},     {"export", Kind::Export},
+    {"screenshot", Kind::Screenshot}, {"view3d", Kind::View3d}, {"view2d", Kind::View2d},
+    {"wait", Kind::Wait},       {"quit", Kind::Quit}};
+
+bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && is_space(s.front())) s.remove_prefix(1);
+  while (!s.empty() && is_space(s.back())) s.remove_suffix(1);
+  return s;
+}
+
+// A '#' at the start or after a blank starts a comment; one inside a word (a path) does not.
+std::string_view strip_comment(std::string_view line) {
+  for (std::size_t i = 0; i < line.size(); ++i)
+    if (line[i] == '#' && (i == 0 || is_space(line[i - 1]))) return line.substr(0, i);
+  return line;
+}
+
+// Splits off the first word: {word, rest (trimmed)}.
+std::pair<std::string_view, std::string_view> first_word(std::string_view s) {
+  std::size_t end = 0;
+  while (end < s.size() && !is_space(s[end])) ++end;
+  return {s.substr(0, end), trim(s.substr(end))};
+}
+
+}  // namespace
+
+std::string_view command_name(Kind kind) {
+  for (const auto& [name, k] : kCommands)
+    if (k == kind) return name;
+  return "?";
+}
+
+bool parse_script_line(std::string_view line, int line_number, const std::string& source, ScriptCommand& out) {
+  const std::string_view content = trim(strip_comment(line));
+  if (content.empty()) return false;
+  const std::string where = source + ":" + std::to_string(line_number) + ": ";
+  const auto [word, rest] = first_word(content);
+  const std::string name(word);
+
+  const Kind* kind = nullptr;
+  for (const auto& [command, k] : kCommands)
+    if (command == word) kind = &k;
+  if (!kind) {
+    std::string known;
+    for (const auto& [command, k] : kCommands) known += (known.empty() ? "" : ", ") + std::string(command);
+    throw InputError(where + "unknown command '" + name + "'; commands are " + known);
+  }
+  out = ScriptCommand{};
+  out.kind = *kind;
+  out.line = line_number;
+
+  const auto need_argument = [&](const char* what) {
+    if (rest.empty()) throw InputError(where + name + " needs " + what);
+  };
+  switch (*kind) {
+    case Kind::Open:
+    case Kind::Design:
+    case Kind::Export:
+    case Kind::Screenshot:
+      need_argument(*kind == Kind::Export ? "a folder" : "a file path");
+      out.text = std::string(rest);  // the rest of the line, so paths may hold blanks
+      if (*kind == Kind::Screenshot && !out.text.ends_with(".png"))
+        throw InputError(where + "screenshot writes PNG: give a path ending in .png");
+      break;
+    case Kind::Pattern:
+      need_argument("tri, grid or hex");
+      if (!tessellation_from_name(rest))
+        throw InputError(where + "pattern '" + std::string(rest) + "': use tri, grid or hex");
+      out.text = std::string(rest);
+      break;
+    case Kind::Spacing: {
+      need_argument("the edge length D (0 = derive it from the surface)");
+      const auto [ptr, ec] = std::from_chars(rest.data(), rest.data() + rest.size(), out.number);
+      if (ec != std::errc() || ptr != rest.data() + rest.size() || !std::isfinite(out.number) || out.number < 0)
+        throw InputError(where + "spacing '" + std::string(rest) + "': must be a finite number >= 0");
+      break;
+    }
+    case Kind::Set: {
+      need_argument("a key and a value, e.g. set solver.dt 0.25");
+      const auto [key, value] = first_word(rest);
+      if (value.empty()) throw InputError(where + "set " + std::string(key) + " needs a value");
+      out.text = std::string(key);
+      out.value = std::string(value);
+      break;
+    }
+    case Kind::Wait: {
+      need_argument("a number of frames");
+      const auto [ptr, ec] = std::from_chars(rest.data(), rest.data() + rest.size(), out.frames);
+      if (ec != std::errc() || ptr != rest.data() + rest.size() || out.frames < 0)
+        throw InputError(where + "wait '" + std::string(rest) + "': must be a whole number of frames >= 0");
+      break;
+    }
+    default:
+      if (!rest.empty()) throw InputError(where + name + " takes no argument, got '" + std::string(rest) + "'");
+  }
+  return true;
+}
+
+std::vector<ScriptCommand> parse_script(std::string_view text, const std::string& source) {
+  std::vector<ScriptCommand> commands;
+  int line_number = 0;
+  while (!text.empty()) {
+    const std::size_t end = text.find('\n');
+    const std::string_view line = text.substr(0, end);
+    text = end == std::string_view::npos ? std::string_view() : text.substr(end + 1);
+    ScriptCommand command;
+    if (parse_script_line(line, ++line_number, source, command)) commands.push_back(std::move(command));
+  }
+  return commands;
+}
+
+std::vector<ScriptCommand> load_script(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open the script for reading");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_script(text.str(), path);
+}
+
+}  // namespace paver::studio

@@ -1,0 +1,35 @@
+#pragma once
+// The studio's scripted session (--script FILE): one command per line, `#` starts a comment.
+//   open PATH | design PATH | pattern tri|grid|hex | spacing D | set KEY VALUE | optimize |
+//   undo | redo | export DIR | screenshot FILE.png | view3d | view2d | wait N | quit
+// Parsing is separate from running so that a typo fails before anything is done.
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace paver::studio {
+
+struct ScriptCommand {
+  enum class Kind { Open, Design, Pattern, Spacing, Set, Optimize, Undo, Redo, Export, Screenshot, View3d, View2d,
+                    Wait, Quit };
+  Kind kind = Kind::Quit;
+  std::string text;    // open/design/export/screenshot: the path; pattern: the name; set: the key
+  std::string value;   // set: the value as written
+  double number = 0;   // spacing: D
+  int frames = 0;      // wait: N
+  int line = 0;        // 1-based line in the script, for messages
+};
+
+std::string_view command_name(ScriptCommand::Kind kind);
+
+// Parses one line into `out`; false for a blank or comment line. Throws InputError
+// "SOURCE:LINE: ..." naming the fix.
+bool parse_script_line(std::string_view line, int line_number, const std::string& source, ScriptCommand& out);
+
+// Every command of a script's text, in order.
+std::vector<ScriptCommand> parse_script(std::string_view text, const std::string& source);
+
+// Reads and parses a script file; throws InputError naming the file when it cannot be read.
+std::vector<ScriptCommand> load_script(const std::string& path);
+
+}  // namespace paver::studio

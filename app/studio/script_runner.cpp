@@ -1,0 +1,128 @@
+#include "script_runner.h"
+
+#include "design_edits.h"
+#include "design_keys.h"
+
+#include "paver/input_error.h"
+
+#include <cstdio>
+#include <utility>
+
+namespace paver::studio {
+namespace {
+
+using Kind = ScriptCommand::Kind;
+// Long enough for a dense surface's map on a slow machine; a hang still ends the session.
+constexpr auto kTimeout = std::chrono::minutes(10);
+
+bool needs_final_pavement(Kind kind) { return kind == Kind::Optimize || kind == Kind::Export; }
+
+std::string describe(const ScriptCommand& c) {
+  std::string text(command_name(c.kind));
+  if (c.kind == Kind::Spacing) {
+    char number[32];
+    std::snprintf(number, sizeof number, " %g", c.number);
+    return text + number;
+  }
+  if (c.kind == Kind::Wait) return text + " " + std::to_string(c.frames);
+  if (!c.text.empty()) text += " " + c.text;
+  if (!c.value.empty()) text += " " + c.value;
+  return text;
+}
+
+}  // namespace
+
+ScriptRunner::ScriptRunner(std::vector<ScriptCommand> commands, std::string source)
+    : commands_(std::move(commands)), source_(std::move(source)) {}
+
+bool ScriptRunner::ready(const Studio& s, const ScriptCommand& c) const {
+  if (!needs_final_pavement(c.kind)) return true;
+  // The pavement for the current design, final and on screen (its latency measured).
+  return result_is_final(s) && s.doc.result.latency_ms >= 0;
+}
+
+void ScriptRunner::act(Studio& s, const ScriptCommand& c) {
+  Document& doc = s.doc;
+  switch (c.kind) {
+    case Kind::Open: open_surface(s, c.text); break;
+    case Kind::Design:
+      if (open_design_file(doc, c.text)) s.ui.design_path = c.text;
+      break;
+    case Kind::Pattern: change_design(doc, with_tessellation(doc.design, *tessellation_from_name(c.text))); break;
+    case Kind::Spacing: {
+      Design d = doc.design;
+      d.pattern.spacing = c.number;
+      change_design(doc, d);
+      break;
+    }
+    case Kind::Set: change_design(doc, set_design_key(doc.design, c.text, c.value)); break;
+    case Kind::Optimize: break;  // ready() waited for it
+    case Kind::Undo:
+      if (!undo(doc)) throw InputError("undo: there is nothing to undo");
+      break;
+    case Kind::Redo:
+      if (!redo(doc)) throw InputError("redo: there is nothing to redo");
+      break;
+    case Kind::Export: export_outputs(s, c.text); break;
+    case Kind::Screenshot: s.ui.screenshot = c.text; break;
+    case Kind::View3d: s.views.large_3d = true; break;
+    case Kind::View2d: s.views.large_3d = false; break;
+    case Kind::Wait: frames_left_ = c.frames; break;
+    case Kind::Quit: s.quit = true; break;
+  }
+}
+
+bool ScriptRunner::settled(const Studio& s, const ScriptCommand& c) {
+  switch (c.kind) {
+    case Kind::Open: return !s.loader.busy() && s.doc.surface.path == std::filesystem::path(c.text);
+    case Kind::Screenshot: return !s.ui.screenshot;  // after_present wrote it
+    case Kind::Wait: return frames_left_-- <= 0;
+    default: return true;
+  }
+}
+
+void ScriptRunner::fail(Studio& s, const std::string& message, int code) {
+  std::fprintf(stderr, "paver-studio: error: %s\n", message.c_str());
+  exit_code_ = code;
+  finished_ = true;
+  s.quit = true;
+}
+
+void ScriptRunner::frame(Studio& s) {
+  if (finished_) return;
+  const Messages& messages = s.doc.messages;
+  const std::string where =
+      next_ < commands_.size() ? source_ + ":" + std::to_string(commands_[next_].line) + ": " : source_ + ": ";
+  if (messages.error_count > errors_seen_) return fail(s, where + messages.error, 1);
+  if (next_ >= commands_.size()) {  // the end of the script is a quit
+    finished_ = true;
+    s.quit = true;
+    return;
+  }
+  const ScriptCommand& c = commands_[next_];
+  const auto now = std::chrono::steady_clock::now();
+  if (since_ == std::chrono::steady_clock::time_point{}) since_ = now;
+  if (now - since_ > kTimeout)
+    return fail(s, where + std::string(command_name(c.kind)) + " did not finish in 10 minutes", 1);
+  try {
+    if (phase_ == Phase::Ready) {
+      if (!ready(s, c)) return;
+      std::printf("script %d: %s\n", c.line, describe(c).c_str());
+      std::fflush(stdout);
+      act(s, c);
+      phase_ = Phase::Settling;
+      if (s.doc.messages.error_count > errors_seen_) return;  // failed: reported next frame
+    }
+    if (!settled(s, c)) return;
+  } catch (const InputError& e) {
+    return fail(s, where + e.what(), 2);
+  } catch (const std::exception& e) {
+    return fail(s, where + e.what(), 1);
+  }
+  if (c.kind == Kind::Quit) finished_ = true;
+  phase_ = Phase::Ready;
+  since_ = {};
+  ++next_;
+}
+
+}  // namespace paver::studio

@@ -1,0 +1,214 @@
+#include "studio.h"
+
+#include "output_guard.h"
+#include "panels/panels.h"
+#include "recent_files.h"
+#include "run_outputs.h"
+#include "shortcuts.h"
+
+#include "paver/input_error.h"
+
+#include <imgui.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cstdio>
+
+namespace paver::studio {
+namespace {
+
+namespace fs = std::filesystem;
+
+double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+
+void remember(Studio& s, const fs::path& path) {
+  remember_recent_file(s.recent, path);
+  try {
+    save_recent_files(recent_files_path(), s.recent);
+  } catch (const std::exception& e) {
+    report_status(s.doc, std::string("could not save the recent files: ") + e.what());  // not worth a dialog
+  }
+}
+
+void take_loaded_surface(Studio& s) {
+  std::optional<SurfaceLoadOutcome> outcome = s.loader.take_outcome();
+  if (!outcome) return;
+  if (!outcome->surface) {
+    report_error(s.doc, outcome->error);
+    return;
+  }
+  OpenedSurface& opened = *outcome->surface;
+  const SurfaceMap& map = *opened.map;
+  s.views.camera = render::frame_surface(map.mesh);
+  s.views.map_view = render::frame_map(map);
+  remember(s, opened.path);
+  std::string status = "opened " + opened.path.string() + ": " + std::to_string(map.mesh.vertex_count()) +
+                       " vertices, " + std::to_string(map.mesh.face_count()) + " faces";
+  for (const auto& warning : opened.warnings) status += "; warning: " + warning;
+  set_surface(s.doc, Surface{opened.path, opened.map, std::move(opened.warnings), std::move(opened.timings)});
+  report_status(s.doc, status);
+}
+
+void take_run_outcome(Studio& s) {
+  std::optional<RunOutcome> outcome = s.live.take_outcome();
+  if (!outcome || outcome->revision != s.doc.revision) return;  // an older design's: dropped
+  if (!outcome->pavement) {
+    report_error(s.doc, outcome->error);
+    return;
+  }
+  const Pavement& p = *outcome->pavement;
+  set_result(s.doc, outcome->pavement, outcome->revision, outcome->milliseconds);
+  report_status(s.doc, std::to_string(p.elements.size()) + " elements, " + std::to_string(p.after.collisions) +
+                           " collisions; " + std::to_string(p.solve.iterations) + " iterations (" +
+                           std::string(stop_reason_name(p.solve.reason)) + ")");
+}
+
+}  // namespace
+
+void open_surface(Studio& s, const fs::path& path) {
+  s.loader.start(path);
+  s.ui.surface_path = path.string();
+  report_status(s.doc, "opening " + path.string());
+}
+
+void open_any(Studio& s, const fs::path& path) {
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (extension == ".json") {
+    if (open_design_file(s.doc, path)) {
+      s.ui.design_path = path.string();
+      remember(s, path);
+    }
+  } else {
+    open_surface(s, path);
+  }
+}
+
+void set_backend(Studio& s, const std::string& name) {
+  try {
+    s.run.choice = app::choose_backend(name, "", 0);
+    s.run.backend = name;
+    report_status(s.doc, "solver: " + s.run.choice.name +
+                             (s.run.choice.device.empty() ? std::string() : " on " + s.run.choice.device));
+    if (s.doc.surface.map) run_now(s);
+  } catch (const std::exception& e) {
+    report_error(s.doc, e.what());
+  }
+}
+
+bool result_is_final(const Studio& s) {
+  return s.doc.result.pavement && s.doc.result.revision == s.doc.revision && !s.loader.busy();
+}
+
+void export_outputs(Studio& s, const fs::path& folder) {
+  if (!result_is_final(s))
+    throw InputError("nothing to export yet: the pavement for this design is not finished (run it, or wait)");
+  const Pavement& pavement = *s.doc.result.pavement;
+  const std::vector<fs::path> inputs = {s.doc.surface.path, s.doc.design_path, s.doc.design.elements.custom_shape};
+  app::refuse_overwriting_inputs(inputs, app::run_output_paths(folder, true));
+  StageTimings timings = s.doc.surface.timings;
+  timings.insert(timings.end(), pavement.timings.begin(), pavement.timings.end());
+  const auto t0 = Clock::now();
+  app::write_run_files(folder, pavement, {.custom = custom_shape(s.doc), .stl = true});
+  timings.emplace_back("export", ms_since(t0));
+  const RunInfo info{s.doc.surface.path.string(), s.doc.design_path.empty() ? "studio" : s.doc.design_path.string(),
+                     s.doc.design.pattern.spacing <= 0};
+  app::write_run_report(folder, info, *s.doc.surface.map, pavement, timings);
+  report_status(s.doc, "exported to " + folder.string());
+}
+
+void save_view_png(Studio& s, const fs::path& path) {
+  if (!s.doc.surface.map) throw InputError("nothing to save yet: open a surface first");
+  render::Image image = s.renderer.read_back(0);
+  if (s.views.colour_mode == render::ColourMode::NeighbourRatio) render::draw_ratio_legend(image);
+  render::write_png(path, image);
+  report_status(s.doc, "saved " + path.string());
+}
+
+void run_now(Studio& s, bool paused, int step) {
+  if (!s.doc.surface.map) {
+    report_status(s.doc, "open a surface first");
+    return;
+  }
+  // Run again for the same design (Run, Step, another backend): the latency counts from now.
+  if (s.live.revision() == s.doc.revision) s.doc.changed_at = Clock::now();
+  s.live.start({s.doc.surface.map, s.doc.design, s.doc.revision, s.run.choice.factory, paused, step});
+}
+
+void toggle_pause(Studio& s) {
+  switch (s.live.state()) {
+    case RunState::Running: s.live.pause(); break;
+    case RunState::Paused: s.live.resume(); break;
+    default: run_now(s);
+  }
+}
+
+void step_run(Studio& s) {
+  const RunState state = s.live.state();
+  if (state == RunState::Running || state == RunState::Paused)
+    s.live.step(s.run.step_iterations);
+  else
+    run_now(s, true, s.run.step_iterations);
+}
+
+void reset_run(Studio& s) {
+  s.live.reset();
+  report_status(s.doc, "run reset: the result was dropped; Run starts again");
+}
+
+void update_studio(Studio& s) {
+  for (const std::string& path : s.window.take_dropped_paths()) open_any(s, path);
+  take_loaded_surface(s);
+  take_run_outcome(s);
+  if (!ImGui::IsAnyItemActive()) end_gesture(s.doc);
+  if (s.run.auto_run && s.doc.surface.map && !s.loader.busy() && s.live.revision() != s.doc.revision &&
+      Clock::now() >= s.doc.run_due)
+    run_now(s);
+  s.result_shown = sync_scene(s.scene, s.renderer, s.doc, s.live, s.views);
+}
+
+void draw_studio(Studio& s) {
+  handle_shortcuts(s);
+  const ImGuiViewport* viewport = ImGui::GetMainViewport();
+  const float status_height = ImGui::GetFrameHeightWithSpacing() + 4;
+  const float side_width = std::min(430.0f, viewport->WorkSize.x * 0.4f);
+  const ImVec2 origin = viewport->WorkPos, size = viewport->WorkSize;
+  side_panels(s, origin, ImVec2(side_width, size.y - status_height));
+  views_area(s, ImVec2(origin.x + side_width, origin.y), ImVec2(size.x - side_width, size.y - status_height));
+  status_bar(s, ImVec2(origin.x, origin.y + size.y - status_height), ImVec2(size.x, status_height));
+  dialogs(s);
+}
+
+void after_present(Studio& s, const std::optional<render::Image>& frame) {
+  if (s.result_shown && s.doc.result.latency_ms < 0) {
+    s.doc.result.latency_ms = ms_since(s.doc.changed_at);
+    if (s.script_mode) {
+      std::printf("latency_ms %.1f\n", s.doc.result.latency_ms);
+      std::fflush(stdout);
+    }
+  }
+  if (!s.ui.screenshot) return;
+  if (!frame && s.window.can_capture()) return;  // the swapchain was being rebuilt: next frame
+  try {
+    if (!frame) throw InputError("screenshots are not possible here: the window's swapchain cannot be copied");
+    render::write_png(*s.ui.screenshot, *frame);
+    report_status(s.doc, "screenshot " + s.ui.screenshot->string());
+  } catch (const std::exception& e) {
+    report_error(s.doc, e.what());
+  }
+  s.ui.screenshot.reset();
+}
+
+void handle_close_request(Studio& s) {
+  if (!s.window.close_requested()) return;
+  if (s.script_mode || !s.doc.dirty) {
+    s.quit = true;
+    return;
+  }
+  s.window.cancel_close();
+  s.ui.quit_dialog = true;
+}
+
+}  // namespace paver::studio

@@ -1,0 +1,99 @@
+#pragma once
+// Paver Studio's parts, side by side: the document, the background work (surface loading, the
+// live pavement), the views and the UI's own state. Each part keeps to itself; the functions
+// here move data between them once per frame, and the panels are free functions of the parts.
+#include "app_window.h"
+#include "backend_choice.h"
+#include "document.h"
+#include "live_pavement.h"
+#include "scene.h"
+#include "surface_loader.h"
+#include "view_settings.h"
+
+#include "renderer.h"
+
+#include <glm/vec2.hpp>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace paver::studio {
+
+struct RunSettings {
+  std::string backend = "auto";  // cpu, vulkan or auto, as `paver run --backend`
+  // The solver the runs use. A Vulkan solver gets a device context of its own: it runs on the
+  // background thread, and VulkanContext::submit_and_wait (its command pool and queue) is not
+  // synchronised, so sharing the window's context with the renderer on the UI thread would race.
+  app::BackendChoice choice;
+  int step_iterations = 10;       // iterations per press of Step
+  bool auto_run = true;           // every design change re-runs the pavement
+};
+
+// The unit-cell editor's mode: what a click does.
+enum class CellEditMode { Flip, Remove, Add };
+// What a left drag in the 2D view changes.
+enum class MapDrag { None, Offset, Rotation, Scale };
+
+struct UiState {
+  std::string surface_path, design_path, export_dir = "out", png_path = "view3d.png", custom_shape_path;
+  CellEditMode cell_mode = CellEditMode::Flip;
+  int add_from_vertex = -1;            // Add: the first vertex clicked, -1 = none yet
+  glm::ivec2 add_from_cell{0, 0};      // and its lattice cell
+  bool add_virtual = false;            // Add makes a virtual edge
+  MapDrag map_drag = MapDrag::None;
+  bool quit_dialog = false;            // asking Save / Discard / Cancel
+  std::optional<std::filesystem::path> screenshot;  // write the next presented frame here
+};
+
+struct Studio {
+  Studio(AppWindow& w, render::Renderer& r) : window(w), renderer(r) {}
+
+  AppWindow& window;
+  render::Renderer& renderer;
+  Document doc;
+  SurfaceLoader loader;
+  LivePavement live;
+  RunSettings run;
+  ViewSettings views;
+  Scene scene;
+  UiState ui;
+  std::vector<std::filesystem::path> recent;
+  bool script_mode = false;  // quitting does not ask; results are logged to stdout
+  bool quit = false;
+  bool result_shown = false; // the final pavement was uploaded this frame
+};
+
+// Starts loading a surface in the background; the design stays.
+void open_surface(Studio& s, const std::filesystem::path& path);
+// A dropped or recent file: a .json design is loaded, anything else opened as a surface.
+void open_any(Studio& s, const std::filesystem::path& path);
+// Chooses the solver backend (cpu, vulkan, auto); reports when it cannot.
+void set_backend(Studio& s, const std::string& name);
+// Writes placements.csv, elements.ply/.obj/.stl, design.json and report.json into `folder`,
+// as `paver run` does. Throws InputError (nothing to export yet, a bad folder).
+void export_outputs(Studio& s, const std::filesystem::path& folder);
+// The 3D view as a PNG, at its current size. Throws InputError.
+void save_view_png(Studio& s, const std::filesystem::path& path);
+
+// Run control for the optimization panel and the shortcuts.
+void run_now(Studio& s, bool paused = false, int step = 0);
+void toggle_pause(Studio& s);
+void step_run(Studio& s);
+void reset_run(Studio& s);
+
+// Whether the pavement on screen is final for the current design.
+bool result_is_final(const Studio& s);
+
+// Once per frame, before the panels: files dropped, the loader and the run's results taken in,
+// the next run started when due, the renderer's scene updated.
+void update_studio(Studio& s);
+// Once per frame: the whole UI (panels, views, dialogs, shortcuts).
+void draw_studio(Studio& s);
+// After the frame was presented: the latency of a result just shown, the screenshot.
+void after_present(Studio& s, const std::optional<render::Image>& frame);
+// The window's close button: quits, or asks first when the design has unsaved changes.
+void handle_close_request(Studio& s);
+
+}  // namespace paver::studio

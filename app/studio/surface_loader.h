@@ -1,0 +1,46 @@
+#pragma once
+// Opens a surface in the background: load and check it, then the bijective ARAP map run a few
+// iterations at a time (ArapSolver::iterate) so the window shows the progress and never freezes,
+// even on a mesh of a million faces. The map equals build_surface_map's with default options, so
+// what the studio exports is what `paver run` writes for the same surface and design.
+#include "background_jobs.h"
+
+#include "paver/pavement.h"
+#include "paver/surface_map.h"
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace paver::studio {
+
+struct OpenedSurface {
+  std::filesystem::path path;
+  std::shared_ptr<const SurfaceMap> map;
+  std::vector<std::string> warnings;  // repairs made while loading
+  StageTimings timings;               // "load", "parameterize"
+};
+
+struct SurfaceLoadOutcome {
+  std::optional<OpenedSurface> surface;  // empty on failure
+  std::string error;                     // what went wrong, naming the file
+};
+
+class SurfaceLoader {
+public:
+  void start(const std::filesystem::path& path);  // a load in progress is abandoned
+  bool busy() const;
+  float progress() const;     // 0..1
+  std::string stage() const;  // "loading", "mapping (ARAP 40 / 300)", ...
+  std::optional<SurfaceLoadOutcome> take_outcome();  // once per finished load
+
+  struct Shared;  // state shared with the loading thread
+
+private:
+  std::shared_ptr<Shared> shared_;
+  BackgroundJobs jobs_;
+};
+
+}  // namespace paver::studio

@@ -1,0 +1,66 @@
+#include "design_edits.h"
+
+#include "paver/input_error.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+namespace paver::studio {
+namespace {
+
+EdgeOperator op(EdgeOperator::Kind kind, int from, int to, glm::ivec2 offset) {
+  EdgeOperator o;
+  o.kind = kind;
+  o.from = from;
+  o.to = to;
+  o.offset = offset;
+  return o;
+}
+
+TEST(DesignEdits, ANewTessellationDropsWhatNamedTheOldCellsEdges) {
+  Design d;
+  d.pattern.tessellation = Tessellation::Triangle;
+  d.pattern.operators.push_back(op(EdgeOperator::Kind::Remove, 0, 0, {1, 0}));
+  d.elements.edge.push_back({.t = 0.5, .scale = 0.3, .shape = ShapeKind::Sphere, .cell_edges = {0, 1}});
+  const Design same = with_tessellation(d, Tessellation::Triangle);
+  EXPECT_EQ(same.pattern.operators.size(), 1u);
+  EXPECT_EQ(same.elements.edge[0].cell_edges.size(), 2u);
+  const Design grid = with_tessellation(d, Tessellation::Grid);
+  EXPECT_EQ(grid.pattern.tessellation, Tessellation::Grid);
+  EXPECT_TRUE(grid.pattern.operators.empty());
+  ASSERT_EQ(grid.elements.edge.size(), 1u) << "the E-element stays, on every edge";
+  EXPECT_TRUE(grid.elements.edge[0].cell_edges.empty());
+}
+
+TEST(DesignEdits, OperatorsAreAddedOnlyWhenTheCellTakesThem) {
+  Design d;
+  d.pattern.tessellation = Tessellation::Triangle;
+  const UnitCell cell = design_cell_shape(d.pattern);
+  ASSERT_FALSE(cell.edges.empty());
+  const CellEdge& e = cell.edges[0];
+  const Design removed = with_operator(d, op(EdgeOperator::Kind::Remove, e.from, e.to, e.offset));
+  ASSERT_EQ(removed.pattern.operators.size(), 1u);
+  const auto real_edges = [](const UnitCell& c) {
+    return std::count_if(c.edges.begin(), c.edges.end(), [](const CellEdge& x) { return !x.is_virtual; });
+  };
+  EXPECT_EQ(real_edges(design_cell_shape(removed.pattern)), real_edges(cell) - 1);
+  // The same edge cannot go twice, and a far edge that is not there cannot go at all.
+  EXPECT_THROW(with_operator(removed, op(EdgeOperator::Kind::Remove, e.from, e.to, e.offset)), InputError);
+  EXPECT_THROW(with_operator(d, op(EdgeOperator::Kind::Flip, 0, 0, {5, 5})), InputError);
+  EXPECT_TRUE(d.pattern.operators.empty()) << "the given design is untouched";
+
+  const Design back = without_operator(removed, 0);
+  EXPECT_TRUE(back.pattern.operators.empty());
+  EXPECT_EQ(design_cell_shape(back.pattern).edges.size(), cell.edges.size());
+}
+
+TEST(DesignEdits, TheCellShapeIsDrawnAtUnitSpacing) {
+  Design d;
+  d.pattern.spacing = 7;
+  const UnitCell cell = design_cell_shape(d.pattern);
+  EXPECT_EQ(cell.spacing, 1);
+}
+
+}  // namespace
+}  // namespace paver::studio

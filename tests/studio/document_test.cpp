@@ -1,0 +1,112 @@
+#include "document.h"
+
+#include "paver/mesh_loader.h"
+#include "paver/pavement.h"
+#include "test_meshes.h"
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <numeric>
+
+namespace paver::studio {
+namespace {
+
+Design with_dt(double dt) {
+  Design d;
+  d.solver.dt = dt;
+  return d;
+}
+
+TEST(Document, EveryChangeIsAnUndoStepAndANewRevision) {
+  Document doc;
+  const auto revision = doc.revision;
+  ASSERT_TRUE(change_design(doc, with_dt(0.25)));
+  EXPECT_TRUE(doc.dirty);
+  EXPECT_EQ(doc.revision, revision + 1);
+  EXPECT_EQ(doc.history.undo_count(), 1u);
+  EXPECT_LE(doc.run_due, Clock::now()) << "a plain change runs at once";
+
+  ASSERT_TRUE(undo(doc));
+  EXPECT_EQ(doc.design.solver.dt, SolverParams{}.dt);
+  EXPECT_EQ(doc.revision, revision + 2);
+  ASSERT_TRUE(redo(doc));
+  EXPECT_EQ(doc.design.solver.dt, 0.25);
+  EXPECT_EQ(doc.revision, revision + 3);
+  EXPECT_FALSE(redo(doc));
+}
+
+TEST(Document, ChangesThatChangeNothingAreNotRecorded) {
+  Document doc;
+  const auto revision = doc.revision;
+  EXPECT_TRUE(change_design(doc, Design{}));
+  EXPECT_EQ(doc.revision, revision);
+  EXPECT_FALSE(doc.history.can_undo());
+  EXPECT_FALSE(doc.dirty);
+}
+
+TEST(Document, ADragIsOneUndoStepAndWaitsToRun) {
+  Document doc;
+  for (double dt : {0.31, 0.32, 0.33}) ASSERT_TRUE(change_design(doc, with_dt(dt), true));
+  EXPECT_EQ(doc.history.undo_count(), 1u);
+  EXPECT_GT(doc.run_due, Clock::now()) << "the run waits for the slider to rest";
+  end_gesture(doc);
+  ASSERT_TRUE(change_design(doc, with_dt(0.5)));
+  EXPECT_EQ(doc.history.undo_count(), 2u);
+  ASSERT_TRUE(undo(doc));
+  EXPECT_EQ(doc.design.solver.dt, 0.33);
+  ASSERT_TRUE(undo(doc));
+  EXPECT_EQ(doc.design.solver.dt, SolverParams{}.dt);
+}
+
+TEST(Document, AnInvalidDesignIsReportedAndTheDesignKept) {
+  Document doc;
+  ASSERT_TRUE(change_design(doc, with_dt(0.25)));
+  const auto revision = doc.revision;
+  EXPECT_FALSE(change_design(doc, with_dt(-1)));
+  EXPECT_EQ(doc.design.solver.dt, 0.25);
+  EXPECT_EQ(doc.revision, revision);
+  EXPECT_EQ(doc.messages.error_count, 1);
+  EXPECT_NE(doc.messages.error.find("solver.dt"), std::string::npos) << doc.messages.error;
+  EXPECT_TRUE(doc.messages.status.starts_with("error: "));
+}
+
+TEST(Document, DesignFilesRoundTripAndABadOneChangesNothing) {
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / ("paver_document_" + std::to_string(getpid()) + ".json");
+  Document doc;
+  ASSERT_TRUE(change_design(doc, with_dt(0.2)));
+  ASSERT_TRUE(save_design_file(doc, file));
+  EXPECT_FALSE(doc.dirty);
+  EXPECT_EQ(doc.design_path, file);
+
+  Document other;
+  ASSERT_TRUE(open_design_file(other, file));
+  EXPECT_EQ(other.design.solver.dt, 0.2);
+  EXPECT_FALSE(other.dirty);
+  EXPECT_TRUE(other.history.can_undo()) << "loading a design is undoable";
+
+  EXPECT_FALSE(open_design_file(other, "/nonexistent/design.json"));
+  EXPECT_EQ(other.design.solver.dt, 0.2);
+  EXPECT_NE(other.messages.error.find("/nonexistent/design.json"), std::string::npos);
+  std::filesystem::remove(file);
+}
+
+TEST(Document, AResultCarriesItsRatiosAndHistogram) {
+  Document doc;
+  const SurfaceMap map = build_surface_map(load_surface(test::bundled_surface("dome")).mesh);
+  Design d;
+  d.pattern.spacing = 6;
+  auto pavement = std::make_shared<const Pavement>(make_pavement(map, d));
+  set_result(doc, pavement, doc.revision, 12.5);
+  const PavementResult& r = doc.result;
+  EXPECT_EQ(r.neighbour_ratios.size(), pavement->elements.size());
+  ASSERT_EQ(r.ratio_histogram.size(), std::size_t(kHistogramBins));
+  EXPECT_EQ(std::accumulate(r.ratio_histogram.begin(), r.ratio_histogram.end(), 0.0f), float(pavement->elements.size()));
+  EXPECT_LT(r.latency_ms, 0) << "measured once it is on screen";
+}
+
+}  // namespace
+}  // namespace paver::studio

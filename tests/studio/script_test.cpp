@@ -1,0 +1,97 @@
+#include "script.h"
+
+#include "paver/input_error.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace paver::studio {
+namespace {
+
+using Kind = ScriptCommand::Kind;
+
+std::string error_of(const std::string& text) {
+  try {
+    parse_script(text, "s.txt");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Script, ParsesEveryCommand) {
+  const auto commands = parse_script(
+      "open assets/surfaces/dome.obj\n"
+      "design assets/designs/dome_hex_d6.json\n"
+      "pattern hex\n"
+      "spacing 6\n"
+      "set solver.dt 0.25\n"
+      "optimize\nundo\nredo\n"
+      "export out/dir\n"
+      "screenshot shot.png\n"
+      "view3d\nview2d\n"
+      "wait 3\n"
+      "quit\n",
+      "s.txt");
+  ASSERT_EQ(commands.size(), 14u);
+  const Kind kinds[] = {Kind::Open,   Kind::Design, Kind::Pattern, Kind::Spacing,    Kind::Set,    Kind::Optimize,
+                        Kind::Undo,   Kind::Redo,   Kind::Export,  Kind::Screenshot, Kind::View3d, Kind::View2d,
+                        Kind::Wait,   Kind::Quit};
+  for (std::size_t i = 0; i < commands.size(); ++i) {
+    EXPECT_EQ(commands[i].kind, kinds[i]) << i;
+    EXPECT_EQ(commands[i].line, int(i) + 1);
+  }
+  EXPECT_EQ(commands[0].text, "assets/surfaces/dome.obj");
+  EXPECT_EQ(commands[2].text, "hex");
+  EXPECT_EQ(commands[3].number, 6);
+  EXPECT_EQ(commands[4].text, "solver.dt");
+  EXPECT_EQ(commands[4].value, "0.25");
+  EXPECT_EQ(commands[8].text, "out/dir");
+  EXPECT_EQ(commands[12].frames, 3);
+}
+
+TEST(Script, SkipsCommentsAndBlankLinesButCountsThem) {
+  const auto commands = parse_script("# a session\n\n   \nundo   # go back\n\t redo\r\n", "s.txt");
+  ASSERT_EQ(commands.size(), 2u);
+  EXPECT_EQ(commands[0].kind, Kind::Undo);
+  EXPECT_EQ(commands[0].line, 4);
+  EXPECT_EQ(commands[1].kind, Kind::Redo);
+  EXPECT_EQ(commands[1].line, 5);
+}
+
+TEST(Script, PathsKeepBlanksAndHashesInsideWords) {
+  const auto commands = parse_script("open my surfaces/dome#2.obj  # the second dome\n", "s.txt");
+  ASSERT_EQ(commands.size(), 1u);
+  EXPECT_EQ(commands[0].text, "my surfaces/dome#2.obj");
+}
+
+TEST(Script, SetKeepsTheWholeValue) {
+  const auto commands = parse_script("set placement.offset [1.5, -2]\nset elements.vertex.shape gem\n", "s.txt");
+  ASSERT_EQ(commands.size(), 2u);
+  EXPECT_EQ(commands[0].text, "placement.offset");
+  EXPECT_EQ(commands[0].value, "[1.5, -2]");
+  EXPECT_EQ(commands[1].value, "gem");
+}
+
+TEST(Script, ErrorsNameTheLineAndTheFix) {
+  EXPECT_EQ(error_of("undo\nfrobnicate\n").rfind("s.txt:2: unknown command 'frobnicate'", 0), 0u)
+      << error_of("undo\nfrobnicate\n");
+  EXPECT_NE(error_of("pattern penrose").find("use tri, grid or hex"), std::string::npos);
+  EXPECT_NE(error_of("spacing -1").find("finite number >= 0"), std::string::npos);
+  EXPECT_NE(error_of("spacing 6mm").find("finite number >= 0"), std::string::npos);
+  EXPECT_NE(error_of("set solver.dt").find("needs a value"), std::string::npos);
+  EXPECT_NE(error_of("open").find("needs a file path"), std::string::npos);
+  EXPECT_NE(error_of("export").find("needs a folder"), std::string::npos);
+  EXPECT_NE(error_of("wait 1.5").find("whole number"), std::string::npos);
+  EXPECT_NE(error_of("quit now").find("takes no argument"), std::string::npos);
+  EXPECT_NE(error_of("screenshot shot.jpg").find(".png"), std::string::npos);
+  EXPECT_EQ(error_of("\n\n  optimize extra").rfind("s.txt:3:", 0), 0u);
+}
+
+TEST(Script, MissingFileIsAnInputError) {
+  EXPECT_THROW(load_script("/nonexistent/session.txt"), InputError);
+}
+
+}  // namespace
+}  // namespace paver::studio
