@@ -59,11 +59,6 @@ double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
-bool uses_custom_shape(const ElementsDesign& e) {
-  if (e.vertex.enabled && e.vertex.shape == ShapeKind::Custom) return true;
-  return std::any_of(e.edge.begin(), e.edge.end(), [](const auto& s) { return s.shape == ShapeKind::Custom; });
-}
-
 int run_run(const RunArgs& args) {
   StageTimings timings;
   auto t0 = Clock::now();
@@ -101,8 +96,7 @@ int run_run(const RunArgs& args) {
 
   // Refuse before any work is written if an output would replace an input.
   const fs::path out = args.out;
-  std::vector<fs::path> outputs = {out / "placements.csv", out / "elements.ply", out / "elements.obj",
-                                   out / "design.json", out / "report.json"};
+  std::vector<fs::path> outputs = app::run_output_paths(out, false);
   if (args.png) outputs.insert(outputs.end(), {out / "preview.png", out / "param.png"});
   const std::vector<fs::path> inputs = {args.surface, args.design, design.elements.custom_shape};
   app::refuse_overwriting_inputs(inputs, outputs);
@@ -111,7 +105,8 @@ int run_run(const RunArgs& args) {
   const SurfaceMap map = build_surface_map(std::move(loaded.mesh));
   timings.emplace_back("parameterize", ms_since(t0));
   if (!map.parameterization.quality.bijective())
-    throw std::runtime_error("the parameterization is not bijective; please report this surface");
+    throw std::runtime_error("the parameterization of " + args.surface +
+                             " is not bijective; please report this surface to the Paver developers");
 
   PavementOptions options;
   options.observer = terminal_progress_bar(design.solver.iterations);

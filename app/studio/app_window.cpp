@@ -15,12 +15,16 @@
 #include <cstdio>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 namespace paver::studio {
 namespace {
 
+// ImGui's Vulkan backend reports errors through this hook; going on with a failed call would use
+// a bad handle, so it stops the frame loop with an error the studio reports.
 void check_imgui_vulkan(VkResult result) {
-  if (result < 0) std::fprintf(stderr, "paver-studio: ImGui's Vulkan backend: VkResult %d\n", int(result));
+  if (result < 0)
+    throw std::runtime_error("ImGui's Vulkan backend failed with VkResult " + std::to_string(int(result)));
 }
 
 vk::SurfaceFormatKHR choose_format(const std::vector<vk::SurfaceFormatKHR>& formats) {
@@ -294,7 +298,12 @@ std::optional<render::Image> AppWindow::end_frame(bool capture) {
     cb.copyImageToBuffer(image, vk::ImageLayout::eTransferSrcOptimal, pixels->handle(),
                          vk::BufferImageCopy(0, 0, 0, {vk::ImageAspectFlagBits::eColor, 0, 0, 1}, {0, 0, 0},
                                              vk::Extent3D(s.extent, 1)));
-    cb.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer, vk::PipelineStageFlagBits::eBottomOfPipe, {}, {}, {},
+    // The image goes back to presentation; the copied pixels are made visible to the host.
+    cb.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer,
+                       vk::PipelineStageFlagBits::eBottomOfPipe | vk::PipelineStageFlagBits::eHost, {}, {},
+                       vk::BufferMemoryBarrier(vk::AccessFlagBits::eTransferWrite, vk::AccessFlagBits::eHostRead,
+                                               VK_QUEUE_FAMILY_IGNORED, VK_QUEUE_FAMILY_IGNORED, pixels->handle(), 0,
+                                               VK_WHOLE_SIZE),
                        vk::ImageMemoryBarrier(vk::AccessFlagBits::eTransferRead, {}, vk::ImageLayout::eTransferSrcOptimal,
                                               vk::ImageLayout::ePresentSrcKHR, VK_QUEUE_FAMILY_IGNORED,
                                               VK_QUEUE_FAMILY_IGNORED, image, range));

@@ -1,5 +1,6 @@
 #include "document.h"
 
+#include "output_guard.h"
 #include "paver/design_io.h"
 #include "paver/element_proximity.h"
 #include "paver/input_error.h"
@@ -12,11 +13,6 @@
 
 namespace paver::studio {
 namespace {
-
-bool uses_custom_shape(const ElementsDesign& e) {
-  if (e.vertex.enabled && e.vertex.shape == ShapeKind::Custom) return true;
-  return std::any_of(e.edge.begin(), e.edge.end(), [](const auto& s) { return s.shape == ShapeKind::Custom; });
-}
 
 void new_revision(Document& doc, bool dragging) {
   ++doc.revision;
@@ -104,8 +100,16 @@ bool open_design_file(Document& doc, const std::filesystem::path& path) {
   }
 }
 
+void prepare_output(const Document& doc, const std::filesystem::path& path, bool may_be_design) {
+  std::vector<std::filesystem::path> inputs = {doc.surface.path, doc.design.elements.custom_shape};
+  if (!may_be_design) inputs.push_back(doc.design_path);
+  app::refuse_overwriting_inputs(inputs, {path});
+  if (path.has_parent_path()) app::make_output_folder(path.parent_path());
+}
+
 bool save_design_file(Document& doc, const std::filesystem::path& path) {
   try {
+    prepare_output(doc, path, true);
     save_design(path, doc.design);
     doc.design_path = path;
     doc.dirty = false;

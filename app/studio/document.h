@@ -90,6 +90,10 @@ bool save_design_file(Document& doc, const std::filesystem::path& path);
 // when it cannot be loaded (reported).
 const ShapeMesh* custom_shape(Document& doc);
 
+// Before writing `path`: refuses (InputError) when it is the open surface, the custom shape or,
+// unless `may_be_design` (Save), the design file; creates its folder.
+void prepare_output(const Document& doc, const std::filesystem::path& path, bool may_be_design = false);
+
 void report_status(Document& doc, std::string text);
 void report_error(Document& doc, std::string text);  // status line and the error dialog
 

@@ -23,7 +23,7 @@ struct LivePavement::Run {
   std::condition_variable wake;
   std::atomic<bool> cancelled = false;
   bool paused = false;
-  int step_budget = 0;  // iterations still let through before pausing again
+  int pause_at = 0;     // pause once the solver reaches this iteration (0: no step pending)
   int iteration = 0;
   LiveSnapshot snapshot;
   Clock::time_point last_publish;
@@ -41,7 +41,8 @@ struct LivePavement::Run {
   bool observe(int it, const std::vector<glm::vec2>& positions) {
     std::unique_lock lock(mutex);
     iteration = it;
-    if (step_budget > 0 && --step_budget == 0) paused = true;
+    // An iteration target, not a count of calls: the Vulkan solver reports once per batch.
+    if (pause_at > 0 && it >= pause_at) paused = true, pause_at = 0;
     if (paused || Clock::now() - last_publish > kPublishInterval) publish(positions);
     wake.wait(lock, [&] { return !paused || cancelled; });
     return !cancelled;
@@ -118,8 +119,8 @@ void LivePavement::start(RunRequest request) {
   // Sequences grow across runs, so the view never takes a new run's snapshot for an old one.
   run->snapshot.sequence = ++runs_started_ << 32;
   run->paused = request.paused;
-  run->step_budget = request.paused ? request.step : 0;
-  if (run->step_budget > 0) run->paused = false;
+  run->pause_at = request.paused ? request.step : 0;
+  if (run->pause_at > 0) run->paused = false;
   run_ = run;
   revision_ = request.revision;
   jobs_.start([request = std::move(request), run](std::stop_token) { run_pavement(request, run); });
@@ -136,7 +137,7 @@ void LivePavement::resume() {
   {
     std::lock_guard lock(run_->mutex);
     run_->paused = false;
-    run_->step_budget = 0;
+    run_->pause_at = 0;
   }
   run_->wake.notify_all();
 }
@@ -145,11 +146,13 @@ void LivePavement::step(int iterations) {
   if (!run_) return;
   {
     std::lock_guard lock(run_->mutex);
-    run_->step_budget = std::max(1, iterations);
+    run_->pause_at = run_->iteration + std::max(1, iterations);
     run_->paused = false;
   }
   run_->wake.notify_all();
 }
+
+LivePavement::~LivePavement() { reset(); }
 
 void LivePavement::reset() {
   if (run_) {

@@ -2,7 +2,8 @@
 // make_pavement on a background thread, watched and steered from the UI. The solver's observer
 // publishes the particle positions for the live view and is where the run is steered:
 //   pause  - the observer blocks on a condition variable until resumed;
-//   step N - N more iterations are let through, then it pauses again;
+//   step N - the run goes on until N more iterations are done, then pauses again (on the Vulkan
+//            solver it stops at the first batch boundary past that);
 //   reset  - the observer returns false, every later solve is stopped too, the result is dropped.
 // A new run (the design changed) abandons the old one the same way; the UI never waits for it.
 #include "background_jobs.h"
@@ -52,6 +53,11 @@ struct RunRequest {
 
 class LivePavement {
 public:
+  LivePavement() = default;
+  // Abandons the run, so a paused worker wakes and the thread can be joined.
+  ~LivePavement();
+  LivePavement(const LivePavement&) = delete;
+  LivePavement& operator=(const LivePavement&) = delete;
   void start(RunRequest request);   // abandons the run in progress
   void pause();
   void resume();

@@ -123,6 +123,7 @@ void save_view_png(Studio& s, const fs::path& path) {
   if (!s.doc.surface.map) throw InputError("nothing to save yet: open a surface first");
   render::Image image = s.renderer.read_back(0);
   if (s.views.colour_mode == render::ColourMode::NeighbourRatio) render::draw_ratio_legend(image);
+  prepare_output(s.doc, path);
   render::write_png(path, image);
   report_status(s.doc, "saved " + path.string());
 }
@@ -193,6 +194,7 @@ void after_present(Studio& s, const std::optional<render::Image>& frame) {
   if (!frame && s.window.can_capture()) return;  // the swapchain was being rebuilt: next frame
   try {
     if (!frame) throw InputError("screenshots are not possible here: the window's swapchain cannot be copied");
+    prepare_output(s.doc, *s.ui.screenshot);
     render::write_png(*s.ui.screenshot, *frame);
     report_status(s.doc, "screenshot " + s.ui.screenshot->string());
   } catch (const std::exception& e) {

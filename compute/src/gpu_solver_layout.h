@@ -35,6 +35,10 @@ enum ControlSlot : std::uint32_t {
   kControlSlots = 8,
 };
 
+// Bits of control[kControlError], as kErrorNonFinite / kErrorNotLifted in solver_common.glsl.
+constexpr std::uint32_t kErrorNonFinite = 1u;
+constexpr std::uint32_t kErrorNotLifted = 2u;
+
 // Bindings of the solver's descriptor set, as in solver_common.glsl.
 enum Binding : std::uint32_t {
   kParams = 0, kUv, kSurfacePosition, kSurfaceCurvature, kTriangles, kGridStart, kGridTriangles, kBoundaryUv,

@@ -13,6 +13,7 @@
 #include "solver_springs_comp_spv.h"
 
 #include <array>
+#include <mutex>
 #include <chrono>
 #include <cstring>
 #include <span>
@@ -64,6 +65,9 @@ struct VulkanSolverSession::Impl {
   GpuBuffer second_positions;
   GpuBuffer params;
   std::uint64_t surface_key = 0;
+  // One solve at a time: solvers made by one factory share these buffers and descriptor sets,
+  // and the studio may start a new run before an abandoned one has finished its batch.
+  std::mutex busy;
   int surface_uploads = 0;
   bool descriptors_dirty = true;
 
@@ -158,6 +162,7 @@ public:
   std::string_view backend_name() const override { return "vulkan"; }
 
   SolveReport solve(const SolverObserver& observer) override {
+    std::lock_guard lock(s_.busy);
     try {
       return run(observer);
     } catch (const vk::SystemError& e) {
@@ -252,6 +257,8 @@ private:
   void submit(Transfers& t, const std::function<void(vk::raii::CommandBuffer&)>& body) {
     s_.ctx->submit_and_wait([&](vk::raii::CommandBuffer& cb) {
       t.record_uploads(cb);
+      // The previous submission's shader writes (an earlier batch) before this one's reads.
+      barrier(cb);
       body(cb);
       t.record_downloads(cb);
     });
@@ -285,12 +292,13 @@ private:
       init_pending = false;
       recorded = end;
       check_errors();
-      if (control_[kControlDone] != 0u) {
-        report.reason = StopReason::Converged;
-        break;
-      }
+      // Observer first, then convergence: the order of CpuSpringSolver::solve.
       if (observer && !observer(int(control_[kControlIterations]), observed)) {
         report.reason = StopReason::Observer;
+        break;
+      }
+      if (control_[kControlDone] != 0u) {
+        report.reason = StopReason::Converged;
         break;
       }
     }
@@ -319,8 +327,11 @@ private:
   }
 
   void check_errors() const {
-    if (control_[kControlError] & 1u) throw std::runtime_error("vulkan solver: a particle has a non-finite position");
-    if (control_[kControlError] & 2u) throw std::runtime_error("vulkan solver: a particle could not be lifted");
+    if (control_[kControlError] & kErrorNonFinite)
+      throw std::runtime_error("vulkan solver: a particle has a non-finite position (the solver diverged; "
+                               "try a smaller solver.dt)");
+    if (control_[kControlError] & kErrorNotLifted)
+      throw std::runtime_error("vulkan solver: a particle could not be lifted onto the map");
   }
 
   std::shared_ptr<VulkanSolverSession> session_;

@@ -1,5 +1,7 @@
 #include "paver/design.h"
 
+#include <algorithm>
+
 #include "paver/input_error.h"
 
 #include <charconv>
@@ -7,6 +9,11 @@
 #include <string>
 
 namespace paver {
+
+bool uses_custom_shape(const ElementsDesign& e) {
+  if (e.vertex.enabled && e.vertex.shape == ShapeKind::Custom) return true;
+  return std::any_of(e.edge.begin(), e.edge.end(), [](const auto& s) { return s.shape == ShapeKind::Custom; });
+}
 
 std::string_view filter_base_name(FilterBase b) { return b == FilterBase::Initial ? "initial" : "current"; }
 

@@ -5,7 +5,9 @@
 #include "../studio.h"
 
 #include "paver/element_export.h"
+#include "paver/element_proximity.h"
 #include "paver/input_error.h"
+#include "paver/pavement_quality.h"
 
 #include <imgui_stdlib.h>
 
@@ -32,9 +34,12 @@ void export_one(Studio& s, const char* name,
                 const std::function<void(const fs::path&, const Elements&, const ElementMeshOptions&)>& write) {
   guarded(s.doc, [&] {
     if (!result_is_final(s)) throw InputError("nothing to export yet: the pavement for this design is not finished");
-    fs::create_directories(s.ui.export_dir);
     const fs::path path = fs::path(s.ui.export_dir) / name;
-    write(path, s.doc.result.pavement->elements, {.custom = custom_shape(s.doc)});
+    prepare_output(s.doc, path);
+    // The same colours as "Export all" and `paver run`: nearest-neighbour ratio.
+    const Elements& elements = s.doc.result.pavement->elements;
+    const auto colours = neighbor_ratio_colours(nearest_neighbor_ratios(elements));
+    write(path, elements, {.custom = custom_shape(s.doc), .colours = &colours});
     report_status(s.doc, "wrote " + path.string());
   });
 }

@@ -80,4 +80,7 @@ struct Design {
 // Throws InputError naming the key when a value is out of range.
 void validate_design(const Design& design, const std::string& source);
 
+// Whether an element that is placed uses ShapeKind::Custom (so elements.custom_shape is needed).
+bool uses_custom_shape(const ElementsDesign& elements);
+
 }  // namespace paver
