@@ -6,6 +6,7 @@
 //   [--sizes 1000,10000] [--skip-designs]
 #include "paver/compute/vulkan_context.h"
 #include "paver/compute/vulkan_spring_solver.h"
+#include "paver/atomic_file.h"
 #include "paver/design_io.h"
 #include "paver/mesh_loader.h"
 #include "paver/pavement.h"
@@ -21,7 +22,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
@@ -173,7 +173,7 @@ int main(int argc, char** argv) {
     }
   }
   if (!json_path.empty()) {
-    std::ofstream(json_path) << out.dump(2) << "\n";
+    paver::write_text_atomically(json_path, out.dump(2) + "\n");
     std::printf("\nwrote %s\n", json_path.c_str());
   } else {
     std::printf("\n%s\n", out.dump(2).c_str());

@@ -20,7 +20,7 @@ std::function<int()> add_devices_command(CLI::App& app) {
     }
     for (const auto& d : devices.value())
       std::printf("  %-40s %-10s Vulkan %s%s\n", d.name.c_str(), d.type.c_str(), d.api_version.c_str(),
-                  d.compute ? "" : "  (no compute queue or Vulkan < 1.2: not usable)");
+                  d.compute ? "" : "  (not usable: needs a compute queue, Vulkan 1.2 and subgroup arithmetic)");
     const auto chosen = gpu::VulkanContext::create({});
     if (chosen) std::printf("--backend vulkan uses: %s\n", chosen.value()->device().name.c_str());
     else std::printf("--backend vulkan: %s\n", chosen.error().message.c_str());

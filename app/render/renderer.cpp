@@ -390,7 +390,7 @@ void Renderer::set_pattern(const SurfaceMap& map, const Pattern& pattern, const 
   lifted.resize(samples.size());
   lift_points(map, samples, lifted);
   const double raise = 0.002 * d.scene_size;
-  for (size_t i = 0; i + kSamples < samples.size() + 1; i += kSamples + 1)
+  for (size_t i = 0; i < samples.size(); i += kSamples + 1)
     for (int s = 0; s < kSamples; ++s) {
       const size_t p = i + s, q = i + s + 1;
       if (lifted.triangle[p] < 0 || lifted.triangle[q] < 0) continue;

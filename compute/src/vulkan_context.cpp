@@ -62,13 +62,23 @@ std::optional<std::uint32_t> compute_queue_family(const vk::raii::PhysicalDevice
   return queue_family(nullptr, device, ContextOptions{});
 }
 
+// The solver's move pass reduces with subgroupMax: the device must offer subgroup arithmetic in
+// compute shaders.
+bool has_subgroup_arithmetic(const vk::raii::PhysicalDevice& device) {
+  const auto chain = device.getProperties2<vk::PhysicalDeviceProperties2, vk::PhysicalDeviceSubgroupProperties>();
+  const auto& sub = chain.get<vk::PhysicalDeviceSubgroupProperties>();
+  return (sub.supportedStages & vk::ShaderStageFlagBits::eCompute) &&
+         (sub.supportedOperations & vk::SubgroupFeatureFlagBits::eArithmetic);
+}
+
 DeviceInfo describe(const vk::raii::PhysicalDevice& device) {
   const auto p = device.getProperties();
   DeviceInfo info;
   info.name = p.deviceName.data();
   info.type = type_name(p.deviceType);
   info.api_version = version_text(p.apiVersion);
-  info.compute = compute_queue_family(device).has_value() && p.apiVersion >= VK_API_VERSION_1_2;
+  info.compute = compute_queue_family(device).has_value() && p.apiVersion >= VK_API_VERSION_1_2 &&
+                 has_subgroup_arithmetic(device);
   return info;
 }
 

@@ -25,23 +25,6 @@ constexpr std::uint32_t kGroupSize = 64;  // local_size_x in solver_common.glsl
 
 std::uint32_t groups(int items) { return std::uint32_t((items + int(kGroupSize) - 1) / int(kGroupSize)); }
 
-// FNV-1a over the surface's arrays: cheap next to an upload, and it tells a changed surface from
-// an unchanged one even when a new SolverSurface sits at the same address.
-std::uint64_t fingerprint(const SolverSurface& s) {
-  std::uint64_t h = 1469598103934665603ull;
-  auto mix = [&](const void* data, std::size_t bytes) {
-    const auto* p = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < bytes; ++i) h = (h ^ p[i]) * 1099511628211ull;
-  };
-  mix(s.uv.data(), s.uv.size() * sizeof(glm::vec2));
-  mix(s.position.data(), s.position.size() * sizeof(glm::vec4));
-  mix(s.curvature.data(), s.curvature.size() * sizeof(float));
-  mix(s.triangles.data(), s.triangles.size() * sizeof(std::int32_t));
-  mix(&s.grid_nx, sizeof s.grid_nx);
-  mix(&s.grid_cell_size, sizeof s.grid_cell_size);
-  return h;
-}
-
 template <class T>
 std::size_t bytes_of(const std::vector<T>& v) {
   return v.size() * sizeof(T);
@@ -173,7 +156,7 @@ public:
 private:
   void upload_inputs(Transfers& t) {
     auto& d = s_;
-    const std::uint64_t key = fingerprint(surface_);
+    const std::uint64_t key = surface_.fingerprint;
     const SolverSurface& s = surface_;
     const SpringSystem& y = system_;
     pulled_.assign(y.particle_count(), 0u);

@@ -1,6 +1,36 @@
 #include "paver/solver_surface.h"
 
 namespace paver {
+namespace {
+
+// FNV-1a, 64 bits, over raw bytes.
+class Fnv1a {
+public:
+  void add(const void* data, std::size_t bytes) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < bytes; ++i) hash_ = (hash_ ^ p[i]) * 1099511628211ull;
+  }
+  template <class T>
+  void add(const std::vector<T>& v) { add(v.data(), v.size() * sizeof(T)); }
+  std::uint64_t value() const { return hash_; }
+
+private:
+  std::uint64_t hash_ = 1469598103934665603ull;
+};
+
+std::uint64_t fingerprint_of(const SolverSurface& s) {
+  Fnv1a h;
+  h.add(s.uv), h.add(s.position), h.add(s.curvature), h.add(s.triangles);
+  h.add(s.grid_start), h.add(s.grid_triangles), h.add(s.boundary_uv), h.add(s.boundary_inward);
+  const float values[] = {s.grid_origin.x, s.grid_origin.y, s.grid_cell_size, s.curvature_min, s.curvature_max,
+                          s.centre.x, s.centre.y};
+  const std::int32_t sizes[] = {s.grid_nx, s.grid_ny};
+  h.add(values, sizeof values);
+  h.add(sizes, sizeof sizes);
+  return h.value();
+}
+
+}  // namespace
 
 SolverSurface make_solver_surface(const SurfaceMap& map) {
   SolverSurface s;
@@ -44,6 +74,7 @@ SolverSurface make_solver_surface(const SurfaceMap& map) {
   s.curvature_min = float(map.curvature_min);
   s.curvature_max = float(map.curvature_max);
   s.centre = glm::vec2(0.5 * (map.uv_min + map.uv_max));
+  s.fingerprint = fingerprint_of(s);
   return s;
 }
 

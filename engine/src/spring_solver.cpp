@@ -67,11 +67,10 @@ CpuSpringSolver::CpuSpringSolver(const SolverSurface& surface, SpringSystem& sys
       constants_(make_solver_constants(params, surface)),
       threshold_(float(params.threshold * spacing)),
       threads_(threads > 0 ? threads : tbb::this_task_arena::max_concurrency()) {
-  const int n = system.particle_count(), e = system.spring_count();
+  const int n = system.particle_count();
   lifted_.resize(n);
   pulled_back_.assign(n, 0);
   curvature_.resize(n);
-  ratio_.resize(e);
   next_.resize(n);
   steps_.resize(n);
   arena_ = std::make_unique<tbb::task_arena>(threads_);
@@ -103,17 +102,6 @@ void CpuSpringSolver::lift_all(bool count_strays) {
   strays_ += strays.load();
 }
 
-void CpuSpringSolver::measure_springs() {
-  for_each_index(system_.spring_count(), [&](int s) {
-    const int a = system_.spring_a[s], b = system_.spring_b[s];
-    const glm::vec3 d = lifted_[b] - lifted_[a];
-    const float target3 = (system_.spring_flags[s] & kSpringContact) != 0u
-        ? system_.rest_length[s]
-        : kernels::target_length_3d(constants_, system_.rest_length[s], curvature_[a], curvature_[b]);
-    ratio_[s] = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z) / target3;
-  });
-}
-
 void CpuSpringSolver::update_springs() {
   for_each_index(system_.spring_count(), [&](int s) {
     const int a = system_.spring_a[s], b = system_.spring_b[s];
@@ -126,7 +114,6 @@ void CpuSpringSolver::update_springs() {
         fresh || pulled_back_[a] != 0 || pulled_back_[b] != 0, system_.spring_flags[s]);
     system_.target[s] = st.target;
     if (fresh) system_.initial_target[s] = st.target;
-    ratio_[s] = st.ratio_3d;
   });
 }
 
@@ -167,12 +154,8 @@ SolveReport CpuSpringSolver::solve(const SolverObserver& observer) {
       break;
     }
   }
-  // Leave the lifted state consistent with the final positions (strays pulled back too),
-  // without another filter step.
-  arena_->execute([&] {
-    lift_all(false);
-    measure_springs();
-  });
+  // Leave the positions as lifted (strays pulled back), without another filter step.
+  arena_->execute([&] { lift_all(false); });
   report.strays_pulled_back = strays_;
   report.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return report;

@@ -139,10 +139,15 @@ TEST(Renderer, ImagesFollowTheRequestedSize) {
   REQUIRE_VULKAN();
   render::Renderer& r = *fixture().renderer;
   r.set_surface(dome_map());
-  const int before = r.image_generation(0);
   r.render_3d(200, 100, render::frame_surface(dome_map().mesh), {});
+  const int first = r.image_generation(0);
   r.render_3d(200, 100, render::frame_surface(dome_map().mesh), {});
-  EXPECT_LE(r.image_generation(0), before + 1) << "same size: the image is reused";
+  EXPECT_EQ(r.image_generation(0), first) << "same size: the image is reused";
+  r.render_3d(300, 120, render::frame_surface(dome_map().mesh), {});
+  EXPECT_EQ(r.image_generation(0), first + 1) << "new size: the image is re-created";
+  const render::Image image = r.read_back(0);
+  EXPECT_EQ(image.width, 300);
+  EXPECT_EQ(image.height, 120);
   EXPECT_NE(r.image_view(0), nullptr);
   EXPECT_NE(r.sampler(), nullptr);
 }

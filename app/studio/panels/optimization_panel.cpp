@@ -40,7 +40,7 @@ const RealParameter kRealParameters[] = {
 
 std::string with_default(const char* help, double value) {
   char text[64];
-  std::snprintf(text, sizeof text, "\nPaper's default: %g", value);
+  std::snprintf(text, sizeof text, "\nDefault: %g", value);
   return help + std::string(text);
 }
 
@@ -104,9 +104,9 @@ void optimization_panel(Studio& s) {
     change_design(doc, d);
   }
   help_marker("Which l_ab the adaptive filter's clamp uses: recomputed every iteration from the current "
-              "distortion, or fixed at initialisation (docs/solver.md).\nPaper's default: current");
+              "distortion, or fixed at initialisation; the paper is ambiguous (docs/solver.md).\nDefault: current");
   ImGui::PopItemWidth();
-  if (ImGui::Button("paper's defaults")) {
+  if (ImGui::Button("defaults")) {
     d.solver = SolverParams{};
     change_design(doc, d);
   }

@@ -48,7 +48,9 @@ enum class FilterBase {
 std::string_view filter_base_name(FilterBase b);  // "current", "initial"
 std::optional<FilterBase> filter_base_from_name(std::string_view name);
 
-// Section 5 parameters, with the paper's defaults.
+// Section 5 parameters. c, m, alpha, beta, gamma, the lambdas, the mu's and filter_max are the
+// paper's defaults; dt, threshold, filter_base and stray_patience are our measured choices where
+// the paper is silent or ambiguous (docs/solver.md).
 struct SolverParams {
   double c = 0;                 // uniform margin, fraction of D_ab (eq. 5); c + m >= 0
   double m = 0;                 // curvature-adaptive margin, fraction of D_ab (eq. 5)

@@ -158,7 +158,7 @@ inline float target_length_3d(const SolverConstants& k, float rest, float kappa_
 
 struct SpringState {
   float target;     // filtered 2D target l^{t+1}
-  float ratio_3d;   // |P_a P_b| / L_ab, for reports
+  float ratio_3d;   // |P_a P_b| / L_ab: how far the spring is from its 3D target
 };
 
 // One spring: the 2D target from the local distortion and the adaptive filter (eq. 15, 16).

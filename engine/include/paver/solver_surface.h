@@ -29,6 +29,9 @@ struct SolverSurface {
   std::vector<glm::vec2> boundary_inward;    // #B centroid of the triangle on segment s
   float curvature_min = 0, curvature_max = 0;
   glm::vec2 centre{0};                       // O(M^): centre of the map's bounding box (eq. 12)
+  // A hash of every array and value above, made once: a GPU solver uploads the surface again
+  // only when it changes.
+  std::uint64_t fingerprint = 0;
 };
 
 SolverSurface make_solver_surface(const SurfaceMap& map);

@@ -32,13 +32,10 @@ public:
   SolveReport solve(const SolverObserver& observer = {}) override;
   std::string_view backend_name() const override { return "cpu"; }
 
-  const std::vector<glm::vec3>& lifted() const { return lifted_; }      // #P surface positions
-  const std::vector<float>& spring_ratio() const { return ratio_; }     // #E |P_a P_b| / L_ab
 
 private:
   void lift_all(bool count_strays);
   void update_springs();
-  void measure_springs();
 
   const SolverSurface& surface_;
   SpringSystem& system_;
@@ -52,7 +49,6 @@ private:
   std::vector<glm::vec3> lifted_;
   std::vector<float> curvature_;
   std::vector<std::uint8_t> pulled_back_;  // #P 1 when the last lift pulled the particle back
-  std::vector<float> ratio_;
   std::vector<glm::vec2> next_;
   std::vector<float> steps_;
 };

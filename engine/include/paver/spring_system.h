@@ -14,9 +14,9 @@ namespace paver {
 struct SpringSystem {
   // Particles.
   std::vector<glm::vec2> position;              // #P current positions in the map's frame
-  // Consecutive iterations each particle had to be pulled back onto the map; one that is pushed
-  // out persistently is retired (kRetired): it would be eliminated at the boundary anyway, and
-  // held there it would only jam the pattern behind it.
+  // A leaky count of the particle's pull-backs onto the map (+2 per pull back, -1 per iteration
+  // without); one pushed out persistently is retired (kRetired): it would be eliminated at the
+  // boundary anyway, and held there it would only jam the pattern behind it.
   std::vector<std::uint32_t> stray_count;       // #P
   std::vector<std::int32_t> triangle_hint;      // #P triangle of M^ the particle was last in (-1: none)
   // CSR: the springs of particle a are neighbor_spring[neighbor_start[a] .. neighbor_start[a+1]),

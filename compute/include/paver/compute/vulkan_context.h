@@ -16,7 +16,7 @@ struct DeviceInfo {
   std::string name;         // e.g. "llvmpipe (LLVM 15.0.6, 256 bits)", "NVIDIA H200"
   std::string type;         // "discrete", "integrated", "virtual", "cpu" or "other"
   std::string api_version;  // e.g. "1.3.230"
-  bool compute = false;     // has a compute queue and Vulkan 1.2
+  bool compute = false;     // usable: a compute queue, Vulkan 1.2, subgroup arithmetic in compute
 };
 
 struct ContextOptions {

@@ -1,7 +1,7 @@
 #pragma once
 // The section 5 iteration as Vulkan compute shaders over SSBOs (shaders/solver_*.comp): per
 // iteration a lift pass (per particle), a spring pass (per spring), a move pass (per particle,
-// CSR gather, no float atomics) with a per-workgroup max reduction, and a one-invocation pass
+// CSR gather, no float atomics) with a per-subgroup max reduction, and a one-invocation pass
 // that counts the iteration and tests convergence on the GPU. Many iterations are recorded into
 // one submission with barriers between dispatches; once converged, later iterations are no-ops,
 // so the result equals the CPU reference's iteration for iteration. The host reads the control
