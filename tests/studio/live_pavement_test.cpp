@@ -2,12 +2,15 @@
 
 #include "test_meshes.h"
 
+#include "paver/compute/vulkan_context.h"
+#include "paver/compute/vulkan_spring_solver.h"
 #include "paver/pavement.h"
 #include "paver/surface_map.h"
 
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cstdio>
 #include <functional>
 #include <memory>
 #include <thread>
@@ -117,6 +120,64 @@ TEST_F(LivePavementTest, ADesignTheCellCannotTakeFailsAsAnInputError) {
   EXPECT_FALSE(outcome->pavement);
   EXPECT_TRUE(outcome->input_error);
   EXPECT_NE(outcome->error.find("cell_edges"), std::string::npos) << outcome->error;
+}
+
+}  // namespace
+}  // namespace paver::studio
+
+// The same on the Vulkan solver (lavapipe in CI): steps stop at batch boundaries, an abandoned
+// run and its replacement share one solver session safely, and the result is the CPU's.
+namespace paver::studio {
+namespace {
+
+struct VulkanSolver {
+  std::shared_ptr<gpu::VulkanContext> context;
+  SolverFactory factory;
+};
+
+const VulkanSolver& vulkan_solver() {
+  static const VulkanSolver v = [] {
+    VulkanSolver out;
+    gpu::ContextOptions options;
+    options.validation = true;
+    auto context = gpu::VulkanContext::create(options);
+    if (!context) return out;
+    auto session = gpu::VulkanSolverSession::create(context.value());
+    if (!session) return out;
+    out.context = context.value();
+    out.factory = gpu::vulkan_solver_factory(session.value(), 16);
+    return out;
+  }();
+  return v;
+}
+
+TEST_F(LivePavementTest, VulkanSolverStepsByBatchesAndMatchesTheCpu) {
+  if (!vulkan_solver().factory) {
+    std::fprintf(stderr, "\n*** NO VULKAN DEVICE: LivePavementTest.VulkanSolver... is SKIPPED ***\n\n");
+    GTEST_SKIP() << "no Vulkan device";
+  }
+  LivePavement live;
+  live.start({map_, design(), 1, vulkan_solver().factory, true, 5});
+  ASSERT_TRUE(eventually([&] { return live.state() == RunState::Paused; }));
+  EXPECT_EQ(live.iteration(), 16) << "the first batch boundary at or past iteration 5";
+  live.step(3);
+  ASSERT_TRUE(eventually([&] { return live.state() == RunState::Paused && live.iteration() > 16; }));
+  EXPECT_EQ(live.iteration(), 32);
+
+  // Abandon it while paused and start another at once: both use the one session.
+  Design other = design();
+  other.solver.dt = 0.25;
+  live.start({map_, other, 2, vulkan_solver().factory, false, 0});
+  ASSERT_TRUE(eventually([&] { return live.state() == RunState::Finished; }));
+  const auto outcome = live.take_outcome();
+  ASSERT_TRUE(outcome && outcome->pavement) << (outcome ? outcome->error : "no outcome");
+  const Pavement cpu = make_pavement(*map_, other);
+  EXPECT_EQ(outcome->pavement->elements.size(), cpu.elements.size());
+  EXPECT_EQ(outcome->pavement->after.collisions, 0);
+  if (vulkan_solver().context->device().type == "cpu") {
+    EXPECT_EQ(outcome->pavement->elements.position, cpu.elements.position) << "bit-identical on lavapipe";
+  }
+  for (const auto& m : vulkan_solver().context->validation_messages()) ADD_FAILURE() << "validation: " << m;
 }
 
 }  // namespace
