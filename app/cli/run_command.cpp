@@ -102,11 +102,14 @@ int run_run(const RunArgs& args) {
   app::refuse_overwriting_inputs(inputs, outputs);
 
   t0 = Clock::now();
-  const SurfaceMap map = build_surface_map(std::move(loaded.mesh));
+  const SurfaceMap map = [&] {
+    try {
+      return build_surface_map(std::move(loaded.mesh));
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error(args.surface + ": " + e.what());
+    }
+  }();
   timings.emplace_back("parameterize", ms_since(t0));
-  if (!map.parameterization.quality.bijective())
-    throw std::runtime_error("the parameterization of " + args.surface +
-                             " is not bijective; please report this surface to the Paver developers");
 
   PavementOptions options;
   options.observer = terminal_progress_bar(design.solver.iterations);

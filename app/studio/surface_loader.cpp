@@ -60,12 +60,7 @@ SurfaceLoadOutcome load_and_map(const std::filesystem::path& path, std::stop_tok
     }
     shared.report(0.92f, "mapping: lifting data");
     Parameterization parameterization = finish_parameterization(loaded.mesh, solver);
-    if (!parameterization.quality.bijective())
-      throw std::runtime_error("the parameterization is not bijective; please report this surface");
-    std::vector<glm::dvec2> uv = parameterization.uv;
-    auto map = std::make_shared<SurfaceMap>(make_surface_map(std::move(loaded.mesh), std::move(uv)));
-    map->parameterization = std::move(parameterization);
-    opened.map = std::move(map);
+    opened.map = std::make_shared<SurfaceMap>(make_surface_map(std::move(loaded.mesh), std::move(parameterization)));
     opened.timings.emplace_back("parameterize", ms_since(t0));
     outcome.surface = std::move(opened);
   } catch (const InputError& e) {

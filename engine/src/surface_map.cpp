@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace paver {
 
@@ -26,12 +28,21 @@ SurfaceMap make_surface_map(SurfaceMesh mesh, std::vector<glm::dvec2> uv) {
   return map;
 }
 
+SurfaceMap make_surface_map(SurfaceMesh mesh, Parameterization parameterization) {
+  const MapQuality& q = parameterization.quality;
+  if (!q.bijective())
+    throw std::runtime_error("the map of this surface is not bijective (" + std::to_string(q.flipped_triangles) +
+                             " flipped triangles, " + std::to_string(q.boundary_intersections) +
+                             " boundary crossings); please report the surface to the Paver developers");
+  std::vector<glm::dvec2> uv = parameterization.uv;
+  SurfaceMap map = make_surface_map(std::move(mesh), std::move(uv));
+  map.parameterization = std::move(parameterization);
+  return map;
+}
+
 SurfaceMap build_surface_map(SurfaceMesh mesh, const ArapOptions& options) {
   Parameterization param = parameterize_arap(mesh, options);
-  std::vector<glm::dvec2> uv = param.uv;
-  SurfaceMap map = make_surface_map(std::move(mesh), std::move(uv));
-  map.parameterization = std::move(param);
-  return map;
+  return make_surface_map(std::move(mesh), std::move(param));
 }
 
 }  // namespace paver

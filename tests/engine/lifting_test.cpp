@@ -1,4 +1,5 @@
 #include "paver/lifting.h"
+#include "paver/map_quality.h"
 #include "paver/mean_curvature.h"
 #include "paver/mesh_loader.h"
 #include "paver/surface_map.h"
@@ -100,6 +101,26 @@ TEST(SurfaceMap, CurvatureRangeAndBoundingBox) {
     EXPECT_LE(p.y, map.uv_max.y);
   }
   EXPECT_TRUE(map.parameterization.quality.bijective());
+}
+
+}  // namespace
+}  // namespace paver
+
+namespace paver {
+namespace {
+
+TEST(SurfaceMap, RefusesAFoldedMap) {
+  const SurfaceMesh plane = test::grid_surface(4, 4, [](double u, double v) { return glm::dvec3(u, v, 0); });
+  Parameterization folded;
+  for (const auto& p : plane.positions) folded.uv.emplace_back(-p.x, p.y);  // mirrored: every triangle flips
+  folded.quality = measure_map(plane, folded.uv);
+  ASSERT_GT(folded.quality.flipped_triangles, 0);
+  try {
+    make_surface_map(plane, folded);
+    FAIL() << "a folded map was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("not bijective"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -23,10 +23,15 @@ struct SurfaceMap {
   Parameterization parameterization;   // how the map was made and how good it is
 };
 
-// Parameterizes the mesh (ARAP, bijective) and builds the lifting data.
+// Parameterizes the mesh (ARAP, bijective) and builds the lifting data; throws as above.
 SurfaceMap build_surface_map(SurfaceMesh mesh, const ArapOptions& options = {});
 
 // Builds the lifting data for a given map (uv: #V, bijective).
 SurfaceMap make_surface_map(SurfaceMesh mesh, std::vector<glm::dvec2> uv);
+
+// The lifting data for a finished parameterization, which the map keeps. Throws
+// std::runtime_error when it is not bijective: ARAP here keeps it bijective by construction, so
+// that would be a bug to report, and lifting through a folded map would be wrong.
+SurfaceMap make_surface_map(SurfaceMesh mesh, Parameterization parameterization);
 
 }  // namespace paver
