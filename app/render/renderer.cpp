@@ -334,6 +334,9 @@ void Renderer::set_elements(const Elements& elements, const std::vector<std::arr
                             const ShapeMesh* custom) {
   Impl& d = *impl_;
   // All shapes' triangles in one vertex buffer (expanded: the fragment shader makes flat normals).
+  // Thousands of elements are drawn with coarser spheres and discs: at that count each is a few
+  // pixels wide, and the triangle count would otherwise run into the tens of millions.
+  const ShapeDetail detail = elements.size() > 4000 ? ShapeDetail::Coarse : ShapeDetail::Full;
   std::vector<glm::vec3> shape_vertices;
   d.shape_range.clear();
   for (ShapeKind kind : kShapes) {
@@ -342,7 +345,7 @@ void Renderer::set_elements(const Elements& elements, const std::vector<std::arr
       if (!custom) continue;
       mesh = *custom;
     } else {
-      mesh = make_builtin_shape(kind);
+      mesh = make_builtin_shape(kind, detail);
     }
     const std::uint32_t first = std::uint32_t(shape_vertices.size());
     for (const auto& t : mesh.triangles)

@@ -69,16 +69,15 @@ ShapeMesh revolve(const std::vector<glm::dvec2>& profile, int segments) {
   return b.take();
 }
 
-ShapeMesh make_sphere() {
-  constexpr int kSegments = 16;
-  constexpr int kRings = 10;  // even, so that the equator (the widest circle) is a ring
+// `rings` even, so that the equator (the widest circle) is a ring.
+ShapeMesh make_sphere(int segments, int rings) {
   std::vector<glm::dvec2> profile;
-  for (int i = 0; i <= kRings; ++i) {
-    const double polar_angle = std::numbers::pi * i / kRings;
-    const bool pole = i == 0 || i == kRings;
+  for (int i = 0; i <= rings; ++i) {
+    const double polar_angle = std::numbers::pi * i / rings;
+    const bool pole = i == 0 || i == rings;
     profile.emplace_back(pole ? 0.0 : kRadius * std::sin(polar_angle), kRadius * std::cos(polar_angle));
   }
-  return revolve(profile, kSegments);
+  return revolve(profile, segments);
 }
 
 ShapeMesh make_prism(int segments, double height) {
@@ -168,12 +167,13 @@ using OpenMeshTriangles = OpenMesh::TriMesh_ArrayKernelT<>;
 
 }  // namespace
 
-ShapeMesh make_builtin_shape(ShapeKind kind) {
+ShapeMesh make_builtin_shape(ShapeKind kind, ShapeDetail detail) {
+  const bool coarse = detail == ShapeDetail::Coarse;
   switch (kind) {
-    case ShapeKind::Sphere: return make_sphere();
+    case ShapeKind::Sphere: return coarse ? make_sphere(8, 6) : make_sphere(16, 10);
     case ShapeKind::Gem: return make_gem();
     case ShapeKind::HexPrism: return make_prism(6, 0.5);
-    case ShapeKind::Disc: return make_prism(32, 0.2);
+    case ShapeKind::Disc: return make_prism(coarse ? 12 : 32, 0.2);
     case ShapeKind::Custom: break;
   }
   throw InputError("the custom element shape is not built in; load it from a file with "

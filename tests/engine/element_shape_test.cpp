@@ -250,3 +250,23 @@ TEST(ElementShape, LoadCustomShapeRejectsBadFiles) {
 
 }  // namespace
 }  // namespace paver
+
+namespace paver {
+namespace {
+
+TEST(ElementShape, CoarseShapesAreLighterButStillUnitWideAndClosed) {
+  for (ShapeKind kind : {ShapeKind::Sphere, ShapeKind::Disc}) {
+    const ShapeMesh full = make_builtin_shape(kind), coarse = make_builtin_shape(kind, ShapeDetail::Coarse);
+    EXPECT_LT(coarse.triangles.size() * 2, full.triangles.size()) << shape_name(kind);
+    float lo = 1e9f, hi = -1e9f;
+    for (const auto& p : coarse.positions) lo = std::min(lo, p.x), hi = std::max(hi, p.x);
+    EXPECT_NEAR(hi - lo, 1.0f, 1e-6f) << shape_name(kind);
+    // Closed: every directed edge has its reverse.
+    std::set<std::pair<int, int>> edges;
+    for (const auto& t : coarse.triangles) edges.insert({t.x, t.y}), edges.insert({t.y, t.z}), edges.insert({t.z, t.x});
+    for (const auto& [a, b] : edges) EXPECT_TRUE(edges.count({b, a})) << shape_name(kind);
+  }
+}
+
+}  // namespace
+}  // namespace paver

@@ -19,9 +19,13 @@ struct ShapeMesh {
   std::vector<glm::ivec3> triangles;  // #F, counter-clockwise seen from outside
 };
 
+// How finely round shapes are tessellated: Full for export, Coarse for drawing many thousands of
+// elements (a sphere of 80 triangles instead of 288; same unit width).
+enum class ShapeDetail { Full, Coarse };
+
 // Built-in shapes: Sphere (UV sphere), Gem (round brilliant cut: table, crown, girdle, pavilion;
 // table towards +Z), HexPrism (height 0.5), Disc (cylinder of height 0.2). Custom throws.
-ShapeMesh make_builtin_shape(ShapeKind kind);
+ShapeMesh make_builtin_shape(ShapeKind kind, ShapeDetail detail = ShapeDetail::Full);
 
 // Loads any surface file OpenMesh reads and normalises it: centred on its bounding box, scaled so
 // its widest XY extent is 1. Throws InputError (file, what is wrong) when it cannot.
