@@ -4,6 +4,8 @@
 #include "paver/mesh_loader.h"
 #include "paver/surface_mesh.h"
 
+#include "input_error_assertions.h"
+
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
@@ -29,6 +31,9 @@
 
 namespace paver {
 namespace {
+
+using test::Contains;
+using test::error_of;
 
 namespace fs = std::filesystem;
 
@@ -56,23 +61,8 @@ protected:
 };
 
 // The InputError message `load` throws, or a test failure if it throws none.
-std::string error_of(const std::function<void()>& load) {
-  try {
-    load();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected an InputError";
-  return {};
-}
-
 std::string load_error(const fs::path& path) {
   return error_of([&] { load_surface(path); });
-}
-
-::testing::AssertionResult Contains(const std::string& text, const std::string& part) {
-  if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "'" << text << "' does not contain '" << part << "'";
 }
 
 bool any_warning_contains(const LoadedSurface& loaded, const std::string& part) {

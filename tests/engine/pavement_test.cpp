@@ -10,6 +10,8 @@
 #include "paver/surface_mesh.h"
 #include "paver/unit_cell.h"
 
+#include "input_error_assertions.h"
+
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
@@ -25,6 +27,9 @@
 namespace paver {
 namespace {
 
+using test::Contains;
+using test::error_of;
+
 // The dome is a cap of the sphere of radius 100 centred at (0, 0, -50), top at z = 50
 // (assets/surfaces/README.md).
 const glm::dvec3 kDomeCentre(0, 0, -50);
@@ -34,21 +39,6 @@ const SurfaceMap& dome_map() {
   static const SurfaceMap map =
       build_surface_map(load_surface(std::string(PAVER_SOURCE_DIR) + "/assets/surfaces/dome.obj").mesh);
   return map;
-}
-
-std::string error_of(const std::function<void()>& call) {
-  try {
-    call();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected an InputError";
-  return {};
-}
-
-::testing::AssertionResult Contains(const std::string& text, const std::string& part) {
-  if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "'" << text << "' does not contain '" << part << "'";
 }
 
 bool inside_map(const SurfaceMap& map, glm::dvec2 p) {

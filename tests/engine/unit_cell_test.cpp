@@ -4,6 +4,8 @@
 #include "paver/input_error.h"
 #include "paver/unit_cell.h"
 
+#include "input_error_assertions.h"
+
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
@@ -17,23 +19,11 @@
 namespace paver {
 namespace {
 
+using test::Contains;
+using test::error_of;
+
 constexpr double kD = 2.5;  // not 1, so a missing factor of D shows
 const double kSqrt3 = std::sqrt(3.0);
-
-std::string error_of(const std::function<void()>& call) {
-  try {
-    call();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected an InputError";
-  return {};
-}
-
-::testing::AssertionResult Contains(const std::string& text, const std::string& part) {
-  if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "'" << text << "' does not contain '" << part << "'";
-}
 
 EdgeOperator op(EdgeOperator::Kind kind, int from, int to, glm::ivec2 offset, bool is_virtual = false) {
   EdgeOperator o;
