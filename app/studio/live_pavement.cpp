@@ -51,25 +51,6 @@ struct LivePavement::Run {
 
 namespace {
 
-// Every solve of the run (the collision resolution's too, which get no observer) stops as soon
-// as the run is abandoned.
-class CancellableSolver final : public SpringSolverBackend {
-public:
-  CancellableSolver(std::unique_ptr<SpringSolverBackend> inner, std::shared_ptr<LivePavement::Run> run)
-      : inner_(std::move(inner)), run_(std::move(run)) {}
-  SolveReport solve(const SolverObserver& observer) override {
-    return inner_->solve([&](int it, const std::vector<glm::vec2>& positions) {
-      if (run_->cancelled) return false;
-      return observer ? observer(it, positions) : true;
-    });
-  }
-  std::string_view backend_name() const override { return inner_->backend_name(); }
-
-private:
-  std::unique_ptr<SpringSolverBackend> inner_;
-  std::shared_ptr<LivePavement::Run> run_;
-};
-
 void run_pavement(const RunRequest& request, const std::shared_ptr<LivePavement::Run>& run) {
   const auto t0 = Clock::now();
   RunOutcome outcome;
@@ -92,11 +73,8 @@ void run_pavement(const RunRequest& request, const std::shared_ptr<LivePavement:
     }
 
     PavementOptions options;
-    const SolverFactory inner = request.solver ? request.solver : cpu_solver_factory(0);
-    options.solver = [inner, run](const SolverSurface& surface, SpringSystem& system, const SolverParams& params,
-                                  double spacing) -> std::unique_ptr<SpringSolverBackend> {
-      return std::make_unique<CancellableSolver>(inner(surface, system, params, spacing), run);
-    };
+    options.solver = request.solver;  // empty: the CPU reference
+    options.stop = &run->cancelled;   // every solve of the run, the collision resolution's too
     options.observer = [run](int it, const std::vector<glm::vec2>& positions) { return run->observe(it, positions); };
     outcome.pavement = std::make_shared<const Pavement>(make_pavement(*request.map, request.design, options));
   } catch (const InputError& e) {

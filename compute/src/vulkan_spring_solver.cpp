@@ -144,10 +144,10 @@ public:
 
   std::string_view backend_name() const override { return "vulkan"; }
 
-  SolveReport solve(const SolverObserver& observer) override {
+  SolveReport solve(const SolverObserver& observer, const std::atomic<bool>* stop) override {
     std::lock_guard lock(s_.busy);
     try {
-      return run(observer);
+      return run(observer, stop);
     } catch (const vk::SystemError& e) {
       throw std::runtime_error(vulkan_error("running the solver", e).message);
     }
@@ -248,7 +248,7 @@ private:
     t.finish();
   }
 
-  SolveReport run(const SolverObserver& observer) {
+  SolveReport run(const SolverObserver& observer, const std::atomic<bool>* stop) {
     const auto t0 = std::chrono::steady_clock::now();
     const int n = system_.particle_count(), e = system_.spring_count();
     Transfers t(*s_.ctx);
@@ -276,7 +276,7 @@ private:
       recorded = end;
       check_errors();
       // Observer first, then convergence: the order of CpuSpringSolver::solve.
-      if (observer && !observer(int(control_[kControlIterations]), observed)) {
+      if ((observer && !observer(int(control_[kControlIterations]), observed)) || (stop && stop->load())) {
         report.reason = StopReason::Observer;
         break;
       }

@@ -61,14 +61,15 @@ ElementAnchor element_anchor(const Pattern& pattern, const Elements& elements, i
 Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface, SpringSystem& system,
                             const Pattern& pattern, const Design& design, std::vector<glm::dvec2>& points,
                             const ElementPlacer& place, const SolverFactory& solver,
-                            const CollisionResolutionOptions& options, CollisionResolutionReport& report) {
+                            const CollisionResolutionOptions& options, CollisionResolutionReport& report,
+                            const std::atomic<bool>* stop) {
   const auto t0 = std::chrono::steady_clock::now();
   Elements elements = place(points, system.stray_count);
   std::map<std::pair<int, int>, int> contact_of;  // particle pair -> its contact spring
   LiftedPoints lifted;
   for (int round = 0; round < options.max_rounds; ++round) {
     const std::vector<Collision> collisions = find_collisions(elements);
-    if (collisions.empty()) break;
+    if (collisions.empty() || (stop && stop->load())) break;
     ++report.rounds;
     lifted.resize(points.size());
     lift_points(map, points, lifted);
@@ -97,7 +98,7 @@ Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface,
     rebuild_neighbors(system);
     SolverParams params = design.solver;
     params.iterations = options.iterations_per_round;
-    report.solver_iterations += solver(surface, system, params, design.pattern.spacing)->solve().iterations;
+    report.solver_iterations += solver(surface, system, params, design.pattern.spacing)->solve({}, stop).iterations;
     for (int i = 0; i < system.particle_count(); ++i) points[i] = glm::dvec2(system.position[i]);
     elements = place(points, system.stray_count);
   }

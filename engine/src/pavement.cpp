@@ -80,7 +80,7 @@ Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptio
     const SolverSurface surface = make_solver_surface(map);
     SpringSystem system = make_spring_system(pavement.pattern);
     const SolverFactory factory = options.solver ? options.solver : cpu_solver_factory(options.threads);
-    pavement.solve = factory(surface, system, design.solver, design.pattern.spacing)->solve(options.observer);
+    pavement.solve = factory(surface, system, design.solver, design.pattern.spacing)->solve(options.observer, options.stop);
     for (int i = 0; i < system.particle_count(); ++i) pavement.points[i] = glm::dvec2(system.position[i]);
     pavement.timings.emplace_back("optimize", ms_since(t0));
 
@@ -93,7 +93,7 @@ Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptio
     if (options.resolve_collisions && !design.elements.allow_overlap) {
       t0 = Clock::now();
       pavement.elements = resolve_collisions(map, surface, system, pavement.pattern, design, pavement.points, place,
-                                             factory, options.resolution, pavement.resolution);
+                                             factory, options.resolution, pavement.resolution, options.stop);
       pavement.timings.emplace_back("resolve_collisions", ms_since(t0));
     }
   } else {

@@ -138,14 +138,14 @@ float CpuSpringSolver::step() {
   return max_step;
 }
 
-SolveReport CpuSpringSolver::solve(const SolverObserver& observer) {
+SolveReport CpuSpringSolver::solve(const SolverObserver& observer, const std::atomic<bool>* stop) {
   const auto t0 = std::chrono::steady_clock::now();
   SolveReport report;
   report.reason = StopReason::IterationLimit;
   for (int it = 0; it < params_.iterations; ++it) {
     report.last_max_step = step();
     report.iterations = it + 1;
-    if (observer && !observer(report.iterations, system_.position)) {
+    if ((observer && !observer(report.iterations, system_.position)) || (stop && stop->load())) {
       report.reason = StopReason::Observer;
       break;
     }

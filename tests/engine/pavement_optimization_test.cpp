@@ -169,3 +169,23 @@ TEST(PavementOptimization, SameResultWhateverTheThreadCount) {
 
 }  // namespace
 }  // namespace paver
+
+namespace paver {
+namespace {
+
+TEST(PavementOptimization, StopFlagEndsEverySolveWithoutAnObserver) {
+  const SurfaceMap map = build_surface_map(load_surface(test::bundled_surface("saddle")).mesh);
+  Design design;
+  design.pattern.tessellation = Tessellation::Triangle;
+  design.pattern.spacing = 18;
+  const std::atomic<bool> stop = true;
+  PavementOptions options;
+  options.stop = &stop;
+  const Pavement p = make_pavement(map, design, options);
+  EXPECT_EQ(p.solve.iterations, 1) << "the flag is checked after each iteration";
+  EXPECT_EQ(p.solve.reason, StopReason::Observer);
+  EXPECT_EQ(p.resolution.rounds, 0) << "no contact rounds once stopped";
+}
+
+}  // namespace
+}  // namespace paver

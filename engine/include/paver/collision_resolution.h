@@ -14,6 +14,7 @@
 #include "paver/spring_system.h"
 #include "paver/surface_map.h"
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -51,6 +52,7 @@ using ElementPlacer =
 Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface, SpringSystem& system,
                             const Pattern& pattern, const Design& design, std::vector<glm::dvec2>& points,
                             const ElementPlacer& place, const SolverFactory& solver,
-                            const CollisionResolutionOptions& options, CollisionResolutionReport& report);
+                            const CollisionResolutionOptions& options, CollisionResolutionReport& report,
+                            const std::atomic<bool>* stop = nullptr);
 
 }  // namespace paver

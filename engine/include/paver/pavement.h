@@ -28,7 +28,8 @@ struct PavementOptions {
   CollisionResolutionOptions resolution;
   int threads = 0;                   // CPU solver threads, 0 = all cores
   SolverFactory solver;              // the backend; empty = the CPU reference with `threads`
-  SolverObserver observer;           // called after every solver iteration
+  SolverObserver observer;           // called after every solver iteration of the main solve
+  const std::atomic<bool>* stop = nullptr;  // when it becomes true, every solve of the run ends
 };
 
 struct Pavement {

@@ -8,6 +8,7 @@
 
 #include <glm/vec2.hpp>
 
+#include <atomic>
 #include <functional>
 #include <memory>
 #include <string>
@@ -20,7 +21,7 @@ namespace paver {
 // it after every iteration, a GPU solver after every batch it reads back.
 using SolverObserver = std::function<bool(int iteration, const std::vector<glm::vec2>& positions)>;
 
-enum class StopReason { Converged, IterationLimit, Observer };
+enum class StopReason { Converged, IterationLimit, Observer };  // Observer: the observer or `stop`
 std::string_view stop_reason_name(StopReason r);  // "converged", "iteration limit", "stopped"
 
 struct SolveReport {
@@ -34,9 +35,11 @@ struct SolveReport {
 class SpringSolverBackend {
 public:
   virtual ~SpringSolverBackend() = default;
-  // Runs until converged, the iteration limit, or the observer says stop. On return the
-  // SpringSystem holds the final state (positions, stray counts, hints, filter targets).
-  virtual SolveReport solve(const SolverObserver& observer = {}) = 0;
+  // Runs until converged, the iteration limit, the observer says stop, or `*stop` becomes true
+  // (checked every iteration on the CPU, every batch on a GPU; it costs no read-back of
+  // positions, unlike an observer). On return the SpringSystem holds the final state
+  // (positions, stray counts, hints, filter targets).
+  virtual SolveReport solve(const SolverObserver& observer = {}, const std::atomic<bool>* stop = nullptr) = 0;
   virtual std::string_view backend_name() const = 0;
 };
 

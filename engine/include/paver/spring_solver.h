@@ -29,7 +29,7 @@ public:
 
   // One iteration; returns max |dp dt| over settled particles (stray count 0).
   float step();
-  SolveReport solve(const SolverObserver& observer = {}) override;
+  SolveReport solve(const SolverObserver& observer = {}, const std::atomic<bool>* stop = nullptr) override;
   std::string_view backend_name() const override { return "cpu"; }
 
 
