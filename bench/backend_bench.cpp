@@ -6,11 +6,11 @@
 //   [--sizes 1000,10000] [--skip-designs]
 #include "paver/compute/vulkan_context.h"
 #include "paver/compute/vulkan_spring_solver.h"
-#include "paver/atomic_file.h"
-#include "paver/design_io.h"
-#include "paver/mesh_loader.h"
-#include "paver/pavement.h"
-#include "paver/spring_solver.h"
+#include "io/atomic_file.h"
+#include "io/design_io.h"
+#include "mesh/mesh_loader.h"
+#include "pipeline/pavement.h"
+#include "solver/spring_solver.h"
 
 #include "bundled_designs.h"
 

@@ -1,9 +1,9 @@
 // Engine benchmarks: parameterization time and distortion per asset, lifting throughput.
 // JSON: build/bin/paver-bench --benchmark_format=json
-#include "paver/arap_parameterization.h"
-#include "paver/lifting.h"
-#include "paver/mesh_loader.h"
-#include "paver/surface_map.h"
+#include "map/arap_parameterization.h"
+#include "map/lifting.h"
+#include "mesh/mesh_loader.h"
+#include "map/surface_map.h"
 
 #include <benchmark/benchmark.h>
 

@@ -2,10 +2,10 @@
 //   design/<name>       the whole pavement (pattern, optimizer, post-processing, collision
 //                       resolution, quality) per bundled design; stage times as counters.
 //   solver/<N>/<threads> CPU solver milliseconds per iteration at N particles on the dense wave.
-#include "paver/design_io.h"
-#include "paver/mesh_loader.h"
-#include "paver/pavement.h"
-#include "paver/spring_solver.h"
+#include "io/design_io.h"
+#include "mesh/mesh_loader.h"
+#include "pipeline/pavement.h"
+#include "solver/spring_solver.h"
 
 #include "bundled_designs.h"
 

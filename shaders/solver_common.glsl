@@ -1,5 +1,5 @@
 // Shared by the solver's compute shaders: the buffers (one descriptor set for all passes), the
-// parameter block, and the helpers. Every function mirrors engine/include/paver/solver_kernels.h
+// parameter block, and the helpers. Every function mirrors engine/solver/solver_kernels.h
 // line by line, with `precise` temporaries so no operation is fused or reordered: on a device
 // with IEEE float32 arithmetic the GPU then computes exactly what the CPU reference computes.
 

@@ -1,7 +1,7 @@
 // paver: the command-line driver of the Paver pipeline.
 #include "commands.h"
 
-#include "paver/input_error.h"
+#include "core/input_error.h"
 
 #include <CLI/CLI.hpp>
 

@@ -2,10 +2,10 @@
 #include "commands.h"
 #include "output_guard.h"
 
-#include "paver/arap_parameterization.h"
-#include "paver/input_error.h"
-#include "paver/mesh_loader.h"
-#include "paver/uv_map_export.h"
+#include "map/arap_parameterization.h"
+#include "core/input_error.h"
+#include "mesh/mesh_loader.h"
+#include "io/uv_map_export.h"
 
 #include <chrono>
 #include <cstdio>

@@ -1,6 +1,6 @@
 #include "preview_images.h"
 
-#include "paver/input_error.h"
+#include "core/input_error.h"
 
 #ifdef PAVER_WITH_VULKAN
 #include "renderer.h"

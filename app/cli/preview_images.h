@@ -1,8 +1,8 @@
 #pragma once
 // `paver run --png`: preview.png (the 3D view, framed on the surface, with the colour legend)
 // and param.png (the 2D parameter view), rendered offscreen by the shared Vulkan renderer.
-#include "paver/pavement.h"
-#include "paver/surface_map.h"
+#include "pipeline/pavement.h"
+#include "map/surface_map.h"
 
 #include <filesystem>
 

@@ -1,6 +1,6 @@
 #pragma once
 // A one-line progress bar for the solver on a terminal (stderr), fed by the solver's observer.
-#include "paver/solver_backend.h"
+#include "solver/solver_backend.h"
 
 namespace paver::cli {
 

@@ -6,14 +6,14 @@
 #include "preview_images.h"
 #include "progress_bar.h"
 
-#include "paver/atomic_file.h"
-#include "paver/design_io.h"
-#include "paver/element_export.h"
-#include "paver/element_proximity.h"
-#include "paver/input_error.h"
-#include "paver/mesh_loader.h"
-#include "paver/pavement.h"
-#include "paver/run_report.h"
+#include "io/atomic_file.h"
+#include "io/design_io.h"
+#include "io/element_export.h"
+#include "elements/element_proximity.h"
+#include "core/input_error.h"
+#include "mesh/mesh_loader.h"
+#include "pipeline/pavement.h"
+#include "report/run_report.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,6 +1,6 @@
 #include "backend_choice.h"
 
-#include "paver/input_error.h"
+#include "core/input_error.h"
 
 #ifdef PAVER_WITH_VULKAN
 #include "paver/compute/vulkan_context.h"

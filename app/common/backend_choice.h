@@ -2,7 +2,7 @@
 // Chooses the solver backend by name for the CLI and the studio: cpu, vulkan, or auto (Vulkan
 // when a GPU is present, else the CPU). Vulkan gets a compute context of its own, so the solver
 // may run on any thread without sharing a queue with a renderer.
-#include "paver/solver_backend.h"
+#include "solver/solver_backend.h"
 
 #include <string>
 

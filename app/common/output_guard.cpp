@@ -1,6 +1,6 @@
 #include "output_guard.h"
 
-#include "paver/input_error.h"
+#include "core/input_error.h"
 
 #include <system_error>
 

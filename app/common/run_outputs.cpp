@@ -2,11 +2,11 @@
 
 #include "output_guard.h"
 
-#include "paver/atomic_file.h"
-#include "paver/design_io.h"
-#include "paver/element_export.h"
-#include "paver/element_proximity.h"
-#include "paver/pavement_quality.h"
+#include "io/atomic_file.h"
+#include "io/design_io.h"
+#include "io/element_export.h"
+#include "elements/element_proximity.h"
+#include "report/pavement_quality.h"
 
 #include <nlohmann/json.hpp>
 

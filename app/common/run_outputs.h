@@ -2,10 +2,10 @@
 // The files a pavement run leaves behind, written the same way by `paver run` and by the
 // studio's export: placements.csv, elements.ply, elements.obj (and elements.stl when asked) and
 // design.json, then report.json last so that it can carry the time the others took.
-#include "paver/element_shape.h"
-#include "paver/pavement.h"
-#include "paver/run_report.h"
-#include "paver/surface_map.h"
+#include "elements/element_shape.h"
+#include "pipeline/pavement.h"
+#include "report/run_report.h"
+#include "map/surface_map.h"
 
 #include <nlohmann/json_fwd.hpp>
 

@@ -1,7 +1,7 @@
 #include "renderer.h"
 
-#include "paver/atomic_file.h"
-#include "paver/input_error.h"
+#include "io/atomic_file.h"
+#include "core/input_error.h"
 
 #include <stb_image_write.h>  // the implementation is in Debian's libstb
 

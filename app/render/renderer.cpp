@@ -2,10 +2,10 @@
 
 #include "paver/compute/gpu_buffer.h"
 #include "paver/compute/vulkan_objects.h"
-#include "paver/element_proximity.h"
-#include "paver/lifting.h"
-#include "paver/mean_curvature.h"
-#include "paver/pavement_quality.h"
+#include "elements/element_proximity.h"
+#include "map/lifting.h"
+#include "mesh/mean_curvature.h"
+#include "report/pavement_quality.h"
 #include "render_targets.h"
 
 #include <glm/geometric.hpp>

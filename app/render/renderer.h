@@ -9,10 +9,10 @@
 // edges, and the elements as disks.
 #include "paver/compute/result.h"
 #include "paver/compute/vulkan_context.h"
-#include "paver/element_shape.h"
-#include "paver/elements.h"
-#include "paver/pattern.h"
-#include "paver/surface_map.h"
+#include "elements/element_shape.h"
+#include "elements/elements.h"
+#include "pattern/pattern.h"
+#include "map/surface_map.h"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>

@@ -1,6 +1,6 @@
 #include "design_edits.h"
 
-#include "paver/pavement.h"
+#include "pipeline/pavement.h"
 
 namespace paver::studio {
 

@@ -2,8 +2,8 @@
 // Edits of a design that keep it consistent, shared by the panels and the script: a new
 // tessellation drops what named the old cell's edges; an edge operator is only added when the
 // unit cell can take it.
-#include "paver/design.h"
-#include "paver/unit_cell.h"
+#include "design/design.h"
+#include "pattern/unit_cell.h"
 
 namespace paver::studio {
 

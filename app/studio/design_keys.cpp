@@ -1,7 +1,7 @@
 #include "design_keys.h"
 
-#include "paver/design_io.h"
-#include "paver/input_error.h"
+#include "io/design_io.h"
+#include "core/input_error.h"
 
 #include <nlohmann/json.hpp>
 

@@ -3,7 +3,7 @@
 // JSON, the key (a dotted path such as solver.dt, elements.vertex.scale, elements.edge[0].t) is
 // set there, and the JSON is read back with design.json's own checks, so every key works and
 // every value is checked the way a design file is.
-#include "paver/design.h"
+#include "design/design.h"
 
 #include <string>
 #include <string_view>

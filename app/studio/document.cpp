@@ -1,9 +1,9 @@
 #include "document.h"
 
 #include "output_guard.h"
-#include "paver/design_io.h"
-#include "paver/element_proximity.h"
-#include "paver/input_error.h"
+#include "io/design_io.h"
+#include "elements/element_proximity.h"
+#include "core/input_error.h"
 
 #include <nlohmann/json.hpp>
 

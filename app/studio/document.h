@@ -5,10 +5,10 @@
 // the design unsaved and re-runs the pavement.
 #include "undo_history.h"
 
-#include "paver/design.h"
-#include "paver/element_shape.h"
-#include "paver/pavement.h"
-#include "paver/surface_map.h"
+#include "design/design.h"
+#include "elements/element_shape.h"
+#include "pipeline/pavement.h"
+#include "map/surface_map.h"
 
 #include <chrono>
 #include <cstdint>

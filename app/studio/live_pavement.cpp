@@ -1,7 +1,7 @@
 #include "live_pavement.h"
 
-#include "paver/default_spacing.h"
-#include "paver/input_error.h"
+#include "pattern/default_spacing.h"
+#include "core/input_error.h"
 
 #include <atomic>
 #include <chrono>

@@ -8,9 +8,9 @@
 // A new run (the design changed) abandons the old one the same way; the UI never waits for it.
 #include "background_jobs.h"
 
-#include "paver/pattern.h"
-#include "paver/pavement.h"
-#include "paver/surface_map.h"
+#include "pattern/pattern.h"
+#include "pipeline/pavement.h"
+#include "map/surface_map.h"
 
 #include <glm/vec2.hpp>
 

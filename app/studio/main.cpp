@@ -5,7 +5,7 @@
 #include "script_runner.h"
 #include "studio.h"
 
-#include "paver/input_error.h"
+#include "core/input_error.h"
 
 #include <CLI/CLI.hpp>
 

@@ -1,6 +1,6 @@
 #include "recent_files.h"
 
-#include "paver/atomic_file.h"
+#include "io/atomic_file.h"
 
 #include <algorithm>
 #include <cstdlib>

@@ -1,7 +1,7 @@
 #include "script.h"
 
-#include "paver/input_error.h"
-#include "paver/unit_cell.h"
+#include "core/input_error.h"
+#include "pattern/unit_cell.h"
 
 #include <charconv>
 #include <cmath>

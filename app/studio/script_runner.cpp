@@ -3,7 +3,7 @@
 #include "design_edits.h"
 #include "design_keys.h"
 
-#include "paver/input_error.h"
+#include "core/input_error.h"
 
 #include <cstdio>
 #include <utility>

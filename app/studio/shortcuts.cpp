@@ -2,7 +2,7 @@
 
 #include "studio.h"
 
-#include "paver/input_error.h"
+#include "core/input_error.h"
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>

@@ -6,7 +6,7 @@
 #include "run_outputs.h"
 #include "shortcuts.h"
 
-#include "paver/input_error.h"
+#include "core/input_error.h"
 
 #include <imgui.h>
 #include <nlohmann/json.hpp>

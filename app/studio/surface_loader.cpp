@@ -1,9 +1,9 @@
 #include "surface_loader.h"
 
-#include "paver/arap_parameterization.h"
-#include "paver/input_error.h"
-#include "paver/map_quality.h"
-#include "paver/mesh_loader.h"
+#include "map/arap_parameterization.h"
+#include "core/input_error.h"
+#include "map/map_quality.h"
+#include "mesh/mesh_loader.h"
 
 #include <glm/geometric.hpp>
 

@@ -5,8 +5,8 @@
 // what the studio exports is what `paver run` writes for the same surface and design.
 #include "background_jobs.h"
 
-#include "paver/pavement.h"
-#include "paver/surface_map.h"
+#include "pipeline/pavement.h"
+#include "map/surface_map.h"
 
 #include <filesystem>
 #include <memory>

@@ -2,7 +2,7 @@
 // Undo and redo over whole designs. A Design is small (a few hundred numbers), so each step keeps
 // a full copy: no command objects to invert, and every change, whatever panel made it, undoes the
 // same way.
-#include "paver/design.h"
+#include "design/design.h"
 
 #include <cstddef>
 #include <optional>

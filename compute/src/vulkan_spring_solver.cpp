@@ -2,7 +2,7 @@
 
 #include "paver/compute/gpu_buffer.h"
 #include "gpu_solver_layout.h"
-#include "paver/spring_solver.h"
+#include "solver/spring_solver.h"
 #include "paver/compute/vulkan_objects.h"
 
 #include <cstdint>

@@ -3,10 +3,10 @@
 #include "paver/compute/vulkan_context.h"
 #include "paver/compute/vulkan_spring_solver.h"
 #include "paver/compute/vulkan_objects.h"  // white-box: the positive control below makes a raw Vulkan call
-#include "paver/design_io.h"
-#include "paver/mesh_loader.h"
-#include "paver/pavement.h"
-#include "paver/spring_solver.h"
+#include "io/design_io.h"
+#include "mesh/mesh_loader.h"
+#include "pipeline/pavement.h"
+#include "solver/spring_solver.h"
 #include "bundled_designs.h"
 #include "test_meshes.h"
 

@@ -1,8 +1,8 @@
 // The shared renderer, offscreen on lavapipe (any Vulkan device), validation layer on: the images
 // show the surface and the elements in the expected colours, and nothing is blank.
-#include "paver/design_io.h"
-#include "paver/mesh_loader.h"
-#include "paver/pavement.h"
+#include "io/design_io.h"
+#include "mesh/mesh_loader.h"
+#include "pipeline/pavement.h"
 #include "renderer.h"
 #include "test_meshes.h"
 

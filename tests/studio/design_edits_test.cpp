@@ -1,6 +1,6 @@
 #include "design_edits.h"
 
-#include "paver/input_error.h"
+#include "core/input_error.h"
 
 #include <gtest/gtest.h>
 

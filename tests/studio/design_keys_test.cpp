@@ -1,6 +1,6 @@
 #include "design_keys.h"
 
-#include "paver/input_error.h"
+#include "core/input_error.h"
 
 #include <gtest/gtest.h>
 

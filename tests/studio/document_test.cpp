@@ -1,7 +1,7 @@
 #include "document.h"
 
-#include "paver/mesh_loader.h"
-#include "paver/pavement.h"
+#include "mesh/mesh_loader.h"
+#include "pipeline/pavement.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>

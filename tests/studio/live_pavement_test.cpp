@@ -4,8 +4,8 @@
 
 #include "paver/compute/vulkan_context.h"
 #include "paver/compute/vulkan_spring_solver.h"
-#include "paver/pavement.h"
-#include "paver/surface_map.h"
+#include "pipeline/pavement.h"
+#include "map/surface_map.h"
 
 #include <gtest/gtest.h>
 

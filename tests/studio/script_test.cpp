@@ -1,6 +1,6 @@
 #include "script.h"
 
-#include "paver/input_error.h"
+#include "core/input_error.h"
 
 #include <gtest/gtest.h>
 

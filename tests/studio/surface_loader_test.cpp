@@ -2,8 +2,8 @@
 
 #include "test_meshes.h"
 
-#include "paver/mesh_loader.h"
-#include "paver/surface_map.h"
+#include "mesh/mesh_loader.h"
+#include "map/surface_map.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 #pragma once
 // Assertions about user-facing errors: the message an InputError carries, and what it says.
-#include "paver/input_error.h"
+#include "core/input_error.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 #pragma once
 // Shared fixtures: the bundled surfaces, the real scanned meshes, and small meshes made in code.
-#include "paver/mesh_loader.h"
-#include "paver/surface_mesh.h"
+#include "mesh/mesh_loader.h"
+#include "mesh/surface_mesh.h"
 
 #include <algorithm>
 #include <filesystem>

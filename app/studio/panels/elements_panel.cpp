@@ -5,8 +5,8 @@
 #include "../design_edits.h"
 #include "../studio.h"
 
-#include "paver/element_shape.h"
-#include "paver/input_error.h"
+#include "elements/element_shape.h"
+#include "core/input_error.h"
 
 #include <imgui_stdlib.h>
 

@@ -4,10 +4,10 @@
 
 #include "../studio.h"
 
-#include "paver/element_export.h"
-#include "paver/element_proximity.h"
-#include "paver/input_error.h"
-#include "paver/pavement_quality.h"
+#include "io/element_export.h"
+#include "elements/element_proximity.h"
+#include "core/input_error.h"
+#include "report/pavement_quality.h"
 
 #include <imgui_stdlib.h>
 

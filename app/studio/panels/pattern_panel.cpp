@@ -7,7 +7,7 @@
 #include "../design_edits.h"
 #include "../studio.h"
 
-#include "paver/input_error.h"
+#include "core/input_error.h"
 
 #include <glm/geometric.hpp>
 

@@ -7,7 +7,7 @@
 #include "../studio.h"
 #include "../view_images.h"
 
-#include "paver/pavement.h"
+#include "pipeline/pavement.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>

@@ -8,7 +8,7 @@
 // block back once per batch and the positions only when asked (end, or for an observer).
 #include "paver/compute/result.h"
 #include "paver/compute/vulkan_context.h"
-#include "paver/solver_backend.h"
+#include "solver/solver_backend.h"
 
 #include <memory>
 

@@ -1,0 +1,137 @@
+#include "design/design.h"
+
+#include <algorithm>
+
+#include "core/input_error.h"
+
+#include <charconv>
+#include <cmath>
+#include <string>
+
+namespace paver {
+
+bool uses_custom_shape(const ElementsDesign& e) {
+  if (e.vertex.enabled && e.vertex.shape == ShapeKind::Custom) return true;
+  return std::any_of(e.edge.begin(), e.edge.end(), [](const auto& s) { return s.shape == ShapeKind::Custom; });
+}
+
+std::string_view filter_base_name(FilterBase b) { return b == FilterBase::Initial ? "initial" : "current"; }
+
+std::optional<FilterBase> filter_base_from_name(std::string_view name) {
+  if (name == "current") return FilterBase::Current;
+  if (name == "initial") return FilterBase::Initial;
+  return std::nullopt;
+}
+namespace {
+
+// Shortest text that reads back as the same double, so messages show exactly what was given.
+std::string number_text(double value) {
+  char buffer[64];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  return std::string(buffer, result.ptr);
+}
+
+class Validator {
+public:
+  explicit Validator(const std::string& source) : source_(source) {}
+
+  [[noreturn]] void fail(const std::string& message) const { throw InputError(source_ + ": " + message); }
+
+  // `ok` is written as the allowed condition so that NaN, which fails every comparison, is
+  // rejected too.
+  void require(bool ok, const std::string& key, const std::string& allowed, double value) const {
+    if (!ok) fail("'" + key + "' must be " + allowed + ", got " + number_text(value));
+  }
+
+  void finite(double value, const std::string& key) const {
+    require(std::isfinite(value), key, "finite", value);
+  }
+  void non_negative(double value, const std::string& key) const {
+    require(std::isfinite(value) && value >= 0, key, "finite and >= 0", value);
+  }
+  void unit_scale(double value, const std::string& key) const {
+    require(value > 0 && value <= 1, key, "in (0, 1] (diameter = scale * D)", value);
+  }
+  void unit_interval(double value, const std::string& key) const {
+    require(value >= 0 && value <= 1, key, "in [0, 1]", value);
+  }
+
+private:
+  const std::string& source_;
+};
+
+void validate_pattern(const Validator& v, const PatternDesign& pattern) {
+  v.require(std::isfinite(pattern.spacing) && pattern.spacing >= 0, "pattern.spacing",
+            "finite and >= 0 (0 = derive from the surface)", pattern.spacing);
+  for (size_t i = 0; i < pattern.operators.size(); ++i) {
+    const EdgeOperator& op = pattern.operators[i];
+    const std::string key = "pattern.operators[" + std::to_string(i) + "]";
+    v.require(op.from >= 0, key + ".from", ">= 0 (a unit-cell vertex index)", op.from);
+    v.require(op.to >= 0, key + ".to", ">= 0 (a unit-cell vertex index)", op.to);
+    if (op.is_virtual && op.kind != EdgeOperator::Kind::Add)
+      v.fail("'" + key + ".virtual' may only be true for an \"add\" operator; this one is \"" +
+             std::string(operator_name(op.kind)) + "\"");
+  }
+}
+
+void validate_elements(const Validator& v, const ElementsDesign& elements) {
+  v.unit_scale(elements.vertex.scale, "elements.vertex.scale");
+  std::string custom_user;  // first key that asks for the custom shape
+  if (elements.vertex.enabled && elements.vertex.shape == ShapeKind::Custom) custom_user = "elements.vertex.shape";
+  for (size_t i = 0; i < elements.edge.size(); ++i) {
+    const EdgeElementDesign& edge = elements.edge[i];
+    const std::string key = "elements.edge[" + std::to_string(i) + "]";
+    v.unit_interval(edge.t, key + ".t");
+    v.unit_scale(edge.scale, key + ".scale");
+    for (size_t j = 0; j < edge.cell_edges.size(); ++j)
+      v.require(edge.cell_edges[j] >= 0, key + ".cell_edges[" + std::to_string(j) + "]",
+                ">= 0 (a unit-cell edge index)", edge.cell_edges[j]);
+    if (custom_user.empty() && edge.shape == ShapeKind::Custom) custom_user = key + ".shape";
+  }
+  if (!custom_user.empty() && elements.custom_shape.empty())
+    v.fail("'" + custom_user + "' is \"custom\" but 'elements.custom_shape' is empty; set it to the path "
+           "of a mesh file (OBJ, OFF, PLY or STL)");
+}
+
+void validate_placement(const Validator& v, const Placement& placement) {
+  v.finite(placement.offset.x, "placement.offset[0]");
+  v.finite(placement.offset.y, "placement.offset[1]");
+  v.finite(placement.rotation_deg, "placement.rotation_deg");
+  v.require(std::isfinite(placement.scale) && placement.scale > 0, "placement.scale", "finite and > 0",
+            placement.scale);
+}
+
+void validate_solver(const Validator& v, const SolverParams& s) {
+  v.non_negative(s.c, "solver.c");
+  v.finite(s.m, "solver.m");
+  if (!(s.c + s.m >= 0))
+    v.fail("c + m must be >= 0 (eq. 5: the further-apart distance cannot be negative); got c = " +
+           number_text(s.c) + ", m = " + number_text(s.m));
+  v.require(std::isfinite(s.alpha) && s.alpha > 0, "solver.alpha", "finite and > 0", s.alpha);
+  v.finite(s.beta, "solver.beta");
+  v.finite(s.gamma, "solver.gamma");
+  v.non_negative(s.lambda_r, "solver.lambda_r");
+  v.non_negative(s.lambda_l, "solver.lambda_l");
+  v.non_negative(s.lambda_g, "solver.lambda_g");
+  v.require(s.dt > 0 && s.dt <= 1, "solver.dt", "in (0, 1]", s.dt);
+  v.require(s.iterations >= 0 && s.iterations <= 1000000, "solver.iterations", "in [0, 1000000]", s.iterations);
+  v.require(std::isfinite(s.threshold) && s.threshold > 0, "solver.threshold", "finite and > 0", s.threshold);
+  v.unit_interval(s.mu_compressed, "solver.mu_compressed");
+  v.unit_interval(s.mu_stretched, "solver.mu_stretched");
+  v.require(std::isfinite(s.filter_max) && s.filter_max >= 1, "solver.filter_max", "finite and >= 1",
+            s.filter_max);
+  v.require(s.stray_patience >= 0 && s.stray_patience <= 1000000, "solver.stray_patience", "in [0, 1000000]",
+            s.stray_patience);
+}
+
+}  // namespace
+
+void validate_design(const Design& design, const std::string& source) {
+  const Validator v(source);
+  validate_pattern(v, design.pattern);
+  validate_elements(v, design.elements);
+  validate_placement(v, design.placement);
+  validate_solver(v, design.solver);
+}
+
+}  // namespace paver

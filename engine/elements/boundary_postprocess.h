@@ -1,0 +1,27 @@
+#pragma once
+// Post-processing (section 5.4). Filling: lattice edges that cross the map's boundary are split at
+// the crossing and E-elements are placed on the inside part at their t. Eliminating: every
+// element whose centre is nearer the surface boundary (in 3D) than its radius is removed.
+#include "design/design.h"
+#include "elements/elements.h"
+#include "pattern/pattern.h"
+#include "map/surface_map.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace paver {
+
+// Appends the filling E-elements to `elements`; returns how many were added. `points` are the
+// optimised particle positions; the outside end of a crossing edge moves with its inside end.
+int fill_boundary_edges(const SurfaceMap& map, const Pattern& pattern, const std::vector<glm::dvec2>& points,
+                        const ElementsDesign& design, double spacing, Elements& elements,
+                        const std::vector<std::uint8_t>* retired = nullptr);
+
+// 3D distance from each element centre to the surface's boundary polyline.
+std::vector<double> distances_to_boundary(const SurfaceMap& map, const Elements& elements);
+
+// Removes the elements that cross the boundary; returns how many.
+int eliminate_boundary_elements(const SurfaceMap& map, Elements& elements);
+
+}  // namespace paver

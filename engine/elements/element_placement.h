@@ -1,0 +1,20 @@
+#pragma once
+// Elements on the pattern (section 4.1): a V-element on every point and the design's E-elements
+// on every non-virtual edge at their t, lifted to the surface (eq. 2) with their normals.
+#include "design/design.h"
+#include "elements/elements.h"
+#include "pattern/pattern.h"
+#include "map/surface_map.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace paver {
+
+// `points` are the particle positions to use (the pattern's, or the optimizer's result);
+// `retired` (optional, #P) marks particles the optimizer retired: they carry no V-element.
+Elements place_elements(const SurfaceMap& map, const Pattern& pattern,
+                        const std::vector<glm::dvec2>& points, const ElementsDesign& design,
+                        double spacing, const std::vector<std::uint8_t>* retired = nullptr);
+
+}  // namespace paver

@@ -1,0 +1,250 @@
+#include "elements/element_shape.h"
+
+#include "core/input_error.h"
+
+// MeshIO must come before the mesh kernel so that OpenMesh registers its readers.
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+
+#include <glm/common.hpp>
+#include <glm/vec2.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+
+namespace paver {
+namespace {
+
+constexpr double kRadius = 0.5;  // every built-in shape is 1 wide
+
+class ShapeBuilder {
+public:
+  int vertex(double x, double y, double z) {
+    mesh_.positions.emplace_back(static_cast<float>(x), static_cast<float>(y), static_cast<float>(z));
+    return static_cast<int>(mesh_.positions.size()) - 1;
+  }
+  int polar(double radius, double angle, double z) {
+    return vertex(radius * std::cos(angle), radius * std::sin(angle), z);
+  }
+  // a, b, c counter-clockwise seen from outside.
+  void triangle(int a, int b, int c) { mesh_.triangles.emplace_back(a, b, c); }
+
+  ShapeMesh take() { return std::move(mesh_); }
+
+private:
+  ShapeMesh mesh_;
+};
+
+double segment_angle(int j, int segments) {
+  return 2.0 * std::numbers::pi * static_cast<double>(j) / static_cast<double>(segments);
+}
+
+// Surface of revolution about Z. `profile` is (radius, z) from the top to the bottom; its first and
+// last radii are 0 (a pole, or the centre of a flat cap), the ones in between are rings of
+// `segments` vertices, the first at angle 0 so that the shape reaches x = +-radius exactly.
+ShapeMesh revolve(const std::vector<glm::dvec2>& profile, int segments) {
+  ShapeBuilder b;
+  const int top = b.vertex(0, 0, profile.front().y);
+  const int ring_count = static_cast<int>(profile.size()) - 2;
+  const int first_ring = top + 1;
+  for (int i = 0; i < ring_count; ++i)
+    for (int j = 0; j < segments; ++j)
+      b.polar(profile[i + 1].x, segment_angle(j, segments), profile[i + 1].y);
+  const int bottom = b.vertex(0, 0, profile.back().y);
+
+  const auto ring = [&](int i, int j) { return first_ring + i * segments + j % segments; };
+  for (int j = 0; j < segments; ++j) {
+    b.triangle(top, ring(0, j), ring(0, j + 1));
+    // Down the profile (i -> i + 1) then around (j -> j + 1) turns outwards.
+    for (int i = 0; i + 1 < ring_count; ++i) {
+      b.triangle(ring(i, j), ring(i + 1, j), ring(i + 1, j + 1));
+      b.triangle(ring(i, j), ring(i + 1, j + 1), ring(i, j + 1));
+    }
+    b.triangle(bottom, ring(ring_count - 1, j + 1), ring(ring_count - 1, j));
+  }
+  return b.take();
+}
+
+// `rings` even, so that the equator (the widest circle) is a ring.
+ShapeMesh make_sphere(int segments, int rings) {
+  std::vector<glm::dvec2> profile;
+  for (int i = 0; i <= rings; ++i) {
+    const double polar_angle = std::numbers::pi * i / rings;
+    const bool pole = i == 0 || i == rings;
+    profile.emplace_back(pole ? 0.0 : kRadius * std::sin(polar_angle), kRadius * std::cos(polar_angle));
+  }
+  return revolve(profile, segments);
+}
+
+ShapeMesh make_prism(int segments, double height) {
+  const double h = 0.5 * height;
+  return revolve({{0, h}, {kRadius, h}, {kRadius, -h}, {0, -h}}, segments);
+}
+
+// Round brilliant with 8-fold symmetry: octagonal table, 8 star, 8 bezel (kite) and 16 upper
+// girdle facets on the crown; a 16-sided girdle band; 16 lower girdle and 8 main facets on the
+// pavilion down to a pointed culet. Proportions are those of a typical brilliant in units of the
+// girdle diameter. Bezel and pavilion main facets are kept planar: their side vertices are put on
+// the plane through the facet's top and bottom vertices and the girdle tangent there.
+ShapeMesh make_gem() {
+  constexpr double kTableRadius = 0.28;      // table diameter 0.56
+  constexpr double kCrownHeight = 0.16;      // girdle top to table
+  constexpr double kPavilionDepth = 0.43;    // girdle bottom to culet
+  constexpr double kGirdleHalf = 0.01;       // girdle thickness 0.02
+  constexpr double kStarLength = 0.5;        // star tips halfway from the table edge to the girdle
+  constexpr double kLowerGirdleLength = 0.77;  // lower girdle facets reach 77% towards the culet
+  constexpr int kMains = 8;
+  constexpr int kGirdle = 2 * kMains;
+  const double half_step = std::numbers::pi / kMains / 2;  // 22.5 degrees
+  const double cos_half = std::cos(half_step);
+
+  const double table_z = kGirdleHalf + kCrownHeight;
+  const double culet_z = -kGirdleHalf - kPavilionDepth;
+  // Height of the bezel plane at distance `along` from the axis in the direction of its main.
+  const auto bezel_z = [&](double along) {
+    return kGirdleHalf + kCrownHeight * (kRadius - along) / (kRadius - kTableRadius);
+  };
+  const auto pavilion_z = [&](double along) { return culet_z + kPavilionDepth * along / kRadius; };
+
+  const double table_edge = kTableRadius * cos_half;  // distance of a table edge's middle
+  const double star_radius = table_edge + kStarLength * (kRadius - table_edge);
+  const double lower_along = kRadius * (1 - kLowerGirdleLength);
+
+  ShapeBuilder b;
+  const int table_centre = b.vertex(0, 0, table_z);
+  std::array<int, kMains> table, star, lower;
+  std::array<int, kGirdle> girdle_top, girdle_bottom;
+  for (int k = 0; k < kMains; ++k) {
+    table[k] = b.polar(kTableRadius, segment_angle(k, kMains), table_z);
+    star[k] = b.polar(star_radius, segment_angle(2 * k + 1, kGirdle), bezel_z(star_radius * cos_half));
+  }
+  for (int j = 0; j < kGirdle; ++j) girdle_top[j] = b.polar(kRadius, segment_angle(j, kGirdle), kGirdleHalf);
+  for (int j = 0; j < kGirdle; ++j)
+    girdle_bottom[j] = b.polar(kRadius, segment_angle(j, kGirdle), -kGirdleHalf);
+  for (int k = 0; k < kMains; ++k)
+    lower[k] = b.polar(lower_along / cos_half, segment_angle(2 * k + 1, kGirdle), pavilion_z(lower_along));
+  const int culet = b.vertex(0, 0, culet_z);
+
+  const auto wrap = [](int k) { return (k + kMains) % kMains; };
+  const auto rim = [](int j) { return (j + kGirdle) % kGirdle; };
+  for (int k = 0; k < kMains; ++k) {
+    const int t = table[k], t_next = table[wrap(k + 1)];
+    const int g = girdle_top[2 * k], g_mid = girdle_top[2 * k + 1], g_next = girdle_top[rim(2 * k + 2)];
+    const int s = star[k], s_prev = star[wrap(k - 1)];
+    b.triangle(table_centre, t, t_next);
+    b.triangle(t, s, t_next);  // star facet
+    b.triangle(t, s_prev, g);  // bezel facet, split along its axis
+    b.triangle(t, g, s);
+    b.triangle(s, g, g_mid);  // upper girdle facets
+    b.triangle(s, g_mid, g_next);
+  }
+  for (int j = 0; j < kGirdle; ++j) {
+    b.triangle(girdle_top[j], girdle_bottom[j], girdle_bottom[rim(j + 1)]);
+    b.triangle(girdle_top[j], girdle_bottom[rim(j + 1)], girdle_top[rim(j + 1)]);
+  }
+  // The pavilion faces downwards, so its triangles run clockwise seen from above.
+  for (int k = 0; k < kMains; ++k) {
+    const int g = girdle_bottom[2 * k], g_mid = girdle_bottom[2 * k + 1];
+    const int g_next = girdle_bottom[rim(2 * k + 2)];
+    const int l = lower[k], l_prev = lower[wrap(k - 1)];
+    b.triangle(l, g_mid, g);  // lower girdle facets
+    b.triangle(l, g_next, g_mid);
+    b.triangle(culet, l, g);  // pavilion main facet, split along its axis
+    b.triangle(culet, g, l_prev);
+  }
+  return b.take();
+}
+
+using OpenMeshTriangles = OpenMesh::TriMesh_ArrayKernelT<>;
+
+[[noreturn]] void shape_error(const std::filesystem::path& path, const std::string& what) {
+  throw InputError("custom shape " + path.string() + ": " + what);
+}
+
+}  // namespace
+
+ShapeMesh make_builtin_shape(ShapeKind kind, ShapeDetail detail) {
+  const bool coarse = detail == ShapeDetail::Coarse;
+  switch (kind) {
+    case ShapeKind::Sphere: return coarse ? make_sphere(8, 6) : make_sphere(16, 10);
+    case ShapeKind::Gem: return make_gem();
+    case ShapeKind::HexPrism: return make_prism(6, 0.5);
+    case ShapeKind::Disc: return make_prism(coarse ? 12 : 32, 0.2);
+    case ShapeKind::Custom: break;
+  }
+  throw InputError("the custom element shape is not built in; load it from a file with "
+                   "load_custom_shape (design key 'elements.custom_shape')");
+}
+
+ShapeMesh load_custom_shape(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) shape_error(path, "the file does not exist");
+
+  // A TriMesh fans every polygon into triangles while the file is read.
+  OpenMeshTriangles mesh;
+  if (!OpenMesh::IO::read_mesh(mesh, path.string()))
+    shape_error(path, "cannot read it; give an OBJ, OFF, PLY or STL file");
+  if (mesh.n_faces() == 0) shape_error(path, "it has no faces");
+
+  // Keep only the vertices that faces use, so that stray points do not move the bounding box.
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<int> new_index(mesh.n_vertices(), -1);
+  std::vector<glm::dvec3> points;
+  glm::dvec3 lo(inf), hi(-inf);
+  ShapeMesh shape;
+  shape.triangles.reserve(mesh.n_faces());
+  for (const auto face : mesh.faces()) {
+    std::array<int, 3> corner{};
+    int n = 0;
+    for (const auto v : mesh.fv_range(face)) {
+      int& index = new_index[v.idx()];
+      if (index < 0) {
+        const auto& p = mesh.point(v);
+        const glm::dvec3 q(p[0], p[1], p[2]);
+        if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z))
+          shape_error(path, "vertex " + std::to_string(v.idx() + 1) + " has a coordinate that is not finite");
+        index = static_cast<int>(points.size());
+        points.push_back(q);
+        lo = glm::min(lo, q);
+        hi = glm::max(hi, q);
+      }
+      if (n < 3) corner[n] = index;
+      ++n;
+    }
+    if (n == 3) shape.triangles.emplace_back(corner[0], corner[1], corner[2]);
+  }
+  if (shape.triangles.empty()) shape_error(path, "it has no faces");
+
+  const double width = std::max(hi.x - lo.x, hi.y - lo.y);
+  if (!(width > 0))
+    shape_error(path, "it has no horizontal extent (all vertices lie on one vertical line); "
+                      "model it with +Z as the surface normal");
+  const glm::dvec3 centre = 0.5 * (lo + hi);
+  shape.positions.reserve(points.size());
+  for (const glm::dvec3& p : points) shape.positions.emplace_back((p - centre) / width);
+  return shape;
+}
+
+std::string_view shape_name(ShapeKind kind) {
+  switch (kind) {
+    case ShapeKind::Sphere: return "sphere";
+    case ShapeKind::Gem: return "gem";
+    case ShapeKind::HexPrism: return "hex_prism";
+    case ShapeKind::Disc: return "disc";
+    case ShapeKind::Custom: return "custom";
+  }
+  return "unknown";
+}
+
+std::optional<ShapeKind> shape_from_name(std::string_view name) {
+  for (ShapeKind kind : {ShapeKind::Sphere, ShapeKind::Gem, ShapeKind::HexPrism, ShapeKind::Disc,
+                         ShapeKind::Custom})
+    if (shape_name(kind) == name) return kind;
+  return std::nullopt;
+}
+
+}  // namespace paver

@@ -1,0 +1,36 @@
+#pragma once
+// The instantiated elements of a pavement: one entry per V- or E-element, as structs of arrays.
+#include "elements/element_shape.h"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace paver {
+
+enum class ElementKind : std::uint8_t { Vertex, Edge };
+
+struct Elements {
+  std::vector<ElementKind> kind;
+  std::vector<int> source;          // pattern point (V), pattern edge (E), or -1 - crossing edge (filling)
+  std::vector<int> spec;            // index into the design's edge-element list (E), 0 for V
+  std::vector<glm::dvec2> uv;       // centre in the map's parameter plane
+  std::vector<glm::dvec3> position; // centre on the surface
+  std::vector<glm::dvec3> normal;   // unit surface normal at the centre
+  std::vector<double> diameter;     // element diameter, surface units
+  std::vector<ShapeKind> shape;
+
+  std::size_t size() const { return kind.size(); }
+  void clear();
+  void reserve(std::size_t n);
+  void push_back(ElementKind k, int source_index, int spec_index, glm::dvec2 uv_centre,
+                 glm::dvec3 centre, glm::dvec3 unit_normal, double element_diameter, ShapeKind s);
+  // Removes element i wherever remove[i] is non-zero, keeping the order of the rest.
+  void erase_flagged(const std::vector<std::uint8_t>& remove);
+  void append(const Elements& other);
+};
+
+}  // namespace paver

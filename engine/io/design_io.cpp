@@ -1,0 +1,446 @@
+#include "io/design_io.h"
+
+#include "io/atomic_file.h"
+#include "core/input_error.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <climits>
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <initializer_list>
+#include <sstream>
+#include <string_view>
+#include <system_error>
+#include <vector>
+
+namespace paver {
+namespace {
+
+using nlohmann::json;
+
+constexpr Tessellation kTessellations[] = {Tessellation::Triangle, Tessellation::Grid, Tessellation::Hexagon};
+constexpr FilterBase kFilterBases[] = {FilterBase::Current, FilterBase::Initial};
+constexpr ShapeKind kShapes[] = {ShapeKind::Sphere, ShapeKind::Gem, ShapeKind::HexPrism, ShapeKind::Disc,
+                                 ShapeKind::Custom};
+constexpr EdgeOperator::Kind kOperatorKinds[] = {EdgeOperator::Kind::Flip, EdgeOperator::Kind::Add,
+                                                 EdgeOperator::Kind::Remove};
+
+std::string join(const std::string& path, std::string_view key) {
+  return path.empty() ? std::string(key) : path + "." + std::string(key);
+}
+
+std::string indexed(const std::string& path, size_t index) { return path + "[" + std::to_string(index) + "]"; }
+
+std::string lowercase(std::string_view text) {
+  std::string out(text);
+  for (char& c : out) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+// Levenshtein distance, for "did you mean" suggestions on misspelt keys.
+size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<size_t> previous(b.size() + 1), current(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) previous[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    current[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t substitution = previous[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
+      current[j] = std::min({previous[j] + 1, current[j - 1] + 1, substitution});
+    }
+    std::swap(previous, current);
+  }
+  return previous[b.size()];
+}
+
+// Reads design.json values into Design fields. Every error names the source and the full key
+// path ("pattern.operators[2].offset") so the user can find the line to fix.
+class Reader {
+public:
+  explicit Reader(const std::string& source) : source_(source) {}
+
+  [[noreturn]] void fail(const std::string& message) const { throw InputError(source_ + ": " + message); }
+
+  [[noreturn]] void wrong_type(const json& value, const std::string& path, std::string_view expected) const {
+    fail("'" + path + "' must be " + std::string(expected) + ", got " + value.type_name());
+  }
+
+  // Requires `value` to be an object whose keys are all in `known`.
+  void check_object(const json& value, const std::string& path, std::initializer_list<std::string_view> known) const {
+    if (!value.is_object()) wrong_type(value, path, "an object");
+    for (const auto& item : value.items()) {
+      const std::string& key = item.key();
+      if (std::find(known.begin(), known.end(), key) != known.end()) continue;
+      fail("unknown key '" + join(path, key) + "'" + suggestion(key, path, known));
+    }
+  }
+
+  // Reads object[key] into `out` when present; an absent key keeps the default already in `out`.
+  template <class T>
+  void field(const json& object, const std::string& path, const char* key, T& out) const {
+    const auto it = object.find(key);
+    if (it != object.end()) read(*it, join(path, key), out);
+  }
+
+  void read(const json& value, const std::string& path, double& out) const {
+    if (!value.is_number()) wrong_type(value, path, "a number");
+    out = value.get<double>();
+  }
+
+  void read(const json& value, const std::string& path, int& out) const {
+    if (value.is_number_unsigned()) {
+      // Values above INT64_MAX are stored unsigned; compare without converting to int64.
+      const auto number = value.get<std::uint64_t>();
+      if (number > std::uint64_t(INT_MAX)) out_of_int_range(value, path);
+      out = int(number);
+    } else if (value.is_number_integer()) {
+      const auto number = value.get<std::int64_t>();
+      if (number < INT_MIN || number > INT_MAX) out_of_int_range(value, path);
+      out = int(number);
+    } else if (value.is_number_float()) {
+      // Tools that only know doubles write 2 as 2.0; that is still the integer 2.
+      const double number = value.get<double>();
+      if (number != std::trunc(number)) fail("'" + path + "' must be an integer, got " + value.dump());
+      if (number < double(INT_MIN) || number > double(INT_MAX)) out_of_int_range(value, path);
+      out = int(number);
+    } else {
+      wrong_type(value, path, "an integer");
+    }
+  }
+
+  void read(const json& value, const std::string& path, bool& out) const {
+    if (!value.is_boolean()) wrong_type(value, path, "true or false");
+    out = value.get<bool>();
+  }
+
+  void read(const json& value, const std::string& path, std::string& out) const {
+    if (!value.is_string()) wrong_type(value, path, "a string");
+    out = value.get<std::string>();
+  }
+
+  void read(const json& value, const std::string& path, glm::dvec2& out) const {
+    check_pair(value, path, "an array of 2 numbers");
+    read(value[0], indexed(path, 0), out.x);
+    read(value[1], indexed(path, 1), out.y);
+  }
+
+  void read(const json& value, const std::string& path, glm::ivec2& out) const {
+    check_pair(value, path, "an array of 2 integers");
+    read(value[0], indexed(path, 0), out.x);
+    read(value[1], indexed(path, 1), out.y);
+  }
+
+  void read(const json& value, const std::string& path, Tessellation& out) const {
+    read_name(value, path, out, kTessellations, tessellation_name);
+  }
+  void read(const json& value, const std::string& path, FilterBase& out) const {
+    read_name(value, path, out, kFilterBases, filter_base_name);
+  }
+  void read(const json& value, const std::string& path, ShapeKind& out) const {
+    read_name(value, path, out, kShapes, shape_name);
+  }
+  void read(const json& value, const std::string& path, EdgeOperator::Kind& out) const {
+    read_name(value, path, out, kOperatorKinds, operator_name);
+  }
+
+  template <class T>
+  void read(const json& value, const std::string& path, std::vector<T>& out) const {
+    if (!value.is_array()) wrong_type(value, path, "an array");
+    out.assign(value.size(), T{});
+    for (size_t i = 0; i < value.size(); ++i) read(value[i], indexed(path, i), out[i]);
+  }
+
+  void read(const json& value, const std::string& path, EdgeOperator& out) const {
+    check_object(value, path, {"op", "from", "to", "offset", "virtual"});
+    field(value, path, "op", out.kind);
+    field(value, path, "from", out.from);
+    field(value, path, "to", out.to);
+    field(value, path, "offset", out.offset);
+    field(value, path, "virtual", out.is_virtual);
+  }
+
+  void read(const json& value, const std::string& path, PatternDesign& out) const {
+    check_object(value, path, {"tessellation", "spacing", "bracing", "operators"});
+    field(value, path, "tessellation", out.tessellation);
+    field(value, path, "spacing", out.spacing);
+    field(value, path, "bracing", out.bracing);
+    field(value, path, "operators", out.operators);
+  }
+
+  void read(const json& value, const std::string& path, VertexElementDesign& out) const {
+    check_object(value, path, {"enabled", "scale", "shape"});
+    field(value, path, "enabled", out.enabled);
+    field(value, path, "scale", out.scale);
+    field(value, path, "shape", out.shape);
+  }
+
+  void read(const json& value, const std::string& path, EdgeElementDesign& out) const {
+    check_object(value, path, {"t", "scale", "shape", "cell_edges"});
+    field(value, path, "t", out.t);
+    field(value, path, "scale", out.scale);
+    field(value, path, "shape", out.shape);
+    field(value, path, "cell_edges", out.cell_edges);
+  }
+
+  void read(const json& value, const std::string& path, ElementsDesign& out) const {
+    check_object(value, path, {"vertex", "edge", "custom_shape", "allow_overlap"});
+    field(value, path, "vertex", out.vertex);
+    field(value, path, "edge", out.edge);
+    field(value, path, "custom_shape", out.custom_shape);
+    field(value, path, "allow_overlap", out.allow_overlap);
+  }
+
+  void read(const json& value, const std::string& path, Placement& out) const {
+    check_object(value, path, {"offset", "rotation_deg", "scale"});
+    field(value, path, "offset", out.offset);
+    field(value, path, "rotation_deg", out.rotation_deg);
+    field(value, path, "scale", out.scale);
+  }
+
+  void read(const json& value, const std::string& path, SolverParams& out) const {
+    check_object(value, path,
+                 {"c", "m", "alpha", "beta", "gamma", "lambda_r", "lambda_l", "lambda_g", "dt", "iterations",
+                  "threshold", "mu_compressed", "mu_stretched", "filter_max", "filter_base", "stray_patience"});
+    field(value, path, "c", out.c);
+    field(value, path, "m", out.m);
+    field(value, path, "alpha", out.alpha);
+    field(value, path, "beta", out.beta);
+    field(value, path, "gamma", out.gamma);
+    field(value, path, "lambda_r", out.lambda_r);
+    field(value, path, "lambda_l", out.lambda_l);
+    field(value, path, "lambda_g", out.lambda_g);
+    field(value, path, "dt", out.dt);
+    field(value, path, "iterations", out.iterations);
+    field(value, path, "threshold", out.threshold);
+    field(value, path, "mu_compressed", out.mu_compressed);
+    field(value, path, "mu_stretched", out.mu_stretched);
+    field(value, path, "filter_max", out.filter_max);
+    field(value, path, "filter_base", out.filter_base);
+    field(value, path, "stray_patience", out.stray_patience);
+  }
+
+private:
+  [[noreturn]] void out_of_int_range(const json& value, const std::string& path) const {
+    fail("'" + path + "' must be an integer in [" + std::to_string(INT_MIN) + ", " + std::to_string(INT_MAX) +
+         "], got " + value.dump());
+  }
+
+  void check_pair(const json& value, const std::string& path, std::string_view expected) const {
+    if (!value.is_array()) wrong_type(value, path, expected);
+    if (value.size() != 2)
+      fail("'" + path + "' must be " + std::string(expected) + ", got an array of " + std::to_string(value.size()));
+  }
+
+  template <class Enum, size_t N>
+  void read_name(const json& value, const std::string& path, Enum& out, const Enum (&all)[N],
+                 std::string_view (*name)(Enum)) const {
+    if (!value.is_string()) wrong_type(value, path, "a string");
+    const std::string text = value.get<std::string>();
+    for (Enum candidate : all) {
+      if (name(candidate) == text) {
+        out = candidate;
+        return;
+      }
+    }
+    std::string choices;
+    for (Enum candidate : all) choices += (choices.empty() ? "\"" : ", \"") + std::string(name(candidate)) + "\"";
+    fail("'" + path + "' must be one of " + choices + ", got " + value.dump());
+  }
+
+  // " (did you mean 'pattern.spacing'?)" when a known key is a likely misspelling of `key`.
+  static std::string suggestion(const std::string& key, const std::string& path,
+                                std::initializer_list<std::string_view> known) {
+    const std::string lower = lowercase(key);
+    std::string_view best;
+    size_t best_distance = 3;  // suggest only within edit distance 2
+    for (std::string_view candidate : known) {
+      const size_t distance = edit_distance(lower, lowercase(candidate));
+      // A one-letter key such as "c" is within distance 1 of any other letter; that is no hint.
+      if (distance < best_distance && distance < candidate.size()) {
+        best = candidate;
+        best_distance = distance;
+      }
+    }
+    if (!best.empty()) return " (did you mean '" + join(path, best) + "'?)";
+    std::string list;
+    for (std::string_view candidate : known) list += (list.empty() ? "" : ", ") + std::string(candidate);
+    return "; known keys here: " + list;
+  }
+
+  const std::string& source_;
+};
+
+// Builds the complete design, every key written. Templated on the JSON type so that files are
+// written with nlohmann::ordered_json, keeping the keys in the order a reader expects.
+template <class Json>
+Json to_json(const Design& design) {
+  Json operators = Json::array();
+  for (const EdgeOperator& op : design.pattern.operators) {
+    Json item = Json::object();
+    item["op"] = std::string(operator_name(op.kind));
+    item["from"] = op.from;
+    item["to"] = op.to;
+    item["offset"] = Json::array({op.offset.x, op.offset.y});
+    item["virtual"] = op.is_virtual;
+    operators.push_back(std::move(item));
+  }
+  Json pattern = Json::object();
+  pattern["tessellation"] = std::string(tessellation_name(design.pattern.tessellation));
+  pattern["spacing"] = design.pattern.spacing;
+  pattern["bracing"] = design.pattern.bracing;
+  pattern["operators"] = std::move(operators);
+
+  const ElementsDesign& elements = design.elements;
+  Json vertex = Json::object();
+  vertex["enabled"] = elements.vertex.enabled;
+  vertex["scale"] = elements.vertex.scale;
+  vertex["shape"] = std::string(shape_name(elements.vertex.shape));
+  Json edges = Json::array();
+  for (const EdgeElementDesign& edge : elements.edge) {
+    Json item = Json::object();
+    item["t"] = edge.t;
+    item["scale"] = edge.scale;
+    item["shape"] = std::string(shape_name(edge.shape));
+    item["cell_edges"] = edge.cell_edges;
+    edges.push_back(std::move(item));
+  }
+  Json elements_json = Json::object();
+  elements_json["vertex"] = std::move(vertex);
+  elements_json["edge"] = std::move(edges);
+  elements_json["custom_shape"] = elements.custom_shape;
+  elements_json["allow_overlap"] = elements.allow_overlap;
+
+  Json placement = Json::object();
+  placement["offset"] = Json::array({design.placement.offset.x, design.placement.offset.y});
+  placement["rotation_deg"] = design.placement.rotation_deg;
+  placement["scale"] = design.placement.scale;
+
+  const SolverParams& s = design.solver;
+  Json solver = Json::object();
+  solver["c"] = s.c;
+  solver["m"] = s.m;
+  solver["alpha"] = s.alpha;
+  solver["beta"] = s.beta;
+  solver["gamma"] = s.gamma;
+  solver["lambda_r"] = s.lambda_r;
+  solver["lambda_l"] = s.lambda_l;
+  solver["lambda_g"] = s.lambda_g;
+  solver["dt"] = s.dt;
+  solver["iterations"] = s.iterations;
+  solver["threshold"] = s.threshold;
+  solver["mu_compressed"] = s.mu_compressed;
+  solver["mu_stretched"] = s.mu_stretched;
+  solver["filter_max"] = s.filter_max;
+  solver["filter_base"] = std::string(filter_base_name(s.filter_base));
+  solver["stray_patience"] = s.stray_patience;
+
+  Json root = Json::object();
+  root["version"] = Design::kVersion;
+  root["pattern"] = std::move(pattern);
+  root["elements"] = std::move(elements_json);
+  root["placement"] = std::move(placement);
+  root["solver"] = std::move(solver);
+  return root;
+}
+
+// parse_error::byte counts the bytes read, the offending one included (1-based).
+std::string line_and_column(const std::string& text, size_t byte) {
+  const size_t position = std::min(byte == 0 ? 0 : byte - 1, text.size());
+  size_t line = 1, line_start = 0;
+  for (size_t i = 0; i < position; ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      line_start = i + 1;
+    }
+  }
+  return std::to_string(line) + ":" + std::to_string(position - line_start + 1);
+}
+
+// nlohmann's message is "[json.exception.parse_error.101] parse error at line 4, column 20: syntax
+// error while parsing object key - unexpected ','; expected string literal"; keep what went wrong.
+std::string short_reason(const std::string& what) {
+  std::string reason = what;
+  const size_t colon = reason.find(": ", reason.find("parse error"));
+  if (colon != std::string::npos) reason = reason.substr(colon + 2);
+  const size_t dash = reason.find(" - ");
+  if (dash != std::string::npos) reason = reason.substr(dash + 3);
+  return reason;
+}
+
+std::string read_design_text(const std::filesystem::path& path) {
+  const std::string source = path.string();
+  std::error_code error;
+  const auto status = std::filesystem::status(path, error);
+  if (status.type() == std::filesystem::file_type::not_found)
+    throw InputError(source + ": no such design file");
+  if (status.type() == std::filesystem::file_type::directory)
+    throw InputError(source + ": is a folder, not a design file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    const std::string why = error ? " (" + error.message() + ")" : "";
+    throw InputError(source + ": cannot open the design file for reading" + why);
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InputError(source + ": could not read the design file");
+  return std::move(text).str();
+}
+
+}  // namespace
+
+Design design_from_json(const nlohmann::json& json, const std::string& source) {
+  const Reader reader(source);
+  if (!json.is_object()) reader.fail(std::string("the design must be a JSON object, got ") + json.type_name());
+  // The version comes first: a newer file's new keys should not be reported as unknown.
+  const auto version = json.find("version");
+  if (version == json.end())
+    reader.fail("missing key 'version'; this build reads design files of version " +
+                std::to_string(Design::kVersion));
+  int number = 0;
+  reader.read(*version, "version", number);
+  if (number != Design::kVersion)
+    reader.fail("'version' is " + std::to_string(number) + ", but this build reads only version " +
+                std::to_string(Design::kVersion));
+
+  reader.check_object(json, "", {"version", "pattern", "elements", "placement", "solver"});
+  Design design;
+  reader.field(json, "", "pattern", design.pattern);
+  reader.field(json, "", "elements", design.elements);
+  reader.field(json, "", "placement", design.placement);
+  reader.field(json, "", "solver", design.solver);
+  validate_design(design, source);
+  return design;
+}
+
+nlohmann::json design_to_json(const Design& design) { return to_json<nlohmann::json>(design); }
+
+Design load_design(const std::filesystem::path& path) {
+  const std::string text = read_design_text(path);
+  nlohmann::json json;
+  try {
+    json = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& error) {
+    throw InputError(path.string() + ":" + line_and_column(text, error.byte) +
+                     ": JSON syntax error: " + short_reason(error.what()));
+  }
+  Design design = design_from_json(json, path.string());
+
+  // A relative custom shape path means "beside the design file", wherever the program runs from.
+  const std::filesystem::path shape = design.elements.custom_shape;
+  if (!shape.empty() && shape.is_relative()) {
+    std::error_code error;
+    std::filesystem::path folder = std::filesystem::absolute(path, error).parent_path();
+    if (error) folder = path.parent_path();
+    design.elements.custom_shape = (folder / shape).lexically_normal().string();
+  }
+  return design;
+}
+
+void save_design(const std::filesystem::path& path, const Design& design) {
+  write_text_atomically(path, to_json<nlohmann::ordered_json>(design).dump(2) + "\n");
+}
+
+}  // namespace paver

@@ -1,0 +1,20 @@
+#pragma once
+// design.json: the file form of Design. Version 1. Unknown keys and out-of-range values are
+// errors that name the key ("pattern.operators[2].offset: ..."); missing keys take defaults.
+#include "design/design.h"
+
+#include <nlohmann/json_fwd.hpp>
+
+#include <filesystem>
+#include <string>
+
+namespace paver {
+
+Design design_from_json(const nlohmann::json& json, const std::string& source);
+nlohmann::json design_to_json(const Design& design);
+
+// Reads and validates a design file. Syntax errors name the line and column.
+Design load_design(const std::filesystem::path& path);
+void save_design(const std::filesystem::path& path, const Design& design);  // atomic
+
+}  // namespace paver

@@ -1,0 +1,365 @@
+#include "io/element_export.h"
+
+#include "io/atomic_file.h"
+#include "core/input_error.h"
+
+#include <glm/geometric.hpp>
+
+#include <bit>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace paver {
+namespace {
+
+using Colour = std::array<std::uint8_t, 3>;
+constexpr Colour kVertexColour = {52, 101, 164};  // blue, as in the paper's figure 4
+constexpr Colour kEdgeColour = {237, 125, 49};    // orange
+
+// Elements is a struct of arrays; a short array would be read past its end.
+void check_sizes(const Elements& e) {
+  const std::size_t n = e.size();
+  if (e.source.size() != n || e.spec.size() != n || e.uv.size() != n || e.position.size() != n ||
+      e.normal.size() != n || e.diameter.size() != n || e.shape.size() != n)
+    throw std::invalid_argument("Elements: its arrays have different lengths");
+}
+
+// Collects output in a fixed buffer and hands it to the stream in large writes, so that millions
+// of small values cost neither a stream call each nor a string of the whole file.
+class ChunkedWriter {
+public:
+  explicit ChunkedWriter(std::ostream& out) : out_(out), buffer_(kCapacity) {}
+
+  // At least `n` writable bytes (n <= kMaxReserve); finish with advance().
+  char* room(std::size_t n) {
+    if (used_ + n > buffer_.size()) flush();
+    return buffer_.data() + used_;
+  }
+  void advance(const char* end) { used_ = static_cast<std::size_t>(end - buffer_.data()); }
+
+  void text(std::string_view s) {
+    if (s.size() > kMaxReserve) {
+      flush();
+      out_.write(s.data(), static_cast<std::streamsize>(s.size()));
+      return;
+    }
+    char* p = room(s.size());
+    s.copy(p, s.size());
+    advance(p + s.size());
+  }
+  void character(char c) {
+    char* p = room(1);
+    *p = c;
+    advance(p + 1);
+  }
+  // %.<precision>g without locale or printf parsing.
+  void number(double value, int precision) {
+    char* p = room(kNumberBytes);
+    advance(std::to_chars(p, p + kNumberBytes, value, std::chars_format::general, precision).ptr);
+  }
+  // Shortest text that reads back as the same float: what the PLY stores, and fast (Ryu).
+  void shortest(float value) {
+    char* p = room(kNumberBytes);
+    advance(std::to_chars(p, p + kNumberBytes, value).ptr);
+  }
+  void integer(long long value) {
+    char* p = room(kNumberBytes);
+    advance(std::to_chars(p, p + kNumberBytes, value).ptr);
+  }
+
+  void flush() {
+    out_.write(buffer_.data(), static_cast<std::streamsize>(used_));
+    used_ = 0;
+  }
+
+  static constexpr std::size_t kNumberBytes = 32;  // "-1.2345678901234567e-308" fits
+  static constexpr std::size_t kMaxReserve = 4096;
+
+private:
+  static constexpr std::size_t kCapacity = std::size_t{1} << 20;
+  std::ostream& out_;
+  std::vector<char> buffer_;
+  std::size_t used_ = 0;
+};
+
+// Little endian whatever the host is: PLY says which order, and we promise this one.
+char* put_u32_le(char* p, std::uint32_t v) {
+  for (int i = 0; i < 4; ++i) p[i] = static_cast<char>((v >> (8 * i)) & 0xffu);
+  return p + 4;
+}
+char* put_f32_le(char* p, float v) { return put_u32_le(p, std::bit_cast<std::uint32_t>(v)); }
+char* put_i32_le(char* p, std::int32_t v) { return put_u32_le(p, static_cast<std::uint32_t>(v)); }
+char* put_u8(char* p, std::uint8_t v) {
+  *p = static_cast<char>(v);
+  return p + 1;
+}
+
+// The shapes the elements use, built once per export.
+class ShapeTable {
+public:
+  ShapeTable(const Elements& elements, const ElementMeshOptions& options,
+             const std::filesystem::path& path) {
+    for (std::size_t i = 0; i < elements.size(); ++i) {
+      const ShapeKind kind = elements.shape[i];
+      const auto slot = static_cast<std::size_t>(kind);
+      if (mesh_[slot]) continue;
+      if (kind == ShapeKind::Custom) {
+        if (!options.custom)
+          throw InputError("cannot write " + path.string() + ": element " + std::to_string(i) +
+                           " uses the custom shape but none was loaded; set "
+                           "'elements.custom_shape' to a mesh file");
+        mesh_[slot] = options.custom;
+      } else {
+        builtin_[slot] = make_builtin_shape(kind);
+        mesh_[slot] = &builtin_[slot];
+      }
+      check_indices(*mesh_[slot]);
+    }
+  }
+
+  ShapeTable(const ShapeTable&) = delete;  // mesh_ points into builtin_
+  ShapeTable& operator=(const ShapeTable&) = delete;
+
+  const ShapeMesh& operator[](ShapeKind kind) const { return *mesh_[static_cast<std::size_t>(kind)]; }
+
+private:
+  static void check_indices(const ShapeMesh& mesh) {
+    const int n = static_cast<int>(mesh.positions.size());
+    for (const glm::ivec3& t : mesh.triangles)
+      if (t.x < 0 || t.y < 0 || t.z < 0 || t.x >= n || t.y >= n || t.z >= n)
+        throw std::invalid_argument("ShapeMesh: a triangle refers to a vertex that does not exist");
+  }
+
+  static constexpr std::size_t kKinds = static_cast<std::size_t>(ShapeKind::Custom) + 1;
+  std::array<ShapeMesh, kKinds> builtin_;
+  std::array<const ShapeMesh*, kKinds> mesh_{};
+};
+
+// Columns of the rotation that takes +Z onto the unit normal n. For n.z >= 0 it is the shortest
+// arc (the identity for +Z, so an upright element keeps its turn about Z); for n.z < 0 it is a half
+// turn about X followed by the shortest arc from -Z. Either way the divisor 1 + |n.z| stays >= 1,
+// so no normal, -Z included, makes it blow up; and t x b = n, so triangles keep facing outwards.
+struct Frame {
+  glm::dvec3 t, b, n;
+};
+
+Frame frame_for(glm::dvec3 normal) {
+  const double length = glm::length(normal);
+  // A degenerate normal leaves the element upright instead of writing NaNs.
+  const glm::dvec3 n = length > 0 && std::isfinite(length) ? normal / length : glm::dvec3(0, 0, 1);
+  const double s = n.z >= 0 ? 1.0 : -1.0;
+  const double k = 1.0 / (1.0 + std::abs(n.z));
+  const double xy = n.x * n.y * k;
+  return {{1.0 - n.x * n.x * k, -xy, -s * n.x}, {-s * xy, s * (1.0 - n.y * n.y * k), -n.y}, n};
+}
+
+class Instancer {
+public:
+  Instancer(const Elements& elements, std::size_t i)
+      : frame_(frame_for(elements.normal[i])), centre_(elements.position[i]),
+        scale_(elements.diameter[i]) {}
+
+  glm::dvec3 operator()(const glm::vec3& p) const {
+    const glm::dvec3 local = scale_ * glm::dvec3(p);
+    return centre_ + local.x * frame_.t + local.y * frame_.b + local.z * frame_.n;
+  }
+
+private:
+  Frame frame_;
+  glm::dvec3 centre_;
+  double scale_;
+};
+
+// The one per-element transform every mesh writer uses: calls emit(i, shape, placed) for each
+// element in order, with `placed` its shape's vertices as they sit on the surface.
+template <class Emit>
+void for_each_placed_element(const Elements& elements, const ShapeTable& shapes, Emit&& emit) {
+  std::vector<glm::dvec3> placed;
+  for (std::size_t i = 0; i < elements.size(); ++i) {
+    const ShapeMesh& shape = shapes[elements.shape[i]];
+    const Instancer place(elements, i);
+    placed.resize(shape.positions.size());
+    for (std::size_t k = 0; k < placed.size(); ++k) placed[k] = place(shape.positions[k]);
+    emit(i, shape, placed);
+  }
+}
+
+struct MeshCounts {
+  std::size_t vertices = 0;
+  std::size_t faces = 0;
+};
+
+MeshCounts count(const Elements& elements, const ShapeTable& shapes) {
+  MeshCounts c;
+  for (std::size_t i = 0; i < elements.size(); ++i) {
+    const ShapeMesh& shape = shapes[elements.shape[i]];
+    c.vertices += shape.positions.size();
+    c.faces += shape.triangles.size();
+  }
+  return c;
+}
+
+}  // namespace
+
+void write_placements_csv(const std::filesystem::path& path, const Elements& elements) {
+  check_sizes(elements);
+  write_file_atomically(path, [&](std::ostream& out) {
+    constexpr int kDigits = 17;  // enough for every double to read back exactly
+    ChunkedWriter w(out);
+    w.text("id,kind,x,y,z,nx,ny,nz,diameter,u,v\n");
+    for (std::size_t i = 0; i < elements.size(); ++i) {
+      w.integer(static_cast<long long>(i));
+      w.text(elements.kind[i] == ElementKind::Vertex ? ",V" : ",E");
+      for (const double value :
+           {elements.position[i].x, elements.position[i].y, elements.position[i].z,
+            elements.normal[i].x, elements.normal[i].y, elements.normal[i].z, elements.diameter[i],
+            elements.uv[i].x, elements.uv[i].y}) {
+        w.character(',');
+        w.number(value, kDigits);
+      }
+      w.character('\n');
+    }
+    w.flush();
+  });
+}
+
+void write_elements_ply(const std::filesystem::path& path, const Elements& elements,
+                        const ElementMeshOptions& options) {
+  check_sizes(elements);
+  if (options.colours && options.colours->size() != elements.size())
+    throw std::invalid_argument("write_elements_ply: colours must have one entry per element");
+  const ShapeTable shapes(elements, options, path);
+  const MeshCounts counts = count(elements, shapes);
+  // PLY vertex indices are 32-bit signed.
+  if (counts.vertices > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
+    throw InputError("cannot write " + path.string() + ": its " + std::to_string(counts.vertices) +
+                     " vertices are more than PLY indices can address; use fewer elements or a "
+                     "lighter shape");
+
+  write_file_atomically(path, [&](std::ostream& out) {
+    ChunkedWriter w(out);
+    w.text("ply\nformat binary_little_endian 1.0\ncomment Paver elements: " +
+           std::to_string(elements.size()) + "\nelement vertex " + std::to_string(counts.vertices) +
+           "\nproperty float x\nproperty float y\nproperty float z\n"
+           "property uchar red\nproperty uchar green\nproperty uchar blue\n"
+           "element face " + std::to_string(counts.faces) +
+           "\nproperty list uchar int vertex_indices\nend_header\n");
+
+    for_each_placed_element(elements, shapes, [&](std::size_t i, const ShapeMesh&, const std::vector<glm::dvec3>& placed) {
+      const Colour colour = options.colours ? (*options.colours)[i]
+                            : elements.kind[i] == ElementKind::Vertex ? kVertexColour
+                                                                      : kEdgeColour;
+      for (const glm::dvec3& p : placed) {
+        char* c = w.room(15);
+        c = put_f32_le(c, static_cast<float>(p.x));
+        c = put_f32_le(c, static_cast<float>(p.y));
+        c = put_f32_le(c, static_cast<float>(p.z));
+        for (const std::uint8_t channel : colour) c = put_u8(c, channel);
+        w.advance(c);
+      }
+    });
+
+    std::int32_t first = 0;  // index of the element's first vertex
+    for (std::size_t i = 0; i < elements.size(); ++i) {
+      const ShapeMesh& shape = shapes[elements.shape[i]];
+      for (const glm::ivec3& t : shape.triangles) {
+        char* c = w.room(13);
+        c = put_u8(c, 3);
+        c = put_i32_le(c, first + t.x);
+        c = put_i32_le(c, first + t.y);
+        c = put_i32_le(c, first + t.z);
+        w.advance(c);
+      }
+      first += static_cast<std::int32_t>(shape.positions.size());
+    }
+    w.flush();
+  });
+}
+
+void write_elements_obj(const std::filesystem::path& path, const Elements& elements,
+                        const ElementMeshOptions& options) {
+  check_sizes(elements);
+  const ShapeTable shapes(elements, options, path);
+  const MeshCounts counts = count(elements, shapes);
+
+  write_file_atomically(path, [&](std::ostream& out) {
+    ChunkedWriter w(out);
+    w.text("# Paver elements: " + std::to_string(elements.size()) + "\n# vertices: " +
+           std::to_string(counts.vertices) + ", faces: " + std::to_string(counts.faces) + "\n");
+
+    for_each_placed_element(elements, shapes, [&](std::size_t, const ShapeMesh&, const std::vector<glm::dvec3>& placed) {
+      for (const glm::dvec3& p : placed) {
+        w.text("v ");
+        w.shortest(static_cast<float>(p.x));
+        w.character(' ');
+        w.shortest(static_cast<float>(p.y));
+        w.character(' ');
+        w.shortest(static_cast<float>(p.z));
+        w.character('\n');
+      }
+    });
+
+    long long first = 1;  // OBJ counts vertices from 1
+    for (std::size_t i = 0; i < elements.size(); ++i) {
+      const ShapeMesh& shape = shapes[elements.shape[i]];
+      for (const glm::ivec3& t : shape.triangles) {
+        w.text("f ");
+        w.integer(first + t.x);
+        w.character(' ');
+        w.integer(first + t.y);
+        w.character(' ');
+        w.integer(first + t.z);
+        w.character('\n');
+      }
+      first += static_cast<long long>(shape.positions.size());
+    }
+    w.flush();
+  });
+}
+
+void write_elements_stl(const std::filesystem::path& path, const Elements& elements,
+                        const ElementMeshOptions& options) {
+  check_sizes(elements);
+  const ShapeTable shapes(elements, options, path);
+  const MeshCounts counts = count(elements, shapes);
+  if (counts.faces > std::numeric_limits<std::uint32_t>::max())
+    throw InputError("cannot write " + path.string() + ": its " + std::to_string(counts.faces) +
+                     " triangles are more than binary STL can count; use fewer elements or a lighter shape");
+
+  write_file_atomically(path, [&](std::ostream& out) {
+    ChunkedWriter w(out);
+    std::string header = "Paver elements: " + std::to_string(elements.size());
+    header.resize(80, ' ');  // the 80-byte header must not start with "solid" (ASCII STL)
+    w.text(header);
+    char* c = w.room(4);
+    w.advance(put_u32_le(c, static_cast<std::uint32_t>(counts.faces)));
+
+    for_each_placed_element(elements, shapes, [&](std::size_t, const ShapeMesh& shape, const std::vector<glm::dvec3>& placed) {
+      for (const glm::ivec3& t : shape.triangles) {
+        const glm::dvec3 a = placed[t.x], b = placed[t.y], d = placed[t.z];
+        const glm::dvec3 cross = glm::cross(b - a, d - a);
+        const double length = glm::length(cross);
+        // A sliver gets a zero normal, which STL readers take as "compute it from the vertices".
+        const glm::dvec3 n = length > 0 && std::isfinite(length) ? cross / length : glm::dvec3(0);
+        char* p = w.room(50);
+        for (const glm::dvec3& v : {n, a, b, d}) {
+          p = put_f32_le(p, static_cast<float>(v.x));
+          p = put_f32_le(p, static_cast<float>(v.y));
+          p = put_f32_le(p, static_cast<float>(v.z));
+        }
+        p = put_u8(p, 0);  // attribute byte count: unused
+        p = put_u8(p, 0);
+        w.advance(p);
+      }
+    });
+    w.flush();
+  });
+}
+
+}  // namespace paver

@@ -1,0 +1,35 @@
+#pragma once
+// Export of the elements for fabrication and for other tools.
+#include "elements/elements.h"
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <vector>
+
+namespace paver {
+
+// placements.csv: header exactly `id,kind,x,y,z,nx,ny,nz,diameter,u,v`, one row per element,
+// kind V or E, full double precision (17 significant digits).
+void write_placements_csv(const std::filesystem::path& path, const Elements& elements);
+
+// Every element as real geometry: its shape scaled to its diameter, +Z turned onto its normal,
+// moved to its centre. `custom` is the user's shape when any element uses ShapeKind::Custom.
+// `colours` (one RGB per element, optional) colour the element's vertices in the PLY; without
+// them V-elements are blue and E-elements orange, like the paper's figure 4.
+struct ElementMeshOptions {
+  const ShapeMesh* custom = nullptr;
+  const std::vector<std::array<std::uint8_t, 3>>* colours = nullptr;
+};
+void write_elements_ply(const std::filesystem::path& path, const Elements& elements,
+                        const ElementMeshOptions& options = {});
+void write_elements_obj(const std::filesystem::path& path, const Elements& elements,
+                        const ElementMeshOptions& options = {});
+// Binary STL (for printers and CAM): an 80-byte header, the triangle count, then per triangle its
+// unit normal and three vertices as little-endian float32 and a zero attribute word, so the file
+// is 84 + 50 * triangles bytes. STL has no colours: options.colours is ignored.
+void write_elements_stl(const std::filesystem::path& path, const Elements& elements,
+                        const ElementMeshOptions& options = {});
+
+}  // namespace paver

@@ -1,0 +1,48 @@
+#include "map/surface_map.h"
+
+#include "mesh/mean_curvature.h"
+
+#include <glm/common.hpp>
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace paver {
+
+SurfaceMap make_surface_map(SurfaceMesh mesh, std::vector<glm::dvec2> uv) {
+  SurfaceMap map;
+  map.mesh = std::move(mesh);
+  map.uv = std::move(uv);
+  map.normals = vertex_normals(map.mesh);
+  map.curvature = mean_curvature(map.mesh);
+  if (!map.curvature.empty()) {
+    const auto [lo, hi] = std::minmax_element(map.curvature.begin(), map.curvature.end());
+    map.curvature_min = *lo, map.curvature_max = *hi;
+  }
+  map.uv_min = glm::dvec2(std::numeric_limits<double>::infinity());
+  map.uv_max = -map.uv_min;
+  for (const auto& p : map.uv) map.uv_min = glm::min(map.uv_min, p), map.uv_max = glm::max(map.uv_max, p);
+  map.grid = build_uv_grid(map.uv, map.mesh.triangles);
+  return map;
+}
+
+SurfaceMap make_surface_map(SurfaceMesh mesh, Parameterization parameterization) {
+  const MapQuality& q = parameterization.quality;
+  if (!q.bijective())
+    throw std::runtime_error("the map of this surface is not bijective (" + std::to_string(q.flipped_triangles) +
+                             " flipped triangles, " + std::to_string(q.boundary_intersections) +
+                             " boundary crossings); please report the surface to the Paver developers");
+  std::vector<glm::dvec2> uv = parameterization.uv;
+  SurfaceMap map = make_surface_map(std::move(mesh), std::move(uv));
+  map.parameterization = std::move(parameterization);
+  return map;
+}
+
+SurfaceMap build_surface_map(SurfaceMesh mesh, const ArapOptions& options) {
+  Parameterization param = parameterize_arap(mesh, options);
+  return make_surface_map(std::move(mesh), std::move(param));
+}
+
+}  // namespace paver

@@ -1,0 +1,17 @@
+#include "pattern/default_spacing.h"
+
+#include <cmath>
+
+namespace paver {
+
+double default_spacing(const SurfaceMesh& mesh, Tessellation tessellation, double target_points) {
+  // Points per area for D = 1 follows from the unit cell itself.
+  const UnitCell unit = make_unit_cell(tessellation, 1.0);
+  const double points_per_area = double(unit.vertices.size()) / unit.cell_area();
+  const double d = std::sqrt(surface_area(mesh) * points_per_area / target_points);
+  if (!(d > 0)) return 1;
+  const double magnitude = std::pow(10.0, std::floor(std::log10(d)) - 1);
+  return std::round(d / magnitude) * magnitude;
+}
+
+}  // namespace paver

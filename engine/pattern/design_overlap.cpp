@@ -1,0 +1,70 @@
+#include "pattern/design_overlap.h"
+
+#include "core/input_error.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace paver {
+namespace {
+
+struct LayoutElement {
+  glm::dvec2 centre;
+  double radius;
+  std::string name;
+};
+
+std::string format(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3g", v);
+  return b;
+}
+
+}  // namespace
+
+void check_design_overlaps(const UnitCell& cell, const ElementsDesign& design, double spacing) {
+  // Elements of the cells around the origin cell: enough to see every neighbour of its own.
+  std::vector<LayoutElement> all;
+  std::vector<size_t> own;  // indices of the origin cell's elements
+  for (int cy = -2; cy <= 2; ++cy)
+    for (int cx = -2; cx <= 2; ++cx) {
+      const glm::ivec2 c(cx, cy);
+      const bool origin = cx == 0 && cy == 0;
+      if (design.vertex.enabled)
+        for (int v = 0; v < int(cell.vertices.size()); ++v) {
+          if (origin) own.push_back(all.size());
+          all.push_back({cell.position(v, c), 0.5 * design.vertex.scale * spacing,
+                         "the V-element on cell vertex " + std::to_string(v)});
+        }
+      for (int s = 0; s < int(design.edge.size()); ++s) {
+        const EdgeElementDesign& spec = design.edge[s];
+        for (int e = 0; e < int(cell.edges.size()); ++e) {
+          const CellEdge& edge = cell.edges[e];
+          if (edge.is_virtual) continue;
+          if (!spec.cell_edges.empty() &&
+              std::find(spec.cell_edges.begin(), spec.cell_edges.end(), e) == spec.cell_edges.end())
+            continue;
+          const glm::dvec2 a = cell.position(edge.from, c), b = cell.position(edge.to, c + edge.offset);
+          if (origin) own.push_back(all.size());
+          all.push_back({a + spec.t * (b - a), 0.5 * spec.scale * spacing,
+                         "elements.edge[" + std::to_string(s) + "] on cell edge " + std::to_string(e)});
+        }
+      }
+    }
+  for (size_t i : own)
+    for (size_t j = 0; j < all.size(); ++j) {
+      if (j == i) continue;
+      const double d = glm::length(all[i].centre - all[j].centre);
+      const double need = all[i].radius + all[j].radius;
+      if (d < 0.99 * need)
+        throw InputError("the design's elements overlap: " + all[i].name + " and " + all[j].name +
+                         " are " + format(d / spacing) + " D apart but need " + format(need / spacing) +
+                         " D; reduce their scales or move t (or set elements.allow_overlap to allow it)");
+    }
+}
+
+}  // namespace paver

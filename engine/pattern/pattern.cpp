@@ -1,0 +1,104 @@
+#include "pattern/pattern.h"
+
+#include "core/input_error.h"
+
+#include <glm/common.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace paver {
+namespace {
+
+double map_area(const SurfaceMap& map) { return surface_area(map.mesh); }
+
+std::string format_number(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g", v);
+  return buffer;
+}
+
+}  // namespace
+
+double estimate_point_count(const SurfaceMap& map, const UnitCell& cell, const Placement& placement) {
+  // The map's area seen in the pattern plane grows with the square of the placement scale.
+  const double area = map_area(map) * placement.scale * placement.scale;
+  return area / cell.cell_area() * double(cell.vertices.size());
+}
+
+Pattern build_pattern(const SurfaceMap& map, const UnitCell& cell, const Placement& placement) {
+  const double estimate = estimate_point_count(map, cell, placement);
+  if (!(estimate <= kMaxPatternPoints)) {
+    // Rounded up to the three digits printed, so the spacing suggested is itself accepted.
+    const double smallest = cell.spacing * std::sqrt(estimate / kMaxPatternPoints);
+    const double digit = std::pow(10.0, std::floor(std::log10(smallest)) - 2);
+    const double ok_spacing = std::ceil(smallest / digit) * digit;
+    throw InputError("spacing D = " + format_number(cell.spacing) + " would create about " +
+                     format_number(estimate) + " elements on this surface (area " +
+                     format_number(map_area(map)) + "); the limit is " + format_number(kMaxPatternPoints) +
+                     ": use a spacing of at least " + format_number(ok_spacing));
+  }
+
+  // Range of lattice cells that covers the map: express the map's boundary in lattice coordinates.
+  const glm::dvec2 a1 = cell.a1, a2 = cell.a2;
+  const double det = a1.x * a2.y - a1.y * a2.x;
+  auto lattice_coords = [&](glm::dvec2 p) {
+    return glm::dvec2((p.x * a2.y - p.y * a2.x) / det, (a1.x * p.y - a1.y * p.x) / det);
+  };
+  glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+  for (int v : map.mesh.boundary_loop) {
+    const glm::dvec2 l = lattice_coords(placement.map_to_pattern(map.uv[v]));
+    lo = glm::min(lo, l), hi = glm::max(hi, l);
+  }
+  // One extra ring of cells so edges leaving the map are seen from both ends.
+  const glm::ivec2 c0 = glm::ivec2(glm::floor(lo)) - 2, c1 = glm::ivec2(glm::ceil(hi)) + 2;
+  const int ncx = c1.x - c0.x + 1, ncy = c1.y - c0.y + 1, nv = int(cell.vertices.size());
+
+  Pattern pattern;
+  std::vector<int> index(size_t(ncx) * ncy * nv, -1);  // lattice vertex -> point index
+  std::vector<glm::dvec2> map_position(index.size());
+  auto slot = [&](glm::ivec2 c, int v) -> long {
+    if (c.x < c0.x || c.x > c1.x || c.y < c0.y || c.y > c1.y) return -1;
+    return (long(c.y - c0.y) * ncx + (c.x - c0.x)) * nv + v;
+  };
+  for (int cy = c0.y; cy <= c1.y; ++cy)
+    for (int cx = c0.x; cx <= c1.x; ++cx)
+      for (int v = 0; v < nv; ++v) {
+        const glm::ivec2 c(cx, cy);
+        const glm::dvec2 q = placement.pattern_to_map(cell.position(v, c));
+        map_position[slot(c, v)] = q;
+        glm::dvec3 bary;
+        if (locate(map.grid, map.uv, map.mesh.triangles, q, bary) < 0) continue;
+        index[slot(c, v)] = pattern.point_count();
+        pattern.points.push_back(q);
+        pattern.point_cell_vertex.push_back(v);
+        pattern.point_cell.push_back(c);
+      }
+
+  for (int cy = c0.y; cy <= c1.y; ++cy)
+    for (int cx = c0.x; cx <= c1.x; ++cx)
+      for (int e = 0; e < int(cell.edges.size()); ++e) {
+        const CellEdge& edge = cell.edges[e];
+        const glm::ivec2 c(cx, cy);
+        const long sa = slot(c, edge.from), sb = slot(c + edge.offset, edge.to);
+        const int a = index[sa], b = sb >= 0 ? index[sb] : -1;
+        if (a >= 0 && b >= 0) {
+          pattern.edge_a.push_back(a);
+          pattern.edge_b.push_back(b);
+          pattern.edge_cell_edge.push_back(e);
+          pattern.edge_rest_length.push_back(edge.rest_length);
+          pattern.edge_virtual.push_back(edge.is_virtual ? 1 : 0);
+        } else if ((a >= 0) != (b >= 0) && !edge.is_virtual) {
+          const bool from_inside = a >= 0;
+          const glm::dvec2 outside = from_inside
+              ? placement.pattern_to_map(cell.position(edge.to, c + edge.offset))
+              : map_position[sa];
+          pattern.crossing_edges.push_back({from_inside ? a : b, outside, e, from_inside});
+        }
+      }
+  return pattern;
+}
+
+}  // namespace paver

@@ -1,0 +1,51 @@
+#pragma once
+// The trimmed pattern S^ (section 4.2): the unit cell propagated over the plane, placed over the
+// map M^ and cut by its boundary. Points and edges are structs of arrays in the map's frame, ready
+// to become the solver's particles and springs.
+#include "pattern/placement.h"
+#include "pattern/unit_cell.h"
+#include "map/surface_map.h"
+
+#include <glm/vec2.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace paver {
+
+struct Pattern {
+  // Points (particles): lattice vertices inside M^.
+  std::vector<glm::dvec2> points;          // #P positions in the map's (uv) frame
+  std::vector<int> point_cell_vertex;      // #P which unit-cell vertex it instantiates
+  std::vector<glm::ivec2> point_cell;      // #P its lattice cell
+
+  // Edges (springs) with both ends inside M^.
+  std::vector<int> edge_a, edge_b;         // #E point indices
+  std::vector<int> edge_cell_edge;         // #E unit-cell edge index
+  std::vector<double> edge_rest_length;    // #E D_ab, the length in the regular design
+  std::vector<std::uint8_t> edge_virtual;  // #E 1 for virtual edges (no elements)
+
+  // Lattice edges with exactly one end inside M^: the boundary filling (section 5.4) splits them.
+  struct CrossingEdge {
+    int inside_point;                      // index into points
+    glm::dvec2 outside;                    // the other end, map frame, outside M^
+    int cell_edge;                         // unit-cell edge index
+    bool inside_is_from;                   // true when the inside end is the edge's `from` end
+  };
+  std::vector<CrossingEdge> crossing_edges;
+
+  int point_count() const { return static_cast<int>(points.size()); }
+  int edge_count() const { return static_cast<int>(edge_a.size()); }
+};
+
+// Most points a pattern may have; a spacing that would create more is an input error.
+inline constexpr double kMaxPatternPoints = 4e6;
+
+// Estimated number of lattice points over the map (area / cell area * vertices per cell).
+double estimate_point_count(const SurfaceMap& map, const UnitCell& cell, const Placement& placement);
+
+// Propagates the cell over the map and trims it. Throws InputError when the spacing would
+// create more than kMaxPatternPoints points, naming the smallest sensible spacing.
+Pattern build_pattern(const SurfaceMap& map, const UnitCell& cell, const Placement& placement);
+
+}  // namespace paver

@@ -1,0 +1,112 @@
+#include "pipeline/pavement.h"
+
+#include "elements/boundary_postprocess.h"
+#include "pattern/default_spacing.h"
+#include "pattern/design_overlap.h"
+#include "elements/element_placement.h"
+#include "core/input_error.h"
+
+#include <chrono>
+
+namespace paver {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+}  // namespace
+
+UnitCell make_design_cell(const PatternDesign& pattern) {
+  UnitCell cell = make_unit_cell(pattern.tessellation, pattern.spacing);
+  for (size_t i = 0; i < pattern.operators.size(); ++i) {
+    try {
+      apply_operator(cell, pattern.operators[i]);
+    } catch (const InputError& e) {
+      throw InputError("pattern.operators[" + std::to_string(i) + "]: " + e.what());
+    }
+  }
+  if (pattern.bracing) add_bracing_edges(cell);
+  return cell;
+}
+
+PlacedElements place_all_elements(const SurfaceMap& map, const Pattern& pattern, const std::vector<glm::dvec2>& points,
+                                  const Design& design, bool postprocess, const std::vector<std::uint8_t>* retired) {
+  PlacedElements placed;
+  placed.elements = place_elements(map, pattern, points, design.elements, design.pattern.spacing, retired);
+  if (postprocess) {
+    placed.filled = fill_boundary_edges(map, pattern, points, design.elements, design.pattern.spacing, placed.elements,
+                                        retired);
+    placed.eliminated = eliminate_boundary_elements(map, placed.elements);
+  }
+  return placed;
+}
+
+Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptions& options) {
+  Pavement pavement;
+  auto t0 = Clock::now();
+  if (design.pattern.spacing <= 0)
+    design.pattern.spacing = default_spacing(map.mesh, design.pattern.tessellation);
+  pavement.cell = make_design_cell(design.pattern);
+  for (size_t s = 0; s < design.elements.edge.size(); ++s)
+    for (int e : design.elements.edge[s].cell_edges)
+      if (e < 0 || e >= int(pavement.cell.edges.size()))
+        throw InputError("elements.edge[" + std::to_string(s) + "].cell_edges: edge " + std::to_string(e) +
+                         " does not exist; the unit cell has edges 0.." +
+                         std::to_string(pavement.cell.edges.size() - 1));
+  if (!design.elements.allow_overlap)
+    check_design_overlaps(pavement.cell, design.elements, design.pattern.spacing);
+  pavement.pattern = build_pattern(map, pavement.cell, design.placement);
+  pavement.points = pavement.pattern.points;
+  pavement.timings.emplace_back("pattern", ms_since(t0));
+
+  t0 = Clock::now();
+  const PlacedElements initial = place_all_elements(map, pavement.pattern, pavement.points, design, options.postprocess);
+  pavement.before = measure_pavement(map, pavement.pattern, pavement.points, initial.elements, design.solver);
+  pavement.timings.emplace_back("measure_initial", ms_since(t0));
+
+  pavement.retired.assign(pavement.points.size(), 0);
+  const auto place = [&](const std::vector<glm::dvec2>& points, const std::vector<std::uint32_t>& stray_count) {
+    for (size_t i = 0; i < stray_count.size(); ++i) pavement.retired[i] = stray_count[i] == kRetired ? 1 : 0;
+    PlacedElements placed =
+        place_all_elements(map, pavement.pattern, points, design, options.postprocess, &pavement.retired);
+    pavement.filled = placed.filled;
+    pavement.eliminated = placed.eliminated;
+    return std::move(placed.elements);
+  };
+  if (options.optimize && pavement.pattern.point_count() > 0) {
+    t0 = Clock::now();
+    const SolverSurface surface = make_solver_surface(map);
+    SpringSystem system = make_spring_system(pavement.pattern);
+    const SolverFactory factory = options.solver ? options.solver : cpu_solver_factory(options.threads);
+    pavement.solve = factory(surface, system, design.solver, design.pattern.spacing)->solve(options.observer, options.stop);
+    for (int i = 0; i < system.particle_count(); ++i) pavement.points[i] = glm::dvec2(system.position[i]);
+    pavement.timings.emplace_back("optimize", ms_since(t0));
+
+    t0 = Clock::now();
+    pavement.elements = place(pavement.points, system.stray_count);
+    pavement.paper =
+        measure_pavement(map, pavement.pattern, pavement.points, pavement.elements, design.solver, &pavement.retired);
+    pavement.timings.emplace_back("measure_paper", ms_since(t0));
+    // Designs that overlap on purpose keep their overlaps.
+    if (options.resolve_collisions && !design.elements.allow_overlap) {
+      t0 = Clock::now();
+      pavement.elements = resolve_collisions(map, surface, system, pavement.pattern, design, pavement.points, place,
+                                             factory, options.resolution, pavement.resolution, options.stop);
+      pavement.timings.emplace_back("resolve_collisions", ms_since(t0));
+    }
+  } else {
+    pavement.elements = place(pavement.points, {});
+    pavement.paper = pavement.before;
+  }
+
+  t0 = Clock::now();
+  pavement.after =
+      measure_pavement(map, pavement.pattern, pavement.points, pavement.elements, design.solver, &pavement.retired);
+  pavement.timings.emplace_back("measure", ms_since(t0));
+  pavement.design = std::move(design);
+  return pavement;
+}
+
+}  // namespace paver

@@ -1,0 +1,69 @@
+#pragma once
+// From a surface map and a design to elements (sections 4.1 and 4.2): the unit cell with the
+// design's operators, the trimmed pattern, and the elements lifted to the surface. The CLI and the
+// editor both call make_pavement; the map is built once per surface (build_surface_map), the
+// pavement again on every design change.
+#include "solver/collision_resolution.h"
+#include "design/design.h"
+#include "elements/elements.h"
+#include "pattern/pattern.h"
+#include "report/pavement_quality.h"
+#include "solver/spring_solver.h"
+#include "map/surface_map.h"
+#include "pattern/unit_cell.h"
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace paver {
+
+// Wall-clock milliseconds per named stage, in pipeline order.
+using StageTimings = std::vector<std::pair<std::string, double>>;
+
+struct PavementOptions {
+  bool optimize = true;              // run the section 5 solver
+  bool postprocess = true;           // section 5.4: fill boundary edges, eliminate crossing elements
+  bool resolve_collisions = true;    // beyond the paper: contact springs until no pair collides
+  CollisionResolutionOptions resolution;
+  int threads = 0;                   // CPU solver threads, 0 = all cores
+  SolverFactory solver;              // the backend; empty = the CPU reference with `threads`
+  SolverObserver observer;           // called after every solver iteration of the main solve
+  const std::atomic<bool>* stop = nullptr;  // when it becomes true, every solve of the run ends
+};
+
+struct Pavement {
+  Design design;                     // as used: spacing resolved
+  UnitCell cell;                     // after operators and bracing
+  Pattern pattern;                   // trimmed pattern S^
+  std::vector<glm::dvec2> points;    // particle positions: optimised (or the pattern's)
+  std::vector<std::uint8_t> retired; // #P 1 for particles the optimizer retired (pushed out for good)
+  Elements elements;                 // final elements
+  int filled = 0;                    // E-elements added by boundary filling
+  int eliminated = 0;                // elements removed for crossing the boundary
+  SolveReport solve;                 // iterations, stop reason, time
+  CollisionResolutionReport resolution;
+  PavementQuality before;            // the initial pavement, post-processed the same way
+  PavementQuality paper;             // after the paper's optimizer and post-processing alone
+  PavementQuality after;             // the final pavement
+  StageTimings timings;
+};
+
+// Unit cell of the design: tessellation at D, operators in order, bracing edges if asked.
+// Throws InputError naming the operator ("pattern.operators[1]: ...") when one fails.
+UnitCell make_design_cell(const PatternDesign& pattern);
+
+// Resolves spacing 0 to the surface's default and checks design references against the unit
+// cell (E-element cell_edges), then builds pattern and elements.
+Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptions& options = {});
+
+// Elements on `points`: V and E elements, then (if asked) boundary filling and elimination.
+struct PlacedElements {
+  Elements elements;
+  int filled = 0, eliminated = 0;
+};
+PlacedElements place_all_elements(const SurfaceMap& map, const Pattern& pattern, const std::vector<glm::dvec2>& points,
+                                  const Design& design, bool postprocess,
+                                  const std::vector<std::uint8_t>* retired = nullptr);
+
+}  // namespace paver

@@ -1,0 +1,93 @@
+#include "report/run_report.h"
+
+#include "report/pavement_quality.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+
+namespace paver {
+
+namespace {
+
+std::string_view start_name(ArapStart s) {
+  switch (s) {
+    case ArapStart::Auto: return "auto";
+    case ArapStart::Lscm: return "lscm";
+    case ArapStart::Tutte: return "tutte";
+  }
+  return "?";
+}
+
+}  // namespace
+
+nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const Pavement& pavement,
+                               const StageTimings& timings) {
+  using nlohmann::json;
+  const auto& q = map.parameterization.quality;
+  const auto& r = map.parameterization.report;
+  const auto& pattern = pavement.pattern;
+  const auto& elements = pavement.elements;
+
+  const long virtual_edges = std::count(pattern.edge_virtual.begin(), pattern.edge_virtual.end(), 1);
+  const long vertex_elements = std::count(elements.kind.begin(), elements.kind.end(), ElementKind::Vertex);
+
+  json timing = json::object();
+  double total = 0;
+  for (const auto& [stage, ms] : timings) timing[stage] = ms, total += ms;
+  timing["total"] = total;
+
+  return json{
+      {"paver_report_version", 1},
+      {"surface", {{"path", info.surface_path},
+                   {"vertices", map.mesh.vertex_count()},
+                   {"faces", map.mesh.face_count()},
+                   {"boundary_vertices", map.mesh.boundary_loop.size()},
+                   {"area", surface_area(map.mesh)},
+                   {"curvature_min", map.curvature_min},
+                   {"curvature_max", map.curvature_max}}},
+      {"parameterization", {{"method", "arap"},
+                            {"start", start_name(r.start_used)},
+                            {"iterations", r.iterations},
+                            {"blocked_steps", r.blocked_steps},
+                            {"flipped_triangles", q.flipped_triangles},
+                            {"boundary_intersections", q.boundary_intersections},
+                            {"bijective", q.bijective()},
+                            {"stretch_mean", q.stretch_mean},
+                            {"stretch_max", q.stretch_max},
+                            {"area_ratio_min", q.area_ratio_min},
+                            {"area_ratio_max", q.area_ratio_max},
+                            {"area_distortion_mean", q.area_distortion_mean}}},
+      {"design", {{"source", info.design_source},
+                  {"tessellation", tessellation_name(pavement.design.pattern.tessellation)},
+                  {"spacing", pavement.design.pattern.spacing},
+                  {"spacing_derived", info.spacing_derived}}},
+      {"pattern", {{"cell_edges", pavement.cell.edges.size()},
+                   {"points", pattern.point_count()},
+                   {"edges", pattern.edge_count() - virtual_edges},
+                   {"virtual_edges", virtual_edges},
+                   {"boundary_crossing_edges", pattern.crossing_edges.size()}}},
+      {"elements", {{"total", elements.size()},
+                    {"vertex", vertex_elements},
+                    {"edge", long(elements.size()) - vertex_elements}}},
+      {"optimization", {{"iterations", pavement.solve.iterations},
+                        {"stop_reason", stop_reason_name(pavement.solve.reason)},
+                        {"converged", pavement.solve.reason == StopReason::Converged},
+                        {"last_max_step", pavement.solve.last_max_step},
+                        {"strays_pulled_back", pavement.solve.strays_pulled_back},
+                        {"retired_particles", std::count(pavement.retired.begin(), pavement.retired.end(), 1)},
+                        {"milliseconds", pavement.solve.milliseconds}}},
+      {"postprocess", {{"filled", pavement.filled}, {"eliminated", pavement.eliminated}}},
+      {"collision_resolution", {{"rounds", pavement.resolution.rounds},
+                                {"contact_springs", pavement.resolution.contact_springs},
+                                {"solver_iterations", pavement.resolution.solver_iterations},
+                                {"removed", pavement.resolution.removed},
+                                {"milliseconds", pavement.resolution.milliseconds}}},
+      {"quality_before", to_json(pavement.before)},
+      {"quality_paper_method", to_json(pavement.paper)},
+      {"quality_after", to_json(pavement.after)},
+      {"timings_ms", timing},
+  };
+}
+
+}  // namespace paver

@@ -1,0 +1,110 @@
+#include "solver/collision_resolution.h"
+
+#include "elements/element_proximity.h"
+#include "map/lifting.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <map>
+#include <utility>
+
+namespace paver {
+namespace {
+
+// The particle that moves an element most directly: its own point, the nearer end of its edge.
+// `avoid` (another element's particle) is skipped where the element has a second choice.
+int carrier(const ElementAnchor& anchor, int avoid) {
+  const int nearer = anchor.b >= 0 && anchor.t > 0.5 ? anchor.b : anchor.a;
+  const int other = nearer == anchor.a ? anchor.b : anchor.a;
+  return nearer == avoid && other >= 0 ? other : nearer;
+}
+
+// Removes one element of every pair that still collides, the one in most collisions first.
+int remove_colliding(Elements& elements) {
+  int removed = 0;
+  for (;;) {
+    const std::vector<Collision> collisions = find_collisions(elements);
+    if (collisions.empty()) return removed;
+    std::vector<int> count(elements.size(), 0);
+    for (const Collision& c : collisions) ++count[c.i], ++count[c.j];
+    std::vector<std::uint8_t> remove(elements.size(), 0);
+    std::vector<std::uint8_t> settled(elements.size(), 0);
+    for (const Collision& c : collisions) {
+      if (settled[c.i] || settled[c.j]) continue;
+      const int victim = count[c.j] > count[c.i] ? c.j : c.i;
+      remove[victim] = 1;
+      settled[c.i] = settled[c.j] = 1;
+      ++removed;
+    }
+    elements.erase_flagged(remove);
+  }
+}
+
+}  // namespace
+
+ElementAnchor element_anchor(const Pattern& pattern, const Elements& elements, int i, const ElementsDesign& design) {
+  ElementAnchor anchor;
+  const int source = elements.source[i];
+  if (elements.kind[i] == ElementKind::Vertex) {
+    anchor.a = source;
+  } else if (source >= 0) {
+    anchor.a = pattern.edge_a[source], anchor.b = pattern.edge_b[source];
+    anchor.t = design.edge[elements.spec[i]].t;
+  } else {
+    anchor.a = pattern.crossing_edges[-1 - source].inside_point;
+  }
+  return anchor;
+}
+
+Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface, SpringSystem& system,
+                            const Pattern& pattern, const Design& design, std::vector<glm::dvec2>& points,
+                            const ElementPlacer& place, const SolverFactory& solver,
+                            const CollisionResolutionOptions& options, CollisionResolutionReport& report,
+                            const std::atomic<bool>* stop) {
+  const auto t0 = std::chrono::steady_clock::now();
+  Elements elements = place(points, system.stray_count);
+  std::map<std::pair<int, int>, int> contact_of;  // particle pair -> its contact spring
+  LiftedPoints lifted;
+  for (int round = 0; round < options.max_rounds; ++round) {
+    const std::vector<Collision> collisions = find_collisions(elements);
+    if (collisions.empty() || (stop && stop->load())) break;
+    ++report.rounds;
+    lifted.resize(points.size());
+    lift_points(map, points, lifted);
+    for (const Collision& c : collisions) {
+      const ElementAnchor ai = element_anchor(pattern, elements, c.i, design.elements);
+      const ElementAnchor aj = element_anchor(pattern, elements, c.j, design.elements);
+      const int pj = carrier(aj, -1);
+      const int pi = carrier(ai, pj);
+      if (pi < 0 || pj < 0 || pi == pj || lifted.triangle[pi] < 0 || lifted.triangle[pj] < 0) continue;
+      if (system.stray_count[pi] == kRetired || system.stray_count[pj] == kRetired) continue;
+      // The particles must end up as much farther apart as the elements need to.
+      const double need = options.clearance * 0.5 * (elements.diameter[c.i] + elements.diameter[c.j]);
+      const double stretch = need / std::max(c.distance, 1e-9 * need);
+      const double particles = glm::length(lifted.position[pi] - lifted.position[pj]);
+      const float rest = float(std::max(particles * stretch, need));
+      const auto key = std::minmax(pi, pj);
+      const auto found = contact_of.find(key);
+      if (found != contact_of.end()) {
+        system.rest_length[found->second] = std::max(system.rest_length[found->second], rest);
+        continue;
+      }
+      contact_of.emplace(key, system.spring_count());
+      add_spring(system, pi, pj, rest, kSpringContact);
+      ++report.contact_springs;
+    }
+    rebuild_neighbors(system);
+    SolverParams params = design.solver;
+    params.iterations = options.iterations_per_round;
+    report.solver_iterations += solver(surface, system, params, design.pattern.spacing)->solve({}, stop).iterations;
+    for (int i = 0; i < system.particle_count(); ++i) points[i] = glm::dvec2(system.position[i]);
+    elements = place(points, system.stray_count);
+  }
+  report.removed = remove_colliding(elements);
+  report.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return elements;
+}
+
+}  // namespace paver

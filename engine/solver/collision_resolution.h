@@ -1,0 +1,58 @@
+#pragma once
+// Beyond the paper: no collision left. The paper's forces act on pattern springs only, so two
+// elements can still overlap: across a spring that stayed compressed, near the boundary where
+// strays are pulled back, or far apart in the pattern but near in space on a folded surface.
+// Each round finds every colliding pair in 3D (all pairs, spatial hash), adds a contact spring
+// between the particles that carry the two elements (rest length = the distance they need),
+// and runs more solver iterations, so the pattern itself makes room. What still collides after
+// the last round is removed, one element per pair, and counted.
+#include "design/design.h"
+#include "elements/elements.h"
+#include "pattern/pattern.h"
+#include "solver/solver_surface.h"
+#include "solver/spring_solver.h"
+#include "solver/spring_system.h"
+#include "map/surface_map.h"
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace paver {
+
+struct CollisionResolutionOptions {
+  int max_rounds = 8;              // detect + relax rounds
+  int iterations_per_round = 60;   // solver iterations after each round of new contact springs
+  double clearance = 1.01;         // contact rest length = clearance * (r_i + r_j)
+};
+
+struct CollisionResolutionReport {
+  int rounds = 0;
+  int contact_springs = 0;
+  int solver_iterations = 0;
+  int removed = 0;                 // elements removed because they still collided
+  double milliseconds = 0;
+};
+
+// The particle(s) an element is attached to: its point (V), the ends of its edge (E), or the
+// inside end of its crossing edge (filling).
+struct ElementAnchor {
+  int a = -1, b = -1;
+  double t = 0;                    // position between a and b (0 for V)
+};
+ElementAnchor element_anchor(const Pattern& pattern, const Elements& elements, int i, const ElementsDesign& design);
+
+// Places the elements on `points` (post-processing included), skipping retired particles.
+using ElementPlacer =
+    std::function<Elements(const std::vector<glm::dvec2>& points, const std::vector<std::uint32_t>& stray_count)>;
+
+// Resolves collisions by contact springs and returns the final elements; `system` and `points`
+// are updated in place.
+Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface, SpringSystem& system,
+                            const Pattern& pattern, const Design& design, std::vector<glm::dvec2>& points,
+                            const ElementPlacer& place, const SolverFactory& solver,
+                            const CollisionResolutionOptions& options, CollisionResolutionReport& report,
+                            const std::atomic<bool>* stop = nullptr);
+
+}  // namespace paver

@@ -1,0 +1,462 @@
+// Tests for design_io.cpp (design.json reading and writing) and design.cpp (validate_design).
+#include "io/design_io.h"
+
+#include "design/design.h"
+#include "core/input_error.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <random>
+#include <sstream>
+#include <string>
+
+namespace paver {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+// A design where every field differs from its default, with values that have no short decimal
+// form so that the round trip has to keep every bit.
+Design non_default_design() {
+  Design d;
+  d.pattern.tessellation = Tessellation::Grid;
+  d.pattern.spacing = 0.1 + 0.2;
+  d.pattern.bracing = false;
+  d.pattern.operators.push_back({EdgeOperator::Kind::Flip, 0, 0, {1, -1}, false});
+  d.pattern.operators.push_back({EdgeOperator::Kind::Add, 0, 1, {-2, 3}, true});
+  d.pattern.operators.push_back({EdgeOperator::Kind::Remove, 1, 0, {0, 1}, false});
+  d.elements.vertex.enabled = false;
+  d.elements.vertex.scale = 1.0 / 3.0;
+  d.elements.vertex.shape = ShapeKind::Gem;
+  d.elements.edge.push_back({0.25, 0.4, ShapeKind::HexPrism, {0, 2}});
+  d.elements.edge.push_back({1.0 / 7.0, 1, ShapeKind::Custom, {}});
+  d.elements.edge.push_back({0, 0.125, ShapeKind::Disc, {1}});
+  d.elements.custom_shape = "/shapes/star.obj";
+  d.elements.allow_overlap = true;
+  d.placement.offset = {-1.5, 2.0 / 3.0};
+  d.placement.rotation_deg = -37.5;
+  d.placement.scale = 1.7;
+  d.solver.c = 0.05;
+  d.solver.m = -0.025;
+  d.solver.alpha = 11;
+  d.solver.beta = 4.5;
+  d.solver.gamma = 0.9;
+  d.solver.lambda_r = 0.9;
+  d.solver.lambda_l = 0.099;
+  d.solver.lambda_g = 0.001;
+  d.solver.dt = 0.03;
+  d.solver.iterations = 3000;
+  d.solver.threshold = 2.5e-5;
+  d.solver.mu_compressed = 0.75;
+  d.solver.mu_stretched = 0.25;
+  d.solver.filter_max = 2;
+  d.solver.filter_base = FilterBase::Initial;
+  d.solver.stray_patience = 25;
+  return d;
+}
+
+void expect_same(const Design& a, const Design& b) {
+  EXPECT_EQ(a.pattern.tessellation, b.pattern.tessellation);
+  EXPECT_EQ(a.pattern.spacing, b.pattern.spacing);
+  EXPECT_EQ(a.pattern.bracing, b.pattern.bracing);
+  ASSERT_EQ(a.pattern.operators.size(), b.pattern.operators.size());
+  for (size_t i = 0; i < a.pattern.operators.size(); ++i) {
+    SCOPED_TRACE("operator " + std::to_string(i));
+    const EdgeOperator& x = a.pattern.operators[i];
+    const EdgeOperator& y = b.pattern.operators[i];
+    EXPECT_EQ(x.kind, y.kind);
+    EXPECT_EQ(x.from, y.from);
+    EXPECT_EQ(x.to, y.to);
+    EXPECT_EQ(x.offset, y.offset);
+    EXPECT_EQ(x.is_virtual, y.is_virtual);
+  }
+  EXPECT_EQ(a.elements.vertex.enabled, b.elements.vertex.enabled);
+  EXPECT_EQ(a.elements.vertex.scale, b.elements.vertex.scale);
+  EXPECT_EQ(a.elements.vertex.shape, b.elements.vertex.shape);
+  ASSERT_EQ(a.elements.edge.size(), b.elements.edge.size());
+  for (size_t i = 0; i < a.elements.edge.size(); ++i) {
+    SCOPED_TRACE("edge element " + std::to_string(i));
+    const EdgeElementDesign& x = a.elements.edge[i];
+    const EdgeElementDesign& y = b.elements.edge[i];
+    EXPECT_EQ(x.t, y.t);
+    EXPECT_EQ(x.scale, y.scale);
+    EXPECT_EQ(x.shape, y.shape);
+    EXPECT_EQ(x.cell_edges, y.cell_edges);
+  }
+  EXPECT_EQ(a.elements.custom_shape, b.elements.custom_shape);
+  EXPECT_EQ(a.elements.allow_overlap, b.elements.allow_overlap);
+  EXPECT_EQ(a.placement.offset, b.placement.offset);
+  EXPECT_EQ(a.placement.rotation_deg, b.placement.rotation_deg);
+  EXPECT_EQ(a.placement.scale, b.placement.scale);
+  const SolverParams& s = a.solver;
+  const SolverParams& t = b.solver;
+  EXPECT_EQ(s.c, t.c);
+  EXPECT_EQ(s.m, t.m);
+  EXPECT_EQ(s.alpha, t.alpha);
+  EXPECT_EQ(s.beta, t.beta);
+  EXPECT_EQ(s.gamma, t.gamma);
+  EXPECT_EQ(s.lambda_r, t.lambda_r);
+  EXPECT_EQ(s.lambda_l, t.lambda_l);
+  EXPECT_EQ(s.lambda_g, t.lambda_g);
+  EXPECT_EQ(s.dt, t.dt);
+  EXPECT_EQ(s.iterations, t.iterations);
+  EXPECT_EQ(s.threshold, t.threshold);
+  EXPECT_EQ(s.mu_compressed, t.mu_compressed);
+  EXPECT_EQ(s.mu_stretched, t.mu_stretched);
+  EXPECT_EQ(s.filter_max, t.filter_max);
+  EXPECT_EQ(s.filter_base, t.filter_base);
+  EXPECT_EQ(s.stray_patience, t.stray_patience);
+}
+
+// The InputError message `action` throws, or "" when it throws nothing.
+std::string input_error(const std::function<void()>& action) {
+  try {
+    action();
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+std::string json_error(const std::string& text) {
+  return input_error([&] { design_from_json(json::parse(text), "d.json"); });
+}
+
+std::string validation_error(const std::function<void(Design&)>& change) {
+  Design design;
+  change(design);
+  return input_error([&] { validate_design(design, "d.json"); });
+}
+
+::testing::AssertionResult contains(const std::string& text, const std::string& part) {
+  if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "\"" << text << "\" does not contain \"" << part << "\"";
+}
+
+TEST(DesignIo, RoundTripKeepsEveryField) {
+  const Design original = non_default_design();
+  expect_same(design_from_json(design_to_json(original), "mem"), original);
+  // Through text as well: the numbers must survive printing and parsing.
+  expect_same(design_from_json(json::parse(design_to_json(original).dump()), "mem"), original);
+}
+
+TEST(DesignIo, WritesEveryKey) {
+  const json j = design_to_json(Design{});
+  EXPECT_EQ(j.at("version"), 1);
+  EXPECT_EQ(j.at("pattern").size(), 4u);
+  EXPECT_EQ(j.at("elements").size(), 4u);
+  EXPECT_EQ(j.at("elements").at("vertex").size(), 3u);
+  EXPECT_EQ(j.at("placement").size(), 3u);
+  EXPECT_EQ(j.at("solver").size(), 16u);
+  const json full = design_to_json(non_default_design());
+  EXPECT_EQ(full.at("pattern").at("operators").at(1).size(), 5u);
+  EXPECT_EQ(full.at("pattern").at("operators").at(1).at("op"), "add");
+  EXPECT_EQ(full.at("elements").at("edge").at(0).size(), 4u);
+  EXPECT_EQ(full.at("elements").at("edge").at(0).at("shape"), "hex_prism");
+  EXPECT_EQ(full.at("pattern").at("tessellation"), "grid");
+}
+
+TEST(DesignIo, MissingKeysTakeDefaults) {
+  expect_same(design_from_json(json::parse(R"({"version": 1})"), "d.json"), Design{});
+
+  const Design d = design_from_json(json::parse(R"({
+    "version": 1,
+    "pattern": {"spacing": 6, "operators": [{"op": "remove", "offset": [1, 0]}]},
+    "elements": {"edge": [{"t": 0.25}]},
+    "solver": {"dt": 0.1}
+  })"),
+                                    "d.json");
+  Design expected;
+  expected.pattern.spacing = 6;
+  expected.pattern.operators.push_back({EdgeOperator::Kind::Remove, 0, 0, {1, 0}, false});
+  expected.elements.edge.push_back({0.25, EdgeElementDesign{}.scale, ShapeKind::Sphere, {}});
+  expected.solver.dt = 0.1;
+  expect_same(d, expected);
+}
+
+TEST(DesignIo, AcceptsIntegralNumbersWrittenAsDoubles) {
+  const Design d = design_from_json(json::parse(R"({"version": 1.0, "solver": {"iterations": 700.0}})"), "d.json");
+  EXPECT_EQ(d.solver.iterations, 700);
+}
+
+TEST(DesignIo, UnknownKeySuggestsTheNearestKnownKey) {
+  const std::string message = json_error(R"({"version": 1, "pattern": {"spacng": 6}})");
+  EXPECT_TRUE(contains(message, "d.json: unknown key 'pattern.spacng'"));
+  EXPECT_TRUE(contains(message, "did you mean 'pattern.spacing'?"));
+
+  EXPECT_TRUE(contains(json_error(R"({"version": 1, "Solver": {}})"), "did you mean 'solver'?"));
+}
+
+TEST(DesignIo, UnknownKeyWithoutNearMatchListsTheKnownKeys) {
+  const std::string message = json_error(R"({"version": 1, "solver": {"x": 1}})");
+  EXPECT_TRUE(contains(message, "unknown key 'solver.x'"));
+  EXPECT_FALSE(contains(message, "did you mean"));
+  EXPECT_TRUE(contains(message, "lambda_r"));
+}
+
+TEST(DesignIo, UnknownKeyInArrayNamesTheIndex) {
+  const std::string message = json_error(R"({"version": 1, "pattern": {"operators": [
+      {"op": "flip"}, {"op": "add"}, {"op": "add", "ofset": [1, 0]}]}})");
+  EXPECT_TRUE(contains(message, "unknown key 'pattern.operators[2].ofset'"));
+  EXPECT_TRUE(contains(message, "did you mean 'pattern.operators[2].offset'?"));
+}
+
+TEST(DesignIo, WrongTypeNamesTheKeyAndTheType) {
+  EXPECT_TRUE(contains(json_error(R"({"version": 1, "solver": {"dt": "fast"}})"),
+                       "d.json: 'solver.dt' must be a number, got string"));
+  EXPECT_TRUE(contains(json_error(R"({"version": 1, "pattern": {"bracing": 1}})"),
+                       "'pattern.bracing' must be true or false, got number"));
+  EXPECT_TRUE(contains(json_error(R"({"version": 1, "pattern": []})"), "'pattern' must be an object, got array"));
+  EXPECT_TRUE(contains(json_error(R"({"version": 1, "elements": {"edge": {}}})"),
+                       "'elements.edge' must be an array, got object"));
+  EXPECT_TRUE(contains(json_error(R"({"version": 1, "elements": {"custom_shape": null}})"),
+                       "'elements.custom_shape' must be a string, got null"));
+  EXPECT_TRUE(contains(json_error("[1]"), "d.json: the design must be a JSON object, got array"));
+}
+
+TEST(DesignIo, IntegersMustBeIntegers) {
+  EXPECT_TRUE(contains(json_error(R"({"version": 1, "solver": {"iterations": 1.5}})"),
+                       "'solver.iterations' must be an integer, got 1.5"));
+  EXPECT_TRUE(contains(json_error(R"({"version": 1, "solver": {"iterations": "200"}})"),
+                       "'solver.iterations' must be an integer, got string"));
+  EXPECT_TRUE(contains(json_error(R"({"version": 1, "pattern": {"operators": [{}, {}, {"offset": [1, 0.5]}]}})"),
+                       "'pattern.operators[2].offset[1]' must be an integer, got 0.5"));
+  EXPECT_TRUE(contains(json_error(R"({"version": 1, "pattern": {"operators": [{"from": 0.5}]}})"),
+                       "'pattern.operators[0].from' must be an integer"));
+  EXPECT_TRUE(contains(json_error(R"({"version": 1, "elements": {"edge": [{"cell_edges": [0, true]}]}})"),
+                       "'elements.edge[0].cell_edges[1]' must be an integer, got boolean"));
+  EXPECT_TRUE(contains(json_error(R"({"version": 1, "solver": {"iterations": 99999999999}})"),
+                       "'solver.iterations' must be an integer in"));
+}
+
+TEST(DesignIo, PairsNeedTwoEntries) {
+  EXPECT_TRUE(contains(json_error(R"({"version": 1, "pattern": {"operators": [{}, {}, {"offset": [1, 0, 0]}]}})"),
+                       "'pattern.operators[2].offset' must be an array of 2 integers, got an array of 3"));
+  EXPECT_TRUE(contains(json_error(R"({"version": 1, "placement": {"offset": 3}})"),
+                       "'placement.offset' must be an array of 2 numbers, got number"));
+}
+
+TEST(DesignIo, NamesMustBeKnown) {
+  const std::string message = json_error(R"({"version": 1, "pattern": {"tessellation": "square"}})");
+  EXPECT_TRUE(contains(message, "'pattern.tessellation' must be one of \"tri\", \"grid\", \"hex\", got \"square\""));
+  EXPECT_TRUE(contains(json_error(R"({"version": 1, "pattern": {"operators": [{"op": "split"}]}})"),
+                       "'pattern.operators[0].op' must be one of \"flip\", \"add\", \"remove\""));
+  EXPECT_TRUE(contains(json_error(R"({"version": 1, "elements": {"vertex": {"shape": "cube"}}})"),
+                       "'elements.vertex.shape' must be one of \"sphere\", \"gem\""));
+}
+
+TEST(DesignIo, VersionIsRequiredAndMustBeOne) {
+  EXPECT_TRUE(contains(json_error(R"({"pattern": {}})"), "d.json: missing key 'version'"));
+  const std::string newer = json_error(R"({"version": 2, "future_key": 1})");
+  EXPECT_TRUE(contains(newer, "'version' is 2"));
+  EXPECT_TRUE(contains(newer, "reads only version 1"));
+  EXPECT_TRUE(contains(json_error(R"({"version": "1"})"), "'version' must be an integer, got string"));
+}
+
+TEST(DesignIo, OutOfRangeValuesAreRejectedWithTheirKey) {
+  EXPECT_TRUE(contains(json_error(R"({"version": 1, "solver": {"dt": 0}})"), "d.json: 'solver.dt' must be in (0, 1], got 0"));
+  EXPECT_TRUE(contains(json_error(R"({"version": 1, "elements": {"edge": [{}, {"t": 1.5}]}})"),
+                       "'elements.edge[1].t' must be in [0, 1], got 1.5"));
+  EXPECT_TRUE(contains(json_error(R"({"version": 1, "pattern": {"operators": [{"op": "flip", "virtual": true}]}})"),
+                       "'pattern.operators[0].virtual' may only be true for an \"add\" operator"));
+}
+
+TEST(DesignValidate, DefaultsAreValid) {
+  EXPECT_EQ(validation_error([](Design&) {}), "");
+  EXPECT_EQ(input_error([] { validate_design(non_default_design(), "d.json"); }), "");
+}
+
+TEST(DesignValidate, EachRangeRuleNamesKeyRangeAndValue) {
+  struct Case {
+    std::function<void(Design&)> change;
+    std::string expected;
+  };
+  const Case cases[] = {
+      {[](Design& d) { d.pattern.spacing = -1; }, "'pattern.spacing' must be finite and >= 0"},
+      {[](Design& d) { d.pattern.spacing = INFINITY; }, "'pattern.spacing' must be finite and >= 0"},
+      {[](Design& d) { d.pattern.operators.push_back({EdgeOperator::Kind::Add, -1, 0, {1, 0}, false}); },
+       "'pattern.operators[0].from' must be >= 0"},
+      {[](Design& d) { d.pattern.operators.push_back({EdgeOperator::Kind::Add, 0, -2, {1, 0}, false}); },
+       "'pattern.operators[0].to' must be >= 0 (a unit-cell vertex index), got -2"},
+      {[](Design& d) { d.elements.vertex.scale = 0; }, "'elements.vertex.scale' must be in (0, 1]"},
+      {[](Design& d) { d.elements.vertex.scale = 1.25; }, "'elements.vertex.scale' must be in (0, 1]"},
+      {[](Design& d) { d.elements.edge.push_back({0.5, 0, ShapeKind::Sphere, {}}); },
+       "'elements.edge[0].scale' must be in (0, 1]"},
+      {[](Design& d) { d.elements.edge.push_back({1.5, 0.5, ShapeKind::Sphere, {}}); },
+       "'elements.edge[0].t' must be in [0, 1], got 1.5"},
+      {[](Design& d) { d.elements.edge.push_back({-0.1, 0.5, ShapeKind::Sphere, {}}); },
+       "'elements.edge[0].t' must be in [0, 1], got -0.1"},
+      {[](Design& d) { d.elements.edge.push_back({0.5, 0.5, ShapeKind::Sphere, {0, -1}}); },
+       "'elements.edge[0].cell_edges[1]' must be >= 0"},
+      {[](Design& d) { d.elements.vertex.shape = ShapeKind::Custom; },
+       "'elements.vertex.shape' is \"custom\" but 'elements.custom_shape' is empty"},
+      {[](Design& d) { d.elements.edge.push_back({0.5, 0.5, ShapeKind::Custom, {}}); },
+       "'elements.edge[0].shape' is \"custom\" but 'elements.custom_shape' is empty"},
+      {[](Design& d) { d.placement.scale = 0; }, "'placement.scale' must be finite and > 0, got 0"},
+      {[](Design& d) { d.placement.scale = INFINITY; }, "'placement.scale' must be finite and > 0, got inf"},
+      {[](Design& d) { d.placement.rotation_deg = NAN; }, "'placement.rotation_deg' must be finite"},
+      {[](Design& d) { d.placement.offset.y = -INFINITY; }, "'placement.offset[1]' must be finite"},
+      {[](Design& d) { d.solver.c = -0.1; }, "'solver.c' must be finite and >= 0, got -0.1"},
+      {[](Design& d) { d.solver.m = NAN; }, "'solver.m' must be finite"},
+      {[](Design& d) {
+         d.solver.c = 0.25;
+         d.solver.m = -0.5;
+       },
+       "c + m must be >= 0 (eq. 5: the further-apart distance cannot be negative); got c = 0.25, m = -0.5"},
+      {[](Design& d) { d.solver.alpha = 0; }, "'solver.alpha' must be finite and > 0, got 0"},
+      {[](Design& d) { d.solver.beta = INFINITY; }, "'solver.beta' must be finite"},
+      {[](Design& d) { d.solver.gamma = NAN; }, "'solver.gamma' must be finite"},
+      {[](Design& d) { d.solver.lambda_r = -1; }, "'solver.lambda_r' must be finite and >= 0"},
+      {[](Design& d) { d.solver.lambda_l = -0.01; }, "'solver.lambda_l' must be finite and >= 0"},
+      {[](Design& d) { d.solver.lambda_g = INFINITY; }, "'solver.lambda_g' must be finite and >= 0"},
+      {[](Design& d) { d.solver.dt = 0; }, "'solver.dt' must be in (0, 1], got 0"},
+      {[](Design& d) { d.solver.dt = 1.5; }, "'solver.dt' must be in (0, 1], got 1.5"},
+      {[](Design& d) { d.solver.iterations = -1; }, "'solver.iterations' must be in [0, 1000000], got -1"},
+      {[](Design& d) { d.solver.iterations = 1000001; }, "'solver.iterations' must be in [0, 1000000]"},
+      {[](Design& d) { d.solver.threshold = 0; }, "'solver.threshold' must be finite and > 0, got 0"},
+      {[](Design& d) { d.solver.mu_compressed = 1.5; }, "'solver.mu_compressed' must be in [0, 1], got 1.5"},
+      {[](Design& d) { d.solver.mu_stretched = -0.5; }, "'solver.mu_stretched' must be in [0, 1]"},
+      {[](Design& d) { d.solver.filter_max = 0.9; }, "'solver.filter_max' must be finite and >= 1, got 0.9"},
+      {[](Design& d) { d.solver.stray_patience = -1; }, "'solver.stray_patience' must be in [0, 1000000], got -1"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.expected);
+    const std::string message = validation_error(c.change);
+    EXPECT_EQ(message.rfind("d.json: ", 0), 0u) << message;
+    EXPECT_TRUE(contains(message, c.expected));
+  }
+}
+
+TEST(DesignValidate, BoundaryValuesAreAccepted) {
+  EXPECT_EQ(validation_error([](Design& d) {
+              d.pattern.spacing = 0;
+              d.elements.vertex.scale = 1;
+              d.elements.edge.push_back({0, 1, ShapeKind::Sphere, {0}});
+              d.elements.edge.push_back({1, 1e-9, ShapeKind::Gem, {}});
+              d.solver.c = 0;
+              d.solver.m = 0;
+              d.solver.dt = 1;
+              d.solver.iterations = 0;
+              d.solver.mu_compressed = 0;
+              d.solver.mu_stretched = 1;
+              d.solver.filter_max = 1;
+              d.solver.lambda_g = 0;
+            }),
+            "");
+  EXPECT_EQ(validation_error([](Design& d) {
+              d.solver.c = 0.5;
+              d.solver.m = -0.5;
+              d.solver.iterations = 1000000;
+            }),
+            "");
+  // A disabled vertex element does not use its shape, so it needs no custom_shape.
+  EXPECT_EQ(validation_error([](Design& d) {
+              d.elements.vertex.enabled = false;
+              d.elements.vertex.shape = ShapeKind::Custom;
+            }),
+            "");
+  EXPECT_EQ(validation_error([](Design& d) {
+              d.elements.edge.push_back({0.5, 0.5, ShapeKind::Custom, {}});
+              d.elements.custom_shape = "star.obj";
+            }),
+            "");
+}
+
+class DesignIoFile : public ::testing::Test {
+protected:
+  void SetUp() override {
+    const std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    dir_ = fs::temp_directory_path() / ("paver_design_io_" + name + "_" + std::to_string(std::random_device{}()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path write(const fs::path& relative, const std::string& text) const {
+    const fs::path path = dir_ / relative;
+    fs::create_directories(path.parent_path());
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+  }
+
+  static std::string read(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(DesignIoFile, SyntaxErrorNamesLineAndColumn) {
+  const fs::path path = write("design.json",
+                              "{\n"
+                              "  \"version\": 1,\n"
+                              "  \"pattern\": {\n"
+                              "    \"spacing\": 6.0,,\n"
+                              "  }\n"
+                              "}\n");
+  const std::string message = input_error([&] { load_design(path); });
+  EXPECT_TRUE(contains(message, path.string() + ":4:20: JSON syntax error: ")) << message;
+  // The reason is kept short: nlohmann's own prefix and position are dropped.
+  EXPECT_FALSE(contains(message, "json.exception"));
+  EXPECT_FALSE(contains(message, "column"));
+}
+
+TEST_F(DesignIoFile, TruncatedFileNamesTheEnd) {
+  const fs::path path = write("design.json", "{\n  \"version\": 1,\n");
+  const std::string message = input_error([&] { load_design(path); });
+  EXPECT_TRUE(contains(message, path.string() + ":3:1: JSON syntax error: ")) << message;
+  EXPECT_TRUE(contains(message, "end of input"));
+}
+
+TEST_F(DesignIoFile, MissingFileIsNamed) {
+  const fs::path path = dir_ / "nowhere.json";
+  EXPECT_TRUE(contains(input_error([&] { load_design(path); }), path.string() + ": no such design file"));
+  EXPECT_TRUE(contains(input_error([&] { load_design(dir_); }), dir_.string() + ": is a folder"));
+}
+
+TEST_F(DesignIoFile, ErrorsInsideTheFileNameTheFile) {
+  const fs::path path = write("design.json", R"({"version": 1, "solver": {"dt": 0}})");
+  EXPECT_TRUE(contains(input_error([&] { load_design(path); }), path.string() + ": 'solver.dt' must be in (0, 1]"));
+}
+
+TEST_F(DesignIoFile, RelativeCustomShapeIsResolvedAgainstTheDesignFolder) {
+  const std::string text = R"({"version": 1, "elements": {"vertex": {"shape": "custom"},
+                              "custom_shape": "shapes/../shapes/star.obj"}})";
+  const fs::path path = write("project/design.json", text);
+  const Design loaded = load_design(path);
+  EXPECT_EQ(loaded.elements.custom_shape, (fs::absolute(dir_) / "project" / "shapes" / "star.obj").string());
+  EXPECT_TRUE(fs::path(loaded.elements.custom_shape).is_absolute());
+
+  // design_from_json has no folder to resolve against: it keeps the path as given.
+  EXPECT_EQ(design_from_json(json::parse(text), "mem").elements.custom_shape, "shapes/../shapes/star.obj");
+
+  // An absolute path is kept as it is.
+  const fs::path absolute_path = write("abs.json", R"({"version": 1, "elements": {"custom_shape": "/opt/gem.obj"}})");
+  EXPECT_EQ(load_design(absolute_path).elements.custom_shape, "/opt/gem.obj");
+}
+
+TEST_F(DesignIoFile, SaveThenLoadGivesTheSameDesign) {
+  const Design original = non_default_design();
+  const fs::path path = dir_ / "saved.json";
+  save_design(path, original);
+  expect_same(load_design(path), original);
+
+  // Pretty-printed, 2-space indent, version first, trailing newline.
+  const std::string text = read(path);
+  EXPECT_EQ(text.rfind("{\n  \"version\": 1,\n  \"pattern\": {\n    \"tessellation\": \"grid\"", 0), 0u) << text;
+  EXPECT_EQ(text.back(), '\n');
+
+  save_design(path, Design{});
+  expect_same(load_design(path), Design{});
+}
+
+}  // namespace
+}  // namespace paver

@@ -1,0 +1,163 @@
+#include "map/arap_parameterization.h"
+#include "map/lscm.h"
+#include "map/map_quality.h"
+#include "mesh/mesh_loader.h"
+#include "map/tutte_embedding.h"
+#include "test_meshes.h"
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace paver {
+namespace {
+
+double uv_area(const SurfaceMesh& mesh, const std::vector<glm::dvec2>& uv) {
+  double a = 0;
+  for (const auto& t : mesh.triangles) {
+    const glm::dvec2 e1 = uv[t.y] - uv[t.x], e2 = uv[t.z] - uv[t.x];
+    a += 0.5 * (e1.x * e2.y - e1.y * e2.x);
+  }
+  return a;
+}
+
+void expect_bijective_and_area_preserving(const SurfaceMesh& mesh, const Parameterization& p, const std::string& name) {
+  EXPECT_EQ(p.quality.flipped_triangles, 0) << name;
+  EXPECT_EQ(p.quality.boundary_intersections, 0) << name;
+  EXPECT_EQ(count_flipped_triangles(mesh, p.uv), 0) << name;
+  EXPECT_NEAR(uv_area(mesh, p.uv), surface_area(mesh), 1e-9 * surface_area(mesh)) << name;
+  // Not degenerate either: the barrier keeps every triangle a real triangle.
+  EXPECT_GT(p.quality.area_ratio_min, 1e-3) << name;
+  EXPECT_TRUE(std::isfinite(p.quality.stretch_max)) << name;
+}
+
+TEST(ArapParameterization, BijectiveOnEveryBundledSurface) {
+  for (const auto& name : test::bundled_surface_names()) {
+    const SurfaceMesh mesh = load_surface(test::bundled_surface(name)).mesh;
+    const Parameterization p = parameterize_arap(mesh);
+    expect_bijective_and_area_preserving(mesh, p, name);
+  }
+}
+
+TEST(ArapParameterization, BijectiveOnRealScannedMeshes) {
+  for (const auto& name : test::scanned_mesh_names()) {
+    const SurfaceMesh mesh = load_surface(test::scanned_mesh(name)).mesh;
+    for (ArapStart start : {ArapStart::Auto, ArapStart::Tutte}) {
+      ArapOptions options;
+      options.start = start;
+      const Parameterization p = parameterize_arap(mesh, options);
+      expect_bijective_and_area_preserving(mesh, p, name);
+    }
+  }
+}
+
+// The case that motivates the injective line search: plain ARAP folds this nearly closed head.
+TEST(ArapParameterization, BunnyheadFoldsWithPlainArapButNotWithOurs) {
+  const SurfaceMesh mesh = load_surface(test::scanned_mesh("bunnyhead")).mesh;
+  ArapOptions plain;
+  plain.start = ArapStart::Tutte;
+  plain.injective = false;
+  plain.barrier_weight = 0;
+  plain.max_iterations = 100;
+  const Parameterization folded = parameterize_arap(mesh, plain);
+  EXPECT_GT(folded.quality.flipped_triangles + folded.quality.boundary_intersections, 50);
+
+  ArapOptions ours;
+  ours.start = ArapStart::Tutte;
+  const Parameterization p = parameterize_arap(mesh, ours);
+  EXPECT_EQ(p.quality.flipped_triangles, 0);
+  EXPECT_EQ(p.quality.boundary_intersections, 0);
+  EXPECT_LT(p.report.final_energy, p.report.initial_energy);
+}
+
+// A developable strip (a third of a cylinder) flattens isometrically.
+TEST(ArapParameterization, DevelopableStripIsIsometric) {
+  const double radius = 20, length = 60;
+  const SurfaceMesh strip = test::grid_surface(40, 30, [&](double u, double v) {
+    const double angle = u * 2 * std::numbers::pi / 3;
+    return glm::dvec3(radius * std::cos(angle), radius * std::sin(angle), v * length);
+  });
+  for (ArapStart start : {ArapStart::Auto, ArapStart::Tutte}) {
+    ArapOptions options;
+    options.start = start;
+    options.max_iterations = 2000;
+    options.tolerance = 1e-12;
+    options.barrier_weight = 0;
+    const Parameterization p = parameterize_arap(strip, options);
+    EXPECT_EQ(p.quality.flipped_triangles, 0);
+    EXPECT_NEAR(p.quality.stretch_mean, 1.0, 1e-3);
+    EXPECT_NEAR(p.quality.stretch_max, 1.0, 1e-3);
+    EXPECT_NEAR(p.quality.area_ratio_min, 1.0, 1e-3);
+    EXPECT_NEAR(p.quality.area_ratio_max, 1.0, 1e-3);
+  }
+}
+
+TEST(ArapParameterization, DefaultBarrierKeepsDevelopableStripNearlyIsometric) {
+  const SurfaceMesh strip = test::grid_surface(30, 20, [](double u, double v) {
+    return glm::dvec3(20 * std::cos(2 * u), 20 * std::sin(2 * u), 40 * v);
+  });
+  const Parameterization p = parameterize_arap(strip);
+  EXPECT_NEAR(p.quality.stretch_max, 1.0, 1e-3);
+  EXPECT_LT(p.quality.area_distortion_mean, 1e-3);
+}
+
+TEST(ArapParameterization, EnergyNeverIncreases) {
+  const SurfaceMesh mesh = load_surface(test::bundled_surface("saddle")).mesh;
+  ArapOptions options;
+  options.start = ArapStart::Tutte;
+  ArapSolver solver(mesh, options);
+  double previous = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 20; ++i) {
+    solver.iterate(1);
+    EXPECT_LE(solver.energy(), previous);
+    previous = solver.energy();
+    EXPECT_EQ(count_flipped_triangles(mesh, solver.uv()), 0);
+  }
+}
+
+TEST(Lscm, PlanarMeshIsReproducedUpToASimilarity) {
+  const SurfaceMesh plane = test::grid_surface(10, 8, [](double u, double v) {
+    return glm::dvec3(30 * u + 3 * v * v, 20 * v, 0);
+  });
+  const auto uv = lscm(plane);
+  const MapQuality q = measure_map(plane, uv);
+  EXPECT_EQ(q.flipped_triangles, 0);
+  EXPECT_NEAR(q.stretch_max, 1.0, 1e-6);
+  EXPECT_NEAR(q.area_ratio_max, 1.0, 1e-6);
+}
+
+TEST(TutteEmbedding, BoundaryOnACircleAndBijective) {
+  const SurfaceMesh mesh = load_surface(test::scanned_mesh("bunnyhead")).mesh;
+  const auto uv = tutte_embedding(mesh);
+  const double radius = std::sqrt(surface_area(mesh) / std::numbers::pi);
+  for (int b : mesh.boundary_loop) EXPECT_NEAR(glm::length(uv[b]), radius, 1e-9 * radius);
+  EXPECT_EQ(count_flipped_triangles(mesh, uv), 0);
+  EXPECT_EQ(count_loop_self_intersections(mesh.boundary_loop, uv), 0);
+}
+
+TEST(MapQuality, CountsFlipsAndBoundaryCrossings) {
+  const SurfaceMesh plane = test::grid_surface(4, 4, [](double u, double v) { return glm::dvec3(u, v, 0); });
+  std::vector<glm::dvec2> uv;
+  for (const auto& p : plane.positions) uv.emplace_back(p.x, p.y);
+  EXPECT_EQ(count_flipped_triangles(plane, uv), 0);
+  EXPECT_EQ(count_loop_self_intersections(plane.boundary_loop, uv), 0);
+  // Pull an interior vertex across its neighbours: the triangles around it fold.
+  const int centre = 2 * 5 + 2;
+  uv[centre] = {0.9, 0.9};
+  EXPECT_GT(count_flipped_triangles(plane, uv), 0);
+  // Push a boundary vertex through the opposite side of the square: the loop crosses itself.
+  uv[centre] = {0.5, 0.5};
+  uv[plane.boundary_loop[2]] = {0.5, 1.5};
+  EXPECT_GT(count_loop_self_intersections(plane.boundary_loop, uv), 0);
+}
+
+TEST(MapQuality, FigureEightLoopCrossesOnce) {
+  const std::vector<glm::dvec2> uv = {{0, 0}, {1, 1}, {1, 0}, {0, 1}};
+  EXPECT_EQ(count_loop_self_intersections({0, 1, 2, 3}, uv), 1);
+  EXPECT_EQ(count_loop_self_intersections({0, 2, 1, 3}, uv), 0);
+}
+
+}  // namespace
+}  // namespace paver

@@ -1,0 +1,702 @@
+// Tests for engine/mesh/mesh_loader.cpp (and surface_mesh.cpp): every refusal names the file and
+// the problem, every repair is reported, and the real meshes load with their known counts.
+#include "core/input_error.h"
+#include "mesh/mesh_loader.h"
+#include "mesh/surface_mesh.h"
+
+#include "input_error_assertions.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <numbers>
+#include <random>
+#include <set>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#ifndef PAVER_SHARED_MESHES_DIR
+#define PAVER_SHARED_MESHES_DIR "/work/shared/meshes"
+#endif
+
+namespace paver {
+namespace {
+
+using test::Contains;
+using test::error_of;
+
+namespace fs = std::filesystem;
+
+// A fresh directory per test, removed afterwards.
+class MeshLoaderTest : public ::testing::Test {
+protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() /
+           ("paver_mesh_loader_" + std::string(info->name()) + "_" + std::to_string(std::random_device{}()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::error_code ignored;
+    fs::remove_all(dir_, ignored);
+  }
+
+  fs::path write(const std::string& name, const std::string& content) const {
+    const fs::path path = dir_ / name;
+    std::ofstream(path, std::ios::binary) << content;
+    return path;
+  }
+
+  fs::path dir_;
+};
+
+// The InputError message `load` throws, or a test failure if it throws none.
+std::string load_error(const fs::path& path) {
+  return error_of([&] { load_surface(path); });
+}
+
+bool any_warning_contains(const LoadedSurface& loaded, const std::string& part) {
+  for (const std::string& warning : loaded.warnings)
+    if (warning.find(part) != std::string::npos) return true;
+  return false;
+}
+
+std::uint64_t directed(int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); }
+
+// The invariants SurfaceMesh promises: valid indices, consistent orientation (each directed edge
+// at most once), and a boundary loop that walks every boundary edge along its direction.
+void expect_valid_surface(const SurfaceMesh& mesh) {
+  std::set<std::uint64_t> sides;
+  for (const glm::ivec3& t : mesh.triangles)
+    for (int c = 0; c < 3; ++c) {
+      const int a = t[c], b = t[(c + 1) % 3];
+      ASSERT_GE(a, 0);
+      ASSERT_LT(a, mesh.vertex_count());
+      EXPECT_TRUE(sides.insert(directed(a, b)).second) << "directed edge " << a << "->" << b << " used twice";
+    }
+  int boundary_edges = 0;
+  for (std::uint64_t side : sides)
+    if (!sides.count(directed(int(side & 0xffffffffu), int(side >> 32)))) ++boundary_edges;
+  const std::vector<int>& loop = mesh.boundary_loop;
+  EXPECT_EQ(int(loop.size()), boundary_edges);
+  EXPECT_EQ(std::set<int>(loop.begin(), loop.end()).size(), loop.size()) << "loop visits a vertex twice";
+  for (size_t i = 0; i < loop.size(); ++i) {
+    const int a = loop[i], b = loop[(i + 1) % loop.size()];
+    EXPECT_TRUE(sides.count(directed(a, b))) << "loop step " << a << "->" << b << " is not a face side";
+    EXPECT_FALSE(sides.count(directed(b, a))) << "loop step " << a << "->" << b << " is not a boundary edge";
+  }
+  std::vector<char> used(mesh.positions.size(), 0);
+  for (const glm::ivec3& t : mesh.triangles) used[t.x] = used[t.y] = used[t.z] = 1;
+  for (size_t v = 0; v < used.size(); ++v) EXPECT_TRUE(used[v]) << "vertex " << v << " is unreferenced";
+}
+
+// An OBJ of an nx x ny grid of unit quads in the z = 0 plane, as quads or split into triangles.
+std::string grid_obj(int nx, int ny, bool quads) {
+  std::ostringstream out;
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i) out << "v " << i << ' ' << j << " 0\n";
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const int a = j * (nx + 1) + i + 1, b = a + 1, c = a + nx + 1, d = c + 1;
+      if (quads) out << "f " << a << ' ' << b << ' ' << d << ' ' << c << '\n';
+      else out << "f " << a << ' ' << b << ' ' << d << "\nf " << a << ' ' << d << ' ' << c << '\n';
+    }
+  return out.str();
+}
+
+// Real meshes, loaded once for the suite.
+const LoadedSurface& real_mesh(const std::string& name) {
+  static std::map<std::string, LoadedSurface> cache;
+  auto found = cache.find(name);
+  if (found == cache.end())
+    found = cache.emplace(name, load_surface(fs::path(PAVER_SHARED_MESHES_DIR) / name)).first;
+  return found->second;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Real meshes
+
+TEST(MeshLoaderRealMeshes, BunnyheadCountsAndBoundary) {
+  const LoadedSurface& loaded = real_mesh("bunnyhead.obj");
+  EXPECT_EQ(loaded.mesh.face_count(), 3000);
+  EXPECT_EQ(loaded.mesh.vertex_count(), 1550);
+  EXPECT_EQ(loaded.mesh.boundary_loop.size(), 98u);
+  EXPECT_TRUE(loaded.warnings.empty()) << loaded.warnings.front();
+  expect_valid_surface(loaded.mesh);
+}
+
+TEST(MeshLoaderRealMeshes, LiliumCountsAndBoundary) {
+  const LoadedSurface& loaded = real_mesh("lilium.obj");
+  EXPECT_EQ(loaded.mesh.face_count(), 6590);
+  EXPECT_EQ(loaded.mesh.vertex_count(), 3389);
+  EXPECT_FALSE(loaded.mesh.boundary_loop.empty());
+  expect_valid_surface(loaded.mesh);
+}
+
+TEST(MeshLoaderRealMeshes, MazeCountsAndBoundary) {
+  const LoadedSurface& loaded = real_mesh("maze.obj");
+  EXPECT_EQ(loaded.mesh.face_count(), 9174);
+  EXPECT_EQ(loaded.mesh.vertex_count(), 6120);
+  EXPECT_EQ(loaded.mesh.boundary_loop.size(), 3064u);
+  expect_valid_surface(loaded.mesh);
+}
+
+TEST(MeshLoaderRealMeshes, AreaAndDiagonalArePositive) {
+  const SurfaceMesh& mesh = real_mesh("bunnyhead.obj").mesh;
+  EXPECT_GT(surface_area(mesh), 0.0);
+  EXPECT_GT(bounding_box_diagonal(mesh), 0.0);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Positive cases per format
+
+TEST_F(MeshLoaderTest, QuadGridIsTriangulated) {
+  const LoadedSurface loaded = load_surface(write("grid.obj", grid_obj(4, 3, true)));
+  EXPECT_EQ(loaded.mesh.face_count(), 2 * 12);
+  EXPECT_EQ(loaded.mesh.vertex_count(), 20);
+  EXPECT_EQ(loaded.mesh.boundary_loop.size(), 14u);
+  EXPECT_TRUE(loaded.warnings.empty());
+  EXPECT_NEAR(surface_area(loaded.mesh), 12.0, 1e-12);
+  EXPECT_NEAR(bounding_box_diagonal(loaded.mesh), 5.0, 1e-12);
+  expect_valid_surface(loaded.mesh);
+}
+
+TEST_F(MeshLoaderTest, NonConvexPolygonIsEarClipped) {
+  // A U shape: a fan from its first vertex would fold over the notch.
+  const LoadedSurface loaded = load_surface(write("u.obj",
+                                                  "v 0 0 0\nv 3 0 0\nv 3 3 0\nv 2 3 0\nv 2 1 0\nv 1 1 0\nv 1 3 0\n"
+                                                  "v 0 3 0\nf 1 2 3 4 5 6 7 8\n"));
+  ASSERT_EQ(loaded.mesh.face_count(), 6);
+  EXPECT_NEAR(surface_area(loaded.mesh), 7.0, 1e-12);
+  for (const glm::ivec3& t : loaded.mesh.triangles) {
+    const glm::dvec3& a = loaded.mesh.positions[t.x];
+    const double z = glm::cross(loaded.mesh.positions[t.y] - a, loaded.mesh.positions[t.z] - a).z;
+    EXPECT_GT(z, 0.0) << "a triangle is folded over";
+  }
+  expect_valid_surface(loaded.mesh);
+}
+
+TEST_F(MeshLoaderTest, CollinearPolygonVerticesAreKept) {
+  // A square with a vertex in the middle of each side, as one octagon.
+  const LoadedSurface loaded = make_surface(
+      {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {2, 1, 0}, {2, 2, 0}, {1, 2, 0}, {0, 2, 0}, {0, 1, 0}},
+      {{0, 1, 2, 3, 4, 5, 6, 7}}, "octagon");
+  EXPECT_EQ(loaded.mesh.face_count(), 6);
+  EXPECT_EQ(loaded.dropped_degenerate_faces, 0);
+  EXPECT_NEAR(surface_area(loaded.mesh), 4.0, 1e-12);
+  EXPECT_EQ(loaded.mesh.boundary_loop.size(), 8u);
+  expect_valid_surface(loaded.mesh);
+}
+
+TEST_F(MeshLoaderTest, SelfIntersectingPolygonFallsBackToFan) {
+  // A pentagram: no ear exists, so the polygon becomes a fan; its topology is still a disk.
+  std::vector<glm::dvec3> positions;
+  for (int i = 0; i < 5; ++i) {
+    const double angle = 2 * std::numbers::pi * i / 5;
+    positions.emplace_back(std::cos(angle), std::sin(angle), 0);
+  }
+  const LoadedSurface loaded = make_surface(positions, {{0, 2, 4, 1, 3}}, "pentagram");
+  EXPECT_EQ(loaded.mesh.face_count(), 3);
+  EXPECT_EQ(loaded.mesh.boundary_loop.size(), 5u);
+  expect_valid_surface(loaded.mesh);
+}
+
+TEST_F(MeshLoaderTest, ReadsOff) {
+  const LoadedSurface loaded =
+      load_surface(write("square.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n"));
+  EXPECT_EQ(loaded.mesh.face_count(), 2);
+  EXPECT_EQ(loaded.mesh.boundary_loop.size(), 4u);
+  expect_valid_surface(loaded.mesh);
+}
+
+TEST_F(MeshLoaderTest, ReadsAsciiPly) {
+  const LoadedSurface loaded = load_surface(write("square.ply",
+                                                  "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\n"
+                                                  "property float y\nproperty float z\nelement face 2\n"
+                                                  "property list uchar int vertex_indices\nend_header\n"
+                                                  "0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n"));
+  EXPECT_EQ(loaded.mesh.face_count(), 2);
+  EXPECT_EQ(loaded.mesh.vertex_count(), 4);
+  expect_valid_surface(loaded.mesh);
+}
+
+std::string stl_facet(const char* a, const char* b, const char* c) {
+  return std::string("facet normal 0 0 1\nouter loop\nvertex ") + a + "\nvertex " + b + "\nvertex " + c +
+         "\nendloop\nendfacet\n";
+}
+
+TEST_F(MeshLoaderTest, ReadsAsciiStlAndMergesCorners) {
+  const LoadedSurface loaded = load_surface(write(
+      "square.STL", "solid square\n" + stl_facet("0 0 0", "1 0 0", "1 1 0") + stl_facet("0 0 0", "1 1 0", "0 1 0") +
+                        "endsolid square\n"));
+  EXPECT_EQ(loaded.mesh.face_count(), 2);
+  EXPECT_EQ(loaded.mesh.vertex_count(), 4);
+  expect_valid_surface(loaded.mesh);
+}
+
+TEST_F(MeshLoaderTest, StlDegenerateFacetIsCounted) {
+  // OpenMesh merges the repeated corner and drops the facet itself; it must still be reported.
+  const LoadedSurface loaded = load_surface(write(
+      "square.stl", "solid square\n" + stl_facet("0 0 0", "1 0 0", "1 1 0") + stl_facet("0 0 0", "1 1 0", "0 1 0") +
+                        stl_facet("0 0 0", "0 0 0", "0 1 0") + "endsolid square\n"));
+  EXPECT_EQ(loaded.mesh.face_count(), 2);
+  EXPECT_EQ(loaded.dropped_degenerate_faces, 1);
+  EXPECT_TRUE(any_warning_contains(loaded, "dropped 1 degenerate face"));
+}
+
+TEST_F(MeshLoaderTest, ReadsBinaryStl) {
+  std::string bytes(80, ' ');
+  auto put_u32 = [&](std::uint32_t v) {
+    for (int i = 0; i < 4; ++i) bytes.push_back(char((v >> (8 * i)) & 0xff));
+  };
+  auto put_float = [&](float f) {
+    std::uint32_t v;
+    std::memcpy(&v, &f, 4);
+    put_u32(v);
+  };
+  put_u32(2);
+  const float corners[2][3][3] = {{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}}, {{0, 0, 0}, {1, 1, 0}, {0, 1, 0}}};
+  for (const auto& triangle : corners) {
+    for (float n : {0.f, 0.f, 1.f}) put_float(n);
+    for (const auto& corner : triangle)
+      for (float x : corner) put_float(x);
+    bytes += std::string(2, '\0');
+  }
+  const LoadedSurface loaded = load_surface(write("square.stl", bytes));
+  EXPECT_EQ(loaded.mesh.face_count(), 2);
+  expect_valid_surface(loaded.mesh);
+}
+
+TEST_F(MeshLoaderTest, MakeSurfaceBuildsFromMemory) {
+  const LoadedSurface loaded =
+      make_surface({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2, 3}}, "in-memory square");
+  EXPECT_EQ(loaded.mesh.face_count(), 2);
+  EXPECT_NEAR(surface_area(loaded.mesh), 1.0, 1e-15);
+  expect_valid_surface(loaded.mesh);
+}
+
+TEST_F(MeshLoaderTest, LargeGridIsHandled) {
+  const int n = 200;  // 79,202 triangles
+  std::vector<glm::dvec3> positions;
+  std::vector<std::vector<int>> faces;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) positions.emplace_back(i, j, 0.1 * std::sin(0.3 * i) * std::cos(0.2 * j));
+  for (int j = 0; j + 1 < n; ++j)
+    for (int i = 0; i + 1 < n; ++i) {
+      const int a = j * n + i;
+      faces.push_back({a, a + 1, a + n + 1});
+      faces.push_back({a, a + n + 1, a + n});
+    }
+  const LoadedSurface loaded = make_surface(std::move(positions), faces, "grid");
+  EXPECT_EQ(loaded.mesh.face_count(), 2 * (n - 1) * (n - 1));
+  EXPECT_EQ(loaded.mesh.boundary_loop.size(), size_t(4 * (n - 1)));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Files that cannot be read
+
+TEST_F(MeshLoaderTest, MissingFileIsReported) {
+  const std::string message = load_error(dir_ / "nowhere.obj");
+  EXPECT_TRUE(Contains(message, "nowhere.obj"));
+  EXPECT_TRUE(Contains(message, "not found"));
+}
+
+TEST_F(MeshLoaderTest, UnsupportedExtensionListsFormats) {
+  const std::string message = load_error(write("mesh.3ds", "whatever"));
+  EXPECT_TRUE(Contains(message, ".3ds"));
+  EXPECT_TRUE(Contains(message, "OBJ, OFF, PLY"));
+  EXPECT_TRUE(Contains(message, "STL"));
+}
+
+TEST_F(MeshLoaderTest, EmptyFileContainsNoFaces) {
+  const std::string message = load_error(write("empty.obj", ""));
+  EXPECT_TRUE(Contains(message, "empty.obj: "));
+  EXPECT_TRUE(Contains(message, "contains no faces"));
+}
+
+TEST_F(MeshLoaderTest, PointCloudContainsNoFaces) {
+  EXPECT_TRUE(Contains(load_error(write("points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n")), "contains no faces"));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Malformed text: the line is named
+
+TEST_F(MeshLoaderTest, ObjVertexWithTwoCoordinates) {
+  const std::string message = load_error(write("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1\nf 1 2 3\n"));
+  EXPECT_TRUE(Contains(message, "bad.obj: line 3"));
+  EXPECT_TRUE(Contains(message, "3 coordinates"));
+}
+
+TEST_F(MeshLoaderTest, ObjVertexWithNonNumber) {
+  const std::string message = load_error(write("bad.obj", "# a comment\nv 0 0 0\nv 1 x 0\nv 0 1 0\nf 1 2 3\n"));
+  EXPECT_TRUE(Contains(message, "line 3"));
+  EXPECT_TRUE(Contains(message, "'x' is not a number"));
+}
+
+TEST_F(MeshLoaderTest, ObjFaceWithTwoVertices) {
+  const std::string message = load_error(write("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf 1 2\n"));
+  EXPECT_TRUE(Contains(message, "line 5"));
+  EXPECT_TRUE(Contains(message, "at least 3 vertices"));
+}
+
+TEST_F(MeshLoaderTest, ObjFaceIndexOutOfRange) {
+  const std::string message = load_error(write("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 3 7\n"));
+  EXPECT_TRUE(Contains(message, "line 5"));
+  EXPECT_TRUE(Contains(message, "vertex 7"));
+  EXPECT_TRUE(Contains(message, "only 3 vertices"));
+}
+
+TEST_F(MeshLoaderTest, ObjFaceIndexZero) {
+  const std::string message = load_error(write("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n"));
+  EXPECT_TRUE(Contains(message, "line 4"));
+  EXPECT_TRUE(Contains(message, "start at 1"));
+}
+
+TEST_F(MeshLoaderTest, ObjRelativeIndices) {
+  const LoadedSurface loaded = load_surface(write("relative.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n"));
+  EXPECT_EQ(loaded.mesh.face_count(), 1);
+  const std::string message = load_error(write("bad.obj", "v 0 0 0\nv 1 0 0\nf -3 -2 -1\nv 0 1 0\n"));
+  EXPECT_TRUE(Contains(message, "line 3"));
+  EXPECT_TRUE(Contains(message, "relative index -3"));
+}
+
+TEST_F(MeshLoaderTest, ObjTrailingCommentsAreIgnored) {
+  const LoadedSurface loaded =
+      load_surface(write("comments.obj", "v 0 0 0 # origin\nv 1 0 0\nv 0 1 0\nf 1 2 3 # the only face\n"));
+  EXPECT_EQ(loaded.mesh.face_count(), 1);
+}
+
+TEST_F(MeshLoaderTest, ObjFaceCornerWithTextureAndNormal) {
+  const LoadedSurface loaded =
+      load_surface(write("uv.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\nf 1/1/1 2/1/1 3//1\n"));
+  EXPECT_EQ(loaded.mesh.face_count(), 1);
+  EXPECT_TRUE(Contains(load_error(write("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/a 2 3\n")), "line 4"));
+}
+
+TEST_F(MeshLoaderTest, OffHeaderMustBeOff) {
+  const std::string message = load_error(write("bad.off", "OFX\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
+  EXPECT_TRUE(Contains(message, "bad.off: line 1"));
+  EXPECT_TRUE(Contains(message, "'OFF'"));
+}
+
+TEST_F(MeshLoaderTest, OffCountsOnTheHeaderLineAreNamed) {
+  // OpenMesh would silently read nothing from this file.
+  const std::string message = load_error(write("bad.off", "OFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
+  EXPECT_TRUE(Contains(message, "line 1"));
+  EXPECT_TRUE(Contains(message, "'3 1 0'"));
+}
+
+TEST_F(MeshLoaderTest, OffCountsMustFollowHeader) {
+  const std::string message = load_error(write("bad.off", "OFF\nthree 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
+  EXPECT_TRUE(Contains(message, "line 2"));
+  EXPECT_TRUE(Contains(message, "counts"));
+}
+
+TEST_F(MeshLoaderTest, OffCountsMustMatchLines) {
+  const std::string missing = load_error(write("short.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
+  EXPECT_TRUE(Contains(missing, "declare 4 vertices and 1 face"));
+  const std::string extra = load_error(write("long.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n"));
+  EXPECT_TRUE(Contains(extra, "declare 3 vertices and 1 face"));
+  EXPECT_TRUE(Contains(extra, "5 non-empty lines"));
+}
+
+TEST_F(MeshLoaderTest, OffFaceIndexOutOfRange) {
+  const std::string message = load_error(write("bad.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n"));
+  EXPECT_TRUE(Contains(message, "line 6"));
+  EXPECT_TRUE(Contains(message, "out of range"));
+}
+
+TEST_F(MeshLoaderTest, OffCommentIsNamed) {
+  const std::string message =
+      load_error(write("bad.off", "OFF\n3 1 0\n# made by hand\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
+  EXPECT_TRUE(Contains(message, "line 3"));
+  EXPECT_TRUE(Contains(message, "comment"));
+}
+
+TEST_F(MeshLoaderTest, PlyThatOpenMeshCannotParse) {
+  const std::string message = load_error(write("bad.ply", "this is not a ply file\n"));
+  EXPECT_TRUE(Contains(message, "OpenMesh could not parse it as PLY"));
+  EXPECT_TRUE(Contains(message, "'ply'"));
+}
+
+const char* const kPlyHeader =
+    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+    "element face 1\nproperty list uchar int vertex_indices\nend_header\n";  // data starts on line 10
+
+TEST_F(MeshLoaderTest, PlyAsciiValueNamesLine) {
+  const std::string message =
+      load_error(write("bad.ply", std::string(kPlyHeader) + "0 0 0\n1 0 0\n0 one 0\n3 0 1 2\n"));
+  EXPECT_TRUE(Contains(message, "line 12"));
+  EXPECT_TRUE(Contains(message, "'one' is not a number"));
+}
+
+TEST_F(MeshLoaderTest, PlyAsciiFaceIndexOutOfRange) {
+  const std::string message = load_error(write("bad.ply", std::string(kPlyHeader) + "0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n"));
+  EXPECT_TRUE(Contains(message, "line 13"));
+  EXPECT_TRUE(Contains(message, "refers to vertex 3"));
+}
+
+TEST_F(MeshLoaderTest, PlyAsciiNanNamesLine) {
+  const std::string message =
+      load_error(write("nan.ply", std::string(kPlyHeader) + "0 0 0\n1 0 0\n0 nan 0\n3 0 1 2\n"));
+  EXPECT_TRUE(Contains(message, "line 12"));
+  EXPECT_TRUE(Contains(message, "1 vertex has NaN or infinite"));
+}
+
+TEST_F(MeshLoaderTest, PlyHeaderIsCheckedBeforeOpenMesh) {
+  // OpenMesh's reader crashes on a property before any element.
+  const std::string message = load_error(write("bad.ply", "ply\nformat ascii 1.0\nproperty float x\nend_header\n"));
+  EXPECT_TRUE(Contains(message, "OpenMesh could not parse it as PLY"));
+  EXPECT_TRUE(Contains(message, "line 3"));
+}
+
+TEST_F(MeshLoaderTest, PlyPointCloudContainsNoFaces) {
+  const std::string message = load_error(write("points.ply",
+                                               "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
+                                               "property float y\nproperty float z\nend_header\n0 0 0\n"));
+  EXPECT_TRUE(Contains(message, "contains no faces"));
+}
+
+TEST_F(MeshLoaderTest, ReadsBinaryPly) {
+  std::string bytes =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  const float corners[12] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+  for (float x : corners) {
+    std::uint32_t v;
+    std::memcpy(&v, &x, 4);
+    for (int i = 0; i < 4; ++i) bytes.push_back(char((v >> (8 * i)) & 0xff));
+  }
+  bytes.push_back(4);
+  for (int index : {0, 1, 2, 3})
+    for (int i = 0; i < 4; ++i) bytes.push_back(char((std::uint32_t(index) >> (8 * i)) & 0xff));
+  const LoadedSurface loaded = load_surface(write("square.ply", bytes));
+  EXPECT_EQ(loaded.mesh.face_count(), 2);
+  EXPECT_NEAR(surface_area(loaded.mesh), 1.0, 1e-12);
+  expect_valid_surface(loaded.mesh);
+}
+
+TEST_F(MeshLoaderTest, TruncatedBinaryPlyIsMeasured) {
+  const std::string header =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n";
+  const std::string message = load_error(write("cut.ply", header + std::string(20, '\0')));
+  EXPECT_TRUE(Contains(message, "OpenMesh could not parse it as PLY"));
+  EXPECT_TRUE(Contains(message, "size mismatch"));
+}
+
+TEST_F(MeshLoaderTest, TruncatedBinaryStlIsMeasured) {
+  std::string bytes(80, 'x');
+  bytes += std::string("\x03\0\0\0", 4);  // 3 triangles declared...
+  bytes += std::string(100, '\0');         // ...but 2 present
+  const std::string message = load_error(write("cut.stl", bytes));
+  EXPECT_TRUE(Contains(message, "OpenMesh could not parse it as STL"));
+  EXPECT_TRUE(Contains(message, "size mismatch"));
+  EXPECT_TRUE(Contains(message, "3 triangles"));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Non-finite coordinates
+
+TEST_F(MeshLoaderTest, NanCoordinateNamesLineAndCount) {
+  const std::string message =
+      load_error(write("nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nv 0 inf 1\nf 1 2 3\nf 1 3 4\n"));
+  EXPECT_TRUE(Contains(message, "line 2"));
+  EXPECT_TRUE(Contains(message, "vertex 2"));
+  EXPECT_TRUE(Contains(message, "2 vertices have NaN or infinite"));
+}
+
+TEST_F(MeshLoaderTest, NanCoordinateInOff) {
+  const std::string message = load_error(write("nan.off", "OFF\n3 1 0\n0 0 0\n1 -inf 0\n0 1 0\n3 0 1 2\n"));
+  EXPECT_TRUE(Contains(message, "line 4"));
+  EXPECT_TRUE(Contains(message, "non-finite"));
+}
+
+TEST_F(MeshLoaderTest, NanCoordinateInMemoryNamesVertex) {
+  const std::string message = error_of([] {
+    make_surface({{0, 0, 0}, {1, 0, 0}, {0, std::nan(""), 0}}, {{0, 1, 2}}, "memory");
+  });
+  EXPECT_TRUE(Contains(message, "memory: vertex 2"));
+  EXPECT_TRUE(Contains(message, "1 vertex has NaN or infinite"));
+}
+
+TEST_F(MeshLoaderTest, MakeSurfaceRejectsBadIndex) {
+  const std::string message =
+      error_of([] { make_surface({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 5}}, "memory"); });
+  EXPECT_TRUE(Contains(message, "refers to vertex 5"));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Repairs
+
+TEST_F(MeshLoaderTest, DegenerateFacesAreDroppedAndCounted) {
+  // A unit square in two triangles, plus a zero-area sliver on its edge and a face with a repeated
+  // vertex (OpenMesh drops the latter itself; it must still be counted).
+  const LoadedSurface loaded = load_surface(
+      write("degenerate.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0.5 0 0\nf 1 2 3\nf 1 3 4\nf 1 5 2\nf 1 2 2\n"));
+  EXPECT_EQ(loaded.dropped_degenerate_faces, 2);
+  EXPECT_TRUE(any_warning_contains(loaded, "dropped 2 degenerate faces"));
+  EXPECT_EQ(loaded.mesh.face_count(), 2);
+  EXPECT_EQ(loaded.mesh.vertex_count(), 4);
+  expect_valid_surface(loaded.mesh);
+}
+
+TEST_F(MeshLoaderTest, RepeatedVertexTriangleInMemoryIsDegenerate) {
+  const LoadedSurface loaded =
+      make_surface({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 2, 2}}, "memory");
+  EXPECT_EQ(loaded.dropped_degenerate_faces, 1);
+  EXPECT_EQ(loaded.mesh.face_count(), 1);
+}
+
+TEST_F(MeshLoaderTest, OnlyDegenerateFacesLeaveNothing) {
+  const std::string message = load_error(write("flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n"));
+  EXPECT_TRUE(Contains(message, "contains no faces after dropping 1 degenerate face"));
+}
+
+TEST_F(MeshLoaderTest, UnreferencedVerticesAreDropped) {
+  const LoadedSurface loaded =
+      load_surface(write("extra.obj", "v 5 5 5\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 9 9 9\nf 2 3 4\n"));
+  EXPECT_EQ(loaded.mesh.vertex_count(), 3);
+  EXPECT_TRUE(any_warning_contains(loaded, "dropped 2 unreferenced vertices"));
+  EXPECT_EQ(loaded.mesh.positions[0], glm::dvec3(0, 0, 0));
+  expect_valid_surface(loaded.mesh);
+}
+
+TEST_F(MeshLoaderTest, InconsistentOrientationIsRepaired) {
+  // Three triangles of a strip; the middle one is wound the other way.
+  const LoadedSurface loaded = load_surface(
+      write("flipped.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 2 1 0\nf 1 2 3\nf 2 3 4\nf 2 5 4\n"));
+  EXPECT_EQ(loaded.mesh.face_count(), 3);
+  EXPECT_TRUE(any_warning_contains(loaded, "reoriented 1 face"));
+  expect_valid_surface(loaded.mesh);
+}
+
+TEST_F(MeshLoaderTest, LargestComponentIsKept) {
+  std::string obj = grid_obj(2, 2, false);  // 8 triangles, vertices 1..9
+  obj += "v 10 10 0\nv 11 10 0\nv 10 11 0\nf 10 11 12\n";
+  const LoadedSurface loaded = load_surface(write("two.obj", obj));
+  EXPECT_EQ(loaded.mesh.face_count(), 8);
+  EXPECT_EQ(loaded.mesh.vertex_count(), 9);
+  EXPECT_EQ(loaded.dropped_components, 1);
+  EXPECT_TRUE(any_warning_contains(loaded, "2 connected components"));
+  EXPECT_TRUE(any_warning_contains(loaded, "(1 face)"));
+  expect_valid_surface(loaded.mesh);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Topology Paver cannot pave
+
+TEST_F(MeshLoaderTest, NonManifoldEdgeIsRefused) {
+  // Three triangles on the edge 1-2 (a fin).
+  const std::string message = load_error(
+      write("fin.obj", "v 0 0 0\nv 1 0 0\nv 0.5 1 0\nv 0.5 -1 0\nv 0.5 0 1\nf 1 2 3\nf 2 1 4\nf 1 2 5\n"));
+  EXPECT_TRUE(Contains(message, "fin.obj: "));
+  EXPECT_TRUE(Contains(message, "1 non-manifold edge"));
+  EXPECT_TRUE(Contains(message, "vertices 0 and 1"));
+}
+
+TEST_F(MeshLoaderTest, BowtieVertexIsRefused) {
+  const std::string message =
+      load_error(write("bowtie.obj", "v 0 0 0\nv 1 1 0\nv 1 -1 0\nv -1 1 0\nv -1 -1 0\nf 1 2 3\nf 1 4 5\n"));
+  EXPECT_TRUE(Contains(message, "1 non-manifold vertex"));
+  EXPECT_TRUE(Contains(message, "vertex 0"));
+}
+
+TEST_F(MeshLoaderTest, ConesTouchingAtTheTipAreRefused) {
+  std::vector<glm::dvec3> positions = {{0, 0, 0}};
+  std::vector<std::vector<int>> faces;
+  const int n = 6;
+  for (int cone = 0; cone < 2; ++cone) {
+    const int first = int(positions.size());
+    const double z = cone == 0 ? 1.0 : -1.0;
+    for (int i = 0; i < n; ++i) {
+      const double angle = 2 * std::numbers::pi * i / n;
+      positions.emplace_back(std::cos(angle), std::sin(angle), z);
+    }
+    for (int i = 0; i < n; ++i) faces.push_back({0, first + i, first + (i + 1) % n});
+  }
+  const std::string message = error_of([&] { make_surface(positions, faces, "cones"); });
+  EXPECT_TRUE(Contains(message, "cones: has 1 non-manifold vertex"));
+  EXPECT_TRUE(Contains(message, "2 separate fans"));
+}
+
+TEST_F(MeshLoaderTest, MoebiusStripIsRefused) {
+  const int n = 12;
+  std::vector<glm::dvec3> positions;
+  for (int i = 0; i < n; ++i) {
+    const double angle = 2 * std::numbers::pi * i / n, twist = angle / 2;
+    const glm::dvec3 centre(3 * std::cos(angle), 3 * std::sin(angle), 0);
+    const glm::dvec3 across = std::cos(twist) * glm::dvec3(std::cos(angle), std::sin(angle), 0) +
+                              std::sin(twist) * glm::dvec3(0, 0, 1);
+    positions.push_back(centre + across);  // top i: 2i
+    positions.push_back(centre - across);  // bottom i: 2i + 1
+  }
+  std::vector<std::vector<int>> faces;
+  for (int i = 0; i + 1 < n; ++i) faces.push_back({2 * i, 2 * i + 1, 2 * i + 3, 2 * i + 2});
+  faces.push_back({2 * (n - 1), 2 * (n - 1) + 1, 0, 1});  // the half twist joins top to bottom
+  const std::string message = error_of([&] { make_surface(positions, faces, "moebius"); });
+  EXPECT_TRUE(Contains(message, "not orientable"));
+}
+
+TEST_F(MeshLoaderTest, ClosedTetrahedronIsRefused) {
+  const std::string message =
+      load_error(write("tet.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n"));
+  EXPECT_TRUE(Contains(message, "tet.obj: "));
+  EXPECT_TRUE(Contains(message, "closed"));
+  EXPECT_TRUE(Contains(message, "cut it open"));
+}
+
+TEST_F(MeshLoaderTest, ClosedCubeIsRefused) {
+  const std::string message = load_error(write("cube.off",
+                                               "OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+                                               "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n"));
+  EXPECT_TRUE(Contains(message, "cut it open"));
+}
+
+TEST_F(MeshLoaderTest, HolesAreCounted) {
+  // A 5 x 5 quad grid with two interior quads removed: the outer loop and two holes.
+  std::ostringstream obj;
+  const int n = 5;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) obj << "v " << i << ' ' << j << " 0\n";
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      if ((i == 1 && j == 1) || (i == 3 && j == 3)) continue;
+      const int a = j * (n + 1) + i + 1, b = a + 1, c = a + n + 1, d = c + 1;
+      obj << "f " << a << ' ' << b << ' ' << d << ' ' << c << '\n';
+    }
+  const std::string message = load_error(write("holes.obj", obj.str()));
+  EXPECT_TRUE(Contains(message, "has 3 boundary loops (holes)"));
+  EXPECT_TRUE(Contains(message, "Paver needs exactly one"));
+}
+
+TEST_F(MeshLoaderTest, HandleIsRefused) {
+  // A torus grid with one quad removed: one boundary loop, but genus 1.
+  const int n = 8, m = 6;
+  std::vector<glm::dvec3> positions;
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double u = 2 * std::numbers::pi * i / n, v = 2 * std::numbers::pi * j / m;
+      positions.emplace_back((3 + std::cos(v)) * std::cos(u), (3 + std::cos(v)) * std::sin(u), std::sin(v));
+    }
+  std::vector<std::vector<int>> faces;
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < n; ++i)
+      if (i != 0 || j != 0)
+        faces.push_back({j * n + i, j * n + (i + 1) % n, ((j + 1) % m) * n + (i + 1) % n, ((j + 1) % m) * n + i});
+  const std::string message = error_of([&] { make_surface(positions, faces, "torus"); });
+  EXPECT_TRUE(Contains(message, "1 handle"));
+}
+
+}  // namespace
+}  // namespace paver

@@ -1,0 +1,191 @@
+// The whole pipeline with the section 5 optimizer, post-processing and collision resolution, on
+// the bundled designs and on a real scanned surface: the figures the issue pins.
+#include "io/design_io.h"
+#include "elements/element_proximity.h"
+#include "core/input_error.h"
+#include "mesh/mesh_loader.h"
+#include "pipeline/pavement.h"
+#include "bundled_designs.h"
+#include "test_meshes.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <string>
+
+namespace paver {
+namespace {
+
+std::map<std::string, std::string> bundled_design_surfaces() { return test::bundled_design_surfaces(test::source_dir()); }
+
+const SurfaceMap& map_of(const std::string& surface) {
+  static std::map<std::string, SurfaceMap> cache;
+  auto it = cache.find(surface);
+  if (it == cache.end())
+    it = cache.emplace(surface, build_surface_map(load_surface(test::source_dir() / "assets/surfaces" / surface).mesh))
+             .first;
+  return it->second;
+}
+
+bool is_uniform_spheres_of_diameter_d(const Design& d) {
+  return d.solver.c == 0 && d.solver.m == 0 && d.elements.edge.empty() && d.elements.vertex.enabled &&
+         d.elements.vertex.scale == 1;
+}
+
+class BundledDesign : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(BundledDesign, ReachesZeroCollisionsAndCrossings) {
+  const auto surfaces = bundled_design_surfaces();
+  const std::string name = GetParam();
+  ASSERT_TRUE(surfaces.count(name)) << name << " is not in assets/designs/README.md";
+  const Design design = load_design(test::source_dir() / "assets/designs" / name);
+  const Pavement p = make_pavement(map_of(surfaces.at(name)), design);
+  EXPECT_GT(p.after.elements, 40) << name;
+  EXPECT_EQ(p.after.collisions, 0) << name;
+  EXPECT_EQ(p.after.boundary_crossings, 0) << name;
+  EXPECT_EQ(find_collisions(p.elements).size(), 0u) << name;
+  // The optimizer, not the last-resort removal, does the work: at most 2% of elements removed.
+  EXPECT_LE(p.resolution.removed, 0.02 * double(p.after.elements)) << name;
+  if (is_uniform_spheres_of_diameter_d(design)) {
+    EXPECT_GE(p.after.neighbor_ratio.p5, 0.99) << name;
+    EXPECT_LE(p.after.neighbor_ratio.median, 1.05) << name;
+  }
+  // Every design starts with collisions the optimizer has to remove, or none at all.
+  EXPECT_LE(p.after.collisions, p.before.collisions) << name;
+}
+
+INSTANTIATE_TEST_SUITE_P(Assets, BundledDesign, ::testing::ValuesIn([] {
+                           std::vector<std::string> names;
+                           for (const auto& [design, surface] : bundled_design_surfaces()) names.push_back(design);
+                           return names;
+                         }()),
+                         [](const auto& info) {
+                           std::string n = info.param.substr(0, info.param.size() - 5);
+                           return n;
+                         });
+
+TEST(BundledDesigns, AllAreListed) { EXPECT_GE(bundled_design_surfaces().size(), 10u); }
+
+// A real scanned open surface (lilium, subdivided once to 26k faces) with each tessellation.
+class ScannedSurface : public ::testing::TestWithParam<Tessellation> {
+protected:
+  static const SurfaceMap& lilium() {
+    static const SurfaceMap map =
+        build_surface_map(test::subdivide(load_surface(test::scanned_mesh("lilium")).mesh));
+    return map;
+  }
+};
+
+TEST_P(ScannedSurface, UniformPatternIsCollisionFreeAndRegular) {
+  ASSERT_GE(lilium().mesh.face_count(), 20000);
+  Design design;
+  design.pattern.tessellation = GetParam();
+  const Pavement p = make_pavement(lilium(), design);
+  EXPECT_GT(p.after.elements, 600);
+  EXPECT_EQ(p.after.collisions, 0);
+  EXPECT_EQ(p.after.boundary_crossings, 0);
+  EXPECT_EQ(p.resolution.removed, 0);
+  EXPECT_GE(p.after.neighbor_ratio.p5, 0.99);
+  EXPECT_LE(p.after.neighbor_ratio.median, 1.05);
+  // The initial pavement had collisions: the optimizer removed them (contact springs finish
+  // what the paper's forces leave; see docs/solver.md for the figures of each).
+  EXPECT_GT(p.before.collisions, 0);
+  EXPECT_LT(p.paper.collisions, p.before.collisions);
+}
+
+INSTANTIATE_TEST_SUITE_P(Lilium, ScannedSurface,
+                         ::testing::Values(Tessellation::Triangle, Tessellation::Grid, Tessellation::Hexagon),
+                         [](const auto& info) { return std::string(tessellation_name(info.param)); });
+
+// Curvature-aware spacing (eq. 5): with m > 0 elements spread where the surface is curved, with
+// m < 0 they crowd there, with m = 0 the spacing is uniform.
+Pavement saddle_with_margins(double c, double m) {
+  Design design;
+  design.pattern.tessellation = Tessellation::Hexagon;
+  design.pattern.spacing = 10;
+  design.solver.c = c;
+  design.solver.m = m;
+  design.solver.lambda_g = 0.001;  // the paper's value for curvature-aware designs
+  return make_pavement(map_of("saddle.obj"), design);
+}
+
+TEST(CurvatureAwareSpacing, PositiveMSpreadsNegativeMCrowdsZeroIsUniform) {
+  const Pavement looser = saddle_with_margins(0.3, 0.5);
+  const Pavement denser = saddle_with_margins(0.3, -0.3);
+  const Pavement uniform = saddle_with_margins(0.3, 0.0);
+  EXPECT_GT(looser.after.spacing_curvature_spearman, 0.3);
+  EXPECT_LT(denser.after.spacing_curvature_spearman, -0.3);
+  EXPECT_LT(std::abs(uniform.after.spacing_curvature_spearman), 0.3);
+  EXPECT_LT(uniform.after.neighbor_ratio.cv, looser.after.neighbor_ratio.cv);
+  for (const Pavement* p : {&looser, &denser, &uniform}) EXPECT_EQ(p->after.collisions, 0);
+  // The margin c = 0.3 keeps gaps between elements: nearest neighbours are >= 1.3 D apart mostly.
+  EXPECT_GT(uniform.after.neighbor_ratio.median, 1.25);
+}
+
+TEST(PavementOptimization, MarginsMustNotBeNegative) {
+  Design design;
+  design.solver.c = 0.1;
+  design.solver.m = -0.3;
+  EXPECT_THROW(validate_design(design, "test"), InputError);
+}
+
+TEST(PavementOptimization, OptimizerCanBeSwitchedOffAndObserved) {
+  Design design;
+  design.pattern.tessellation = Tessellation::Hexagon;
+  design.pattern.spacing = 6;
+  PavementOptions off;
+  off.optimize = false;
+  const Pavement initial = make_pavement(map_of("dome.obj"), design, off);
+  EXPECT_EQ(initial.solve.iterations, 0);
+  EXPECT_EQ(initial.points, initial.pattern.points);
+
+  PavementOptions observed;
+  int calls = 0;
+  observed.observer = [&](int iteration, const std::vector<glm::vec2>& positions) {
+    ++calls;
+    EXPECT_EQ(iteration, calls);
+    EXPECT_EQ(positions.size(), initial.pattern.points.size());
+    return iteration < 5;
+  };
+  const Pavement stopped = make_pavement(map_of("dome.obj"), design, observed);
+  EXPECT_EQ(calls, 5);
+  EXPECT_EQ(stopped.solve.iterations, 5);
+  EXPECT_EQ(stopped.solve.reason, StopReason::Observer);
+}
+
+TEST(PavementOptimization, SameResultWhateverTheThreadCount) {
+  Design design;
+  design.pattern.tessellation = Tessellation::Triangle;
+  design.pattern.spacing = 18;
+  PavementOptions one, all;
+  one.threads = 1;
+  all.threads = 0;
+  const Pavement a = make_pavement(map_of("saddle.obj"), design, one);
+  const Pavement b = make_pavement(map_of("saddle.obj"), design, all);
+  ASSERT_EQ(a.elements.size(), b.elements.size());
+  EXPECT_EQ(a.points, b.points);
+  EXPECT_EQ(a.elements.position, b.elements.position);
+}
+
+}  // namespace
+}  // namespace paver
+
+namespace paver {
+namespace {
+
+TEST(PavementOptimization, StopFlagEndsEverySolveWithoutAnObserver) {
+  const SurfaceMap map = build_surface_map(load_surface(test::bundled_surface("saddle")).mesh);
+  Design design;
+  design.pattern.tessellation = Tessellation::Triangle;
+  design.pattern.spacing = 18;
+  const std::atomic<bool> stop = true;
+  PavementOptions options;
+  options.stop = &stop;
+  const Pavement p = make_pavement(map, design, options);
+  EXPECT_EQ(p.solve.iterations, 1) << "the flag is checked after each iteration";
+  EXPECT_EQ(p.solve.reason, StopReason::Observer);
+  EXPECT_EQ(p.resolution.rounds, 0) << "no contact rounds once stopped";
+}
+
+}  // namespace
+}  // namespace paver
