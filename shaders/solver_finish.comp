@@ -7,10 +7,10 @@
 
 void main() {
   if (gl_GlobalInvocationID.x != 0u) return;
-  if (control[0] == 0u) {
-    control[1] += 1u;
-    control[5] = control[3];
-    if (uintBitsToFloat(control[3]) < P.threshold) control[0] = 1u;
+  if (control[kControlDone] == 0u) {
+    control[kControlIterations] += 1u;
+    control[kControlLastMaxStep] = control[kControlMaxStep];
+    if (uintBitsToFloat(control[kControlMaxStep]) < P.threshold) control[kControlDone] = 1u;
   }
-  control[3] = 0u;
+  control[kControlMaxStep] = 0u;
 }

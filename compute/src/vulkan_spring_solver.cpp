@@ -1,7 +1,6 @@
 #include "paver/compute/vulkan_spring_solver.h"
 
 #include "paver/compute/gpu_buffer.h"
-#include "gpu_solver_layout.h"
 #include "solver/spring_solver.h"
 #include "paver/compute/vulkan_objects.h"
 
@@ -21,18 +20,14 @@
 namespace paver::gpu {
 namespace {
 
-constexpr std::uint32_t kGroupSize = 64;  // local_size_x in solver_common.glsl
 
-std::uint32_t groups(int items) { return std::uint32_t((items + int(kGroupSize) - 1) / int(kGroupSize)); }
+std::uint32_t groups(int items) { return std::uint32_t((items + int(kSolverGroupSize) - 1) / int(kSolverGroupSize)); }
 
 template <class T>
 std::size_t bytes_of(const std::vector<T>& v) {
   return v.size() * sizeof(T);
 }
 
-struct Push {
-  std::uint32_t first = 0, second = 0;
-};
 
 }  // namespace
 
@@ -63,10 +58,10 @@ struct VulkanSolverSession::Impl {
   void create() {
     std::vector<vk::DescriptorSetLayoutBinding> bindings;
     for (std::uint32_t b = 0; b < kBindingCount; ++b)
-      bindings.emplace_back(b, b == kParams ? vk::DescriptorType::eUniformBuffer : vk::DescriptorType::eStorageBuffer, 1,
+      bindings.emplace_back(b, b == kBindingParams ? vk::DescriptorType::eUniformBuffer : vk::DescriptorType::eStorageBuffer, 1,
                             vk::ShaderStageFlagBits::eCompute);
     set_layout.emplace(*ctx->device, vk::DescriptorSetLayoutCreateInfo({}, bindings));
-    const vk::PushConstantRange push(vk::ShaderStageFlagBits::eCompute, 0, sizeof(Push));
+    const vk::PushConstantRange push(vk::ShaderStageFlagBits::eCompute, 0, sizeof(SolverPush));
     const vk::DescriptorSetLayout raw_layout = **set_layout;
     pipeline_layout.emplace(*ctx->device, vk::PipelineLayoutCreateInfo({}, raw_layout, push));
     lift.emplace(make_pipeline(solver_lift_comp_spv));
@@ -79,13 +74,13 @@ struct VulkanSolverSession::Impl {
                  vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 2, sizes));
     const vk::DescriptorSetLayout layouts[] = {raw_layout, raw_layout};
     sets = vk::raii::DescriptorSets(*ctx->device, vk::DescriptorSetAllocateInfo(**pool, layouts));
-    params = GpuBuffer(*ctx, sizeof(GpuSolverParams), vk::BufferUsageFlagBits::eUniformBuffer,
+    params = GpuBuffer(*ctx, sizeof(SolverConstants), vk::BufferUsageFlagBits::eUniformBuffer,
                        vk::MemoryPropertyFlagBits::eHostVisible | vk::MemoryPropertyFlagBits::eHostCoherent, {});
   }
 
   // Makes binding `b` at least `bytes` large; returns true when it had to be reallocated.
   bool reserve(std::uint32_t b, std::size_t bytes) {
-    GpuBuffer& buffer = b == kPositionOut ? second_positions : buffers[b];
+    GpuBuffer& buffer = b == kBindingPositionOut ? second_positions : buffers[b];
     if (buffer.valid() && buffer.size() >= bytes) return false;
     // Grow by half again so systems that gain a few contact springs keep their allocation.
     buffer = GpuBuffer(*ctx, std::max<std::size_t>(bytes + bytes / 2, 64),
@@ -101,12 +96,12 @@ struct VulkanSolverSession::Impl {
     std::vector<vk::WriteDescriptorSet> writes;
     for (int set = 0; set < 2; ++set)
       for (std::uint32_t b = 0; b < kBindingCount; ++b) {
-        vk::Buffer buffer = b == kParams ? params.handle() : buffers[b].handle();
-        if (b == kPositionIn) buffer = set == 0 ? buffers[kPositionIn].handle() : second_positions.handle();
-        if (b == kPositionOut) buffer = set == 0 ? second_positions.handle() : buffers[kPositionIn].handle();
+        vk::Buffer buffer = b == kBindingParams ? params.handle() : buffers[b].handle();
+        if (b == kBindingPositionIn) buffer = set == 0 ? buffers[kBindingPositionIn].handle() : second_positions.handle();
+        if (b == kBindingPositionOut) buffer = set == 0 ? second_positions.handle() : buffers[kBindingPositionIn].handle();
         infos[set * kBindingCount + b] = vk::DescriptorBufferInfo(buffer, 0, VK_WHOLE_SIZE);
         writes.emplace_back(*sets[set], b, 0, 1,
-                            b == kParams ? vk::DescriptorType::eUniformBuffer : vk::DescriptorType::eStorageBuffer,
+                            b == kBindingParams ? vk::DescriptorType::eUniformBuffer : vk::DescriptorType::eStorageBuffer,
                             nullptr, &infos[set * kBindingCount + b]);
       }
     ctx->device->updateDescriptorSets(writes, {});
@@ -167,16 +162,16 @@ private:
     };
     auto array = [](std::uint32_t binding, const auto& v) { return Array{binding, v.data(), bytes_of(v)}; };
     const Array surface_arrays[] = {
-        array(kUv, s.uv), array(kSurfacePosition, s.position), array(kSurfaceCurvature, s.curvature),
-        array(kTriangles, s.triangles), array(kGridStart, s.grid_start), array(kGridTriangles, s.grid_triangles),
-        array(kBoundaryUv, s.boundary_uv), array(kBoundaryInward, s.boundary_inward)};
+        array(kBindingUv, s.uv), array(kBindingSurfacePosition, s.position), array(kBindingSurfaceCurvature, s.curvature),
+        array(kBindingTriangles, s.triangles), array(kBindingGridStart, s.grid_start), array(kBindingGridTriangles, s.grid_triangles),
+        array(kBindingBoundaryUv, s.boundary_uv), array(kBindingBoundaryInward, s.boundary_inward)};
     // The system changes between solves (a new design, contact springs): always uploaded.
     const Array system_arrays[] = {
-        array(kPositionIn, y.position), array(kStrayCount, y.stray_count), array(kTriangleHint, y.triangle_hint),
-        array(kPulledBack, pulled_), array(kNeighborStart, y.neighbor_start), array(kNeighbor, y.neighbor),
-        array(kNeighborSpring, y.neighbor_spring), array(kSpringA, y.spring_a), array(kSpringB, y.spring_b),
-        array(kRestLength, y.rest_length), array(kSpringFlags, y.spring_flags), array(kTarget, y.target),
-        array(kInitialTarget, y.initial_target)};
+        array(kBindingPositionIn, y.position), array(kBindingStrayCount, y.stray_count), array(kBindingTriangleHint, y.triangle_hint),
+        array(kBindingPulledBack, pulled_), array(kBindingNeighborStart, y.neighbor_start), array(kBindingNeighbor, y.neighbor),
+        array(kBindingNeighborSpring, y.neighbor_spring), array(kBindingSpringA, y.spring_a), array(kBindingSpringB, y.spring_b),
+        array(kBindingRestLength, y.rest_length), array(kBindingSpringFlags, y.spring_flags), array(kBindingTarget, y.target),
+        array(kBindingInitialTarget, y.initial_target)};
     bool surface_changed = key != d.surface_key;
     for (const Array& a : surface_arrays) surface_changed |= d.reserve(a.binding, a.bytes);
     if (surface_changed) {
@@ -185,27 +180,21 @@ private:
       ++d.surface_uploads;
     }
     for (const Array& a : system_arrays) d.reserve(a.binding, a.bytes);
-    d.reserve(kPositionOut, bytes_of(y.position));
-    d.reserve(kLifted, std::size_t(y.particle_count()) * sizeof(glm::vec4));
-    d.reserve(kControl, kControlSlots * sizeof(std::uint32_t));
+    d.reserve(kBindingPositionOut, bytes_of(y.position));
+    d.reserve(kBindingLifted, std::size_t(y.particle_count()) * sizeof(glm::vec4));
+    d.reserve(kBindingControl, kControlSlots * sizeof(std::uint32_t));
     for (const Array& a : system_arrays) t.upload(d.buffers[a.binding], a.data, a.bytes);
     control_.fill(0u);
-    t.upload(d.buffers[kControl], control_.data(), sizeof(control_));
+    t.upload(d.buffers[kBindingControl], control_.data(), sizeof(control_));
 
     // Parameters: the same float32 constants the CPU kernels use.
-    const SolverConstants k = make_solver_constants(params_, s);
-    const int n = y.particle_count(), e = y.spring_count();
-    GpuSolverParams p{};
-    p.c = k.c, p.m = k.m, p.alpha = k.alpha, p.beta = k.beta;
-    p.gamma = k.gamma, p.lambda_r = k.lambda_r, p.lambda_l = k.lambda_l, p.lambda_g = k.lambda_g;
-    p.dt = k.dt, p.mu_compressed = k.mu_compressed, p.mu_stretched = k.mu_stretched, p.filter_max = k.filter_max;
-    p.curvature_min = k.curvature_min, p.curvature_inv_range = k.curvature_inv_range, p.threshold = threshold_;
+    // The CPU kernels' constants, and what only the GPU needs.
+    SolverConstants p = make_solver_constants(params_, s);
+    p.threshold = threshold_;
     p.grid_cell_size = s.grid_cell_size;
-    p.centre[0] = k.centre.x, p.centre[1] = k.centre.y;
-    p.grid_origin[0] = s.grid_origin.x, p.grid_origin[1] = s.grid_origin.y;
+    p.grid_origin = s.grid_origin;
     p.grid_nx = s.grid_nx, p.grid_ny = s.grid_ny, p.boundary_count = int(s.boundary_uv.size());
-    p.particle_count = n, p.spring_count = e;
-    p.filter_base_initial = k.filter_base_initial, p.stray_patience = k.stray_patience;
+    p.particle_count = y.particle_count(), p.spring_count = y.spring_count();
     std::memcpy(d.params.mapped(), &p, sizeof p);
     d.write_descriptors();
   }
@@ -216,10 +205,10 @@ private:
   }
 
   void dispatch(vk::raii::CommandBuffer& cb, const vk::raii::Pipeline& pipeline, int set, std::uint32_t count,
-                Push push = {}) {
+                SolverPush push = {}) {
     cb.bindPipeline(vk::PipelineBindPoint::eCompute, *pipeline);
     cb.bindDescriptorSets(vk::PipelineBindPoint::eCompute, **s_.pipeline_layout, 0, *s_.sets[set], {});
-    cb.pushConstants<Push>(**s_.pipeline_layout, vk::ShaderStageFlagBits::eCompute, 0, push);
+    cb.pushConstants<SolverPush>(**s_.pipeline_layout, vk::ShaderStageFlagBits::eCompute, 0, push);
     if (count > 0) cb.dispatch(count, 1, 1);
     barrier(cb);
   }
@@ -262,9 +251,9 @@ private:
     while (recorded < params_.iterations) {
       const int count = std::min(batch_, params_.iterations - recorded);
       if (observer) observed.resize(n);
-      t.download(s_.buffers[kControl], control_.data(), sizeof(control_));
+      t.download(s_.buffers[kBindingControl], control_.data(), sizeof(control_));
       const int end = recorded + count;
-      if (observer) t.download(end % 2 == 0 ? s_.buffers[kPositionIn] : s_.second_positions, observed.data(), bytes_of(observed));
+      if (observer) t.download(end % 2 == 0 ? s_.buffers[kBindingPositionIn] : s_.second_positions, observed.data(), bytes_of(observed));
       submit(t, [&](vk::raii::CommandBuffer& cb) {
         if (init_pending) {
           dispatch(cb, *s_.lift, 0, groups(n), {1u, 1u});
@@ -287,13 +276,13 @@ private:
     }
     // The closing lift (no stray counting), then read the state back into the system.
     const int final_set = recorded % 2;
-    t.download(final_set == 0 ? s_.buffers[kPositionIn] : s_.second_positions, system_.position.data(),
+    t.download(final_set == 0 ? s_.buffers[kBindingPositionIn] : s_.second_positions, system_.position.data(),
                bytes_of(system_.position));
-    t.download(s_.buffers[kStrayCount], system_.stray_count.data(), bytes_of(system_.stray_count));
-    t.download(s_.buffers[kTriangleHint], system_.triangle_hint.data(), bytes_of(system_.triangle_hint));
-    t.download(s_.buffers[kTarget], system_.target.data(), bytes_of(system_.target));
-    t.download(s_.buffers[kInitialTarget], system_.initial_target.data(), bytes_of(system_.initial_target));
-    t.download(s_.buffers[kControl], control_.data(), sizeof(control_));
+    t.download(s_.buffers[kBindingStrayCount], system_.stray_count.data(), bytes_of(system_.stray_count));
+    t.download(s_.buffers[kBindingTriangleHint], system_.triangle_hint.data(), bytes_of(system_.triangle_hint));
+    t.download(s_.buffers[kBindingTarget], system_.target.data(), bytes_of(system_.target));
+    t.download(s_.buffers[kBindingInitialTarget], system_.initial_target.data(), bytes_of(system_.initial_target));
+    t.download(s_.buffers[kBindingControl], control_.data(), sizeof(control_));
     submit(t, [&](vk::raii::CommandBuffer& cb) {
       if (init_pending) {  // zero iterations asked for: still initialise like the CPU does
         dispatch(cb, *s_.lift, 0, groups(n), {1u, 1u});

@@ -96,7 +96,7 @@ void CpuSpringSolver::lift_all(bool count_strays) {
     if (!count_strays) return;
     const bool pulled = system_.position[a] != before;
     pulled_back_[a] = pulled ? 1 : 0;
-    system_.stray_count[a] = kernels::next_stray_count(constants_, system_.stray_count[a], pulled);
+    system_.stray_count[a] = next_stray_count(constants_, system_.stray_count[a], pulled);
     if (pulled) strays.fetch_add(1, std::memory_order_relaxed);
   });
   strays_ += strays.load();
@@ -108,8 +108,8 @@ void CpuSpringSolver::update_springs() {
     // A spring without a target (a new system, or a contact spring just added) starts from the
     // unfiltered target, which is also its l_ab at initialisation.
     const bool fresh = system_.target[s] <= 0.0f;
-    const kernels::SpringState st = kernels::update_spring(
-        constants_, system_.position[a], system_.position[b], lifted_[a], lifted_[b], curvature_[a],
+    const SpringState st = update_spring(
+        constants_, system_.position[b] - system_.position[a], lifted_[b] - lifted_[a], curvature_[a],
         curvature_[b], system_.rest_length[s], system_.target[s], system_.initial_target[s],
         fresh || pulled_back_[a] != 0 || pulled_back_[b] != 0, system_.spring_flags[s]);
     system_.target[s] = st.target;

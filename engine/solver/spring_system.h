@@ -3,6 +3,7 @@
 // Structs of arrays in float32; CSR neighbour lists so each particle gathers its forces without
 // atomics. Every array maps one-to-one to an SSBO of the Vulkan solver.
 #include "pattern/pattern.h"
+#include "solver/solver_contract.h"
 
 #include <glm/vec2.hpp>
 
@@ -36,11 +37,7 @@ struct SpringSystem {
   int spring_count() const { return static_cast<int>(spring_a.size()); }
 };
 
-inline constexpr std::uint32_t kRetired = 0xffffffffu;  // stray_count value of a retired particle
-inline constexpr std::uint32_t kSpringVirtual = 1u;
-// A contact spring keeps two colliding elements apart: its rest length is the required 3D
-// distance (no margin, no filter) and it only pushes, never pulls.
-inline constexpr std::uint32_t kSpringContact = 2u;
+// kRetired, kSpringVirtual and kSpringContact: solver/solver_contract.h (the GPU uses them too).
 
 // Particles from the pattern's points, springs from its edges (virtual ones included).
 // Targets are left at 0: the solver initialises them from the first lifting.

@@ -79,29 +79,29 @@ TEST(SolverKernels, SpringConstantShape) {
   const SolverConstants k = hand_constants();
   // With x = r^-6: k = 10 x^2 - 5 x + 1, discriminant 25 - 40 < 0, so k > 0 everywhere; the minimum
   // is at x = 1/4, i.e. r = 4^(1/6), where k = 10/16 - 5/4 + 1 = 0.375.
-  for (float r = 0.3f; r < 5.0f; r += 0.01f) EXPECT_GT(kernels::spring_constant(k, r), 0.0f) << "r = " << r;
+  for (float r = 0.3f; r < 5.0f; r += 0.01f) EXPECT_GT(spring_constant(k, r), 0.0f) << "r = " << r;
   const float r_min = float(std::pow(4.0, 1.0 / 6.0));
-  const float k_min = kernels::spring_constant(k, r_min);
+  const float k_min = spring_constant(k, r_min);
   EXPECT_NEAR(k_min, 0.375f, 1e-5f);
-  EXPECT_GT(kernels::spring_constant(k, r_min * 1.01f), k_min);
-  EXPECT_GT(kernels::spring_constant(k, r_min * 0.99f), k_min);
+  EXPECT_GT(spring_constant(k, r_min * 1.01f), k_min);
+  EXPECT_GT(spring_constant(k, r_min * 0.99f), k_min);
   // At rest, r = 1: 10 - 5 + 1 = 6.
-  EXPECT_NEAR(kernels::spring_constant(k, 1.0f), 6.0f, 1e-5f);
+  EXPECT_NEAR(spring_constant(k, 1.0f), 6.0f, 1e-5f);
   // r = 2: 10/4096 - 5/64 + 1 = 0.92431640625; r = 0.5: 10 * 4096 - 5 * 64 + 1 = 40641.
-  EXPECT_NEAR(kernels::spring_constant(k, 2.0f), 0.92431640625f, 1e-6f);
-  EXPECT_NEAR(kernels::spring_constant(k, 0.5f), 40641.0f, 1e-2f);
+  EXPECT_NEAR(spring_constant(k, 2.0f), 0.92431640625f, 1e-6f);
+  EXPECT_NEAR(spring_constant(k, 0.5f), 40641.0f, 1e-2f);
   // Compression is punished hard: 0.9^6 = 0.531441, 0.9^12 = 0.28243 -> 35.4068 - 9.4084 + 1 = 26.9987.
-  EXPECT_NEAR(kernels::spring_constant(k, 0.9f), 26.99868f, 1e-3f);
+  EXPECT_NEAR(spring_constant(k, 0.9f), 26.99868f, 1e-3f);
   // Below the minimum, k decreases monotonically towards it.
-  float previous = kernels::spring_constant(k, 0.3f);
+  float previous = spring_constant(k, 0.3f);
   for (float r = 0.31f; r < r_min; r += 0.01f) {
-    const float now = kernels::spring_constant(k, r);
+    const float now = spring_constant(k, r);
     EXPECT_LT(now, previous) << "r = " << r;
     previous = now;
   }
   // Beyond it k rises back towards gamma = 1 but stays below it (10 x^2 < 5 x for x < 1/2).
-  EXPECT_LT(kernels::spring_constant(k, 4.0f), 1.0f);
-  EXPECT_GT(kernels::spring_constant(k, 4.0f), kernels::spring_constant(k, 2.0f));
+  EXPECT_LT(spring_constant(k, 4.0f), 1.0f);
+  EXPECT_GT(spring_constant(k, 4.0f), spring_constant(k, 2.0f));
 }
 
 TEST(SolverKernels, TargetLength3d) {
@@ -110,21 +110,21 @@ TEST(SolverKernels, TargetLength3d) {
   k.curvature_min = 0.2f, k.curvature_inv_range = 1.0f;  // kappa_max = 1.2
   // Edge curvature = max(0.7, 0.45) = 0.7, normalised (0.7 - 0.2) * 1 = 0.5:
   // L = (0.1 + 0.4 * 0.5) * 5 + 5 = 6.5 (eq. 5, 6). Order of the ends does not matter.
-  EXPECT_NEAR(kernels::target_length_3d(k, 5.0f, 0.7f, 0.45f), 6.5f, 1e-5f);
-  EXPECT_NEAR(kernels::target_length_3d(k, 5.0f, 0.45f, 0.7f), 6.5f, 1e-5f);
+  EXPECT_NEAR(target_length_3d(k, 5.0f, 0.7f, 0.45f), 6.5f, 1e-5f);
+  EXPECT_NEAR(target_length_3d(k, 5.0f, 0.45f, 0.7f), 6.5f, 1e-5f);
   // Above kappa_max the normalised curvature clamps to 1: (0.1 + 0.4) * 5 + 5 = 7.5.
-  EXPECT_NEAR(kernels::target_length_3d(k, 5.0f, 3.0f, 0.0f), 7.5f, 1e-5f);
+  EXPECT_NEAR(target_length_3d(k, 5.0f, 3.0f, 0.0f), 7.5f, 1e-5f);
   // Below kappa_min it clamps to 0: 0.1 * 5 + 5 = 5.5.
-  EXPECT_NEAR(kernels::target_length_3d(k, 5.0f, 0.0f, 0.1f), 5.5f, 1e-5f);
+  EXPECT_NEAR(target_length_3d(k, 5.0f, 0.0f, 0.1f), 5.5f, 1e-5f);
   // A negative m shrinks the margin: c + m = 0 at full curvature gives D_ab itself.
   k.m = -0.1f;
-  EXPECT_NEAR(kernels::target_length_3d(k, 5.0f, 1.2f, 1.2f), 5.0f, 1e-5f);
+  EXPECT_NEAR(target_length_3d(k, 5.0f, 1.2f, 1.2f), 5.0f, 1e-5f);
   // Constant curvature (inv_range 0): the m term vanishes whatever kappa is.
   k.m = 0.4f, k.curvature_inv_range = 0.0f;
-  EXPECT_NEAR(kernels::target_length_3d(k, 5.0f, 0.7f, 100.0f), 5.5f, 1e-5f);
+  EXPECT_NEAR(target_length_3d(k, 5.0f, 0.7f, 100.0f), 5.5f, 1e-5f);
   // No margins: L = D_ab.
   k.c = 0, k.m = 0;
-  EXPECT_NEAR(kernels::target_length_3d(k, 5.0f, 0.7f, 0.45f), 5.0f, 1e-6f);
+  EXPECT_NEAR(target_length_3d(k, 5.0f, 0.7f, 0.45f), 5.0f, 1e-6f);
 }
 
 TEST(SolverKernels, UpdateSpring) {
@@ -136,7 +136,7 @@ TEST(SolverKernels, UpdateSpring) {
 
   // (a) reset: l = L |p| / |P| = 5 * 2 / 4 = 2.5; ratio |P| / L = 0.8.
   {
-    const auto s = kernels::update_spring(k, pa, pb, Pa, Pb4, kappa, kappa, 5, 123.0f, 77.0f, true, 0);
+    const auto s = update_spring(k, pb - pa, Pb4 - Pa, kappa, kappa, 5, 123.0f, 77.0f, true, 0);
     EXPECT_NEAR(s.target, 2.5f, 1e-6f);
     EXPECT_NEAR(s.ratio_3d, 0.8f, 1e-6f);
   }
@@ -144,7 +144,7 @@ TEST(SolverKernels, UpdateSpring) {
   {
     SolverConstants kc = k;
     kc.c = 0.2f;
-    const auto s = kernels::update_spring(kc, pa, pb, Pa, Pb4, kappa, kappa, 5, 0, 0, true, 0);
+    const auto s = update_spring(kc, pb - pa, Pb4 - Pa, kappa, kappa, 5, 0, 0, true, 0);
     EXPECT_NEAR(s.target, 3.0f, 1e-6f);
     EXPECT_NEAR(s.ratio_3d, 4.0f / 6.0f, 1e-6f);
   }
@@ -153,7 +153,7 @@ TEST(SolverKernels, UpdateSpring) {
   // and clamped to [base, 1.5 base]; base = raw = 2.5 -> [2.5, 3.75].
   {
     auto f = [&](float previous) {
-      return kernels::update_spring(k, pa, pb, Pa, Pb4, kappa, kappa, 5, previous, 2.0f, false, 0).target;
+      return update_spring(k, pb - pa, Pb4 - Pa, kappa, kappa, 5, previous, 2.0f, false, 0).target;
     };
     EXPECT_NEAR(f(2.6f), 3.12f, 1e-5f);   // 1.2 * 2.6 = 3.12, inside the clamp
     EXPECT_NEAR(f(3.3f), 3.75f, 1e-5f);   // 1.2 * 3.3 = 3.96 > 3.75
@@ -164,7 +164,7 @@ TEST(SolverKernels, UpdateSpring) {
     SolverConstants ki = k;
     ki.filter_base_initial = 1;
     auto f = [&](float previous) {
-      return kernels::update_spring(ki, pa, pb, Pa, Pb4, kappa, kappa, 5, previous, 2.0f, false, 0).target;
+      return update_spring(ki, pb - pa, Pb4 - Pa, kappa, kappa, 5, previous, 2.0f, false, 0).target;
     };
     EXPECT_NEAR(f(2.4f), 2.88f, 1e-5f);  // 1.2 * 2.4
     EXPECT_NEAR(f(2.6f), 3.0f, 1e-5f);   // 3.12 > 3.0
@@ -175,7 +175,7 @@ TEST(SolverKernels, UpdateSpring) {
   // clamp [5/3, 2.5].
   {
     auto f = [&](float previous) {
-      return kernels::update_spring(k, pa, pb, Pa, Pb6, kappa, kappa, 5, previous, 2.0f, false, 0);
+      return update_spring(k, pb - pa, Pb6 - Pa, kappa, kappa, 5, previous, 2.0f, false, 0);
     };
     EXPECT_NEAR(f(2.0f).target, 1.8f, 1e-5f);          // 0.9 * 2.0
     EXPECT_NEAR(f(1.8f).target, 5.0f / 3.0f, 1e-5f);   // 1.62 < 5/3
@@ -187,18 +187,18 @@ TEST(SolverKernels, UpdateSpring) {
   {
     SolverConstants km = k;
     km.c = 0.2f, km.m = 0.4f, km.curvature_inv_range = 1.0f;  // kappa 0 -> L = 1.2 * 5 = 6
-    const auto v = kernels::update_spring(km, pa, pb, Pa, Pb4, kappa, kappa, 5, 9.0f, 9.0f, false, kSpringVirtual);
+    const auto v = update_spring(km, pb - pa, Pb4 - Pa, kappa, kappa, 5, 9.0f, 9.0f, false, kSpringVirtual);
     EXPECT_NEAR(v.target, 3.0f, 1e-6f);  // 6 * 2 / 4
     EXPECT_NEAR(v.ratio_3d, 4.0f / 6.0f, 1e-6f);
     // Contact: L = rest = 5 exactly (no c, no m): 5 * 2 / 4 = 2.5, ratio 0.8.
-    const auto c = kernels::update_spring(km, pa, pb, Pa, Pb4, 1.0f, 1.0f, 5, 9.0f, 9.0f, false, kSpringContact);
+    const auto c = update_spring(km, pb - pa, Pb4 - Pa, 1.0f, 1.0f, 5, 9.0f, 9.0f, false, kSpringContact);
     EXPECT_NEAR(c.target, 2.5f, 1e-6f);
     EXPECT_NEAR(c.ratio_3d, 0.8f, 1e-6f);
   }
 
   // A collapsed spring (both ends at one 2D point) keeps the plain 3D target.
   {
-    const auto s = kernels::update_spring(k, pa, pa, Pa, Pa, kappa, kappa, 5, 0, 0, true, 0);
+    const auto s = update_spring(k, pa - pa, Pa - Pa, kappa, kappa, 5, 0, 0, true, 0);
     EXPECT_EQ(s.target, 5.0f);
   }
 }
@@ -314,7 +314,7 @@ TEST(SolverKernels, RetiredNeighboursAreIgnored) {
 // The stray count after a sequence of lifts (true = pulled back onto the map), starting from 0.
 std::uint32_t stray_count_after(const SolverConstants& k, const std::vector<bool>& pulls) {
   std::uint32_t count = 0;
-  for (bool pulled : pulls) count = kernels::next_stray_count(k, count, pulled);
+  for (bool pulled : pulls) count = next_stray_count(k, count, pulled);
   return count;
 }
 
@@ -332,8 +332,8 @@ TEST(SolverKernels, NextStrayCount) {
   // A single stray recovers: after quiet iterations the count is back to 0.
   EXPECT_EQ(stray_count_after(k, {true, false, false, false, false}), 0u);
   // Retired stays retired, whatever follows.
-  EXPECT_EQ(kernels::next_stray_count(k, kRetired, false), kRetired);
-  EXPECT_EQ(kernels::next_stray_count(k, kRetired, true), kRetired);
+  EXPECT_EQ(next_stray_count(k, kRetired, false), kRetired);
+  EXPECT_EQ(next_stray_count(k, kRetired, true), kRetired);
   EXPECT_EQ(stray_count_after(k, {true, true, true, false, false, false, false}), kRetired);
   // Patience 1 retires on the first pull back.
   k.stray_patience = 1;
