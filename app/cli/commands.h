@@ -11,5 +11,6 @@ namespace paver::cli {
 std::function<int()> add_param_command(CLI::App& app);
 std::function<int()> add_run_command(CLI::App& app);
 std::function<int()> add_devices_command(CLI::App& app);
+std::function<int()> add_parameters_command(CLI::App& app);
 
 }  // namespace paver::cli

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   const auto run_param = paver::cli::add_param_command(app);
   const auto run_run = paver::cli::add_run_command(app);
   const auto run_devices = paver::cli::add_devices_command(app);
+  const auto run_parameters = paver::cli::add_parameters_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -26,6 +27,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("param")) return run_param();
     if (app.got_subcommand("run")) return run_run();
     if (app.got_subcommand("devices")) return run_devices();
+    if (app.got_subcommand("parameters")) return run_parameters();
   } catch (const paver::InputError& e) {
     std::cerr << "paver: error: " << e.what() << "\n";
     return 2;

@@ -44,16 +44,19 @@ struct RunArgs {
   bool no_optimize = false;
   bool no_postprocess = false;
   int threads = 0;
-  // Section 5 parameters given on the command line, applied over the design's.
-  std::vector<std::pair<double SolverParams::*, std::optional<double>>> solver_values;
-  std::optional<int> iterations;
-  std::optional<int> stray_patience;
-  std::string filter_base;
+  // Section 5 parameters given on the command line (by name, as text), applied over the design's.
+  std::vector<std::pair<const SolverParameter*, std::optional<std::string>>> solver_values;
   bool no_resolve = false;
   std::string backend = "auto";
   std::string device;
   bool png = false;
 };
+
+// A solver flag's value over the design's; a bad one blames the flag, not the design file.
+void apply_solver_flag(SolverParams& solver, const SolverParameter& p, const std::string& text) {
+  if (const auto problem = set_solver_parameter(solver, p, text))
+    throw InputError("--" + std::string(p.flag) + " " + text + ": " + *problem);
+}
 
 double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
@@ -74,11 +77,8 @@ int run_run(const RunArgs& args) {
     if (!t) throw InputError("--pattern " + args.pattern + ": use tri, grid or hex");
     design.pattern.tessellation = *t;
   }
-  for (const auto& [member, value] : args.solver_values)
-    if (value) design.solver.*member = *value;
-  if (args.iterations) design.solver.iterations = *args.iterations;
-  if (args.stray_patience) design.solver.stray_patience = *args.stray_patience;
-  if (!args.filter_base.empty()) design.solver.filter_base = *filter_base_from_name(args.filter_base);
+  for (const auto& [parameter, value] : args.solver_values)
+    if (value) apply_solver_flag(design.solver, *parameter, *value);
   if (args.spacing) {
     // Checked here so that a bad flag is not reported as a fault of the design file.
     if (!(std::isfinite(*args.spacing) && *args.spacing >= 0)) {
@@ -186,38 +186,19 @@ std::function<int()> add_run_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--device", args->device, "Vulkan device: a substring of its name (see `paver devices`)");
   cmd->add_flag("--png", args->png, "Also render preview.png (3D) and param.png (2D) offscreen with Vulkan");
-  // Every section 5 parameter, named as in design.json's "solver" object.
-  const std::pair<const char*, double SolverParams::*> solver_flags[] = {
-      {"c", &SolverParams::c},
-      {"m", &SolverParams::m},
-      {"alpha", &SolverParams::alpha},
-      {"beta", &SolverParams::beta},
-      {"gamma", &SolverParams::gamma},
-      {"lambda-r", &SolverParams::lambda_r},
-      {"lambda-l", &SolverParams::lambda_l},
-      {"lambda-g", &SolverParams::lambda_g},
-      {"dt", &SolverParams::dt},
-      {"threshold", &SolverParams::threshold},
-      {"mu-compressed", &SolverParams::mu_compressed},
-      {"mu-stretched", &SolverParams::mu_stretched},
-      {"filter-max", &SolverParams::filter_max},
-  };
-  args->solver_values.reserve(std::size(solver_flags));
-  for (const auto& [name, member] : solver_flags) {
-    args->solver_values.emplace_back(member, std::nullopt);
-    std::string key = name;
-    std::replace(key.begin(), key.end(), '-', '_');
-    cmd->add_option(std::string("--") + name, args->solver_values.back().second, "solver." + key + " (see design.json)")
-        ->group("Solver (section 5)");
-  }
-  cmd->add_option("--iterations", args->iterations, "solver.iterations: iteration limit")->group("Solver (section 5)");
-  cmd->add_option("--stray-patience", args->stray_patience,
-                  "solver.stray_patience: pull-backs before a particle retires (0 = never)")
-      ->group("Solver (section 5)");
+  // Every section 5 parameter from the one table, named as in design.json's "solver" object.
   cmd->add_flag("--no-resolve", args->no_resolve, "Skip the contact-spring collision resolution (paper's method only)");
-  cmd->add_option("--filter-base", args->filter_base, "solver.filter_base: current or initial")
-      ->check(CLI::IsMember({"current", "initial"}))
-      ->group("Solver (section 5)");
+  args->solver_values.reserve(solver_parameters().size());
+  for (const SolverParameter& p : solver_parameters()) {
+    auto& slot = args->solver_values.emplace_back(&p, std::nullopt);
+    std::string help = "solver." + std::string(p.name) + ": " + std::string(p.help) + " Default " + default_text(p);
+    if (!p.unit.empty()) help += " (" + std::string(p.unit) + ")";
+    CLI::Option* option = cmd->add_option("--" + std::string(p.flag), slot.second, help)->group("Solver (section 5)");
+    if (std::holds_alternative<FilterBase SolverParams::*>(p.member))
+      option->check(CLI::IsMember({"current", "initial"}))->type_name("TEXT");
+    else
+      option->type_name(std::holds_alternative<int SolverParams::*>(p.member) ? "INT" : "NUMBER");
+  }
   return [args] { return run_run(*args); };
 }
 

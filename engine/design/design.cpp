@@ -1,10 +1,10 @@
 #include "design/design.h"
+#include "core/number_text.h"
 
 #include <algorithm>
 
 #include "core/input_error.h"
 
-#include <charconv>
 #include <cmath>
 #include <string>
 
@@ -15,21 +15,7 @@ bool uses_custom_shape(const ElementsDesign& e) {
   return std::any_of(e.edge.begin(), e.edge.end(), [](const auto& s) { return s.shape == ShapeKind::Custom; });
 }
 
-std::string_view filter_base_name(FilterBase b) { return b == FilterBase::Initial ? "initial" : "current"; }
-
-std::optional<FilterBase> filter_base_from_name(std::string_view name) {
-  if (name == "current") return FilterBase::Current;
-  if (name == "initial") return FilterBase::Initial;
-  return std::nullopt;
-}
 namespace {
-
-// Shortest text that reads back as the same double, so messages show exactly what was given.
-std::string number_text(double value) {
-  char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return std::string(buffer, result.ptr);
-}
 
 class Validator {
 public:
@@ -102,26 +88,16 @@ void validate_placement(const Validator& v, const Placement& placement) {
 }
 
 void validate_solver(const Validator& v, const SolverParams& s) {
-  v.non_negative(s.c, "solver.c");
-  v.finite(s.m, "solver.m");
+  for (const SolverParameter& p : solver_parameters()) {
+    const std::string key = "solver." + std::string(p.name);
+    if (const auto* real = std::get_if<double SolverParams::*>(&p.member))
+      v.require(p.range.contains(s.**real), key, p.range.describe(), s.**real);
+    else if (const auto* integer = std::get_if<int SolverParams::*>(&p.member))
+      v.require(p.range.contains(s.**integer), key, p.range.describe(), s.**integer);
+  }
   if (!(s.c + s.m >= 0))
     v.fail("c + m must be >= 0 (eq. 5: the further-apart distance cannot be negative); got c = " +
            number_text(s.c) + ", m = " + number_text(s.m));
-  v.require(std::isfinite(s.alpha) && s.alpha > 0, "solver.alpha", "finite and > 0", s.alpha);
-  v.finite(s.beta, "solver.beta");
-  v.finite(s.gamma, "solver.gamma");
-  v.non_negative(s.lambda_r, "solver.lambda_r");
-  v.non_negative(s.lambda_l, "solver.lambda_l");
-  v.non_negative(s.lambda_g, "solver.lambda_g");
-  v.require(s.dt > 0 && s.dt <= 1, "solver.dt", "in (0, 1]", s.dt);
-  v.require(s.iterations >= 0 && s.iterations <= 1000000, "solver.iterations", "in [0, 1000000]", s.iterations);
-  v.require(std::isfinite(s.threshold) && s.threshold > 0, "solver.threshold", "finite and > 0", s.threshold);
-  v.unit_interval(s.mu_compressed, "solver.mu_compressed");
-  v.unit_interval(s.mu_stretched, "solver.mu_stretched");
-  v.require(std::isfinite(s.filter_max) && s.filter_max >= 1, "solver.filter_max", "finite and >= 1",
-            s.filter_max);
-  v.require(s.stray_patience >= 0 && s.stray_patience <= 1000000, "solver.stray_patience", "in [0, 1000000]",
-            s.stray_patience);
 }
 
 }  // namespace

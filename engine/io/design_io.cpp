@@ -15,6 +15,8 @@
 #include <sstream>
 #include <string_view>
 #include <system_error>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 namespace paver {
@@ -201,25 +203,15 @@ public:
   }
 
   void read(const json& value, const std::string& path, SolverParams& out) const {
-    check_object(value, path,
-                 {"c", "m", "alpha", "beta", "gamma", "lambda_r", "lambda_l", "lambda_g", "dt", "iterations",
-                  "threshold", "mu_compressed", "mu_stretched", "filter_max", "filter_base", "stray_patience"});
-    field(value, path, "c", out.c);
-    field(value, path, "m", out.m);
-    field(value, path, "alpha", out.alpha);
-    field(value, path, "beta", out.beta);
-    field(value, path, "gamma", out.gamma);
-    field(value, path, "lambda_r", out.lambda_r);
-    field(value, path, "lambda_l", out.lambda_l);
-    field(value, path, "lambda_g", out.lambda_g);
-    field(value, path, "dt", out.dt);
-    field(value, path, "iterations", out.iterations);
-    field(value, path, "threshold", out.threshold);
-    field(value, path, "mu_compressed", out.mu_compressed);
-    field(value, path, "mu_stretched", out.mu_stretched);
-    field(value, path, "filter_max", out.filter_max);
-    field(value, path, "filter_base", out.filter_base);
-    field(value, path, "stray_patience", out.stray_patience);
+    if (!value.is_object()) wrong_type(value, path, "an object");
+    for (const auto& item : value.items()) {
+      if (find_solver_parameter(item.key())) continue;
+      std::vector<std::string_view> known;
+      for (const SolverParameter& p : solver_parameters()) known.push_back(p.name);
+      fail("unknown key '" + join(path, item.key()) + "'" + suggestion(item.key(), path, known));
+    }
+    for (const SolverParameter& p : solver_parameters())
+      std::visit([&](auto member) { field(value, path, std::string(p.name).c_str(), out.*member); }, p.member);
   }
 
 private:
@@ -251,8 +243,8 @@ private:
   }
 
   // " (did you mean 'pattern.spacing'?)" when a known key is a likely misspelling of `key`.
-  static std::string suggestion(const std::string& key, const std::string& path,
-                                std::initializer_list<std::string_view> known) {
+  template <class Known>
+  static std::string suggestion(const std::string& key, const std::string& path, const Known& known) {
     const std::string lower = lowercase(key);
     std::string_view best;
     size_t best_distance = 3;  // suggest only within edit distance 2
@@ -318,24 +310,18 @@ Json to_json(const Design& design) {
   placement["rotation_deg"] = design.placement.rotation_deg;
   placement["scale"] = design.placement.scale;
 
-  const SolverParams& s = design.solver;
   Json solver = Json::object();
-  solver["c"] = s.c;
-  solver["m"] = s.m;
-  solver["alpha"] = s.alpha;
-  solver["beta"] = s.beta;
-  solver["gamma"] = s.gamma;
-  solver["lambda_r"] = s.lambda_r;
-  solver["lambda_l"] = s.lambda_l;
-  solver["lambda_g"] = s.lambda_g;
-  solver["dt"] = s.dt;
-  solver["iterations"] = s.iterations;
-  solver["threshold"] = s.threshold;
-  solver["mu_compressed"] = s.mu_compressed;
-  solver["mu_stretched"] = s.mu_stretched;
-  solver["filter_max"] = s.filter_max;
-  solver["filter_base"] = std::string(filter_base_name(s.filter_base));
-  solver["stray_patience"] = s.stray_patience;
+  for (const SolverParameter& p : solver_parameters()) {
+    std::visit(
+        [&](auto member) {
+          const auto value = design.solver.*member;
+          if constexpr (std::is_same_v<decltype(value), const FilterBase>)
+            solver[std::string(p.name)] = std::string(filter_base_name(value));
+          else
+            solver[std::string(p.name)] = value;
+        },
+        p.member);
+  }
 
   Json root = Json::object();
   root["version"] = Design::kVersion;

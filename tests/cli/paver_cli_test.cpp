@@ -415,6 +415,39 @@ TEST_F(PaverRunErrors, BadSpacingFlagIsBlamedOnTheFlag) {
   }
 }
 
+TEST_F(PaverRunErrors, BadSolverFlagIsBlamedOnTheFlag) {
+  const fs::path design = dir() / "fine.json";
+  write_file_text(design, R"({"version": 1, "pattern": {"tessellation": "hex", "spacing": 6}})");
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"--dt", "2"}, {"--mu-compressed", "1.5"}, {"--iterations", "1.5"}, {"--alpha", "abc"}};
+  for (const auto& [flag, value] : cases) {
+    SCOPED_TRACE(flag + " " + value);
+    const fs::path out = dir() / "out";
+    const CliResult r =
+        paver({"run", "assets/surfaces/dome.obj", "--design", design.string(), flag, value, "--out", out.string()});
+    expect_input_error(r, out, {flag + " " + value + ": must be"});
+    EXPECT_EQ(r.err.find("fine.json"), std::string::npos) << describe(r);
+  }
+}
+
+// Every row of the parameter table is a flag of `paver run`, and `paver parameters` lists it.
+TEST_F(PaverCli, EverySolverParameterIsAFlag) {
+  const CliResult table = paver({"parameters"});
+  ASSERT_EQ(table.exit_code, 0) << describe(table);
+  const CliResult help = paver({"run", "--help"});
+  ASSERT_EQ(help.exit_code, 0) << describe(help);
+  int rows = 0;
+  std::istringstream lines(table.out);
+  for (std::string line; std::getline(lines, line);) {
+    const size_t flag = line.find("`--");
+    if (line.rfind("| `solver.", 0) != 0 || flag == std::string::npos) continue;
+    ++rows;
+    const std::string name = line.substr(flag + 1, line.find('`', flag + 1) - flag - 1);
+    EXPECT_NE(help.out.find(name + " "), std::string::npos) << name << " is not a flag of paver run";
+  }
+  EXPECT_GE(rows, 16);
+}
+
 TEST_F(PaverRunErrors, UnknownPattern) {
   const fs::path out = dir() / "out";
   const CliResult r = paver({"run", "assets/surfaces/dome.obj", "--pattern", "pentagon", "--out", out.string()});

@@ -1,0 +1,18 @@
+#pragma once
+// Numbers in messages exactly as given: whole numbers as integers (1000000, not 1e+06), others the
+// shortest text that reads back as the same double.
+#include <charconv>
+#include <cmath>
+#include <string>
+
+namespace paver {
+
+inline std::string number_text(double value) {
+  if (std::isfinite(value) && value == std::trunc(value) && std::abs(value) < 1e15)
+    return std::to_string(static_cast<long long>(value));
+  char buffer[64];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  return std::string(buffer, result.ptr);
+}
+
+}  // namespace paver
