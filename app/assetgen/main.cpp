@@ -5,12 +5,13 @@
 //
 // Every surface is an open triangle mesh with disk topology (one boundary loop, V - E + F = 1),
 // consistently oriented with normals pointing up / outward, and sampled so that 3D edge lengths
-// are about even. Each mesh is checked before it is written; a failed check exits with code 1.
-// The output is deterministic: no randomness, fixed number formatting.
+// are about even. Each mesh is checked before it is written; a failed check exits with code 1,
+// bad arguments with code 2. The output is deterministic: no randomness, fixed number formatting.
 //
-// Dependencies: the standard library and glm only, so the assets do not depend on the engine
-// they are meant to test.
+// Dependencies: the standard library, glm and CLI11 (arguments) only, so the assets do not depend
+// on the engine they are meant to test.
 
+#include <CLI/CLI.hpp>
 #include <glm/glm.hpp>
 #include <glm/gtc/constants.hpp>
 
@@ -698,31 +699,25 @@ std::vector<Surface> dense_set() {
   };
 }
 
-int usage(std::FILE* to, int code) {
-  std::fprintf(to,
-               "usage: paver-assetgen OUTDIR [--dense]\n"
-               "  writes the bundled test surfaces as OBJ files into OUTDIR (created if missing);\n"
-               "  --dense writes only the dense set (>= 50k faces each) instead of the small set.\n");
-  return code;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-  bool dense = false;
+  CLI::App app{"Writes Paver's bundled test surfaces as OBJ files into OUTDIR.", "paver-assetgen"};
   std::string outdir;
-  for (int i = 1; i < argc; ++i) {
-    const std::string_view arg = argv[i];
-    if (arg == "-h" || arg == "--help") return usage(stdout, 0);
-    if (arg == "--dense" && !dense) {
-      dense = true;
-    } else if (!arg.empty() && arg.front() != '-' && outdir.empty()) {
-      outdir = arg;
-    } else {
-      return usage(stderr, 2);
-    }
+  bool dense = false;
+  app.add_option("OUTDIR", outdir, "Folder to write into (created if missing)")
+      ->required()
+      ->check([](const std::string& dir) { return dir.empty() ? std::string("must not be empty") : std::string(); });
+  app.add_flag("--dense", dense, "Write only the dense set (>= 50k faces each) instead of the small set")
+      ->multi_option_policy(CLI::MultiOptionPolicy::Throw);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help
+    // One line, and exit code 2 like paver's usage errors (CLI11's own codes are 105 and up).
+    std::fprintf(stderr, "paver-assetgen: %s (usage: paver-assetgen OUTDIR [--dense]; see --help)\n", e.what());
+    return 2;
   }
-  if (outdir.empty()) return usage(stderr, 2);
 
   std::error_code ec;
   fs::create_directories(outdir, ec);
