@@ -8,8 +8,10 @@
 // are about even. Each mesh is checked before it is written; a failed check exits with code 1,
 // bad arguments with code 2. The output is deterministic: no randomness, fixed number formatting.
 //
-// Dependencies: the standard library, glm and CLI11 (arguments) only, so the assets do not depend
-// on the engine they are meant to test.
+// Dependencies: generation (surfaces, mesh_building, sampling, obj_writer) uses the standard
+// library and glm only, so the assets are not shaped by the engine they are meant to test. Only
+// the check (mesh_checks) uses the engine: its make_surface, so bundled surfaces pass exactly
+// the topology checks a user's surface gets. CLI11 parses the arguments.
 
 #include "mesh_checks.h"
 #include "obj_writer.h"
