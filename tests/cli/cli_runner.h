@@ -1,7 +1,7 @@
 #pragma once
-// Runs the real `paver` binary for the end-to-end tests: one shell command per call, from the
-// source folder (so "assets/surfaces/dome.obj" works as it does for a user), with stdout and
-// stderr captured through files and the exit status decoded.
+// Runs the real `paver` (or `paver-assetgen`) binary for the end-to-end tests: one shell command
+// per call, from the source folder (so "assets/surfaces/dome.obj" works as it does for a user),
+// with stdout and stderr captured through files and the exit status decoded.
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -48,17 +48,18 @@ inline std::string shell_quote(const std::string& arg) {
   return quoted + "'";
 }
 
-// Runs `paver args...` with the working directory PAVER_SOURCE_DIR; stdout and stderr go to
+// Runs `program args...` with the working directory PAVER_SOURCE_DIR; stdout and stderr go to
 // files in `scratch`, which must exist.
-inline CliResult run_paver(const std::vector<std::string>& args, const fs::path& scratch) {
+inline CliResult run_program(const std::string& program, const std::vector<std::string>& args,
+                             const fs::path& scratch) {
   CliResult result;
-  const fs::path out_file = scratch / "paver.stdout";
-  const fs::path err_file = scratch / "paver.stderr";
+  const fs::path out_file = scratch / "program.stdout";
+  const fs::path err_file = scratch / "program.stderr";
   // Appended piece by piece: chained operator+ trips a GCC 12 -Wrestrict false positive.
   std::string command = "cd ";
   command += shell_quote(PAVER_SOURCE_DIR);
   command += " && ";
-  command += shell_quote(PAVER_CLI);
+  command += shell_quote(program);
   for (const std::string& arg : args) {
     command += ' ';
     command += shell_quote(arg);
@@ -76,6 +77,10 @@ inline CliResult run_paver(const std::vector<std::string>& args, const fs::path&
   fs::remove(out_file, ignored);
   fs::remove(err_file, ignored);
   return result;
+}
+
+inline CliResult run_paver(const std::vector<std::string>& args, const fs::path& scratch) {
+  return run_program(PAVER_CLI, args, scratch);
 }
 
 // For failure messages: the command and everything it printed.

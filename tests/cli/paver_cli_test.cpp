@@ -24,7 +24,7 @@ using nlohmann::json;
 
 const fs::path kSource = PAVER_SOURCE_DIR;
 
-// The dome (assets/surfaces/README.md, app/assetgen/main.cpp dome()): a spherical cap of a
+// The dome (assets/surfaces/README.md, app/assetgen/surfaces.cpp dome()): a spherical cap of a
 // sphere of radius 100, half-angle 60 degrees, base at z = 0, so its centre is (0, 0, -50).
 constexpr std::array<double, 3> kDomeCentre = {0.0, 0.0, -50.0};
 constexpr double kDomeRadius = 100.0;
