@@ -1,6 +1,6 @@
 // `paver param SURFACE [--out UV.obj]`: the bijective ARAP map alone, with its quality.
 #include "commands.h"
-#include "output_guard.h"
+#include "io/output_guard.h"
 
 #include "map/arap_parameterization.h"
 #include "core/input_error.h"
@@ -52,7 +52,7 @@ int run_param(const ParamArgs& args) {
   std::printf("  area ratio 2D/3D: min %.4f, max %.4f, mean |ratio - 1| %.4f\n", q.area_ratio_min,
               q.area_ratio_max, q.area_distortion_mean);
   if (!args.out.empty()) {
-    app::refuse_overwriting_inputs({args.surface}, {args.out});
+    refuse_overwriting_inputs({args.surface}, {args.out});
     write_uv_map_obj(args.out, loaded.mesh, param.uv);
     std::printf("wrote %s\n", args.out.c_str());
   }

@@ -1,21 +1,12 @@
 // `paver run SURFACE [--design F] [--pattern P] [--spacing D] [--out DIR]`: the whole pipeline.
 #include "backend_choice.h"
 #include "commands.h"
-#include "output_guard.h"
-#include "run_outputs.h"
 #include "preview_images.h"
 #include "progress_bar.h"
 
-#include "io/atomic_file.h"
-#include "io/design_io.h"
-#include "io/element_export.h"
-#include "elements/element_proximity.h"
 #include "core/input_error.h"
-#include "mesh/mesh_loader.h"
-#include "pipeline/pavement.h"
-#include "report/run_report.h"
-
-#include <nlohmann/json.hpp>
+#include "io/design_io.h"
+#include "pipeline/run_pipeline.h"
 
 #include <algorithm>
 #include <chrono>
@@ -63,14 +54,10 @@ double ms_since(Clock::time_point t0) {
 }
 
 int run_run(const RunArgs& args) {
-  StageTimings timings;
-  auto t0 = Clock::now();
-  LoadedSurface loaded = load_surface(args.surface);
-  for (const auto& w : loaded.warnings) std::cerr << "paver: warning: " << w << "\n";
-  timings.emplace_back("load", ms_since(t0));
-
-  Design design;
-  RunInfo info{args.surface, args.design.empty() ? "defaults" : args.design, false};
+  PipelineRequest request;
+  request.surface_path = args.surface;
+  request.design_source = args.design.empty() ? "defaults" : args.design;
+  Design& design = request.design;
   if (!args.design.empty()) design = load_design(args.design);
   if (!args.pattern.empty()) {
     const auto t = tessellation_from_name(args.pattern);
@@ -88,30 +75,10 @@ int run_run(const RunArgs& args) {
     }
     design.pattern.spacing = *args.spacing;
   }
+  // What the flags and the file give together (c + m >= 0), named after where it came from.
   validate_design(design, args.design.empty() ? "command line" : args.design);
-  info.spacing_derived = design.pattern.spacing <= 0;
 
-  std::optional<ShapeMesh> custom;
-  if (uses_custom_shape(design.elements)) custom = load_custom_shape(design.elements.custom_shape);
-
-  // Refuse before any work is written if an output would replace an input.
-  const fs::path out = args.out;
-  std::vector<fs::path> outputs = app::run_output_paths(out, false);
-  if (args.png) outputs.insert(outputs.end(), {out / "preview.png", out / "param.png"});
-  const std::vector<fs::path> inputs = {args.surface, args.design, design.elements.custom_shape};
-  app::refuse_overwriting_inputs(inputs, outputs);
-
-  t0 = Clock::now();
-  const SurfaceMap map = [&] {
-    try {
-      return build_surface_map(std::move(loaded.mesh));
-    } catch (const std::runtime_error& e) {
-      throw std::runtime_error(args.surface + ": " + e.what());
-    }
-  }();
-  timings.emplace_back("parameterize", ms_since(t0));
-
-  PavementOptions options;
+  PavementOptions& options = request.pavement;
   options.observer = terminal_progress_bar(design.solver.iterations);
   options.optimize = !args.no_optimize;
   options.postprocess = !args.no_postprocess;
@@ -119,41 +86,43 @@ int run_run(const RunArgs& args) {
   options.resolve_collisions = !args.no_resolve;
   const app::BackendChoice backend = app::choose_backend(args.backend, args.device, args.threads);
   options.solver = backend.factory;
-  Pavement pavement = make_pavement(map, design, options);
+
+  const fs::path out = args.out;
+  request.out = out;
+  if (args.png) {
+    request.extra_outputs = {out / "preview.png", out / "param.png"};
+    request.write_extras = [&](const PipelineResult& r, StageTimings& timings) {
+      const auto t0 = Clock::now();
+      write_preview_images(out, *r.map, r.pavement, r.custom_shape.get());
+      timings.emplace_back("png", ms_since(t0));
+    };
+  }
+  const PipelineResult result = run_pipeline(std::move(request));
   finish_progress_bar();
-  timings.insert(timings.end(), pavement.timings.begin(), pavement.timings.end());
-  if (info.spacing_derived)
+  for (const auto& w : result.warnings) std::cerr << "paver: warning: " << w << "\n";
+  const SurfaceMap& map = *result.map;
+  const Pavement& pavement = result.pavement;
+  const PavementCounts& counts = result.counts;
+  if (result.info.spacing_derived)
     std::printf("no spacing given: using D = %g, about 1000 points over this surface\n",
                 pavement.design.pattern.spacing);
 
-  t0 = Clock::now();
-  app::write_run_files(out, pavement, {.custom = custom ? &*custom : nullptr});
-  timings.emplace_back("export", ms_since(t0));
-  if (args.png) {
-    t0 = Clock::now();
-    write_preview_images(out, map, pavement, custom ? &*custom : nullptr);
-    timings.emplace_back("png", ms_since(t0));
-  }
-  const nlohmann::json report = app::write_run_report(out, info, map, pavement, timings);
-
   const auto& q = map.parameterization.quality;
   const auto& pr = map.parameterization.report;
-  const auto& r = report;
   std::printf("surface  %s: %d vertices, %d faces, area %.6g\n", args.surface.c_str(), map.mesh.vertex_count(),
               map.mesh.face_count(), surface_area(map.mesh));
   std::printf("map      ARAP from %s, %d iterations: %d flips, %d boundary overlaps, s1/s2 mean %.3f max %.3f\n",
               pr.start_used == ArapStart::Lscm ? "LSCM" : "Tutte", pr.iterations, q.flipped_triangles,
               q.boundary_intersections, q.stretch_mean, q.stretch_max);
-  std::printf("pattern  %s, D = %g: %d points, %lld edges (+%lld virtual), %lld edges cross the boundary\n",
+  std::printf("pattern  %s, D = %g: %d points, %ld edges (+%ld virtual), %ld edges cross the boundary\n",
               std::string(tessellation_name(pavement.design.pattern.tessellation)).c_str(),
-              pavement.design.pattern.spacing, pavement.pattern.point_count(),
-              r["pattern"]["edges"].get<long long>(), r["pattern"]["virtual_edges"].get<long long>(),
-              r["pattern"]["boundary_crossing_edges"].get<long long>());
+              pavement.design.pattern.spacing, pavement.pattern.point_count(), counts.pattern_edges,
+              counts.virtual_edges, counts.boundary_crossing_edges);
   std::printf("optimize %s%s%s: %d iterations, %s (last max step %.3g); %d filled, %d eliminated at the boundary\n",
               backend.name.c_str(), backend.device.empty() ? "" : " on ", backend.device.c_str(), pavement.solve.iterations, std::string(stop_reason_name(pavement.solve.reason)).c_str(),
               pavement.solve.last_max_step, pavement.filled, pavement.eliminated);
-  std::printf("elements %zu (%lld V, %lld E)\n", pavement.elements.size(), r["elements"]["vertex"].get<long long>(),
-              r["elements"]["edge"].get<long long>());
+  std::printf("elements %zu (%ld V, %ld E)\n", pavement.elements.size(), counts.vertex_elements,
+              counts.edge_elements);
   std::printf("quality           collisions  worst overlap  NN ratio min / p5 / median / p95   cv     crossings\n");
   for (const auto& [label, q] : {std::pair{"  initial", &pavement.before}, std::pair{"  paper's method", &pavement.paper},
                                  std::pair{"  final", &pavement.after}})
@@ -161,8 +130,9 @@ int run_run(const RunArgs& args) {
                 q->worst_overlap, q->neighbor_ratio.min, q->neighbor_ratio.p5, q->neighbor_ratio.median,
                 q->neighbor_ratio.p95, q->neighbor_ratio.cv, q->boundary_crossings);
   std::printf("time    ");
-  for (const auto& [stage, ms] : timings) std::printf(" %s %.1f ms,", stage.c_str(), ms);
-  std::printf(" total %.1f ms\n", r["timings_ms"]["total"].get<double>());
+  double total = 0;
+  for (const auto& [stage, ms] : result.timings) std::printf(" %s %.1f ms,", stage.c_str(), ms), total += ms;
+  std::printf(" total %.1f ms\n", total);
   std::printf("wrote    %s/{placements.csv, elements.ply, elements.obj, design.json, report.json%s}\n",
               out.string().c_str(), args.png ? ", preview.png, param.png" : "");
   return 0;

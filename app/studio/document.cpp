@@ -1,6 +1,6 @@
 #include "document.h"
 
-#include "output_guard.h"
+#include "io/output_guard.h"
 #include "io/design_io.h"
 #include "elements/element_proximity.h"
 #include "core/input_error.h"
@@ -103,8 +103,8 @@ bool open_design_file(Document& doc, const std::filesystem::path& path) {
 void prepare_output(const Document& doc, const std::filesystem::path& path, bool may_be_design) {
   std::vector<std::filesystem::path> inputs = {doc.surface.path, doc.design.elements.custom_shape};
   if (!may_be_design) inputs.push_back(doc.design_path);
-  app::refuse_overwriting_inputs(inputs, {path});
-  if (path.has_parent_path()) app::make_output_folder(path.parent_path());
+  refuse_overwriting_inputs(inputs, {path});
+  if (path.has_parent_path()) make_output_folder(path.parent_path());
 }
 
 bool save_design_file(Document& doc, const std::filesystem::path& path) {

@@ -1,6 +1,5 @@
 #include "live_pavement.h"
 
-#include "pattern/default_spacing.h"
 #include "core/input_error.h"
 
 #include <atomic>
@@ -56,27 +55,24 @@ void run_pavement(const RunRequest& request, const std::shared_ptr<LivePavement:
   RunOutcome outcome;
   outcome.revision = request.revision;
   try {
-    // The pattern for the live view, before the solver moves it. make_pavement builds it again
-    // (it is cheap next to the solve), which keeps the engine's one-call interface.
-    Design design = request.design;
-    if (design.pattern.spacing <= 0)
-      design.pattern.spacing = default_spacing(request.map->mesh, design.pattern.tessellation);
-    auto pattern =
-        std::make_shared<const Pattern>(build_pattern(*request.map, make_design_cell(design.pattern), design.placement));
-    {
-      std::lock_guard lock(run->mutex);
-      run->snapshot.revision = request.revision;
-      run->snapshot.pattern = pattern;
-      run->snapshot.design = design;
-      run->snapshot.points = pattern->points;
-      ++run->snapshot.sequence;
-    }
-
-    PavementOptions options;
+    PipelineRequest pipeline;
+    pipeline.map = request.map;
+    pipeline.design = request.design;
+    pipeline.design_source = "studio";
+    PavementOptions& options = pipeline.pavement;
     options.solver = request.solver;  // empty: the CPU reference
     options.stop = &run->cancelled;   // every solve of the run, the collision resolution's too
+    // The live view starts from the pattern before the solver moves it.
+    options.on_pattern = [&](const Pattern& pattern, const Design& design) {
+      std::lock_guard lock(run->mutex);
+      run->snapshot.revision = request.revision;
+      run->snapshot.pattern = std::make_shared<const Pattern>(pattern);
+      run->snapshot.design = design;
+      run->snapshot.points = pattern.points;
+      ++run->snapshot.sequence;
+    };
     options.observer = [run](int it, const std::vector<glm::vec2>& positions) { return run->observe(it, positions); };
-    outcome.pavement = std::make_shared<const Pavement>(make_pavement(*request.map, request.design, options));
+    outcome.pavement = std::make_shared<const Pavement>(run_pipeline(std::move(pipeline)).pavement);
   } catch (const InputError& e) {
     outcome.error = e.what();
     outcome.input_error = true;

@@ -1,5 +1,5 @@
 #pragma once
-// make_pavement on a background thread, watched and steered from the UI. The solver's observer
+// run_pipeline (on a surface already mapped) on a background thread, watched and steered from the UI. The solver's observer
 // publishes the particle positions for the live view and is where the run is steered:
 //   pause  - the observer blocks on a condition variable until resumed;
 //   step N - the run goes on until N more iterations are done, then pauses again (on the Vulkan
@@ -10,6 +10,7 @@
 
 #include "pattern/pattern.h"
 #include "pipeline/pavement.h"
+#include "pipeline/run_pipeline.h"
 #include "map/surface_map.h"
 
 #include <glm/vec2.hpp>

@@ -1,9 +1,9 @@
 #include "studio.h"
 
-#include "output_guard.h"
+#include "io/output_guard.h"
 #include "panels/panels.h"
 #include "recent_files.h"
-#include "run_outputs.h"
+#include "pipeline/run_outputs.h"
 #include "shortcuts.h"
 
 #include "core/input_error.h"
@@ -107,15 +107,15 @@ void export_outputs(Studio& s, const fs::path& folder) {
     throw InputError("nothing to export yet: the pavement for this design is not finished (run it, or wait)");
   const Pavement& pavement = *s.doc.result.pavement;
   const std::vector<fs::path> inputs = {s.doc.surface.path, s.doc.design_path, s.doc.design.elements.custom_shape};
-  app::refuse_overwriting_inputs(inputs, app::run_output_paths(folder, true));
+  refuse_overwriting_inputs(inputs, run_output_paths(folder, true));
   StageTimings timings = s.doc.surface.timings;
   timings.insert(timings.end(), pavement.timings.begin(), pavement.timings.end());
   const auto t0 = Clock::now();
-  app::write_run_files(folder, pavement, {.custom = custom_shape(s.doc), .stl = true});
+  write_run_files(folder, pavement, {.custom = custom_shape(s.doc), .stl = true});
   timings.emplace_back("export", ms_since(t0));
   const RunInfo info{s.doc.surface.path.string(), s.doc.design_path.empty() ? "studio" : s.doc.design_path.string(),
                      s.doc.design.pattern.spacing <= 0};
-  app::write_run_report(folder, info, *s.doc.surface.map, pavement, timings);
+  write_run_report(folder, info, *s.doc.surface.map, pavement, timings);
   report_status(s.doc, "exported to " + folder.string());
 }
 

@@ -1,24 +1,11 @@
 #include "surface_loader.h"
 
-#include "map/arap_parameterization.h"
 #include "core/input_error.h"
-#include "map/map_quality.h"
-#include "mesh/mesh_loader.h"
+#include "pipeline/map_surface.h"
 
-#include <glm/geometric.hpp>
-
-#include <chrono>
-#include <cmath>
 #include <mutex>
 
 namespace paver::studio {
-
-namespace {
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
-
-constexpr int kIterationsPerChunk = 4;  // a few ms each on a dense mesh: the progress moves smoothly
-}  // namespace
 
 struct SurfaceLoader::Shared {
   mutable std::mutex mutex;
@@ -38,35 +25,15 @@ namespace {
 SurfaceLoadOutcome load_and_map(const std::filesystem::path& path, std::stop_token stop, SurfaceLoader::Shared& shared) {
   SurfaceLoadOutcome outcome;
   try {
-    OpenedSurface opened;
-    opened.path = path;
-    auto t0 = Clock::now();
-    LoadedSurface loaded = load_surface(path);
-    opened.warnings = loaded.warnings;
-    opened.timings.emplace_back("load", ms_since(t0));
-    if (stop.stop_requested()) return outcome;
-
-    t0 = Clock::now();
-    shared.report(0.05f, "mapping: start map and factorization");
-    const ArapOptions options;  // the CLI's defaults
-    ArapSolver solver(loaded.mesh, options);
-    while (solver.report().iterations < options.max_iterations) {
-      if (stop.stop_requested()) return outcome;
-      const int chunk = std::min(kIterationsPerChunk, options.max_iterations - solver.report().iterations);
-      if (solver.iterate(chunk)) break;
-      const int done = solver.report().iterations;
-      shared.report(0.15f + 0.75f * float(done) / float(options.max_iterations),
-                    "mapping: ARAP " + std::to_string(done) + " / " + std::to_string(options.max_iterations));
-    }
-    shared.report(0.92f, "mapping: lifting data");
-    Parameterization parameterization = finish_parameterization(loaded.mesh, solver);
-    opened.map = std::make_shared<SurfaceMap>(make_surface_map(std::move(loaded.mesh), std::move(parameterization)));
-    opened.timings.emplace_back("parameterize", ms_since(t0));
-    outcome.surface = std::move(opened);
+    MappedSurface mapped = map_surface_file(
+        path, [&](float fraction, const std::string& stage) { shared.report(fraction, stage); },
+        [&] { return stop.stop_requested(); });
+    if (!mapped.map) return outcome;  // abandoned
+    outcome.surface = OpenedSurface{path, std::move(mapped.map), std::move(mapped.warnings), std::move(mapped.timings)};
   } catch (const InputError& e) {
     outcome.error = e.what();
   } catch (const std::exception& e) {
-    outcome.error = path.string() + ": " + e.what();
+    outcome.error = e.what();
   }
   return outcome;
 }

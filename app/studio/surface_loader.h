@@ -1,8 +1,8 @@
 #pragma once
-// Opens a surface in the background: load and check it, then the bijective ARAP map run a few
-// iterations at a time (ArapSolver::iterate) so the window shows the progress and never freezes,
-// even on a mesh of a million faces. The map equals build_surface_map's with default options, so
-// what the studio exports is what `paver run` writes for the same surface and design.
+// Opens a surface in the background through the pipeline's first stages (map_surface_file, which
+// `paver run` calls too), with its progress shown and a stop between ARAP chunks, so the window
+// never freezes, even on a mesh of a million faces; what the studio exports is what `paver run`
+// writes for the same surface and design.
 #include "background_jobs.h"
 
 #include "pipeline/pavement.h"

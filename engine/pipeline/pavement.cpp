@@ -60,6 +60,7 @@ Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptio
   pavement.pattern = build_pattern(map, pavement.cell, design.placement);
   pavement.points = pavement.pattern.points;
   pavement.timings.emplace_back("pattern", ms_since(t0));
+  if (options.on_pattern) options.on_pattern(pavement.pattern, design);
 
   t0 = Clock::now();
   const PlacedElements initial = place_all_elements(map, pavement.pattern, pavement.points, design, options.postprocess);

@@ -12,6 +12,7 @@
 #include "map/surface_map.h"
 #include "pattern/unit_cell.h"
 
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -30,6 +31,9 @@ struct PavementOptions {
   SolverFactory solver;              // the backend; empty = the CPU reference with `threads`
   SolverObserver observer;           // called after every solver iteration of the main solve
   const std::atomic<bool>* stop = nullptr;  // when it becomes true, every solve of the run ends
+  // Called once the trimmed pattern is built, before the solver moves it (the studio's live view
+  // starts from it), with the design as used (spacing resolved).
+  std::function<void(const Pattern&, const Design&)> on_pattern;
 };
 
 struct Pavement {

@@ -21,6 +21,18 @@ std::string_view start_name(ArapStart s) {
 
 }  // namespace
 
+PavementCounts count_pavement(const Pavement& pavement) {
+  const Pattern& pattern = pavement.pattern;
+  PavementCounts c;
+  c.virtual_edges = std::count(pattern.edge_virtual.begin(), pattern.edge_virtual.end(), 1);
+  c.pattern_edges = pattern.edge_count() - c.virtual_edges;
+  c.boundary_crossing_edges = long(pattern.crossing_edges.size());
+  c.vertex_elements = std::count(pavement.elements.kind.begin(), pavement.elements.kind.end(), ElementKind::Vertex);
+  c.edge_elements = long(pavement.elements.size()) - c.vertex_elements;
+  c.retired_particles = std::count(pavement.retired.begin(), pavement.retired.end(), 1);
+  return c;
+}
+
 nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const Pavement& pavement,
                                const StageTimings& timings) {
   using nlohmann::json;
@@ -29,8 +41,7 @@ nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const
   const auto& pattern = pavement.pattern;
   const auto& elements = pavement.elements;
 
-  const long virtual_edges = std::count(pattern.edge_virtual.begin(), pattern.edge_virtual.end(), 1);
-  const long vertex_elements = std::count(elements.kind.begin(), elements.kind.end(), ElementKind::Vertex);
+  const PavementCounts counts = count_pavement(pavement);
 
   json timing = json::object();
   double total = 0;
@@ -64,18 +75,18 @@ nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const
                   {"spacing_derived", info.spacing_derived}}},
       {"pattern", {{"cell_edges", pavement.cell.edges.size()},
                    {"points", pattern.point_count()},
-                   {"edges", pattern.edge_count() - virtual_edges},
-                   {"virtual_edges", virtual_edges},
-                   {"boundary_crossing_edges", pattern.crossing_edges.size()}}},
+                   {"edges", counts.pattern_edges},
+                   {"virtual_edges", counts.virtual_edges},
+                   {"boundary_crossing_edges", counts.boundary_crossing_edges}}},
       {"elements", {{"total", elements.size()},
-                    {"vertex", vertex_elements},
-                    {"edge", long(elements.size()) - vertex_elements}}},
+                    {"vertex", counts.vertex_elements},
+                    {"edge", counts.edge_elements}}},
       {"optimization", {{"iterations", pavement.solve.iterations},
                         {"stop_reason", stop_reason_name(pavement.solve.reason)},
                         {"converged", pavement.solve.reason == StopReason::Converged},
                         {"last_max_step", pavement.solve.last_max_step},
                         {"strays_pulled_back", pavement.solve.strays_pulled_back},
-                        {"retired_particles", std::count(pavement.retired.begin(), pavement.retired.end(), 1)},
+                        {"retired_particles", counts.retired_particles},
                         {"milliseconds", pavement.solve.milliseconds}}},
       {"postprocess", {{"filled", pavement.filled}, {"eliminated", pavement.eliminated}}},
       {"collision_resolution", {{"rounds", pavement.resolution.rounds},

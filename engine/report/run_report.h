@@ -15,6 +15,16 @@ struct RunInfo {
   bool spacing_derived = false;      // spacing came from the surface size
 };
 
+// What the CLI's summary and the report count.
+struct PavementCounts {
+  long pattern_edges = 0;            // real edges of the trimmed pattern
+  long virtual_edges = 0;            // bracing edges
+  long boundary_crossing_edges = 0;
+  long vertex_elements = 0, edge_elements = 0;
+  long retired_particles = 0;
+};
+PavementCounts count_pavement(const Pavement& pavement);
+
 nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const Pavement& pavement,
                                const StageTimings& timings);
 

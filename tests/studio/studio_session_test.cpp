@@ -117,7 +117,8 @@ TEST_F(StudioSession, ScriptedEditExportsWhatTheCliWritesAndScreenshotShowsThePa
   EXPECT_EQ(design["pattern"]["tessellation"], "hex");
   EXPECT_EQ(design["pattern"]["spacing"].get<double>(), 6.0);
 
-  // The CLI on the exported design writes the same placements, byte for byte.
+  // The CLI on the exported design writes the same files, byte for byte (but the report, whose
+  // timings differ): both run the one pipeline and its export stage.
   const fs::path cli_out = dir_ / "cli";
   const Outcome cli = run_in_source(quote(PAVER_CLI) + " run assets/surfaces/dome.obj --design " +
                                     quote((exported / "design.json").string()) + " --backend cpu --out " +
@@ -127,6 +128,15 @@ TEST_F(StudioSession, ScriptedEditExportsWhatTheCliWritesAndScreenshotShowsThePa
   const std::string studio_csv = read_text(exported / "placements.csv");
   EXPECT_GT(studio_csv.size(), 1000u);
   EXPECT_TRUE(studio_csv == read_text(cli_out / "placements.csv")) << "placements.csv differs from paver run's";
+  for (const char* name : {"elements.ply", "elements.obj", "design.json"})
+    EXPECT_TRUE(read_text(exported / name) == read_text(cli_out / name)) << name << " differs from paver run's";
+  const nlohmann::json studio_report = nlohmann::json::parse(read_text(exported / "report.json"));
+  const nlohmann::json cli_report = nlohmann::json::parse(read_text(cli_out / "report.json"));
+  for (const char* section : {"pattern", "elements", "quality_after", "postprocess", "collision_resolution"}) {
+    nlohmann::json a = studio_report[section], b = cli_report[section];
+    a.erase("milliseconds"), b.erase("milliseconds");
+    EXPECT_EQ(a, b) << "report.json's " << section << " differs";
+  }
 
   // The screenshot: the whole window, not blank, with the grey surface and the green (loose to
   // touching) elements of the ratio colour scale.

@@ -1,6 +1,6 @@
-#include "run_outputs.h"
+#include "pipeline/run_outputs.h"
 
-#include "output_guard.h"
+#include "io/output_guard.h"
 
 #include "io/atomic_file.h"
 #include "io/design_io.h"
@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace paver::app {
+namespace paver {
 
 namespace fs = std::filesystem;
 
@@ -41,4 +41,4 @@ nlohmann::json write_run_report(const fs::path& folder, const RunInfo& info, con
   return report;
 }
 
-}  // namespace paver::app
+}  // namespace paver

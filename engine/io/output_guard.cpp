@@ -1,10 +1,10 @@
-#include "output_guard.h"
+#include "io/output_guard.h"
 
 #include "core/input_error.h"
 
 #include <system_error>
 
-namespace paver::app {
+namespace paver {
 
 void refuse_overwriting_inputs(const std::vector<std::filesystem::path>& inputs,
                                const std::vector<std::filesystem::path>& outputs) {
@@ -28,4 +28,4 @@ void make_output_folder(const std::filesystem::path& folder) {
                      (ec ? ec.message() : "a file of that name exists"));
 }
 
-}  // namespace paver::app
+}  // namespace paver

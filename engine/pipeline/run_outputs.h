@@ -12,7 +12,7 @@
 #include <filesystem>
 #include <vector>
 
-namespace paver::app {
+namespace paver {
 
 struct RunOutputOptions {
   const ShapeMesh* custom = nullptr;  // the design's custom shape, when an element uses it
@@ -31,4 +31,4 @@ void write_run_files(const std::filesystem::path& folder, const Pavement& paveme
 nlohmann::json write_run_report(const std::filesystem::path& folder, const RunInfo& info, const SurfaceMap& map,
                                 const Pavement& pavement, const StageTimings& timings);
 
-}  // namespace paver::app
+}  // namespace paver

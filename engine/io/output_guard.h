@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <vector>
 
-namespace paver::app {
+namespace paver {
 
 // Throws InputError when any output path names the same file as any input path.
 void refuse_overwriting_inputs(const std::vector<std::filesystem::path>& inputs,
@@ -12,4 +12,4 @@ void refuse_overwriting_inputs(const std::vector<std::filesystem::path>& inputs,
 // Creates the output folder (and parents); throws InputError naming it on failure.
 void make_output_folder(const std::filesystem::path& folder);
 
-}  // namespace paver::app
+}  // namespace paver

@@ -1,0 +1,60 @@
+#include "pipeline/map_surface.h"
+
+#include "core/input_error.h"
+#include "mesh/mesh_loader.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace paver {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+
+// ARAP iterations between progress reports and stop checks: a few per second on a 1M-face mesh.
+constexpr int kIterationsPerChunk = 5;
+
+}  // namespace
+
+MappedSurface map_surface_file(const std::filesystem::path& path, const PipelineProgress& progress,
+                               const StopRequested& stop) {
+  const auto report = [&](float fraction, const std::string& stage) {
+    if (progress) progress(fraction, stage);
+  };
+  const auto stopped = [&] { return stop && stop(); };
+  MappedSurface out;
+  auto t0 = Clock::now();
+  report(0.0f, "loading");
+  LoadedSurface loaded = load_surface(path);
+  out.warnings = std::move(loaded.warnings);
+  out.timings.emplace_back("load", ms_since(t0));
+  if (stopped()) return out;
+
+  t0 = Clock::now();
+  try {
+    report(0.05f, "mapping: start map and factorization");
+    const ArapOptions options;
+    ArapSolver solver(loaded.mesh, options);
+    while (solver.report().iterations < options.max_iterations) {
+      if (stopped()) return out;
+      const int chunk = std::min(kIterationsPerChunk, options.max_iterations - solver.report().iterations);
+      if (solver.iterate(chunk)) break;
+      const int done = solver.report().iterations;
+      report(0.15f + 0.75f * float(done) / float(options.max_iterations),
+             "mapping: ARAP " + std::to_string(done) + " / " + std::to_string(options.max_iterations));
+    }
+    report(0.92f, "mapping: lifting data");
+    Parameterization parameterization = finish_parameterization(loaded.mesh, solver);
+    out.map = std::make_shared<const SurfaceMap>(make_surface_map(std::move(loaded.mesh), std::move(parameterization)));
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(path.string() + ": " + e.what());
+  }
+  out.timings.emplace_back("parameterize", ms_since(t0));
+  report(1.0f, "mapped");
+  return out;
+}
+
+}  // namespace paver

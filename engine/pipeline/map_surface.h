@@ -1,0 +1,31 @@
+#pragma once
+// Stages 1-2 of the pipeline: a surface file, loaded and checked (mesh/), mapped bijectively to
+// the plane (map/). `paver run`, `paver param` and the studio's background loader all call this.
+#include "map/surface_map.h"
+#include "pipeline/pavement.h"
+
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace paver {
+
+// Progress of a long stage: fraction of the whole call in [0, 1] and what it is doing.
+using PipelineProgress = std::function<void(float fraction, const std::string& stage)>;
+// Polled between chunks of work; true abandons the call.
+using StopRequested = std::function<bool()>;
+
+struct MappedSurface {
+  std::shared_ptr<const SurfaceMap> map;  // null when stopped
+  std::vector<std::string> warnings;      // the loader's repairs (dropped faces, components)
+  StageTimings timings;                   // "load", "parameterize"
+};
+
+// Throws InputError for a file Paver cannot pave (naming the file), std::runtime_error naming the
+// file when the map fails.
+MappedSurface map_surface_file(const std::filesystem::path& path, const PipelineProgress& progress = {},
+                               const StopRequested& stop = {});
+
+}  // namespace paver

@@ -1,0 +1,66 @@
+#pragma once
+// The whole pipeline in one call: surface -> map -> pattern -> spring system -> optimize ->
+// resolve collisions -> elements -> post-process -> measure -> export. `paver run`, the studio's
+// live runs, the benchmarks and the tests call it; each stage is also a function of its own
+// (map_surface_file, make_pavement, write_run_outputs) for callers that redo only some stages.
+//
+// Inputs are checked before the expensive work: the design (validate_design), its custom shape,
+// and that no output would overwrite an input. Nothing is written unless `out` is given.
+#include "design/design.h"
+#include "elements/element_shape.h"
+#include "map/surface_map.h"
+#include "pipeline/map_surface.h"
+#include "pipeline/pavement.h"
+#include "report/run_report.h"
+
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace paver {
+
+struct PipelineResult;
+
+struct PipelineRequest {
+  // The surface: loaded and mapped from `surface_path`, unless `map` is given (the studio maps
+  // once per surface and re-runs the rest on every design change; then `map_timings` says how
+  // long that took, for the report).
+  std::filesystem::path surface_path;
+  std::shared_ptr<const SurfaceMap> map;
+  StageTimings map_timings;
+
+  Design design;
+  std::string design_source = "defaults";  // the design file, "defaults", or "studio": names errors and the report
+
+  PavementOptions pavement;                // stages on/off, solver backend, observer, stop, on_pattern
+
+  // Export: the run's files into `out` (placements.csv, elements.ply/.obj[/.stl], design.json,
+  // report.json). `extra_outputs` are files the caller writes there itself through
+  // `write_extras` (the CLI's PNG previews): they are checked against the inputs too, and written
+  // before report.json so that its timings include them.
+  std::optional<std::filesystem::path> out;
+  bool stl = false;
+  std::vector<std::filesystem::path> extra_outputs;
+  std::function<void(const PipelineResult&, StageTimings&)> write_extras;
+
+  PipelineProgress progress;               // loading and mapping progress
+};
+
+struct PipelineResult {
+  std::shared_ptr<const SurfaceMap> map;
+  std::vector<std::string> warnings;          // the loader's repairs
+  std::shared_ptr<const ShapeMesh> custom_shape;  // when an element uses it
+  Pavement pavement;
+  RunInfo info;
+  StageTimings timings;                       // every stage, load to export
+  PavementCounts counts;
+};
+
+// Throws InputError for bad input (before anything is computed or written), std::runtime_error
+// otherwise. When `pavement.stop` becomes true the solves end early and the result is partial.
+PipelineResult run_pipeline(PipelineRequest request);
+
+}  // namespace paver
