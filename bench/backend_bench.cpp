@@ -9,7 +9,7 @@
 #include "io/atomic_file.h"
 #include "io/design_io.h"
 #include "mesh/mesh_loader.h"
-#include "pipeline/pavement.h"
+#include "pipeline/run_pipeline.h"
 #include "solver/spring_solver.h"
 
 #include "bundled_designs.h"
@@ -151,16 +151,16 @@ int main(int argc, char** argv) {
     std::printf(" | identical\n");
     out["designs"] = nlohmann::json::array();
     for (const auto& [name, surface_file] : design_surfaces()) {
-      const paver::SurfaceMap design_map =
-          paver::build_surface_map(paver::load_surface(fs::path(PAVER_SOURCE_DIR) / "assets/surfaces" / surface_file).mesh);
-      const paver::Design design = paver::load_design(fs::path(PAVER_SOURCE_DIR) / "assets/designs" / (name + ".json"));
+      paver::PipelineRequest request;
+      request.map = std::make_shared<const paver::SurfaceMap>(paver::build_surface_map(
+          paver::load_surface(fs::path(PAVER_SOURCE_DIR) / "assets/surfaces" / surface_file).mesh));
+      request.design = paver::load_design(fs::path(PAVER_SOURCE_DIR) / "assets/designs" / (name + ".json"));
       std::printf("%-26s", name.c_str());
       std::vector<paver::Elements> results;
       for (const auto& b : backends) {
-        paver::PavementOptions options;
-        options.solver = b.factory;
+        request.pavement.solver = b.factory;
         paver::Pavement p;
-        const double ms = 1e3 * seconds_of([&] { p = paver::make_pavement(design_map, design, options); });
+        const double ms = 1e3 * seconds_of([&] { p = paver::run_pipeline(request).pavement; });
         results.push_back(p.elements);
         std::printf(" | %25.1f ms", ms);
         std::fflush(stdout);

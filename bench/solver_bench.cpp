@@ -4,7 +4,7 @@
 //   solver/<N>/<threads> CPU solver milliseconds per iteration at N particles on the dense wave.
 #include "io/design_io.h"
 #include "mesh/mesh_loader.h"
-#include "pipeline/pavement.h"
+#include "pipeline/run_pipeline.h"
 #include "solver/spring_solver.h"
 
 #include "bundled_designs.h"
@@ -33,12 +33,14 @@ std::map<std::string, std::string> design_surfaces() {
 
 void design(benchmark::State& state, std::string name, std::string surface) {
   const auto t0 = std::chrono::steady_clock::now();
-  const paver::SurfaceMap map =
-      paver::build_surface_map(paver::load_surface(fs::path(PAVER_SOURCE_DIR) / "assets/surfaces" / surface).mesh);
+  const auto map = std::make_shared<const paver::SurfaceMap>(
+      paver::build_surface_map(paver::load_surface(fs::path(PAVER_SOURCE_DIR) / "assets/surfaces" / surface).mesh));
   const double map_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  const paver::Design d = paver::load_design(fs::path(PAVER_SOURCE_DIR) / "assets/designs" / (name + ".json"));
+  paver::PipelineRequest request;
+  request.map = map;
+  request.design = paver::load_design(fs::path(PAVER_SOURCE_DIR) / "assets/designs" / (name + ".json"));
   paver::Pavement p;
-  for (auto _ : state) p = paver::make_pavement(map, d);
+  for (auto _ : state) p = paver::run_pipeline(request).pavement;
   state.counters["load_and_map_ms"] = map_ms;
   for (const auto& [stage, ms] : p.timings) state.counters[stage + "_ms"] = ms;
   state.counters["elements"] = double(p.elements.size());

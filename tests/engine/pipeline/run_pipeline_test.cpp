@@ -1,0 +1,143 @@
+// Tests for engine/pipeline/run_pipeline.cpp and map_surface.cpp: the one pipeline gives what its
+// stages give one by one, checks its inputs before any work, writes only when asked, and reports
+// the pattern before the solver moves it.
+#include "core/input_error.h"
+#include "io/design_io.h"
+#include "mesh/mesh_loader.h"
+#include "pipeline/run_pipeline.h"
+#include "test_meshes.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+
+namespace paver {
+namespace {
+
+namespace fs = std::filesystem;
+
+class RunPipeline : public ::testing::Test {
+protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("paver_run_pipeline_" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  static PipelineRequest dome_request() {
+    PipelineRequest r;
+    r.surface_path = test::bundled_surface("dome");
+    r.design = load_design(test::source_dir() / "assets/designs/dome_hex_d6.json");
+    r.design_source = "dome_hex_d6.json";
+    r.pavement.threads = 1;
+    return r;
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(RunPipeline, EqualsItsStagesCalledOneByOne) {
+  std::vector<float> fractions;
+  PipelineRequest request = dome_request();
+  request.progress = [&](float f, const std::string&) { fractions.push_back(f); };
+  const PipelineResult result = run_pipeline(request);
+
+  const SurfaceMap map = build_surface_map(load_surface(test::bundled_surface("dome")).mesh);
+  PavementOptions options;
+  options.threads = 1;
+  const Pavement direct = make_pavement(map, request.design, options);
+  EXPECT_EQ(result.map->uv, map.uv);
+  EXPECT_EQ(result.pavement.elements.position, direct.elements.position);
+  EXPECT_EQ(result.pavement.elements.diameter, direct.elements.diameter);
+  EXPECT_GT(result.pavement.elements.size(), 50u);
+  // Counts agree with the pavement, and every stage is timed once, load first.
+  EXPECT_EQ(result.counts.vertex_elements + result.counts.edge_elements, long(result.pavement.elements.size()));
+  ASSERT_GE(result.timings.size(), 4u);
+  EXPECT_EQ(result.timings.front().first, "load");
+  EXPECT_EQ(result.timings[1].first, "parameterize");
+  // Mapping progress moves forward and ends at 1.
+  ASSERT_GE(fractions.size(), 3u);
+  EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
+  EXPECT_EQ(fractions.back(), 1.0f);
+}
+
+TEST_F(RunPipeline, WritesOnlyWhenAskedAndTheReportLast) {
+  PipelineRequest request = dome_request();
+  request.map = std::make_shared<const SurfaceMap>(build_surface_map(load_surface(test::bundled_surface("dome")).mesh));
+  request.pavement.optimize = false;
+  run_pipeline(request);
+  EXPECT_TRUE(fs::is_empty(dir_));
+
+  request.out = dir_ / "out";
+  request.extra_outputs = {dir_ / "out" / "extra.txt"};
+  bool report_existed = true;
+  request.write_extras = [&](const PipelineResult& r, StageTimings& timings) {
+    report_existed = fs::exists(dir_ / "out" / "report.json");
+    std::ofstream(dir_ / "out" / "extra.txt") << r.pavement.elements.size();
+    timings.emplace_back("extra", 1.0);
+  };
+  const PipelineResult result = run_pipeline(request);
+  EXPECT_FALSE(report_existed) << "the extras must be written before report.json";
+  for (const char* name : {"placements.csv", "elements.ply", "elements.obj", "design.json", "report.json", "extra.txt"})
+    EXPECT_TRUE(fs::is_regular_file(dir_ / "out" / name)) << name;
+  std::ifstream in(dir_ / "out" / "report.json");
+  const nlohmann::json report = nlohmann::json::parse(in);
+  EXPECT_EQ(report["timings_ms"]["extra"].get<double>(), 1.0);
+  EXPECT_EQ(report["elements"]["total"].get<long>(), long(result.pavement.elements.size()));
+  EXPECT_EQ(report["design"]["source"], "dome_hex_d6.json");
+}
+
+TEST_F(RunPipeline, RefusesBadInputBeforeAnyWork) {
+  // A bad design is refused before the surface is even read: this surface does not exist.
+  PipelineRequest bad_design = dome_request();
+  bad_design.surface_path = dir_ / "missing.obj";
+  bad_design.design.solver.dt = 2;
+  try {
+    run_pipeline(bad_design);
+    FAIL() << "accepted dt = 2";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("'solver.dt'"), std::string::npos) << e.what();
+  }
+
+  // An output that is an input is refused before anything is written or mapped.
+  const fs::path surface = dir_ / "placements.csv";
+  fs::copy_file(test::bundled_surface("dome"), surface);
+  const auto before = fs::last_write_time(surface);
+  PipelineRequest overwrite = dome_request();
+  overwrite.surface_path = surface;
+  overwrite.out = dir_;
+  int mapped = 0;
+  overwrite.progress = [&](float, const std::string&) { ++mapped; };
+  EXPECT_THROW(run_pipeline(overwrite), InputError);
+  EXPECT_EQ(mapped, 0);
+  EXPECT_EQ(fs::last_write_time(surface), before);
+  EXPECT_FALSE(fs::exists(dir_ / "report.json"));
+}
+
+TEST_F(RunPipeline, ReportsThePatternBeforeTheSolverMovesIt) {
+  PipelineRequest request = dome_request();
+  std::vector<glm::dvec2> pattern_points;
+  double spacing = 0;
+  request.pavement.on_pattern = [&](const Pattern& pattern, const Design& design) {
+    pattern_points = pattern.points;
+    spacing = design.pattern.spacing;
+  };
+  const PipelineResult result = run_pipeline(request);
+  EXPECT_EQ(pattern_points, result.pavement.pattern.points);
+  EXPECT_NE(pattern_points, result.pavement.points) << "the optimizer should have moved the points";
+  EXPECT_EQ(spacing, result.pavement.design.pattern.spacing);
+}
+
+TEST_F(RunPipeline, MappingStopsWhenAsked) {
+  int polls = 0;
+  const MappedSurface mapped = map_surface_file(test::bundled_surface("dome"), {}, [&] { return ++polls > 2; });
+  EXPECT_EQ(mapped.map, nullptr);
+  EXPECT_EQ(polls, 3);
+}
+
+}  // namespace
+}  // namespace paver
