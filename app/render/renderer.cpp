@@ -1,5 +1,7 @@
 #include "renderer.h"
 
+#include "element_instance.h"
+
 #include "paver/compute/gpu_buffer.h"
 #include "paver/compute/vulkan_objects.h"
 #include "elements/element_proximity.h"
@@ -44,12 +46,6 @@ struct FlatVertex {
   glm::vec3 position;
   std::uint32_t colour;  // RGBA8
 };
-struct ElementInstance {
-  glm::vec3 centre, normal;
-  float diameter;
-  std::uint32_t colour;
-};
-static_assert(sizeof(ElementInstance) == 32);
 struct DiskInstance {
   glm::vec2 centre;
   float radius;
@@ -134,7 +130,9 @@ struct Renderer::Impl {
                            {1, 1, vk::Format::eR32G32B32Sfloat, offsetof(ElementInstance, centre)},
                            {2, 1, vk::Format::eR32G32B32Sfloat, offsetof(ElementInstance, normal)},
                            {3, 1, vk::Format::eR32Sfloat, offsetof(ElementInstance, diameter)},
-                           {4, 1, vk::Format::eR8G8B8A8Unorm, offsetof(ElementInstance, colour)}};
+                           {4, 1, vk::Format::eR8G8B8A8Unorm, offsetof(ElementInstance, colour)},
+                           {5, 1, vk::Format::eR32G32B32Sfloat, offsetof(ElementInstance, tangent)},
+                           {6, 1, vk::Format::eR32G32B32Sfloat, offsetof(ElementInstance, bitangent)}};
     element_pipe.emplace(make_pipeline(element_vert_spv, element_frag_spv, element_b, element_a,
                                        vk::PrimitiveTopology::eTriangleList, true));
     const B flat_b[] = {{0, sizeof(FlatVertex), vk::VertexInputRate::eVertex}};
@@ -363,7 +361,7 @@ void Renderer::set_elements(const Elements& elements, const std::vector<std::arr
     for (size_t i = 0; i < elements.size(); ++i) {
       if (elements.shape[i] != kind) continue;
       const std::uint32_t colour = pack(i < colours.size() ? colours[i] : std::array<std::uint8_t, 3>{200, 200, 200});
-      instances.push_back({glm::vec3(elements.position[i]), glm::vec3(elements.normal[i]), float(elements.diameter[i]), colour});
+      instances.push_back(make_element_instance(elements, i, colour));
       disks.push_back({glm::vec2(elements.uv[i]), float(0.5 * elements.diameter[i]), colour});
     }
     d.instance_range[kind] = {first, std::uint32_t(instances.size()) - first};

@@ -1,5 +1,7 @@
 #include "io/element_export.h"
 
+#include "elements/element_frame.h"
+
 #include "io/atomic_file.h"
 #include "core/input_error.h"
 
@@ -141,41 +143,6 @@ private:
   std::array<const ShapeMesh*, kKinds> mesh_{};
 };
 
-// Columns of the rotation that takes +Z onto the unit normal n. For n.z >= 0 it is the shortest
-// arc (the identity for +Z, so an upright element keeps its turn about Z); for n.z < 0 it is a half
-// turn about X followed by the shortest arc from -Z. Either way the divisor 1 + |n.z| stays >= 1,
-// so no normal, -Z included, makes it blow up; and t x b = n, so triangles keep facing outwards.
-struct Frame {
-  glm::dvec3 t, b, n;
-};
-
-Frame frame_for(glm::dvec3 normal) {
-  const double length = glm::length(normal);
-  // A degenerate normal leaves the element upright instead of writing NaNs.
-  const glm::dvec3 n = length > 0 && std::isfinite(length) ? normal / length : glm::dvec3(0, 0, 1);
-  const double s = n.z >= 0 ? 1.0 : -1.0;
-  const double k = 1.0 / (1.0 + std::abs(n.z));
-  const double xy = n.x * n.y * k;
-  return {{1.0 - n.x * n.x * k, -xy, -s * n.x}, {-s * xy, s * (1.0 - n.y * n.y * k), -n.y}, n};
-}
-
-class Instancer {
-public:
-  Instancer(const Elements& elements, std::size_t i)
-      : frame_(frame_for(elements.normal[i])), centre_(elements.position[i]),
-        scale_(elements.diameter[i]) {}
-
-  glm::dvec3 operator()(const glm::vec3& p) const {
-    const glm::dvec3 local = scale_ * glm::dvec3(p);
-    return centre_ + local.x * frame_.t + local.y * frame_.b + local.z * frame_.n;
-  }
-
-private:
-  Frame frame_;
-  glm::dvec3 centre_;
-  double scale_;
-};
-
 // The one per-element transform every mesh writer uses: calls emit(i, shape, placed) for each
 // element in order, with `placed` its shape's vertices as they sit on the surface.
 template <class Emit>
@@ -183,9 +150,10 @@ void for_each_placed_element(const Elements& elements, const ShapeTable& shapes,
   std::vector<glm::dvec3> placed;
   for (std::size_t i = 0; i < elements.size(); ++i) {
     const ShapeMesh& shape = shapes[elements.shape[i]];
-    const Instancer place(elements, i);
+    const ElementFrame frame = element_frame(elements.normal[i]);
     placed.resize(shape.positions.size());
-    for (std::size_t k = 0; k < placed.size(); ++k) placed[k] = place(shape.positions[k]);
+    for (std::size_t k = 0; k < placed.size(); ++k)
+      placed[k] = place_shape_vertex(frame, elements.position[i], elements.diameter[i], glm::dvec3(shape.positions[k]));
     emit(i, shape, placed);
   }
 }
