@@ -10,28 +10,35 @@
 namespace paver::app {
 
 BackendChoice choose_backend(const std::string& backend, const std::string& device, int threads) {
+  if (backend != "cpu" && backend != "vulkan" && backend != "auto")
+    throw InputError("backend '" + backend + "': use cpu, vulkan or auto");
   BackendChoice choice{cpu_solver_factory(threads), "cpu", ""};
   if (backend == "cpu") return choice;
+  // A device the user named must exist, whatever the backend: falling back silently would hide a typo.
+  const bool must_use_vulkan = backend == "vulkan" || !device.empty();
+  const std::string flag = backend == "vulkan" ? "--backend vulkan" : "--device " + device;
 #ifdef PAVER_WITH_VULKAN
   gpu::ContextOptions options;
   options.device = device;
   auto context = gpu::VulkanContext::create(options);
   if (!context) {
-    if (backend == "vulkan") throw InputError("--backend vulkan: " + context.error().message);
+    if (must_use_vulkan) throw InputError(flag + ": " + context.error().message);
     return choice;  // auto: no Vulkan, stay on the CPU
   }
   // auto takes a real GPU only: on a CPU implementation (lavapipe) the CPU solver is as fast.
   const std::string type = context.value()->device().type;
-  if (backend == "auto" && type != "discrete" && type != "integrated" && type != "virtual") return choice;
+  if (backend == "auto" && device.empty() && type != "discrete" && type != "integrated" && type != "virtual")
+    return choice;
   auto session = gpu::VulkanSolverSession::create(context.value());
   if (!session) {
-    if (backend == "vulkan") throw InputError("--backend vulkan: " + session.error().message);
+    if (must_use_vulkan) throw InputError(flag + ": " + session.error().message);
     return choice;
   }
   return {gpu::vulkan_solver_factory(session.value()), "vulkan", context.value()->device().name};
 #else
-  (void)device;
-  if (backend == "vulkan") throw InputError("--backend vulkan: this paver was built without Vulkan");
+  if (backend == "vulkan" || !device.empty())
+    throw InputError((backend == "vulkan" ? std::string("--backend vulkan") : "--device " + device) +
+                     ": this paver was built without Vulkan");
   return choice;
 #endif
 }

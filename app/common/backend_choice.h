@@ -14,7 +14,9 @@ struct BackendChoice {
   std::string device;     // the Vulkan device's name, when Vulkan
 };
 
-// Throws InputError when `backend` is vulkan and no device can be made.
+// `backend` is "cpu", "vulkan" or "auto"; `device` (a substring of a device name) may be empty.
+// Throws InputError for any other backend name, and when Vulkan is asked for (`vulkan`, or a
+// named device) but no such device can be made: a typo never falls back silently.
 BackendChoice choose_backend(const std::string& backend, const std::string& device, int threads);
 
 }  // namespace paver::app

@@ -587,6 +587,12 @@ TEST_F(PaverCli, DevicesAndBadDeviceName) {
                                "no-such-gpu-xyz", "--out", (dir() / "x").string()});
   EXPECT_EQ(bad.exit_code, 2) << describe(bad);
   EXPECT_NE(bad.err.find("no-such-gpu-xyz"), std::string::npos) << describe(bad);
+  // auto with a named device that does not exist is a typo too, not a silent CPU run.
+  const CliResult bad_auto = paver({"run", "assets/surfaces/wave.obj", "--backend", "auto", "--device",
+                                    "no-such-gpu-xyz", "--out", (dir() / "y").string()});
+  EXPECT_EQ(bad_auto.exit_code, 2) << describe(bad_auto);
+  EXPECT_NE(bad_auto.err.find("--device no-such-gpu-xyz"), std::string::npos) << describe(bad_auto);
+  EXPECT_FALSE(fs::exists(dir() / "y")) << describe(bad_auto);
 }
 
 }  // namespace
