@@ -1,4 +1,5 @@
 // paver: the command-line driver of the Paver pipeline.
+#include "command_line.h"
 #include "commands.h"
 
 #include "core/input_error.h"
@@ -16,13 +17,7 @@ int main(int argc, char** argv) {
   const auto run_run = paver::cli::add_run_command(app);
   const auto run_devices = paver::cli::add_devices_command(app);
   const auto run_parameters = paver::cli::add_parameters_command(app);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    // CLI11 uses exit code 106 etc.; usage errors are input errors here.
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 2;
-  }
+  if (const auto exit_code = paver::app::parse_command_line(app, argc, argv)) return *exit_code;
   try {
     if (app.got_subcommand("param")) return run_param();
     if (app.got_subcommand("run")) return run_run();

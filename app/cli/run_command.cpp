@@ -1,5 +1,6 @@
 // `paver run SURFACE [--design F] [--pattern P] [--spacing D] [--out DIR]`: the whole pipeline.
 #include "backend_choice.h"
+#include "command_line.h"
 #include "commands.h"
 #include "preview_images.h"
 #include "progress_bar.h"
@@ -151,9 +152,7 @@ std::function<int()> add_run_command(CLI::App& app) {
   cmd->add_flag("--no-optimize", args->no_optimize, "Skip the section 5 optimizer (initial pavement only)");
   cmd->add_flag("--no-postprocess", args->no_postprocess, "Skip boundary filling and elimination (5.4)");
   cmd->add_option("--threads", args->threads, "Solver threads (0 = all cores)")->check(CLI::Range(0, 1024));
-  cmd->add_option("--backend", args->backend, "Solver backend: cpu, vulkan, or auto (Vulkan on a GPU, else CPU)")
-      ->check(CLI::IsMember({"cpu", "vulkan", "auto"}))
-      ->capture_default_str();
+  app::add_backend_option(*cmd, args->backend);
   cmd->add_option("--device", args->device, "Vulkan device: a substring of its name (see `paver devices`)");
   cmd->add_flag("--png", args->png, "Also render preview.png (3D) and param.png (2D) offscreen with Vulkan");
   // Every section 5 parameter from the one table, named as in design.json's "solver" object.

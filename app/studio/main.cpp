@@ -1,6 +1,7 @@
 // paver-studio: the interactive editor of Paver. One window: the panels on the left, the 3D and
 // 2D views on the right; the pavement re-runs in the background on every design change.
 #include "app_window.h"
+#include "command_line.h"
 #include "recent_files.h"
 #include "script_runner.h"
 #include "studio.h"
@@ -24,17 +25,10 @@ int main(int argc, char** argv) {
   app.add_option("--script", script,
                  "Run the commands in FILE, one per frame, then quit (see app/studio/script.h); "
                  "a failing command exits non-zero");
-  app.add_option("--backend", backend, "Solver backend: cpu, vulkan, or auto (Vulkan on a GPU, else CPU)")
-      ->check(CLI::IsMember({"cpu", "vulkan", "auto"}))
-      ->capture_default_str();
+  paver::app::add_backend_option(app, backend);
   app.add_option("--width", window_options.width, "Window width")->check(CLI::Range(320, 16384))->capture_default_str();
   app.add_option("--height", window_options.height, "Window height")->check(CLI::Range(240, 16384))->capture_default_str();
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 2;
-  }
+  if (const auto exit_code = paver::app::parse_command_line(app, argc, argv)) return *exit_code;
 
   try {
     // The script is read first: a typo fails before a window opens.

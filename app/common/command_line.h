@@ -1,0 +1,18 @@
+#pragma once
+// Command-line pieces `paver` and `paver-studio` share, so both speak alike.
+#include <CLI/CLI.hpp>
+
+#include <optional>
+#include <string>
+
+namespace paver::app {
+
+// Parses argv; returns the exit code when the program should stop now: 0 after --help or
+// --version, 2 (an input error, one line on stderr) for a bad argument. CLI11's own codes (106 ...)
+// would tell a script nothing more.
+std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv);
+
+// --backend cpu|vulkan|auto (default auto), as choose_backend takes it.
+CLI::Option* add_backend_option(CLI::App& app, std::string& backend);
+
+}  // namespace paver::app
