@@ -468,7 +468,7 @@ using PaverParam = CliTest;
 TEST_F(PaverParam, BunnyheadMapIsBijective) {
   const fs::path uv_obj = dir() / "bunnyhead_uv.obj";
   const CliResult r =
-      paver({"param", std::string(PAVER_SHARED_MESHES_DIR) + "/bunnyhead.obj", "--out", uv_obj.string()});
+      paver({"param", std::string(PAVER_SOURCE_DIR) + "/assets/scanned/bunnyhead.obj", "--out", uv_obj.string()});
   ASSERT_EQ(r.exit_code, 0) << describe(r);
   EXPECT_NE(r.out.find("flipped triangles: 0"), std::string::npos) << describe(r);
   EXPECT_NE(r.out.find("bijective"), std::string::npos) << describe(r);

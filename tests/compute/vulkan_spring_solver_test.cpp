@@ -8,6 +8,7 @@
 #include "pipeline/pavement.h"
 #include "solver/spring_solver.h"
 #include "bundled_designs.h"
+#include "surface_maps.h"
 #include "test_meshes.h"
 
 #include <glm/geometric.hpp>
@@ -63,13 +64,7 @@ bool on_lavapipe() { return gpu_or_null().context->device().type == "cpu"; }
 
 std::map<std::string, std::string> bundled_designs() { return test::bundled_design_surfaces(test::source_dir()); }
 
-const SurfaceMap& map_of(const std::string& surface) {
-  static std::map<std::string, SurfaceMap> cache;
-  auto it = cache.find(surface);
-  if (it == cache.end())
-    it = cache.emplace(surface, build_surface_map(load_surface(test::source_dir() / "assets/surfaces" / surface).mesh)).first;
-  return it->second;
-}
+const SurfaceMap& map_of(const std::string& surface) { return *test::bundled_map(surface); }
 
 struct Case {
   SolverSurface surface;

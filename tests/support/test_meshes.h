@@ -1,5 +1,6 @@
 #pragma once
-// Shared fixtures: the bundled surfaces, the real scanned meshes, and small meshes made in code.
+// Shared fixtures: the bundled surfaces, the real scanned meshes (assets/scanned), and small meshes
+// made in code.
 #include "mesh/mesh_loader.h"
 #include "mesh/surface_mesh.h"
 
@@ -13,18 +14,18 @@
 namespace paver::test {
 
 inline std::filesystem::path source_dir() { return PAVER_SOURCE_DIR; }
-inline std::filesystem::path shared_meshes_dir() { return PAVER_SHARED_MESHES_DIR; }
 
 inline std::vector<std::string> bundled_surface_names() {
   return {"dome", "saddle", "wave", "vase", "torus_section", "pendant", "facade"};
 }
-inline std::vector<std::string> scanned_mesh_names() { return {"bunnyhead", "lilium", "maze"}; }
+// Real scans copied into assets/scanned (sources and licence in its README).
+inline std::vector<std::string> scanned_mesh_names() { return {"bunnyhead", "maze"}; }
 
 inline std::filesystem::path bundled_surface(const std::string& name) {
   return source_dir() / "assets/surfaces" / (name + ".obj");
 }
 inline std::filesystem::path scanned_mesh(const std::string& name) {
-  return shared_meshes_dir() / (name + ".obj");
+  return source_dir() / "assets/scanned" / (name + ".obj");
 }
 
 // A regular triangulated grid of nu x nv quads over [0,1]^2, mapped through `f(u, v)` to 3D.
