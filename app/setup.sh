@@ -12,7 +12,7 @@ case "$mode" in demo|test|build) ;; *) usage ;; esac
 
 packages=(
   cmake ninja-build g++ pkg-config
-  libeigen3-dev libopenmesh-dev libtbb-dev libglm-dev nlohmann-json3-dev libcli11-dev libstb-dev
+  libeigen3-dev libtbb-dev libglm-dev nlohmann-json3-dev libcli11-dev libstb-dev
   libgtest-dev libbenchmark-dev
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools glslang-tools spirv-tools
   libglfw3-dev libimgui-dev xvfb xauth

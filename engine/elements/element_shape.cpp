@@ -1,10 +1,7 @@
 #include "elements/element_shape.h"
 
 #include "core/input_error.h"
-
-// MeshIO must come before the mesh kernel so that OpenMesh registers its readers.
-#include <OpenMesh/Core/IO/MeshIO.hh>
-#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include "mesh/read_mesh_file.h"
 
 #include <glm/common.hpp>
 #include <glm/vec2.hpp>
@@ -159,7 +156,11 @@ ShapeMesh make_gem() {
   return b.take();
 }
 
-using OpenMeshTriangles = OpenMesh::TriMesh_ArrayKernelT<>;
+bool has_repeated_corner(const std::vector<int>& polygon) {
+  for (size_t i = 0; i < polygon.size(); ++i)
+    if (std::find(polygon.begin() + std::ptrdiff_t(i) + 1, polygon.end(), polygon[i]) != polygon.end()) return true;
+  return false;
+}
 
 [[noreturn]] void shape_error(const std::filesystem::path& path, const std::string& what) {
   throw InputError("custom shape " + path.string() + ": " + what);
@@ -181,41 +182,34 @@ ShapeMesh make_builtin_shape(ShapeKind kind, ShapeDetail detail) {
 }
 
 ShapeMesh load_custom_shape(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) shape_error(path, "the file does not exist");
+  // The surfaces' strict readers: a bad file is refused with the same message as a bad surface.
+  const PolygonSoup soup = read_mesh_file(path, "custom shape " + path.string());
 
-  // A TriMesh fans every polygon into triangles while the file is read.
-  OpenMeshTriangles mesh;
-  if (!OpenMesh::IO::read_mesh(mesh, path.string()))
-    shape_error(path, "cannot read it; give an OBJ, OFF, PLY or STL file");
-  if (mesh.n_faces() == 0) shape_error(path, "it has no faces");
-
-  // Keep only the vertices that faces use, so that stray points do not move the bounding box.
+  // Polygons become fans from their first corner; faces repeating a vertex are skipped. Only the
+  // vertices that faces use are kept, numbered in order of use, so that stray points do not move
+  // the bounding box.
   const double inf = std::numeric_limits<double>::infinity();
-  std::vector<int> new_index(mesh.n_vertices(), -1);
+  std::vector<int> new_index(soup.positions.size(), -1);
   std::vector<glm::dvec3> points;
   glm::dvec3 lo(inf), hi(-inf);
   ShapeMesh shape;
-  shape.triangles.reserve(mesh.n_faces());
-  for (const auto face : mesh.faces()) {
-    std::array<int, 3> corner{};
-    int n = 0;
-    for (const auto v : mesh.fv_range(face)) {
-      int& index = new_index[v.idx()];
-      if (index < 0) {
-        const auto& p = mesh.point(v);
-        const glm::dvec3 q(p[0], p[1], p[2]);
-        if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z))
-          shape_error(path, "vertex " + std::to_string(v.idx() + 1) + " has a coordinate that is not finite");
-        index = static_cast<int>(points.size());
-        points.push_back(q);
-        lo = glm::min(lo, q);
-        hi = glm::max(hi, q);
-      }
-      if (n < 3) corner[n] = index;
-      ++n;
+  shape.triangles.reserve(soup.polygons.size());
+  auto use = [&](int v) {
+    int& index = new_index[size_t(v)];
+    if (index < 0) {
+      index = static_cast<int>(points.size());
+      points.push_back(soup.positions[size_t(v)]);
+      lo = glm::min(lo, points.back());
+      hi = glm::max(hi, points.back());
     }
-    if (n == 3) shape.triangles.emplace_back(corner[0], corner[1], corner[2]);
+    return index;
+  };
+  for (const std::vector<int>& polygon : soup.polygons) {
+    if (has_repeated_corner(polygon)) continue;
+    for (size_t i = 1; i + 1 < polygon.size(); ++i) {
+      const int a = use(polygon[0]), b = use(polygon[i]), c = use(polygon[i + 1]);
+      shape.triangles.emplace_back(a, b, c);
+    }
   }
   if (shape.triangles.empty()) shape_error(path, "it has no faces");
 

@@ -27,8 +27,9 @@ enum class ShapeDetail { Full, Coarse };
 // table towards +Z), HexPrism (height 0.5), Disc (cylinder of height 0.2). Custom throws.
 ShapeMesh make_builtin_shape(ShapeKind kind, ShapeDetail detail = ShapeDetail::Full);
 
-// Loads any surface file OpenMesh reads and normalises it: centred on its bounding box, scaled so
-// its widest XY extent is 1. Throws InputError (file, what is wrong) when it cannot.
+// Loads an OBJ, OFF, PLY or STL file with the surfaces' readers (mesh/read_mesh_file.h) and
+// normalises it: centred on its bounding box, scaled so its widest XY extent is 1. Throws
+// InputError ("custom shape <file>: ...", the place and what is wrong) when it cannot.
 ShapeMesh load_custom_shape(const std::filesystem::path& path);
 
 std::string_view shape_name(ShapeKind kind);  // "sphere", "gem", "hex_prism", "disc", "custom"

@@ -1,7 +1,7 @@
 #pragma once
-// Reads a surface (OBJ, OFF, PLY, STL through OpenMesh), triangulates polygons and checks that it
-// is something Paver can pave: finite coordinates, non-degenerate faces, manifold, connected,
-// open with exactly one boundary loop. Throws InputError with a specific message otherwise.
+// Reads a surface (OBJ, OFF, PLY, STL with Paver's own readers), triangulates polygons and checks
+// that it is something Paver can pave: finite coordinates, non-degenerate faces, manifold,
+// connected, open with exactly one boundary loop. Throws InputError with a specific message otherwise.
 #include "mesh/surface_mesh.h"
 
 #include <filesystem>

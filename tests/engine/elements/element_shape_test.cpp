@@ -1,6 +1,9 @@
 #include "elements/element_shape.h"
 
 #include "core/input_error.h"
+#include "mesh/mesh_loader.h"
+
+#include "input_error_assertions.h"
 
 #include <gtest/gtest.h>
 
@@ -213,7 +216,7 @@ TEST(ElementShape, LoadCustomShapeRejectsBadFiles) {
       EXPECT_NE(message.find(reason), std::string::npos) << message;
     }
   };
-  expect_error(folder.file("missing.obj"), "does not exist");
+  expect_error(folder.file("missing.obj"), "not found");
 
   const auto empty = folder.file("empty.obj");
   write(empty, "# nothing here\n");
@@ -225,9 +228,9 @@ TEST(ElementShape, LoadCustomShapeRejectsBadFiles) {
 
   const auto unknown = folder.file("shape.xyz");
   write(unknown, "0 0 0\n");
-  expect_error(unknown, "cannot read");
+  expect_error(unknown, "unsupported file type");
 
-  // Binary PLY (raw floats, so a NaN gets through the reader) with one triangle, one corner NaN.
+  // Binary PLY with one triangle, one corner NaN: refused by the reader.
   const auto nan_ply = folder.file("nan.ply");
   {
     std::ofstream out(nan_ply, std::ios::binary);
@@ -241,11 +244,28 @@ TEST(ElementShape, LoadCustomShapeRejectsBadFiles) {
     out.write(reinterpret_cast<const char*>(&corners), 1);
     out.write(reinterpret_cast<const char*>(face), sizeof face);
   }
-  expect_error(nan_ply, "not finite");
+  expect_error(nan_ply, "non-finite");
 
   const auto vertical = folder.file("vertical.obj");
   write(vertical, "v 0 0 0\nv 0 0 1\nv 0 0 2\nf 1 2 3\n");
   expect_error(vertical, "no horizontal extent");
+}
+
+TEST(ElementShape, BadCustomShapeIsRefusedWithTheSurfaceLoadersMessage) {
+  // The same readers as surfaces: the same message, after "custom shape ".
+  const TempFolder folder;
+  const auto bad_obj = folder.file("bad.obj");
+  write(bad_obj, "v 0 0 0\nv 1 x 0\nv 0 1 0\nf 1 2 3\n");
+  const auto cut_stl = folder.file("cut.stl");
+  write(cut_stl, std::string(80, ' ') + std::string("\x02\0\0\0", 4) + std::string(60, '\0'));
+  for (const auto& path : {bad_obj, cut_stl}) {
+    const std::string shape = test::error_of([&] { load_custom_shape(path); });
+    const std::string surface = test::error_of([&] { load_surface(path); });
+    EXPECT_EQ(shape, "custom shape " + surface);
+  }
+  EXPECT_EQ(test::error_of([&] { load_custom_shape(bad_obj); }),
+            "custom shape " + bad_obj.string() +
+                ": line 2: 'x' is not a number; vertex coordinates must be numbers");
 }
 
 }  // namespace

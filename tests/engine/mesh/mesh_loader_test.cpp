@@ -245,7 +245,7 @@ TEST_F(MeshLoaderTest, ReadsAsciiStlAndMergesCorners) {
 }
 
 TEST_F(MeshLoaderTest, StlDegenerateFacetIsCounted) {
-  // OpenMesh merges the repeated corner and drops the facet itself; it must still be reported.
+  // Welding merges the repeated corner and the reader leaves the facet out; it must still be reported.
   const LoadedSurface loaded = load_surface(write(
       "square.stl", "solid square\n" + stl_facet("0 0 0", "1 0 0", "1 1 0") + stl_facet("0 0 0", "1 1 0", "0 1 0") +
                         stl_facet("0 0 0", "0 0 0", "0 1 0") + "endsolid square\n"));
@@ -390,7 +390,7 @@ TEST_F(MeshLoaderTest, OffHeaderMustBeOff) {
 }
 
 TEST_F(MeshLoaderTest, OffCountsOnTheHeaderLineAreNamed) {
-  // OpenMesh would silently read nothing from this file.
+  // The counts belong on a line of their own.
   const std::string message = load_error(write("bad.off", "OFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
   EXPECT_TRUE(Contains(message, "line 1"));
   EXPECT_TRUE(Contains(message, "'3 1 0'"));
@@ -423,9 +423,9 @@ TEST_F(MeshLoaderTest, OffCommentIsNamed) {
   EXPECT_TRUE(Contains(message, "comment"));
 }
 
-TEST_F(MeshLoaderTest, PlyThatOpenMeshCannotParse) {
+TEST_F(MeshLoaderTest, PlyThatCannotBeParsed) {
   const std::string message = load_error(write("bad.ply", "this is not a ply file\n"));
-  EXPECT_TRUE(Contains(message, "OpenMesh could not parse it as PLY"));
+  EXPECT_TRUE(Contains(message, "could not parse it as PLY"));
   EXPECT_TRUE(Contains(message, "'ply'"));
 }
 
@@ -453,10 +453,10 @@ TEST_F(MeshLoaderTest, PlyAsciiNanNamesLine) {
   EXPECT_TRUE(Contains(message, "1 vertex has NaN or infinite"));
 }
 
-TEST_F(MeshLoaderTest, PlyHeaderIsCheckedBeforeOpenMesh) {
-  // OpenMesh's reader crashes on a property before any element.
+TEST_F(MeshLoaderTest, PlyHeaderIsCheckedStrictly) {
+  // A property before any element.
   const std::string message = load_error(write("bad.ply", "ply\nformat ascii 1.0\nproperty float x\nend_header\n"));
-  EXPECT_TRUE(Contains(message, "OpenMesh could not parse it as PLY"));
+  EXPECT_TRUE(Contains(message, "could not parse it as PLY"));
   EXPECT_TRUE(Contains(message, "line 3"));
 }
 
@@ -491,7 +491,7 @@ TEST_F(MeshLoaderTest, TruncatedBinaryPlyIsMeasured) {
       "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
       "property float z\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n";
   const std::string message = load_error(write("cut.ply", header + std::string(20, '\0')));
-  EXPECT_TRUE(Contains(message, "OpenMesh could not parse it as PLY"));
+  EXPECT_TRUE(Contains(message, "could not parse it as PLY"));
   EXPECT_TRUE(Contains(message, "size mismatch"));
 }
 
@@ -500,7 +500,7 @@ TEST_F(MeshLoaderTest, TruncatedBinaryStlIsMeasured) {
   bytes += std::string("\x03\0\0\0", 4);  // 3 triangles declared...
   bytes += std::string(100, '\0');         // ...but 2 present
   const std::string message = load_error(write("cut.stl", bytes));
-  EXPECT_TRUE(Contains(message, "OpenMesh could not parse it as STL"));
+  EXPECT_TRUE(Contains(message, "could not parse it as STL"));
   EXPECT_TRUE(Contains(message, "size mismatch"));
   EXPECT_TRUE(Contains(message, "3 triangles"));
 }
@@ -541,7 +541,7 @@ TEST_F(MeshLoaderTest, MakeSurfaceRejectsBadIndex) {
 
 TEST_F(MeshLoaderTest, DegenerateFacesAreDroppedAndCounted) {
   // A unit square in two triangles, plus a zero-area sliver on its edge and a face with a repeated
-  // vertex (OpenMesh drops the latter itself; it must still be counted).
+  // vertex (the reader drops the latter itself; it must still be counted).
   const LoadedSurface loaded = load_surface(
       write("degenerate.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0.5 0 0\nf 1 2 3\nf 1 3 4\nf 1 5 2\nf 1 2 2\n"));
   EXPECT_EQ(loaded.dropped_degenerate_faces, 2);

@@ -1,0 +1,375 @@
+// Repairs, each reported in LoadedSurface::warnings: degenerate faces are dropped, polygons are
+// triangulated, unreferenced vertices are dropped, faces are reoriented consistently.
+// Several connected components: we KEEP THE LARGEST (by face count) and drop the others with a
+// warning. Stray specks and leftover fragments are common in scans and exports, and refusing the
+// whole file for them would be unhelpful; the warning says how much was dropped, so a user with
+// two real pieces notices. Components are joined through shared vertices, so pieces touching at a
+// single vertex stay one component and are refused as non-manifold there. The manifold,
+// orientation and boundary checks look at the kept component only.
+// Everything else (non-manifold, non-orientable, closed, several holes, handles) is an InputError
+// that names the file, the place and the fix.
+#include "mesh/mesh_repair.h"
+
+#include "mesh/mesh_messages.h"
+#include "mesh/polygon_triangulation.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <utility>
+
+namespace paver {
+namespace {
+
+using namespace mesh_detail;
+
+class DisjointSets {
+public:
+  explicit DisjointSets(size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
+  int find(int x) {
+    while (parent_[x] != x) {
+      parent_[x] = parent_[parent_[x]];
+      x = parent_[x];
+    }
+    return x;
+  }
+  void unite(int a, int b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
+  }
+
+private:
+  std::vector<int> parent_;
+};
+
+// One side of a triangle: corner c runs from t[c] to t[(c + 1) % 3].
+struct Side {
+  std::uint64_t key;  // the undirected edge: (min vertex << 32) | max vertex
+  int triangle;
+  int corner;
+};
+
+std::uint64_t edge_key(int a, int b) {
+  return (std::uint64_t(std::uint32_t(std::min(a, b))) << 32) | std::uint32_t(std::max(a, b));
+}
+
+int corner_of(const glm::ivec3& t, int vertex) { return t.x == vertex ? 0 : t.y == vertex ? 1 : 2; }
+
+std::string edge_between(int a, int b, const std::vector<glm::dvec3>& positions) {
+  return "the edge between vertices " + std::to_string(a) + " and " + std::to_string(b) + " (counting from 0) at " +
+         format_point(positions[a]) + " - " + format_point(positions[b]);
+}
+
+// The triangles' sides grouped by undirected edge (sorting, not hashing: faster at this size).
+struct Edges {
+  std::vector<Side> sides;                        // sorted by key
+  std::vector<std::pair<size_t, size_t>> ranges;  // per edge, its [begin, end) in `sides`
+};
+
+Edges collect_edges(const std::vector<glm::ivec3>& triangles) {
+  Edges edges;
+  edges.sides.reserve(triangles.size() * 3);
+  for (int f = 0; f < int(triangles.size()); ++f)
+    for (int c = 0; c < 3; ++c) edges.sides.push_back({edge_key(triangles[f][c], triangles[f][(c + 1) % 3]), f, c});
+  std::sort(edges.sides.begin(), edges.sides.end(), [](const Side& a, const Side& b) {
+    return a.key != b.key ? a.key < b.key : a.triangle != b.triangle ? a.triangle < b.triangle : a.corner < b.corner;
+  });
+  edges.ranges.reserve(edges.sides.size() / 2 + 1);
+  for (size_t begin = 0; begin < edges.sides.size();) {
+    size_t end = begin + 1;
+    while (end < edges.sides.size() && edges.sides[end].key == edges.sides[begin].key) ++end;
+    edges.ranges.emplace_back(begin, end);
+    begin = end;
+  }
+  return edges;
+}
+
+// Where each face's sides lead: the face across side c of face f, and whether that face runs the
+// shared edge in the same direction (an orientation conflict).
+struct Adjacency {
+  std::vector<int> neighbour;         // #F*3, -1 on the boundary
+  std::vector<char> same_direction;   // #F*3
+};
+
+Adjacency face_adjacency(const std::vector<glm::ivec3>& triangles, const Edges& edges) {
+  Adjacency adjacency{std::vector<int>(triangles.size() * 3, -1), std::vector<char>(triangles.size() * 3, 0)};
+  for (const auto& [begin, end] : edges.ranges) {
+    if (end - begin != 2) continue;
+    const Side& s = edges.sides[begin];
+    const Side& r = edges.sides[begin + 1];
+    const bool same = triangles[r.triangle][r.corner] == triangles[s.triangle][s.corner];
+    adjacency.neighbour[s.triangle * 3 + s.corner] = r.triangle;
+    adjacency.neighbour[r.triangle * 3 + r.corner] = s.triangle;
+    adjacency.same_direction[s.triangle * 3 + s.corner] = adjacency.same_direction[r.triangle * 3 + r.corner] = same;
+  }
+  return adjacency;
+}
+
+// `polygons` must index `positions`, and every position be finite: otherwise nothing else is
+// meaningful.
+void check_indices_and_coordinates(const std::vector<glm::dvec3>& positions,
+                                   const std::vector<std::vector<int>>& polygons, const std::string& source) {
+  const long long vertex_count = static_cast<long long>(positions.size());
+  for (size_t f = 0; f < polygons.size(); ++f)
+    for (int index : polygons[f])
+      if (index < 0 || index >= vertex_count)
+        fail(source, "face " + std::to_string(f) + " (counting from 0) refers to vertex " + std::to_string(index) +
+                         " but there are only " + count_of(vertex_count, "vertex", "vertices") +
+                         "; the file is corrupt: export it again");
+  int nonfinite = 0, first_nonfinite = -1;
+  for (size_t v = 0; v < positions.size(); ++v) {
+    const glm::dvec3& p = positions[v];
+    if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) continue;
+    if (nonfinite++ == 0) first_nonfinite = int(v);
+  }
+  if (nonfinite > 0)
+    fail(source, "vertex " + std::to_string(first_nonfinite) + " (counting from 0) has a non-finite coordinate " +
+                     format_point(positions[first_nonfinite]) + "; " +
+                     count_of(nonfinite, "vertex has", "vertices have") +
+                     " NaN or infinite coordinates: fix them in the modelling tool and export again");
+}
+
+struct Components {
+  int count = 0;
+  long long dropped_faces = 0;
+};
+
+// Keeps the triangles of the largest component (through shared vertices; see the top comment).
+Components keep_largest_component(std::vector<glm::ivec3>& triangles, size_t vertex_count) {
+  DisjointSets sets(vertex_count);
+  for (const glm::ivec3& t : triangles) {
+    sets.unite(t.x, t.y);
+    sets.unite(t.x, t.z);
+  }
+  std::vector<int> faces(vertex_count, 0);  // per root
+  for (const glm::ivec3& t : triangles) ++faces[sets.find(t.x)];
+  Components components;
+  int largest = -1;
+  for (size_t root = 0; root < vertex_count; ++root) {
+    if (faces[root] == 0) continue;
+    ++components.count;
+    if (largest < 0 || faces[root] > faces[largest]) largest = int(root);
+  }
+  if (components.count > 1) {
+    const size_t before = triangles.size();
+    std::erase_if(triangles, [&](const glm::ivec3& t) { return sets.find(t.x) != largest; });
+    components.dropped_faces = static_cast<long long>(before - triangles.size());
+  }
+  return components;
+}
+
+// Every edge on at most 2 faces, and the faces around every vertex one fan.
+void check_manifold(const std::vector<glm::ivec3>& triangles, const Edges& edges,
+                    const std::vector<glm::dvec3>& positions, const std::string& source, const std::string& note) {
+  int bad_edges = 0;
+  size_t example_edge = 0;
+  for (size_t e = 0; e < edges.ranges.size(); ++e) {
+    if (edges.ranges[e].second - edges.ranges[e].first <= 2) continue;
+    if (bad_edges++ == 0) example_edge = e;
+  }
+  if (bad_edges > 0) {
+    const auto [begin, end] = edges.ranges[example_edge];
+    const Side& side = edges.sides[begin];
+    const glm::ivec3& t = triangles[side.triangle];
+    fail(source, "has " + count_of(bad_edges, "non-manifold edge", "non-manifold edges") +
+                     " (shared by more than 2 faces), e.g. " +
+                     edge_between(t[side.corner], t[(side.corner + 1) % 3], positions) + ", shared by " +
+                     std::to_string(end - begin) +
+                     " faces; Paver needs a manifold surface: remove the extra (duplicated or fin) faces" + note);
+  }
+
+  // Corners of the same vertex joined across shared edges form that vertex's fans.
+  DisjointSets corners(triangles.size() * 3);
+  for (const auto& [begin, end] : edges.ranges) {
+    if (end - begin != 2) continue;
+    const Side& s = edges.sides[begin];
+    const Side& r = edges.sides[begin + 1];
+    const glm::ivec3& ts = triangles[s.triangle];
+    const glm::ivec3& tr = triangles[r.triangle];
+    for (int vertex : {ts[s.corner], ts[(s.corner + 1) % 3]})
+      corners.unite(s.triangle * 3 + corner_of(ts, vertex), r.triangle * 3 + corner_of(tr, vertex));
+  }
+  std::vector<int> fans(positions.size(), 0);
+  for (int corner = 0; corner < int(triangles.size() * 3); ++corner)
+    if (corners.find(corner) == corner) ++fans[triangles[corner / 3][corner % 3]];
+  int bad_vertices = 0, example_vertex = -1;
+  for (size_t v = 0; v < fans.size(); ++v) {
+    if (fans[v] <= 1) continue;
+    if (bad_vertices++ == 0) example_vertex = int(v);
+  }
+  if (bad_vertices > 0)
+    fail(source, "has " + count_of(bad_vertices, "non-manifold vertex", "non-manifold vertices") + ", e.g. vertex " +
+                     std::to_string(example_vertex) + " (counting from 0) at " +
+                     format_point(positions[example_vertex]) + ", where " + std::to_string(fans[example_vertex]) +
+                     " separate fans of faces meet at a single point (like two cones touching at their tips, or a "
+                     "bowtie); Paver needs a manifold surface: pull the pieces apart or split the vertex" +
+                     note);
+}
+
+// Flips faces so that neighbours run their shared edge in opposite directions, keeping the
+// orientation most faces already have. Returns how many faces were flipped.
+long long orient_consistently(std::vector<glm::ivec3>& triangles, const Edges& edges,
+                              const std::vector<glm::dvec3>& positions, const std::string& source,
+                              const std::string& note) {
+  const Adjacency adjacency = face_adjacency(triangles, edges);
+  const int face_count = int(triangles.size());
+  std::vector<signed char> flip(size_t(face_count), -1);  // -1: not reached yet
+  std::vector<int> queue;
+  queue.reserve(size_t(face_count));
+  for (int seed = 0; seed < face_count; ++seed) {
+    if (flip[seed] >= 0) continue;
+    flip[seed] = 0;
+    queue.assign(1, seed);
+    for (size_t head = 0; head < queue.size(); ++head) {
+      const int f = queue[head];
+      for (int c = 0; c < 3; ++c) {
+        const int g = adjacency.neighbour[f * 3 + c];
+        if (g < 0) continue;
+        const signed char wanted = static_cast<signed char>(flip[f] ^ adjacency.same_direction[f * 3 + c]);
+        if (flip[g] < 0) {
+          flip[g] = wanted;
+          queue.push_back(g);
+        } else if (flip[g] != wanted) {
+          fail(source, "is not orientable (like a Moebius strip): its faces cannot be oriented consistently, as "
+                       "seen at " +
+                           edge_between(triangles[f][c], triangles[f][(c + 1) % 3], positions) +
+                           "; Paver needs a two-sided surface" + note);
+        }
+      }
+    }
+  }
+  long long flipped = std::count(flip.begin(), flip.end(), 1);
+  const bool invert = 2 * flipped > face_count;
+  if (invert) flipped = face_count - flipped;
+  for (int f = 0; f < face_count; ++f)
+    if ((flip[f] == 1) != invert) std::swap(triangles[f].y, triangles[f].z);
+  return flipped;
+}
+
+// The one boundary loop of consistently oriented, manifold triangles, following the direction of
+// its sides and starting at its lowest vertex.
+std::vector<int> single_boundary_loop(const std::vector<glm::ivec3>& triangles, const Edges& edges,
+                                      size_t vertex_count, const std::string& source, const std::string& note) {
+  std::vector<int> next(vertex_count, -1);
+  int first = -1;
+  for (const auto& [begin, end] : edges.ranges) {
+    if (end - begin != 1) continue;
+    // The face may have been flipped since `edges` was collected: read the direction off the face.
+    const glm::ivec3& t = triangles[edges.sides[begin].triangle];
+    int c = 0;
+    while (edge_key(t[c], t[(c + 1) % 3]) != edges.sides[begin].key) ++c;
+    next[t[c]] = t[(c + 1) % 3];
+    if (first < 0 || t[c] < first) first = t[c];
+  }
+  if (first < 0)
+    fail(source, "is a closed surface (it has no boundary edges); Paver needs an open surface with one boundary "
+                 "loop; cut it open first" +
+                     note);
+  std::vector<char> visited(vertex_count, 0);
+  std::vector<int> loop_sizes;
+  std::vector<int> loop;
+  for (int start = 0; start < int(vertex_count); ++start) {
+    if (next[start] < 0 || visited[start]) continue;
+    int size = 0;
+    for (int v = start; v >= 0 && !visited[v]; v = next[v]) {
+      visited[v] = 1;
+      if (start == first) loop.push_back(v);
+      ++size;
+    }
+    loop_sizes.push_back(size);
+  }
+  if (loop_sizes.size() > 1) {
+    std::sort(loop_sizes.rbegin(), loop_sizes.rend());
+    std::string sizes;
+    for (size_t i = 0; i < loop_sizes.size() && i < 5; ++i)
+      sizes += (i == 0 ? "" : ", ") + std::to_string(loop_sizes[i]);
+    if (loop_sizes.size() > 5) sizes += ", ...";
+    fail(source, "has " + std::to_string(loop_sizes.size()) + " boundary loops (holes) of " + sizes +
+                     " edges; Paver needs exactly one: fill the holes or cut the surface so that its boundary is a "
+                     "single loop" +
+                     note);
+  }
+  return loop;
+}
+
+}  // namespace
+
+LoadedSurface check_and_repair(std::vector<glm::dvec3> positions, const std::vector<std::vector<int>>& polygons,
+                               const std::string& source, int collapsed_faces) {
+  LoadedSurface loaded;
+  if (polygons.empty() && collapsed_faces == 0)
+    fail(source, "contains no faces (" + count_of(static_cast<long long>(positions.size()), "vertex", "vertices") +
+                     "); Paver needs a surface, not a point cloud: export the faces too");
+  check_indices_and_coordinates(positions, polygons, source);
+
+  Triangulation triangulation = triangulate(positions, polygons, degenerate_area(positions, polygons));
+  std::vector<glm::ivec3>& triangles = triangulation.triangles;
+  loaded.dropped_degenerate_faces = triangulation.degenerate + collapsed_faces;
+  const std::string degenerate = count_of(loaded.dropped_degenerate_faces, "degenerate face", "degenerate faces");
+  if (triangles.empty())
+    fail(source,
+         "contains no faces after dropping " + degenerate + " (zero area or repeated vertices); check the export");
+  if (loaded.dropped_degenerate_faces > 0)
+    loaded.warnings.push_back(source + ": dropped " + degenerate + " (zero area or repeated vertices)");
+
+  std::vector<char> used(positions.size(), 0);
+  for (const glm::ivec3& t : triangles) used[t.x] = used[t.y] = used[t.z] = 1;
+  const long long unreferenced = std::count(used.begin(), used.end(), 0);
+  if (unreferenced > 0)
+    loaded.warnings.push_back(source + ": dropped " +
+                              count_of(unreferenced, "unreferenced vertex", "unreferenced vertices") +
+                              " (not used by any face)");
+
+  const Components components = keep_largest_component(triangles, positions.size());
+  std::string note;  // appended to topology errors when other components were dropped
+  if (components.count > 1) {
+    loaded.dropped_components = components.count - 1;
+    loaded.warnings.push_back(source + ": the surface has " + std::to_string(components.count) +
+                              " connected components; kept the largest (" +
+                              count_of(static_cast<long long>(triangles.size()), "face", "faces") +
+                              ") and dropped the other " + std::to_string(components.count - 1) + " (" +
+                              count_of(components.dropped_faces, "face", "faces") + ")");
+    note = " (in its largest connected component, the one Paver keeps; the file has " +
+           std::to_string(components.count) + ")";
+  }
+
+  const Edges edges = collect_edges(triangles);
+  check_manifold(triangles, edges, positions, source, note);
+  const long long flipped = orient_consistently(triangles, edges, positions, source, note);
+  if (flipped > 0)
+    loaded.warnings.push_back(source + ": reoriented " + count_of(flipped, "face", "faces") +
+                              " to match their neighbours");
+  const std::vector<int> loop = single_boundary_loop(triangles, edges, positions.size(), source, note);
+
+  // Compact the vertices to those the kept faces use.
+  std::fill(used.begin(), used.end(), 0);
+  for (const glm::ivec3& t : triangles) used[t.x] = used[t.y] = used[t.z] = 1;
+  std::vector<int> new_index(positions.size(), -1);
+  SurfaceMesh& mesh = loaded.mesh;
+  for (size_t v = 0; v < positions.size(); ++v)
+    if (used[v]) {
+      new_index[v] = int(mesh.positions.size());
+      mesh.positions.push_back(positions[v]);
+    }
+
+  // One boundary loop on a connected, orientable surface: a disk exactly when V - E + F = 1.
+  const long long euler = static_cast<long long>(mesh.positions.size()) -
+                          static_cast<long long>(edges.ranges.size()) + static_cast<long long>(triangles.size());
+  if (euler != 1)
+    fail(source, "is not a topological disk: it has one boundary loop but " +
+                     count_of((1 - euler) / 2, "handle", "handles") + " (V - E + F = " + std::to_string(euler) +
+                     ", a disk has 1); Paver needs a disk-like surface: cut through the handles or fill them" + note);
+
+  mesh.triangles.reserve(triangles.size());
+  for (const glm::ivec3& t : triangles) mesh.triangles.emplace_back(new_index[t.x], new_index[t.y], new_index[t.z]);
+  mesh.boundary_loop.reserve(loop.size());
+  for (int v : loop) mesh.boundary_loop.push_back(new_index[v]);
+  return loaded;
+}
+
+
+}  // namespace paver

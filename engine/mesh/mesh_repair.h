@@ -1,0 +1,19 @@
+#pragma once
+// Checks a polygon soup and repairs it into the SurfaceMesh Paver paves: triangulation, the
+// largest connected component, manifoldness, consistent orientation, a single boundary loop and
+// disk topology. What it repairs is reported as warnings; what it cannot is an InputError.
+#include "mesh/mesh_loader.h"
+
+#include <glm/vec3.hpp>
+
+#include <string>
+#include <vector>
+
+namespace paver {
+
+// `source` names the mesh in messages; `collapsed_faces` are faces the reader already left out
+// (PolygonSoup::collapsed_faces), counted with the degenerate ones.
+LoadedSurface check_and_repair(std::vector<glm::dvec3> positions, const std::vector<std::vector<int>>& polygons,
+                               const std::string& source, int collapsed_faces);
+
+}  // namespace paver

@@ -1,0 +1,65 @@
+// Tests for engine/mesh/read_mesh_file.cpp: the reader is chosen by extension, whatever its case,
+// and a file over the size limit is refused before it is read.
+#include "mesh/read_mesh_file.h"
+
+#include "input_error_assertions.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+#include <system_error>
+
+namespace paver {
+namespace {
+
+using test::Contains;
+using test::error_of;
+
+namespace fs = std::filesystem;
+
+class ReadMeshFileTest : public ::testing::Test {
+protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("paver_read_mesh_file_" + std::string(
+                                            ::testing::UnitTest::GetInstance()->current_test_info()->name()) +
+                                        "_" + std::to_string(std::random_device{}()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::error_code ignored;
+    fs::remove_all(dir_, ignored);
+  }
+  fs::path write(const std::string& name, const std::string& content) const {
+    const fs::path path = dir_ / name;
+    std::ofstream(path, std::ios::binary) << content;
+    return path;
+  }
+  fs::path dir_;
+};
+
+TEST_F(ReadMeshFileTest, ExtensionChoosesTheReaderWhateverItsCase) {
+  const PolygonSoup off = read_mesh_file(write("tri.OFF", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"), "tri.OFF");
+  EXPECT_EQ(off.polygons, (std::vector<std::vector<int>>{{0, 1, 2}}));
+  const std::string as_obj = error_of([&] { read_mesh_file(write("tri.obj", "OFF\n3 1 0\n"), "tri.obj"); });
+  EXPECT_TRUE(Contains(as_obj, "tri.obj: contains no faces"));
+}
+
+TEST_F(ReadMeshFileTest, TooLargeFileIsRefusedBeforeReading) {
+  const fs::path path = write("huge.stl", "");
+  std::error_code error;
+  fs::resize_file(path, kMaxMeshFileBytes + 1, error);  // sparse: takes no space
+  if (error) GTEST_SKIP() << "cannot make a sparse file here: " << error.message();
+  const std::string message = error_of([&] { read_mesh_file(path, "huge.stl"); });
+  EXPECT_TRUE(Contains(message, "huge.stl: the file is too large (1073741825 bytes)"));
+}
+
+TEST_F(ReadMeshFileTest, DirectoryIsRefused) {
+  fs::create_directories(dir_ / "mesh.obj");
+  EXPECT_TRUE(Contains(error_of([&] { read_mesh_file(dir_ / "mesh.obj", "mesh.obj"); }), "is a directory"));
+}
+
+}  // namespace
+}  // namespace paver
