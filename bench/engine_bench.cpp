@@ -20,8 +20,8 @@ std::vector<fs::path> bench_surfaces() {
   std::vector<fs::path> paths;
   for (const char* name : {"dome", "saddle", "wave", "vase", "torus_section", "pendant", "facade"})
     paths.push_back(fs::path(PAVER_SOURCE_DIR) / "assets/surfaces" / (std::string(name) + ".obj"));
-  for (const char* name : {"bunnyhead", "lilium", "maze"})
-    paths.push_back(fs::path(PAVER_SHARED_MESHES_DIR) / (std::string(name) + ".obj"));
+  for (const char* name : {"bunnyhead", "maze"})
+    paths.push_back(fs::path(PAVER_SOURCE_DIR) / "assets/scanned" / (std::string(name) + ".obj"));
   for (const char* name : {"dome_dense", "wave_dense", "facade_dense"})
     paths.push_back(fs::path(PAVER_BINARY_DIR) / "assets" / (std::string(name) + ".obj"));
   std::erase_if(paths, [](const fs::path& p) { return !fs::exists(p); });
