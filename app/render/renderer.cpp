@@ -2,6 +2,8 @@
 
 #include "element_instance.h"
 
+#include "elements/contact_rule.h"
+
 #include "paver/compute/gpu_buffer.h"
 #include "paver/compute/vulkan_objects.h"
 #include "elements/element_proximity.h"
@@ -253,7 +255,7 @@ MapView frame_map(const SurfaceMap& map) {
 }
 
 std::vector<LegendStop> neighbour_ratio_legend() {
-  const std::vector<double> ratios = {0.90, 0.95, 0.99, 1.00, 1.02, 1.10, 1.20, 1.30};
+  const std::vector<double> ratios = {0.90, 0.95, kContactFactor, 1.00, 1.02, 1.10, 1.20, 1.30};
   const auto colours = neighbor_ratio_colours(ratios);
   std::vector<LegendStop> out;
   for (size_t i = 0; i < ratios.size(); ++i) out.push_back({ratios[i], colours[i]});

@@ -1,5 +1,7 @@
 #include "elements/element_proximity.h"
 
+#include "elements/contact_rule.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -52,15 +54,15 @@ double largest_diameter(const Elements& e) {
 
 }  // namespace
 
-std::vector<Collision> find_collisions(const Elements& elements, double factor) {
+std::vector<Collision> find_collisions(const Elements& elements) {
   std::vector<Collision> out;
   const ElementHash hash(elements, largest_diameter(elements));
   for (int i = 0; i < int(elements.size()); ++i) {
     hash.for_each_near(i, [&](int j) {
       if (j < i) return;
-      const double reach = 0.5 * (elements.diameter[i] + elements.diameter[j]);
+      const double reach = contact_distance(elements.diameter[i], elements.diameter[j]);
       const double d = glm::length(elements.position[i] - elements.position[j]);
-      if (d < factor * reach) out.push_back({i, j, d, 1 - d / reach});
+      if (elements_collide(d, elements.diameter[i], elements.diameter[j])) out.push_back({i, j, d, 1 - d / reach});
     });
   }
   std::sort(out.begin(), out.end(), [](const Collision& a, const Collision& b) {

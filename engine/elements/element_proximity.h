@@ -13,9 +13,8 @@ struct Collision {
   double overlap;    // 1 - distance / (r_i + r_j): 0 = touching, 1 = same centre
 };
 
-// Pairs whose centre distance is below factor * (r_i + r_j); factor 0.99 by the project's
-// definition of a collision. Sorted by (i, j).
-std::vector<Collision> find_collisions(const Elements& elements, double factor = 0.99);
+// Pairs that collide by the contact rule (elements/contact_rule.h), sorted by (i, j).
+std::vector<Collision> find_collisions(const Elements& elements);
 
 // Per element: distance to its nearest other element over (r_i + r_j) — 1 means touching;
 // for equal elements it is the nearest-neighbour distance over the diameter. +inf when alone.

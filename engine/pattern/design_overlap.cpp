@@ -1,5 +1,7 @@
 #include "pattern/design_overlap.h"
 
+#include "elements/contact_rule.h"
+
 #include "core/input_error.h"
 
 #include <glm/geometric.hpp>
@@ -60,7 +62,7 @@ void check_design_overlaps(const UnitCell& cell, const ElementsDesign& design, d
       if (j == i) continue;
       const double d = glm::length(all[i].centre - all[j].centre);
       const double need = all[i].radius + all[j].radius;
-      if (d < 0.99 * need)
+      if (elements_collide(d, 2 * all[i].radius, 2 * all[j].radius))
         throw InputError("the design's elements overlap: " + all[i].name + " and " + all[j].name +
                          " are " + format(d / spacing) + " D apart but need " + format(need / spacing) +
                          " D; reduce their scales or move t (or set elements.allow_overlap to allow it)");

@@ -8,7 +8,7 @@
 namespace paver {
 
 // Throws InputError naming the two elements and the fix when two elements of the regular
-// pattern are closer than 0.99 (r_i + r_j).
+// pattern collide by the contact rule (elements/contact_rule.h).
 void check_design_overlaps(const UnitCell& cell, const ElementsDesign& elements, double spacing);
 
 }  // namespace paver

@@ -1,5 +1,7 @@
 #include "report/pavement_quality.h"
 
+#include "elements/contact_rule.h"
+
 #include "elements/boundary_postprocess.h"
 #include "elements/element_proximity.h"
 #include "map/lifting.h"
@@ -159,13 +161,13 @@ nlohmann::json to_json(const PavementQuality& q) {
 }
 
 std::vector<std::array<std::uint8_t, 3>> neighbor_ratio_colours(const std::vector<double>& ratios) {
-  // Stops: red below 0.90, orange to yellow up to the collision threshold 0.99, dark green at
+  // Stops: red below 0.90, orange to yellow up to the collision threshold (kContactFactor), dark green at
   // touching (1.0, the target of a uniform design), light green when loose (1.3 and more).
   struct Stop {
     double ratio;
     double r, g, b;
   };
-  static constexpr Stop stops[] = {{0.90, 215, 25, 28},  {0.97, 244, 109, 67}, {0.99, 254, 224, 139},
+  static constexpr Stop stops[] = {{0.90, 215, 25, 28},  {0.97, 244, 109, 67}, {kContactFactor, 254, 224, 139},
                                    {1.00, 26, 152, 80},  {1.30, 199, 233, 160}};
   std::vector<std::array<std::uint8_t, 3>> colours(ratios.size());
   for (size_t i = 0; i < ratios.size(); ++i) {

@@ -25,7 +25,7 @@ Distribution distribution_of(std::vector<double> values);
 
 struct PavementQuality {
   long elements = 0, vertex_elements = 0, edge_elements = 0;
-  long collisions = 0;              // pairs closer than 0.99 (r_i + r_j)
+  long collisions = 0;              // pairs that collide by the contact rule (elements/contact_rule.h)
   double worst_overlap = 0;         // max of 1 - d / (r_i + r_j) over colliding pairs
   Distribution neighbor_ratio;      // nearest-neighbour distance / (r_i + r_j)
   double spring_deviation_median = 0;  // |3D length / L_ab - 1| over pattern (non-virtual) edges

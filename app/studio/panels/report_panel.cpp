@@ -3,6 +3,8 @@
 // a histogram of the nearest-neighbour ratios.
 #include "panels.h"
 
+#include "elements/contact_rule.h"
+
 #include "../studio.h"
 
 #include <algorithm>
@@ -80,8 +82,12 @@ void report_panel(const Studio& s) {
   std::snprintf(overlay, sizeof overlay, "%.2f .. %.2f (1 = touching)", kHistogramMin, kHistogramMax);
   ImGui::PlotHistogram("##ratios", r.ratio_histogram.data(), int(r.ratio_histogram.size()), 0, overlay, 0.0f,
                        peak * 1.1f, ImVec2(ImGui::GetContentRegionAvail().x, 110));
-  help_marker("Per element: distance to the nearest other element over the sum of their radii. Below 0.99 "
-              "is a collision; values outside the range are counted in the end bins.");
+  char contact[200];
+  std::snprintf(contact, sizeof contact,
+                "Per element: distance to the nearest other element over the sum of their radii. Below %.2f "
+                "is a collision; values outside the range are counted in the end bins.",
+                kContactFactor);
+  help_marker(contact);
 
   section("Stages (ms)");
   for (const auto& [stage, ms] : p.timings) ImGui::BulletText("%s: %.1f", stage.c_str(), ms);
