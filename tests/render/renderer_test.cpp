@@ -4,6 +4,7 @@
 #include "mesh/mesh_loader.h"
 #include "pipeline/pavement.h"
 #include "renderer.h"
+#include "surface_maps.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>
@@ -79,10 +80,7 @@ const Pavement& dome_pavement(const SurfaceMap& map) {
   return p;
 }
 
-const SurfaceMap& dome_map() {
-  static const SurfaceMap map = build_surface_map(load_surface(test::bundled_surface("dome")).mesh);
-  return map;
-}
+const SurfaceMap& dome_map() { return *test::bundled_map("dome"); }
 
 TEST(Renderer, PreviewShowsSurfaceAndGreenElements) {
   REQUIRE_VULKAN();

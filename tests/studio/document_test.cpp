@@ -2,6 +2,7 @@
 
 #include "mesh/mesh_loader.h"
 #include "pipeline/pavement.h"
+#include "surface_maps.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>
@@ -96,7 +97,7 @@ TEST(Document, DesignFilesRoundTripAndABadOneChangesNothing) {
 
 TEST(Document, AResultCarriesItsRatiosAndHistogram) {
   Document doc;
-  const SurfaceMap map = build_surface_map(load_surface(test::bundled_surface("dome")).mesh);
+  const SurfaceMap& map = *test::bundled_map("dome");
   Design d;
   d.pattern.spacing = 6;
   auto pavement = std::make_shared<const Pavement>(make_pavement(map, d));

@@ -1,5 +1,6 @@
 #include "live_pavement.h"
 
+#include "surface_maps.h"
 #include "test_meshes.h"
 
 #include "paver/compute/vulkan_context.h"
@@ -23,7 +24,7 @@ using namespace std::chrono_literals;
 class LivePavementTest : public testing::Test {
 protected:
   static void SetUpTestSuite() {
-    map_ = std::make_shared<const SurfaceMap>(build_surface_map(load_surface(test::bundled_surface("dome")).mesh));
+    map_ = test::bundled_map("dome");
   }
   static void TearDownTestSuite() { map_.reset(); }
 

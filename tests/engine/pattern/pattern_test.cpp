@@ -10,6 +10,8 @@
 #include "mesh/surface_mesh.h"
 #include "pattern/unit_cell.h"
 
+#include "surface_maps.h"
+
 #include <gtest/gtest.h>
 
 #include <glm/common.hpp>
@@ -53,11 +55,7 @@ const SurfaceMap& flat_map() {
   return map;
 }
 
-const SurfaceMap& dome_map() {
-  static const SurfaceMap map =
-      build_surface_map(load_surface(std::string(PAVER_SOURCE_DIR) + "/assets/surfaces/dome.obj").mesh);
-  return map;
-}
+const SurfaceMap& dome_map() { return *test::bundled_map("dome"); }
 
 // The map's boundary as a polygon in the uv plane.
 std::vector<glm::dvec2> boundary_polygon(const SurfaceMap& map) {

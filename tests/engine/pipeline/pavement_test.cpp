@@ -12,6 +12,8 @@
 
 #include "input_error_assertions.h"
 
+#include "surface_maps.h"
+
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
@@ -35,11 +37,7 @@ using test::error_of;
 const glm::dvec3 kDomeCentre(0, 0, -50);
 constexpr double kDomeRadius = 100;
 
-const SurfaceMap& dome_map() {
-  static const SurfaceMap map =
-      build_surface_map(load_surface(std::string(PAVER_SOURCE_DIR) + "/assets/surfaces/dome.obj").mesh);
-  return map;
-}
+const SurfaceMap& dome_map() { return *test::bundled_map("dome"); }
 
 bool inside_map(const SurfaceMap& map, glm::dvec2 p) {
   bool in = false;

@@ -5,6 +5,7 @@
 #include "io/design_io.h"
 #include "mesh/mesh_loader.h"
 #include "pipeline/run_pipeline.h"
+#include "surface_maps.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>
@@ -67,7 +68,7 @@ TEST_F(RunPipeline, EqualsItsStagesCalledOneByOne) {
 
 TEST_F(RunPipeline, WritesOnlyWhenAskedAndTheReportLast) {
   PipelineRequest request = dome_request();
-  request.map = std::make_shared<const SurfaceMap>(build_surface_map(load_surface(test::bundled_surface("dome")).mesh));
+  request.map = test::bundled_map("dome");
   request.pavement.optimize = false;
   run_pipeline(request);
   EXPECT_TRUE(fs::is_empty(dir_));
