@@ -2,12 +2,22 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace paver {
 
 ElementFrame element_frame(glm::dvec3 normal) {
-  const double length = glm::length(normal);
+  double length = glm::length(normal);
+  // Lengths whose square under- or overflows: scale to the largest component first (only then, so
+  // ordinary normals keep their exact arithmetic).
+  if (!(length > 1e-150 && length < 1e150)) {
+    const double largest = std::max({std::abs(normal.x), std::abs(normal.y), std::abs(normal.z)});
+    if (largest > 0 && std::isfinite(largest)) {
+      normal /= largest;
+      length = glm::length(normal);
+    }
+  }
   const glm::dvec3 n = length > 0 && std::isfinite(length) ? normal / length : glm::dvec3(0, 0, 1);
   const double s = n.z >= 0 ? 1.0 : -1.0;
   const double k = 1.0 / (1.0 + std::abs(n.z));

@@ -75,8 +75,12 @@ std::vector<double> nearest_neighbor_ratios(const Elements& elements) {
   const int n = int(elements.size());
   std::vector<double> ratio(n, std::numeric_limits<double>::infinity());
   if (n < 2) return ratio;
-  // Search cells two diameters wide so loose patterns (ratios up to ~2) still find a neighbour.
-  const double cell = 2 * largest_diameter(elements);
+  // Search cells two diameters wide so loose patterns (ratios up to ~2) find their neighbour in
+  // the 27 cells around them. Every element outside those cells is at least `cell` away, so a
+  // ratio found below cell / reach_max is the true minimum; above it (a loose element, or none
+  // found) the element is scanned against all others.
+  const double largest = largest_diameter(elements);
+  const double cell = 2 * largest;
   const ElementHash hash(elements, cell);
   for (int i = 0; i < n; ++i) {
     hash.for_each_near(i, [&](int j) {
@@ -84,9 +88,9 @@ std::vector<double> nearest_neighbor_ratios(const Elements& elements) {
       ratio[i] = std::min(ratio[i], glm::length(elements.position[i] - elements.position[j]) / reach);
     });
   }
-  // Elements with no neighbour within the cells: fall back to a full scan (rare, tiny sets).
   for (int i = 0; i < n; ++i) {
-    if (std::isfinite(ratio[i])) continue;
+    const double proven = cell / (0.5 * (elements.diameter[i] + largest));
+    if (ratio[i] <= proven) continue;
     for (int j = 0; j < n; ++j)
       if (j != i) {
         const double reach = 0.5 * (elements.diameter[i] + elements.diameter[j]);

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -29,11 +30,16 @@ std::string format(double v) {
 }  // namespace
 
 void check_design_overlaps(const UnitCell& cell, const ElementsDesign& design, double spacing) {
-  // Elements of the cells around the origin cell: enough to see every neighbour of its own.
+  // Elements of the cells around the origin cell: enough to see every neighbour of its own. An
+  // edge reaching k cells away carries elements up to k cells out, whose neighbours lie up to two
+  // cells further (a lattice cell is no smaller than an element).
+  int range = 2;
+  for (const CellEdge& edge : cell.edges)
+    if (!edge.is_virtual) range = std::max(range, 2 + std::max(std::abs(edge.offset.x), std::abs(edge.offset.y)));
   std::vector<LayoutElement> all;
   std::vector<size_t> own;  // indices of the origin cell's elements
-  for (int cy = -2; cy <= 2; ++cy)
-    for (int cx = -2; cx <= 2; ++cx) {
+  for (int cy = -range; cy <= range; ++cy)
+    for (int cx = -range; cx <= range; ++cx) {
       const glm::ivec2 c(cx, cy);
       const bool origin = cx == 0 && cy == 0;
       if (design.vertex.enabled)
