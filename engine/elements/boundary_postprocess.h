@@ -18,7 +18,8 @@ int fill_boundary_edges(const SurfaceMap& map, const Pattern& pattern, const std
                         const ElementsDesign& design, double spacing, Elements& elements,
                         const std::vector<std::uint8_t>* retired = nullptr);
 
-// 3D distance from each element centre to the surface's boundary polyline.
+// 3D distance from each element centre to the surface's boundary polyline, capped at the largest
+// element diameter (only near elements matter: crossing and coverage tests; farther ones get the cap).
 std::vector<double> distances_to_boundary(const SurfaceMap& map, const Elements& elements);
 
 // Removes the elements that cross the boundary; returns how many.
