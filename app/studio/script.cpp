@@ -3,7 +3,9 @@
 #include "core/input_error.h"
 #include "pattern/unit_cell.h"
 
+#include <algorithm>
 #include <charconv>
+#include <iterator>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -19,7 +21,7 @@ constexpr std::pair<std::string_view, Kind> kCommands[] = {
     {"spacing", Kind::Spacing}, {"set", Kind::Set},       {"optimize", Kind::Optimize},
     {"undo", Kind::Undo},       {"redo", Kind::Redo},     {"export", Kind::Export},
     {"screenshot", Kind::Screenshot}, {"view3d", Kind::View3d}, {"view2d", Kind::View2d},
-    {"wait", Kind::Wait},       {"quit", Kind::Quit}};
+    {"panel", Kind::Panel},     {"wait", Kind::Wait},     {"quit", Kind::Quit}};
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
 
@@ -89,6 +91,13 @@ bool parse_script_line(std::string_view line, int line_number, const std::string
         throw InputError(where + "pattern '" + std::string(rest) + "': use tri, grid or hex");
       out.text = std::string(rest);
       break;
+    case Kind::Panel: {
+      need_argument("a panel name: file, pattern, elements, optimize, report or help");
+      if (std::find(std::begin(kPanelNames), std::end(kPanelNames), rest) == std::end(kPanelNames))
+        throw InputError(where + "panel '" + std::string(rest) + "': use file, pattern, elements, optimize, report or help");
+      out.text = std::string(rest);
+      break;
+    }
     case Kind::Spacing: {
       need_argument("the edge length D (0 = derive it from the surface)");
       const auto [ptr, ec] = std::from_chars(rest.data(), rest.data() + rest.size(), out.number);

@@ -1,7 +1,8 @@
 #pragma once
 // The studio's scripted session (--script FILE): one command per line, `#` starts a comment.
 //   open PATH | design PATH | pattern tri|grid|hex | spacing D | set KEY VALUE | optimize |
-//   undo | redo | export DIR | screenshot FILE.png | view3d | view2d | wait N | quit
+//   undo | redo | export DIR | screenshot FILE.png | view3d | view2d | panel NAME | wait N | quit
+// (panel shows a side panel: file, pattern, elements, optimize, report or help)
 // Parsing is separate from running so that a typo fails before anything is done.
 #include <string>
 #include <string_view>
@@ -11,9 +12,9 @@ namespace paver::studio {
 
 struct ScriptCommand {
   enum class Kind { Open, Design, Pattern, Spacing, Set, Optimize, Undo, Redo, Export, Screenshot, View3d, View2d,
-                    Wait, Quit };
+                    Panel, Wait, Quit };
   Kind kind = Kind::Quit;
-  std::string text;    // open/design/export/screenshot: the path; pattern: the name; set: the key
+  std::string text;    // open/design/export/screenshot: the path; pattern, panel: the name; set: the key
   std::string value;   // set: the value as written
   double number = 0;   // spacing: D
   int frames = 0;      // wait: N
@@ -21,6 +22,9 @@ struct ScriptCommand {
 };
 
 std::string_view command_name(ScriptCommand::Kind kind);
+
+// The side panels, in tab order ("file", "pattern", ...), as `panel NAME` names them.
+inline constexpr std::string_view kPanelNames[] = {"file", "pattern", "elements", "optimize", "report", "help"};
 
 // Parses one line into `out`; false for a blank or comment line. Throws InputError
 // "SOURCE:LINE: ..." naming the fix.

@@ -67,6 +67,7 @@ void ScriptRunner::act(Studio& s, const ScriptCommand& c) {
     case Kind::Screenshot: s.ui.screenshot = c.text; break;
     case Kind::View3d: s.views.large_3d = true; break;
     case Kind::View2d: s.views.large_3d = false; break;
+    case Kind::Panel: s.ui.select_panel = c.text; break;
     case Kind::Wait: frames_left_ = c.frames; break;
     case Kind::Quit: s.quit = true; break;
   }

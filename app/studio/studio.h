@@ -45,6 +45,7 @@ struct UiState {
   MapDrag map_drag = MapDrag::None;
   bool quit_dialog = false;            // asking Save / Discard / Cancel
   std::optional<std::filesystem::path> screenshot;  // write the next presented frame here
+  std::string select_panel;            // a script's `panel NAME`: selected on the next frame
 };
 
 struct Studio {

@@ -95,3 +95,21 @@ TEST(Script, MissingFileIsAnInputError) {
 
 }  // namespace
 }  // namespace paver::studio
+
+namespace paver::studio {
+namespace {
+
+TEST(Script, PanelNamesASidePanel) {
+  for (std::string_view name : kPanelNames) {
+    const auto commands = parse_script("panel " + std::string(name), "s.txt");
+    ASSERT_EQ(commands.size(), 1u);
+    EXPECT_EQ(commands[0].kind, ScriptCommand::Kind::Panel);
+    EXPECT_EQ(commands[0].text, name);
+  }
+  EXPECT_NE(error_of("panel solver\n").find("s.txt:1: panel 'solver': use file, pattern, elements, optimize"),
+            std::string::npos);
+  EXPECT_NE(error_of("panel\n").find("panel needs a panel name"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace paver::studio

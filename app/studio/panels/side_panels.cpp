@@ -2,6 +2,9 @@
 
 #include "../studio.h"
 
+#include <cctype>
+#include <string>
+
 namespace paver::studio {
 
 void help_marker(const char* text) {
@@ -29,8 +32,12 @@ void side_panels(Studio& s, ImVec2 pos, ImVec2 size) {
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                    ImGuiWindowFlags_NoBringToFrontOnFocus);
   if (ImGui::BeginTabBar("panels")) {
-    const auto tab = [](const char* name, auto&& draw) {
-      if (ImGui::BeginTabItem(name)) {
+    // Tab labels are the panel names capitalised ("optimize" -> "Optimize").
+    const auto tab = [&](const char* name, auto&& draw) {
+      std::string key(name);
+      key[0] = char(std::tolower(static_cast<unsigned char>(key[0])));
+      const ImGuiTabItemFlags flags = s.ui.select_panel == key ? ImGuiTabItemFlags_SetSelected : 0;
+      if (ImGui::BeginTabItem(name, nullptr, flags)) {
         draw();
         ImGui::EndTabItem();
       }
@@ -41,6 +48,7 @@ void side_panels(Studio& s, ImVec2 pos, ImVec2 size) {
     tab("Optimize", [&] { optimization_panel(s); });
     tab("Report", [&] { report_panel(s); });
     tab("Help", [] { help_panel(); });
+    s.ui.select_panel.clear();
     ImGui::EndTabBar();
   }
   ImGui::End();
