@@ -27,6 +27,7 @@ std::string_view start_name(ArapStart s) { return s == ArapStart::Lscm ? "LSCM" 
 
 int run_param(const ParamArgs& args) {
   using Clock = std::chrono::steady_clock;
+  if (!args.out.empty()) refuse_overwriting_inputs({args.surface}, {args.out});  // before any work
   const auto t0 = Clock::now();
   LoadedSurface loaded = load_surface(args.surface);
   for (const auto& w : loaded.warnings) std::cerr << "paver: warning: " << w << "\n";
@@ -52,7 +53,6 @@ int run_param(const ParamArgs& args) {
   std::printf("  area ratio 2D/3D: min %.4f, max %.4f, mean |ratio - 1| %.4f\n", q.area_ratio_min,
               q.area_ratio_max, q.area_distortion_mean);
   if (!args.out.empty()) {
-    refuse_overwriting_inputs({args.surface}, {args.out});
     write_uv_map_obj(args.out, loaded.mesh, param.uv);
     std::printf("wrote %s\n", args.out.c_str());
   }
