@@ -58,6 +58,8 @@ int run_run(const RunArgs& args) {
   PipelineRequest request;
   request.surface_path = args.surface;
   request.design_source = args.design.empty() ? "defaults" : args.design;
+  request.design_path = args.design;
+  request.on_warning = [](const std::string& w) { std::cerr << "paver: warning: " << w << "\n"; };
   Design& design = request.design;
   if (!args.design.empty()) design = load_design(args.design);
   if (!args.pattern.empty()) {
@@ -100,7 +102,6 @@ int run_run(const RunArgs& args) {
   }
   const PipelineResult result = run_pipeline(std::move(request));
   finish_progress_bar();
-  for (const auto& w : result.warnings) std::cerr << "paver: warning: " << w << "\n";
   const SurfaceMap& map = *result.map;
   const Pavement& pavement = result.pavement;
   const PavementCounts& counts = result.counts;

@@ -121,21 +121,22 @@ bool save_design_file(Document& doc, const std::filesystem::path& path) {
   }
 }
 
-const ShapeMesh* custom_shape(Document& doc) {
+std::shared_ptr<const ShapeMesh> shared_custom_shape(Document& doc) {
   const std::string& path = doc.design.elements.custom_shape;
   if (!uses_custom_shape(doc.design.elements)) return nullptr;
-  if (doc.custom_shape_source == path) return doc.custom_shape ? &*doc.custom_shape : nullptr;
+  if (doc.custom_shape_source == path) return doc.custom_shape;
   doc.custom_shape.reset();
   doc.custom_shape_source = path;  // tried once per path: a bad file is reported once
   try {
     if (path.empty()) throw InputError("an element uses the custom shape: set its OBJ file in the elements panel");
-    doc.custom_shape = load_custom_shape(path);
+    doc.custom_shape = std::make_shared<const ShapeMesh>(load_custom_shape(path));
   } catch (const std::exception& e) {
     report_error(doc, e.what());
-    return nullptr;
   }
-  return &*doc.custom_shape;
+  return doc.custom_shape;
 }
+
+const ShapeMesh* custom_shape(Document& doc) { return shared_custom_shape(doc).get(); }
 
 void report_status(Document& doc, std::string text) { doc.messages.status = std::move(text); }
 

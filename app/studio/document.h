@@ -59,7 +59,7 @@ struct Document {
   Clock::time_point run_due = Clock::now();     // debounce: the run for this revision starts then
   bool gesture_open = false;              // a drag is changing the design: one undo step for it all
 
-  std::optional<ShapeMesh> custom_shape;  // elements.custom_shape, loaded
+  std::shared_ptr<const ShapeMesh> custom_shape;  // elements.custom_shape, loaded (shared with runs)
   std::optional<std::string> custom_shape_source;  // the path last tried
 
   PavementResult result;
@@ -89,6 +89,8 @@ bool save_design_file(Document& doc, const std::filesystem::path& path);
 // The design's custom shape when an element uses it, loaded once per path; null otherwise or
 // when it cannot be loaded (reported).
 const ShapeMesh* custom_shape(Document& doc);
+// The same, shared: what the live runs get, so they do not read the file again.
+std::shared_ptr<const ShapeMesh> shared_custom_shape(Document& doc);
 
 // Before writing `path`: refuses (InputError) when it is the open surface, the custom shape or,
 // unless `may_be_design` (Save), the design file; creates its folder.

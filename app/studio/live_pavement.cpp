@@ -59,6 +59,7 @@ void run_pavement(const RunRequest& request, const std::shared_ptr<LivePavement:
     pipeline.map = request.map;
     pipeline.design = request.design;
     pipeline.design_source = "studio";
+    pipeline.custom_shape = request.custom_shape;
     PavementOptions& options = pipeline.pavement;
     options.solver = request.solver;  // empty: the CPU reference
     options.stop = &run->cancelled;   // every solve of the run, the collision resolution's too

@@ -50,6 +50,7 @@ struct RunRequest {
   SolverFactory solver;                 // empty: the CPU reference
   bool paused = false;                  // start paused after the first iteration (for stepping)
   int step = 0;                         // with paused: iterations to let through first
+  std::shared_ptr<const ShapeMesh> custom_shape;  // the design's custom shape, already read; else the run reads it
 };
 
 class LivePavement {

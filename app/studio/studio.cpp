@@ -110,12 +110,9 @@ void export_outputs(Studio& s, const fs::path& folder) {
   refuse_overwriting_inputs(inputs, run_output_paths(folder, true));
   StageTimings timings = s.doc.surface.timings;
   timings.insert(timings.end(), pavement.timings.begin(), pavement.timings.end());
-  const auto t0 = Clock::now();
-  write_run_files(folder, pavement, {.custom = custom_shape(s.doc), .stl = true});
-  timings.emplace_back("export", ms_since(t0));
   const RunInfo info{s.doc.surface.path.string(), s.doc.design_path.empty() ? "studio" : s.doc.design_path.string(),
                      s.doc.design.pattern.spacing <= 0};
-  write_run_report(folder, info, *s.doc.surface.map, pavement, timings);
+  write_run_outputs(folder, info, *s.doc.surface.map, pavement, timings, {.custom = custom_shape(s.doc), .stl = true});
   report_status(s.doc, "exported to " + folder.string());
 }
 
@@ -135,7 +132,15 @@ void run_now(Studio& s, bool paused, int step) {
   }
   // Run again for the same design (Run, Step, another backend): the latency counts from now.
   if (s.live.revision() == s.doc.revision) s.doc.changed_at = Clock::now();
-  s.live.start({s.doc.surface.map, s.doc.design, s.doc.revision, s.run.choice.factory, paused, step});
+  RunRequest request;
+  request.map = s.doc.surface.map;
+  request.design = s.doc.design;
+  request.revision = s.doc.revision;
+  request.solver = s.run.choice.factory;
+  request.custom_shape = shared_custom_shape(s.doc);
+  request.paused = paused;
+  request.step = step;
+  s.live.start(std::move(request));
 }
 
 void toggle_pause(Studio& s) {

@@ -18,7 +18,7 @@ constexpr int kIterationsPerChunk = 5;
 }  // namespace
 
 MappedSurface map_surface_file(const std::filesystem::path& path, const PipelineProgress& progress,
-                               const StopRequested& stop) {
+                               const StopRequested& stop, const PipelineWarning& warn) {
   const auto report = [&](float fraction, const std::string& stage) {
     if (progress) progress(fraction, stage);
   };
@@ -28,6 +28,8 @@ MappedSurface map_surface_file(const std::filesystem::path& path, const Pipeline
   report(0.0f, "loading");
   LoadedSurface loaded = load_surface(path);
   out.warnings = std::move(loaded.warnings);
+  if (warn)
+    for (const std::string& w : out.warnings) warn(w);
   out.timings.emplace_back("load", ms_since(t0));
   if (stopped()) return out;
 

@@ -1,6 +1,7 @@
 #pragma once
 // Stages 1-2 of the pipeline: a surface file, loaded and checked (mesh/), mapped bijectively to
-// the plane (map/). `paver run`, `paver param` and the studio's background loader all call this.
+// the plane (map/). run_pipeline (so `paver run`) and the studio's background loader call this;
+// `paver param`, which exposes the map's own options, calls the map stage's functions directly.
 #include "map/surface_map.h"
 #include "pipeline/pavement.h"
 
@@ -16,6 +17,8 @@ namespace paver {
 using PipelineProgress = std::function<void(float fraction, const std::string& stage)>;
 // Polled between chunks of work; true abandons the call.
 using StopRequested = std::function<bool()>;
+// A repair the loader made (dropped faces, components), told as soon as it is known.
+using PipelineWarning = std::function<void(const std::string&)>;
 
 struct MappedSurface {
   std::shared_ptr<const SurfaceMap> map;  // null when stopped
@@ -26,6 +29,6 @@ struct MappedSurface {
 // Throws InputError for a file Paver cannot pave (naming the file), std::runtime_error naming the
 // file when the map fails.
 MappedSurface map_surface_file(const std::filesystem::path& path, const PipelineProgress& progress = {},
-                               const StopRequested& stop = {});
+                               const StopRequested& stop = {}, const PipelineWarning& warn = {});
 
 }  // namespace paver

@@ -43,20 +43,25 @@ PlacedElements place_all_elements(const SurfaceMap& map, const Pattern& pattern,
   return placed;
 }
 
+UnitCell check_design_cell(const Design& design) {
+  PatternDesign pattern = design.pattern;
+  if (pattern.spacing <= 0) pattern.spacing = 1;
+  UnitCell cell = make_design_cell(pattern);
+  for (size_t s = 0; s < design.elements.edge.size(); ++s)
+    for (int e : design.elements.edge[s].cell_edges)
+      if (e < 0 || e >= int(cell.edges.size()))
+        throw InputError("elements.edge[" + std::to_string(s) + "].cell_edges: edge " + std::to_string(e) +
+                         " does not exist; the unit cell has edges 0.." + std::to_string(cell.edges.size() - 1));
+  if (!design.elements.allow_overlap) check_design_overlaps(cell, design.elements, pattern.spacing);
+  return cell;
+}
+
 Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptions& options) {
   Pavement pavement;
   auto t0 = Clock::now();
   if (design.pattern.spacing <= 0)
     design.pattern.spacing = default_spacing(map.mesh, design.pattern.tessellation);
-  pavement.cell = make_design_cell(design.pattern);
-  for (size_t s = 0; s < design.elements.edge.size(); ++s)
-    for (int e : design.elements.edge[s].cell_edges)
-      if (e < 0 || e >= int(pavement.cell.edges.size()))
-        throw InputError("elements.edge[" + std::to_string(s) + "].cell_edges: edge " + std::to_string(e) +
-                         " does not exist; the unit cell has edges 0.." +
-                         std::to_string(pavement.cell.edges.size() - 1));
-  if (!design.elements.allow_overlap)
-    check_design_overlaps(pavement.cell, design.elements, design.pattern.spacing);
+  pavement.cell = check_design_cell(design);
   pavement.pattern = build_pattern(map, pavement.cell, design.placement);
   pavement.points = pavement.pattern.points;
   pavement.timings.emplace_back("pattern", ms_since(t0));

@@ -1,8 +1,8 @@
 #pragma once
-// From a surface map and a design to elements (sections 4.1 and 4.2): the unit cell with the
-// design's operators, the trimmed pattern, and the elements lifted to the surface. The CLI and the
-// editor both call make_pavement; the map is built once per surface (build_surface_map), the
-// pavement again on every design change.
+// From a surface map and a design to elements (sections 4.1, 4.2, 5): the unit cell with the
+// design's operators, the trimmed pattern, the optimized particles, the elements lifted to the
+// surface, post-processing, collision resolution and the quality figures. run_pipeline calls it
+// after mapping; the studio re-runs it (through run_pipeline, on its map) on every design change.
 #include "solver/collision_resolution.h"
 #include "design/design.h"
 #include "elements/elements.h"
@@ -57,8 +57,14 @@ struct Pavement {
 // Throws InputError naming the operator ("pattern.operators[1]: ...") when one fails.
 UnitCell make_design_cell(const PatternDesign& pattern);
 
-// Resolves spacing 0 to the surface's default and checks design references against the unit
-// cell (E-element cell_edges), then builds pattern and elements.
+// The design's checks that need no surface: its operators apply to the unit cell, E-elements name
+// cell edges that exist, and (unless allowed) no two elements overlap in the regular lattice.
+// Scale-free, so a design whose spacing is still 0 (derived later) is checked at D = 1. Throws
+// InputError naming the key.
+UnitCell check_design_cell(const Design& design);
+
+// Resolves spacing 0 to the surface's default and checks the design (check_design_cell), then
+// builds pattern and elements.
 Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptions& options = {});
 
 // Elements on `points`: V and E elements, then (if asked) boundary filling and elimination.

@@ -10,6 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <chrono>
+
 namespace paver {
 
 namespace fs = std::filesystem;
@@ -32,6 +34,17 @@ void write_run_files(const fs::path& folder, const Pavement& pavement, const Run
   write_elements_obj(folder / "elements.obj", pavement.elements, mesh_options);
   if (options.stl) write_elements_stl(folder / "elements.stl", pavement.elements, mesh_options);
   save_design(folder / "design.json", pavement.design);
+}
+
+void write_run_outputs(const fs::path& folder, const RunInfo& info, const SurfaceMap& map, const Pavement& pavement,
+                       StageTimings& timings, const RunOutputOptions& options,
+                       const std::function<void(StageTimings&)>& extras) {
+  const auto t0 = std::chrono::steady_clock::now();
+  write_run_files(folder, pavement, options);
+  timings.emplace_back("export",
+                       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+  if (extras) extras(timings);
+  write_run_report(folder, info, map, pavement, timings);
 }
 
 nlohmann::json write_run_report(const fs::path& folder, const RunInfo& info, const SurfaceMap& map,

@@ -10,6 +10,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include <filesystem>
+#include <functional>
 #include <vector>
 
 namespace paver {
@@ -26,6 +27,13 @@ std::vector<std::filesystem::path> run_output_paths(const std::filesystem::path&
 // red = too close, through yellow, to green = loose) and the resolved design.
 void write_run_files(const std::filesystem::path& folder, const Pavement& pavement,
                      const RunOutputOptions& options = {});
+
+// The export stage as run_pipeline and the studio's export run it: write_run_files (timed as
+// "export" in `timings`), then `extras` (the caller's own files, which add their timings), then
+// write_run_report with every timing.
+void write_run_outputs(const std::filesystem::path& folder, const RunInfo& info, const SurfaceMap& map,
+                       const Pavement& pavement, StageTimings& timings, const RunOutputOptions& options = {},
+                       const std::function<void(StageTimings&)>& extras = {});
 
 // Writes report.json and returns its content.
 nlohmann::json write_run_report(const std::filesystem::path& folder, const RunInfo& info, const SurfaceMap& map,

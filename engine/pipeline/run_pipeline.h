@@ -1,11 +1,12 @@
 #pragma once
-// The whole pipeline in one call: surface -> map -> pattern -> spring system -> optimize ->
-// resolve collisions -> elements -> post-process -> measure -> export. `paver run`, the studio's
-// live runs, the benchmarks and the tests call it; each stage is also a function of its own
-// (map_surface_file, make_pavement, write_run_outputs) for callers that redo only some stages.
+// The whole pipeline in one call: design check -> surface -> map -> pattern -> spring system ->
+// optimize -> elements -> post-process -> resolve collisions -> measure -> export. `paver run`,
+// the studio's live runs, the benchmarks and the tests call it; each stage is also a function of
+// its own (map_surface_file, make_pavement, write_run_outputs) for callers that redo only some.
 //
-// Inputs are checked before the expensive work: the design (validate_design), its custom shape,
-// and that no output would overwrite an input. Nothing is written unless `out` is given.
+// Inputs are checked before the expensive work: the design (validate_design, and its unit cell,
+// operators, cell edges and overlaps: check_design_cell), its custom shape, and that no output
+// would overwrite an input. Nothing is written unless `out` is given.
 #include "design/design.h"
 #include "elements/element_shape.h"
 #include "map/surface_map.h"
@@ -33,7 +34,11 @@ struct PipelineRequest {
   StageTimings map_timings;
 
   Design design;
-  std::string design_source = "defaults";  // the design file, "defaults", or "studio": names errors and the report
+  std::string design_source = "defaults";  // names the design in errors and the report: its file, "defaults", "studio"
+  std::filesystem::path design_path;       // the design file, if any: an input no output may overwrite
+  // The design's custom shape, already read (the studio keeps it); read from
+  // design.elements.custom_shape when an element uses it and this is empty.
+  std::shared_ptr<const ShapeMesh> custom_shape;
 
   PavementOptions pavement;                // stages on/off, solver backend, observer, stop, on_pattern
 
@@ -47,6 +52,7 @@ struct PipelineRequest {
   std::function<void(const PipelineResult&, StageTimings&)> write_extras;
 
   PipelineProgress progress;               // loading and mapping progress
+  PipelineWarning on_warning;              // the loader's repairs, as soon as they are known
 };
 
 struct PipelineResult {
@@ -59,8 +65,8 @@ struct PipelineResult {
   PavementCounts counts;
 };
 
-// Throws InputError for bad input (before anything is computed or written), std::runtime_error
-// otherwise. When `pavement.stop` becomes true the solves end early and the result is partial.
+// Throws InputError for bad input (before the surface is read, except for the surface's own
+// faults), std::runtime_error otherwise. When `pavement.stop` becomes true the solves end early and the result is partial.
 PipelineResult run_pipeline(PipelineRequest request);
 
 }  // namespace paver

@@ -49,7 +49,7 @@ std::shared_ptr<const SurfaceMap> LivePavementTest::map_;
 
 TEST_F(LivePavementTest, FinishesWithTheOneCallPavement) {
   LivePavement live;
-  live.start({map_, design(), 7, {}, false, 0});
+  live.start({map_, design(), 7, {}, false, 0, {}});
   ASSERT_TRUE(eventually([&] { return live.state() == RunState::Finished; }));
   const auto outcome = live.take_outcome();
   ASSERT_TRUE(outcome);
@@ -66,7 +66,7 @@ TEST_F(LivePavementTest, FinishesWithTheOneCallPavement) {
 
 TEST_F(LivePavementTest, StepsPausesAndResumes) {
   LivePavement live;
-  live.start({map_, design(), 1, {}, true, 5});
+  live.start({map_, design(), 1, {}, true, 5, {}});
   ASSERT_TRUE(eventually([&] { return live.state() == RunState::Paused; }));
   EXPECT_EQ(live.iteration(), 5);
   const auto first = live.snapshot_since(0);
@@ -91,18 +91,18 @@ TEST_F(LivePavementTest, StepsPausesAndResumes) {
 
 TEST_F(LivePavementTest, ResetDropsTheRunAndANewRunReplacesTheOld) {
   LivePavement live;
-  live.start({map_, design(), 1, {}, true, 0});
+  live.start({map_, design(), 1, {}, true, 0, {}});
   ASSERT_TRUE(eventually([&] { return live.state() == RunState::Paused; }));
   live.reset();
   EXPECT_EQ(live.state(), RunState::Idle);
   EXPECT_FALSE(live.take_outcome());
   EXPECT_EQ(live.revision(), 1u) << "reset keeps the revision, so it is not started again by itself";
 
-  live.start({map_, design(), 2, {}, true, 0});
+  live.start({map_, design(), 2, {}, true, 0, {}});
   ASSERT_TRUE(eventually([&] { return live.state() == RunState::Paused; }));
   Design other = design();
   other.solver.dt = 0.2;
-  live.start({map_, other, 3, {}, false, 0});  // the paused run is abandoned, not waited for
+  live.start({map_, other, 3, {}, false, 0, {}});  // the paused run is abandoned, not waited for
   ASSERT_TRUE(eventually([&] { return live.state() == RunState::Finished; }));
   const auto outcome = live.take_outcome();
   ASSERT_TRUE(outcome && outcome->pavement);
@@ -114,7 +114,7 @@ TEST_F(LivePavementTest, ADesignTheCellCannotTakeFailsAsAnInputError) {
   LivePavement live;
   Design bad = design();
   bad.elements.edge.push_back({.t = 0.5, .scale = 0.5, .shape = ShapeKind::Sphere, .cell_edges = {99}});
-  live.start({map_, bad, 4, {}, false, 0});
+  live.start({map_, bad, 4, {}, false, 0, {}});
   ASSERT_TRUE(eventually([&] { return live.state() == RunState::Finished; }));
   const auto outcome = live.take_outcome();
   ASSERT_TRUE(outcome);
@@ -158,7 +158,7 @@ TEST_F(LivePavementTest, VulkanSolverStepsByBatchesAndMatchesTheCpu) {
     GTEST_SKIP() << "no Vulkan device";
   }
   LivePavement live;
-  live.start({map_, design(), 1, vulkan_solver().factory, true, 5});
+  live.start({map_, design(), 1, vulkan_solver().factory, true, 5, {}});
   ASSERT_TRUE(eventually([&] { return live.state() == RunState::Paused; }));
   EXPECT_EQ(live.iteration(), 16) << "the first batch boundary at or past iteration 5";
   live.step(3);
@@ -168,7 +168,7 @@ TEST_F(LivePavementTest, VulkanSolverStepsByBatchesAndMatchesTheCpu) {
   // Abandon it while paused and start another at once: both use the one session.
   Design other = design();
   other.solver.dt = 0.25;
-  live.start({map_, other, 2, vulkan_solver().factory, false, 0});
+  live.start({map_, other, 2, vulkan_solver().factory, false, 0, {}});
   ASSERT_TRUE(eventually([&] { return live.state() == RunState::Finished; }));
   const auto outcome = live.take_outcome();
   ASSERT_TRUE(outcome && outcome->pavement) << (outcome ? outcome->error : "no outcome");

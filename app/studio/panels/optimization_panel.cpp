@@ -18,21 +18,23 @@ std::string tooltip(const SolverParameter& p) {
   return text + "\nDefault: " + default_text(p);
 }
 
-// One widget for a parameter of the table; true when the user changed it.
+// One widget for a parameter of the table; true when the user changed it. Dragging stays in the
+// slider's range (inside the valid range, tested); Ctrl+click can type any value, which
+// change_design validates like a design file.
 bool parameter_widget(const SolverParameter& p, SolverParams& solver) {
   const std::string label(p.name);
   if (const auto* real = std::get_if<double SolverParams::*>(&p.member)) {
     double& value = solver.**real;
-    const double lo = p.slider.min, hi = p.slider.max;
+    double lo = p.slider.min;
+    const double hi = p.slider.max;
+    // m may go negative only as far as c allows (eq. 5: c + m >= 0).
+    if (p.name == "m") lo = std::max(lo, -solver.c);
     const float speed = float((hi - lo) / 500);
-    // Clamped to the slider's range, which lies inside the valid range (tested).
-    return ImGui::DragScalar(label.c_str(), ImGuiDataType_Double, &value, speed, &lo, &hi, "%.4g",
-                             ImGuiSliderFlags_AlwaysClamp);
+    return ImGui::DragScalar(label.c_str(), ImGuiDataType_Double, &value, speed, &lo, &hi, "%.4g");
   }
   if (const auto* integer = std::get_if<int SolverParams::*>(&p.member)) {
-    const float speed = float(std::max(0.2, (p.slider.max - p.slider.min) / 1000));
-    return ImGui::DragInt(label.c_str(), &(solver.**integer), speed, int(p.slider.min), int(p.slider.max), "%d",
-                          ImGuiSliderFlags_AlwaysClamp);
+    const float speed = p.slider.max - p.slider.min > 5000 ? 1.0f : 0.2f;  // counts: one per pixel at most
+    return ImGui::DragInt(label.c_str(), &(solver.**integer), speed, int(p.slider.min), int(p.slider.max));
   }
   FilterBase& base = solver.*std::get<FilterBase SolverParams::*>(p.member);
   int index = int(base);

@@ -104,6 +104,22 @@ TEST_F(RunPipeline, RefusesBadInputBeforeAnyWork) {
     EXPECT_NE(std::string(e.what()).find("'solver.dt'"), std::string::npos) << e.what();
   }
 
+  // So is a design the unit cell cannot take (an E-element on an edge the cell lacks), even with
+  // the spacing still to be derived from the surface.
+  PipelineRequest bad_cell = dome_request();
+  bad_cell.surface_path = dir_ / "missing.obj";
+  bad_cell.design.pattern.spacing = 0;
+  EdgeElementDesign on_edge_9;
+  on_edge_9.cell_edges = {9};
+  bad_cell.design.elements.edge = {on_edge_9};
+  try {
+    run_pipeline(bad_cell);
+    FAIL() << "accepted cell edge 9";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("elements.edge[0].cell_edges: edge 9 does not exist"), std::string::npos)
+        << e.what();
+  }
+
   // An output that is an input is refused before anything is written or mapped.
   const fs::path surface = dir_ / "placements.csv";
   fs::copy_file(test::bundled_surface("dome"), surface);
@@ -131,6 +147,27 @@ TEST_F(RunPipeline, ReportsThePatternBeforeTheSolverMovesIt) {
   EXPECT_EQ(pattern_points, result.pavement.pattern.points);
   EXPECT_NE(pattern_points, result.pavement.points) << "the optimizer should have moved the points";
   EXPECT_EQ(spacing, result.pavement.design.pattern.spacing);
+}
+
+TEST_F(RunPipeline, TellsTheLoadersRepairsBeforeMapping) {
+  // The dome plus a stray triangle far away: the loader keeps the largest component and says so.
+  const fs::path surface = dir_ / "dome_and_speck.obj";
+  fs::copy_file(test::bundled_surface("dome"), surface);
+  const int n = int(load_surface(test::bundled_surface("dome")).mesh.vertex_count());
+  std::ofstream(surface, std::ios::app) << "v 1000 0 0\nv 1001 0 0\nv 1000 1 0\nf " << n + 1 << " " << n + 2 << " "
+                                        << n + 3 << "\n";
+  PipelineRequest request = dome_request();
+  request.surface_path = surface;
+  request.pavement.optimize = false;
+  std::vector<std::string> events;
+  request.on_warning = [&](const std::string& w) { events.push_back("warning: " + w); };
+  request.progress = [&](float f, const std::string&) {
+    if (f > 0.1f && events.size() < 3) events.push_back("mapping");
+  };
+  const PipelineResult result = run_pipeline(request);
+  ASSERT_FALSE(result.warnings.empty());
+  ASSERT_GE(events.size(), 2u);
+  EXPECT_EQ(events.front().rfind("warning: ", 0), 0u) << "the warning must come before the mapping";
 }
 
 TEST_F(RunPipeline, MappingStopsWhenAsked) {
