@@ -26,7 +26,7 @@ void main() {
         precise vec2 d = pb - pa;
         float len = length_2d(d);
         if (spring_is_slack(spring_flags[spring], len, l)) continue;
-        sums = add_spring(P, sums, pb, d, len, l, nb > a ? 1.0f : -1.0f);
+        sums = accumulate_spring(P, sums, pb, d, len, l, nb > a ? 1.0f : -1.0f);
       }
       if (sums.used != 0) {
         vec2 step_vector = particle_step(P, pa, sums);

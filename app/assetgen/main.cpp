@@ -17,6 +17,8 @@
 #include "obj_writer.h"
 #include "surfaces.h"
 
+#include "command_line.h"
+
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
@@ -35,14 +37,8 @@ int main(int argc, char** argv) {
       ->check([](const std::string& dir) { return dir.empty() ? std::string("must not be empty") : std::string(); });
   app.add_flag("--dense", dense, "Write only the dense set (>= 50k faces each) instead of the small set")
       ->multi_option_policy(CLI::MultiOptionPolicy::Throw);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) return app.exit(e);  // --help
-    // One line, and exit code 2 like paver's usage errors (CLI11's own codes are 105 and up).
-    std::fprintf(stderr, "paver-assetgen: %s (usage: paver-assetgen OUTDIR [--dense]; see --help)\n", e.what());
-    return 2;
-  }
+  if (const auto exit_code = paver::app::parse_command_line(app, argc, argv, "paver-assetgen OUTDIR [--dense]"))
+    return *exit_code;
 
   std::error_code ec;
   std::filesystem::create_directories(outdir, ec);

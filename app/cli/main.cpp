@@ -10,14 +10,14 @@
 #include <iostream>
 
 int main(int argc, char** argv) {
-  CLI::App app{"Paver: element-based pattern creation on 3D free-form surfaces"};
+  CLI::App app{"Paver: element-based pattern creation on 3D free-form surfaces", "paver"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "paver 0.1.0");
   const auto run_param = paver::cli::add_param_command(app);
   const auto run_run = paver::cli::add_run_command(app);
   const auto run_devices = paver::cli::add_devices_command(app);
   const auto run_parameters = paver::cli::add_parameters_command(app);
-  if (const auto exit_code = paver::app::parse_command_line(app, argc, argv)) return *exit_code;
+  if (const auto exit_code = paver::app::parse_command_line(app, argc, argv, "paver run|param|devices|parameters ...")) return *exit_code;
   try {
     if (app.got_subcommand("param")) return run_param();
     if (app.got_subcommand("run")) return run_run();

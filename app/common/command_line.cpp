@@ -1,13 +1,16 @@
 #include "command_line.h"
 
+#include <cstdio>
+
 namespace paver::app {
 
-std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv) {
+std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, const std::string& usage) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 2;
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    std::fprintf(stderr, "%s: %s (usage: %s; see --help)\n", app.get_name().c_str(), e.what(), usage.c_str());
+    return 2;
   }
   return std::nullopt;
 }

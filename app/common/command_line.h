@@ -8,9 +8,9 @@
 namespace paver::app {
 
 // Parses argv; returns the exit code when the program should stop now: 0 after --help or
-// --version, 2 (an input error, one line on stderr) for a bad argument. CLI11's own codes (106 ...)
-// would tell a script nothing more.
-std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv);
+// --version, 2 for a bad argument, with one line on stderr: "PROGRAM: what is wrong (usage; see
+// --help)". CLI11's own codes (106 ...) and its two-line message would tell a script nothing more.
+std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, const std::string& usage);
 
 // --backend cpu|vulkan|auto (default auto), as choose_backend takes it.
 CLI::Option* add_backend_option(CLI::App& app, std::string& backend);

@@ -17,7 +17,7 @@
 
 int main(int argc, char** argv) {
   using namespace paver::studio;
-  CLI::App app{"Paver Studio: design element patterns on a surface and watch them optimize"};
+  CLI::App app{"Paver Studio: design element patterns on a surface and watch them optimize", "paver-studio"};
   std::string surface, design, script, backend = "auto";
   WindowOptions window_options;
   app.add_option("SURFACE", surface, "Open surface to pave: OBJ, OFF, PLY or STL");
@@ -28,7 +28,7 @@ int main(int argc, char** argv) {
   paver::app::add_backend_option(app, backend);
   app.add_option("--width", window_options.width, "Window width")->check(CLI::Range(320, 16384))->capture_default_str();
   app.add_option("--height", window_options.height, "Window height")->check(CLI::Range(240, 16384))->capture_default_str();
-  if (const auto exit_code = paver::app::parse_command_line(app, argc, argv)) return *exit_code;
+  if (const auto exit_code = paver::app::parse_command_line(app, argc, argv, "paver-studio [SURFACE] [--design F] [--script F]")) return *exit_code;
 
   try {
     // The script is read first: a typo fails before a window opens.

@@ -84,16 +84,16 @@ std::vector<double> nearest_neighbor_ratios(const Elements& elements) {
   const ElementHash hash(elements, cell);
   for (int i = 0; i < n; ++i) {
     hash.for_each_near(i, [&](int j) {
-      const double reach = 0.5 * (elements.diameter[i] + elements.diameter[j]);
+      const double reach = contact_distance(elements.diameter[i], elements.diameter[j]);
       ratio[i] = std::min(ratio[i], glm::length(elements.position[i] - elements.position[j]) / reach);
     });
   }
   for (int i = 0; i < n; ++i) {
-    const double proven = cell / (0.5 * (elements.diameter[i] + largest));
+    const double proven = cell / contact_distance(elements.diameter[i], largest);
     if (ratio[i] <= proven) continue;
     for (int j = 0; j < n; ++j)
       if (j != i) {
-        const double reach = 0.5 * (elements.diameter[i] + elements.diameter[j]);
+        const double reach = contact_distance(elements.diameter[i], elements.diameter[j]);
         ratio[i] = std::min(ratio[i], glm::length(elements.position[i] - elements.position[j]) / reach);
       }
   }

@@ -72,6 +72,10 @@ public:
 
   // Requires `value` to be an object whose keys are all in `known`.
   void check_object(const json& value, const std::string& path, std::initializer_list<std::string_view> known) const {
+    check_keys(value, path, known);
+  }
+  template <class Known>
+  void check_keys(const json& value, const std::string& path, const Known& known) const {
     if (!value.is_object()) wrong_type(value, path, "an object");
     for (const auto& item : value.items()) {
       const std::string& key = item.key();
@@ -203,13 +207,9 @@ public:
   }
 
   void read(const json& value, const std::string& path, SolverParams& out) const {
-    if (!value.is_object()) wrong_type(value, path, "an object");
-    for (const auto& item : value.items()) {
-      if (find_solver_parameter(item.key())) continue;
-      std::vector<std::string_view> known;
-      for (const SolverParameter& p : solver_parameters()) known.push_back(p.name);
-      fail("unknown key '" + join(path, item.key()) + "'" + suggestion(item.key(), path, known));
-    }
+    std::vector<std::string_view> known;
+    for (const SolverParameter& p : solver_parameters()) known.push_back(p.name);
+    check_keys(value, path, known);
     for (const SolverParameter& p : solver_parameters())
       std::visit([&](auto member) { field(value, path, std::string(p.name).c_str(), out.*member); }, p.member);
   }

@@ -1,5 +1,7 @@
 #include "solver/collision_resolution.h"
 
+#include "elements/contact_rule.h"
+
 #include "elements/element_proximity.h"
 #include "map/lifting.h"
 
@@ -81,7 +83,7 @@ Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface,
       if (pi < 0 || pj < 0 || pi == pj || lifted.triangle[pi] < 0 || lifted.triangle[pj] < 0) continue;
       if (system.stray_count[pi] == kRetired || system.stray_count[pj] == kRetired) continue;
       // The particles must end up as much farther apart as the elements need to.
-      const double need = options.clearance * 0.5 * (elements.diameter[c.i] + elements.diameter[c.j]);
+      const double need = options.clearance * contact_distance(elements.diameter[c.i], elements.diameter[c.j]);
       const double stretch = need / std::max(c.distance, 1e-9 * need);
       const double particles = glm::length(lifted.position[pi] - lifted.position[pj]);
       const float rest = float(std::max(particles * stretch, need));

@@ -290,7 +290,7 @@ PAVER_FN SpringSums no_spring_sums() {
 
 // Adds spring a-b: d = p_b - p_a, len = |d|, l = l_ab. `side` (+1 or -1) separates coincident
 // ends along x, the lower index to the left, so the two sides push apart.
-PAVER_FN SpringSums add_spring(PAVER_IN(SolverConstants) k, SpringSums s, vec2 pb, vec2 d, float len, float l,
+PAVER_FN SpringSums accumulate_spring(PAVER_IN(SolverConstants) k, SpringSums s, vec2 pb, vec2 d, float len, float l,
                                float side) {
   // k_c is clamped at r = 0.1: below it alpha / r^12 overflows (inf - inf = NaN at r = 0).
   PAVER_PRECISE float ratio = len / l;

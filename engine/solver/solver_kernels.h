@@ -122,7 +122,7 @@ inline Move move_particle(const SolverConstants& k, const SpringSystem& sys, int
     const glm::vec2 d = pb - pa;
     const float len = length_2d(d);
     if (spring_is_slack(sys.spring_flags[spring], len, l)) continue;
-    sums = add_spring(k, sums, pb, d, len, l, nb > a ? 1.0f : -1.0f);
+    sums = accumulate_spring(k, sums, pb, d, len, l, nb > a ? 1.0f : -1.0f);
   }
   if (sums.used == 0) return {pa, 0.0f};
   const glm::vec2 step = particle_step(k, pa, sums);
