@@ -1,10 +1,11 @@
 #pragma once
 // `paver run --png`: preview.png (the 3D view, framed on the surface, with the colour legend)
 // and param.png (the 2D parameter view), rendered offscreen by the shared Vulkan renderer.
-#include "pipeline/pavement.h"
 #include "map/surface_map.h"
+#include "pipeline/pavement.h"
 
 #include <filesystem>
+#include <memory>
 
 namespace paver::cli {
 
@@ -12,8 +13,22 @@ struct PreviewSize {
   int width = 1280, height = 800;
 };
 
-// Throws InputError when there is no Vulkan device to render with.
-void write_preview_images(const std::filesystem::path& folder, const SurfaceMap& map, const Pavement& pavement,
-                          const ShapeMesh* custom, PreviewSize size = {});
+class PreviewImages {
+public:
+  // Opens a Vulkan device and the renderer; throws InputError ("--png ...") when there is none,
+  // so that `paver run --png` fails before any work, not after it.
+  static PreviewImages open();
+  ~PreviewImages();
+  PreviewImages(PreviewImages&&) noexcept;
+  PreviewImages& operator=(PreviewImages&&) noexcept;
+
+  void write(const std::filesystem::path& folder, const SurfaceMap& map, const Pavement& pavement,
+             const ShapeMesh* custom, PreviewSize size = {});
+
+private:
+  struct Impl;
+  explicit PreviewImages(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
 
 }  // namespace paver::cli

@@ -92,11 +92,13 @@ int run_run(const RunArgs& args) {
 
   const fs::path out = args.out;
   request.out = out;
+  std::optional<PreviewImages> previews;
   if (args.png) {
+    previews = PreviewImages::open();  // no device: refused now, before any work
     request.extra_outputs = {out / "preview.png", out / "param.png"};
     request.write_extras = [&](const PipelineResult& r, StageTimings& timings) {
       const auto t0 = Clock::now();
-      write_preview_images(out, *r.map, r.pavement, r.custom_shape.get());
+      previews->write(out, *r.map, r.pavement, r.custom_shape.get());
       timings.emplace_back("png", ms_since(t0));
     };
   }

@@ -26,6 +26,7 @@ PipelineResult run_pipeline(PipelineRequest request) {
     outputs = run_output_paths(*request.out, request.stl);
     outputs.insert(outputs.end(), request.extra_outputs.begin(), request.extra_outputs.end());
     refuse_overwriting_inputs({request.surface_path, request.design_path, design.elements.custom_shape}, outputs);
+    check_output_folder(*request.out);
   }
 
   if (request.map) {

@@ -601,6 +601,33 @@ TEST_F(PaverCli, DevicesAndBadDeviceName) {
 namespace paver::cli_test {
 namespace {
 
+// Without any Vulkan driver, --png is refused before any work: exit 2, one line naming the flag,
+// nothing written (it used to fail after the whole run, leaving a partial set).
+TEST_F(PaverRun, PngWithoutAVulkanDeviceIsRefusedFirst) {
+  const fs::path out = dir() / "png";
+  const CliResult r = run_program("/usr/bin/env",
+                                  {"VK_ICD_FILENAMES=/nonexistent/icd.json", "VK_DRIVER_FILES=/nonexistent/icd.json",
+                                   PAVER_CLI, "run", "assets/surfaces/saddle.obj", "--backend", "cpu", "--png", "--out",
+                                   out.string()},
+                                  dir());
+  EXPECT_EQ(r.exit_code, 2) << describe(r);
+  EXPECT_NE(r.err.find("--png needs a Vulkan device"), std::string::npos) << describe(r);
+  EXPECT_EQ(r.out.find("surface "), std::string::npos) << "the run went ahead: " << describe(r);
+  EXPECT_FALSE(fs::exists(out)) << describe(r);
+}
+
+// An output folder that cannot be one is refused before any work, naming the folder.
+TEST_F(PaverRunErrors, OutputFolderBehindAFileIsRefusedFirst) {
+  const fs::path file = dir() / "a_file";
+  write_file_text(file, "not a folder");
+  const CliResult r = paver({"run", "assets/surfaces/saddle.obj", "--out", (file / "out").string()});
+  EXPECT_EQ(r.exit_code, 2) << describe(r);
+  EXPECT_NE(r.err.find("output folder " + (file / "out").string() + ": " + file.string() + " is a file, not a folder"),
+            std::string::npos)
+      << describe(r);
+  EXPECT_EQ(r.out.find("surface "), std::string::npos) << "the run went ahead: " << describe(r);
+}
+
 TEST_F(PaverRun, PngPreviewsAreWritten) {
   if (paver({"devices"}).exit_code != 0) {
     std::fprintf(stderr, "\n*** NO VULKAN DEVICE: PaverRun.PngPreviewsAreWritten is SKIPPED ***\n\n");

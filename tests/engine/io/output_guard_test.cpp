@@ -15,6 +15,8 @@
 #include <fstream>
 #include <string>
 
+#include <unistd.h>
+
 namespace paver {
 namespace {
 
@@ -113,6 +115,35 @@ TEST_F(OutputGuard, AFileInTheWayIsAnInputErrorNamingTheFolder) {
   const fs::path below = file / "run" / "out";
   EXPECT_TRUE(Contains(error_of([&] { make_output_folder(below); }), "cannot create the output folder " + below.string()));
   EXPECT_TRUE(fs::is_regular_file(file)) << "the file in the way is left alone";
+}
+
+}  // namespace
+}  // namespace paver
+
+namespace paver {
+namespace {
+
+TEST(OutputFolderCheck, AcceptsAFolderToBeMadeWithoutMakingIt) {
+  const std::filesystem::path base = std::filesystem::temp_directory_path() /
+                                     ("paver_check_output_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(base);
+  std::filesystem::create_directories(base);
+  EXPECT_NO_THROW(check_output_folder(base));
+  EXPECT_NO_THROW(check_output_folder(base / "new" / "nested"));
+  EXPECT_FALSE(std::filesystem::exists(base / "new")) << "the check must write nothing";
+
+  std::ofstream(base / "file") << "x";
+  for (const auto& folder : {base / "file", base / "file" / "below"}) {
+    try {
+      check_output_folder(folder);
+      ADD_FAILURE() << folder << " accepted";
+    } catch (const InputError& e) {
+      const std::string message = e.what();
+      EXPECT_NE(message.find("output folder " + folder.string()), std::string::npos) << message;
+      EXPECT_NE(message.find("is a file, not a folder"), std::string::npos) << message;
+    }
+  }
+  std::filesystem::remove_all(base);
 }
 
 }  // namespace

@@ -131,6 +131,13 @@ TEST_F(RunPipeline, RefusesBadInputBeforeAnyWork) {
   overwrite.progress = [&](float, const std::string&) { ++mapped; };
   EXPECT_THROW(run_pipeline(overwrite), InputError);
   EXPECT_EQ(mapped, 0);
+
+  // So is an output folder that cannot be made (a file in the way).
+  PipelineRequest blocked = dome_request();
+  blocked.out = surface / "out";
+  blocked.progress = [&](float, const std::string&) { ++mapped; };
+  EXPECT_THROW(run_pipeline(blocked), InputError);
+  EXPECT_EQ(mapped, 0);
   EXPECT_EQ(fs::last_write_time(surface), before);
   EXPECT_FALSE(fs::exists(dir_ / "report.json"));
 }
