@@ -5,7 +5,7 @@
 //   - the pure per-item arithmetic of one iteration (eq. 3-16), so that the CPU reference and the
 //     shaders cannot drift: only buffer access differs between the two sides.
 // The code below is the common subset of both languages: GLSL's vec types (glm on the C++ side),
-// float literals with an `f`, uint literals with a `u`. Every temporary is PAVER_PRECISE: on the
+// uint32_t (GLSL's uint, by a macro here only), float literals with an `f`, uint literals with a `u`. Every temporary is PAVER_PRECISE: on the
 // GPU `precise` forbids fusing and reordering, on the CPU the project builds with
 // -ffp-contract=off, so both compute the same float32 operations in the same order.
 #ifndef PAVER_SOLVER_CONTRACT_H
@@ -21,20 +21,18 @@
 #include <cstdint>
 
 namespace paver {
-namespace contract {
 using glm::vec2;
 using glm::vec3;
 using glm::vec4;
-using uint = std::uint32_t;
 using std::sqrt;
-}  // namespace contract
-using namespace contract;
+using std::uint32_t;
 #define PAVER_CONST inline constexpr
 #define PAVER_FN inline
 #define PAVER_PRECISE
 #define PAVER_ALIGN16 alignas(16)
 #define PAVER_IN(type) const type&
 #else
+#define uint32_t uint
 #define PAVER_CONST const
 #define PAVER_FN
 #define PAVER_PRECISE precise
@@ -45,54 +43,54 @@ using namespace contract;
 // ---- Layout -------------------------------------------------------------------------------------
 
 // Workgroup size of every solver pass (local_size_x).
-PAVER_CONST uint kSolverGroupSize = 64u;
+PAVER_CONST uint32_t kSolverGroupSize = 64u;
 
 // Bindings of the solver's one descriptor set; kBindingParams is the uniform block, the rest are
 // std430 storage buffers holding the SpringSystem / SolverSurface arrays of the same name.
-PAVER_CONST uint kBindingParams = 0u;
-PAVER_CONST uint kBindingUv = 1u;               // vec2 #V: the map
-PAVER_CONST uint kBindingSurfacePosition = 2u;  // vec4 #V: xyz of the surface's vertices
-PAVER_CONST uint kBindingSurfaceCurvature = 3u; // float #V: |H|
-PAVER_CONST uint kBindingTriangles = 4u;        // int 3#F
-PAVER_CONST uint kBindingGridStart = 5u;        // int: uv grid CSR starts
-PAVER_CONST uint kBindingGridTriangles = 6u;    // int: uv grid CSR triangles
-PAVER_CONST uint kBindingBoundaryUv = 7u;       // vec2: the boundary loop in the map
-PAVER_CONST uint kBindingBoundaryInward = 8u;   // vec2: a point inside next to each boundary segment
-PAVER_CONST uint kBindingPositionIn = 9u;       // vec2 #P
-PAVER_CONST uint kBindingPositionOut = 10u;     // vec2 #P
-PAVER_CONST uint kBindingStrayCount = 11u;      // uint #P
-PAVER_CONST uint kBindingTriangleHint = 12u;    // int #P
-PAVER_CONST uint kBindingPulledBack = 13u;      // uint #P
-PAVER_CONST uint kBindingLifted = 14u;          // vec4 #P: xyz position, w curvature
-PAVER_CONST uint kBindingNeighborStart = 15u;   // int #P + 1
-PAVER_CONST uint kBindingNeighbor = 16u;        // int #2E
-PAVER_CONST uint kBindingNeighborSpring = 17u;  // int #2E
-PAVER_CONST uint kBindingSpringA = 18u;         // int #E
-PAVER_CONST uint kBindingSpringB = 19u;         // int #E
-PAVER_CONST uint kBindingRestLength = 20u;      // float #E
-PAVER_CONST uint kBindingSpringFlags = 21u;     // uint #E
-PAVER_CONST uint kBindingTarget = 22u;          // float #E
-PAVER_CONST uint kBindingInitialTarget = 23u;   // float #E
-PAVER_CONST uint kBindingControl = 24u;         // uint kControlSlots
-PAVER_CONST uint kBindingCount = 25u;
+PAVER_CONST uint32_t kBindingParams = 0u;
+PAVER_CONST uint32_t kBindingUv = 1u;               // vec2 #V: the map
+PAVER_CONST uint32_t kBindingSurfacePosition = 2u;  // vec4 #V: xyz of the surface's vertices
+PAVER_CONST uint32_t kBindingSurfaceCurvature = 3u; // float #V: |H|
+PAVER_CONST uint32_t kBindingTriangles = 4u;        // int 3#F
+PAVER_CONST uint32_t kBindingGridStart = 5u;        // int: uv grid CSR starts
+PAVER_CONST uint32_t kBindingGridTriangles = 6u;    // int: uv grid CSR triangles
+PAVER_CONST uint32_t kBindingBoundaryUv = 7u;       // vec2: the boundary loop in the map
+PAVER_CONST uint32_t kBindingBoundaryInward = 8u;   // vec2: a point inside next to each boundary segment
+PAVER_CONST uint32_t kBindingPositionIn = 9u;       // vec2 #P
+PAVER_CONST uint32_t kBindingPositionOut = 10u;     // vec2 #P
+PAVER_CONST uint32_t kBindingStrayCount = 11u;      // uint #P
+PAVER_CONST uint32_t kBindingTriangleHint = 12u;    // int #P
+PAVER_CONST uint32_t kBindingPulledBack = 13u;      // uint #P
+PAVER_CONST uint32_t kBindingLifted = 14u;          // vec4 #P: xyz position, w curvature
+PAVER_CONST uint32_t kBindingNeighborStart = 15u;   // int #P + 1
+PAVER_CONST uint32_t kBindingNeighbor = 16u;        // int #2E
+PAVER_CONST uint32_t kBindingNeighborSpring = 17u;  // int #2E
+PAVER_CONST uint32_t kBindingSpringA = 18u;         // int #E
+PAVER_CONST uint32_t kBindingSpringB = 19u;         // int #E
+PAVER_CONST uint32_t kBindingRestLength = 20u;      // float #E
+PAVER_CONST uint32_t kBindingSpringFlags = 21u;     // uint #E
+PAVER_CONST uint32_t kBindingTarget = 22u;          // float #E
+PAVER_CONST uint32_t kBindingInitialTarget = 23u;   // float #E
+PAVER_CONST uint32_t kBindingControl = 24u;         // uint kControlSlots
+PAVER_CONST uint32_t kBindingCount = 25u;
 
 // The control block: one solve's state on the GPU, read back between batches.
-PAVER_CONST uint kControlDone = 0u;         // 1 once converged
-PAVER_CONST uint kControlIterations = 1u;   // iterations run
-PAVER_CONST uint kControlStrays = 2u;       // pull backs
-PAVER_CONST uint kControlMaxStep = 3u;      // this iteration's max step, float bits (steps >= 0, so uint order is float order)
-PAVER_CONST uint kControlError = 4u;        // kError* bits
-PAVER_CONST uint kControlLastMaxStep = 5u;  // the last finished iteration's max step, float bits
-PAVER_CONST uint kControlSlots = 8u;
+PAVER_CONST uint32_t kControlDone = 0u;         // 1 once converged
+PAVER_CONST uint32_t kControlIterations = 1u;   // iterations run
+PAVER_CONST uint32_t kControlStrays = 2u;       // pull backs
+PAVER_CONST uint32_t kControlMaxStep = 3u;      // this iteration's max step, float bits (steps >= 0, so uint order is float order)
+PAVER_CONST uint32_t kControlError = 4u;        // kError* bits
+PAVER_CONST uint32_t kControlLastMaxStep = 5u;  // the last finished iteration's max step, float bits
+PAVER_CONST uint32_t kControlSlots = 8u;
 
-PAVER_CONST uint kErrorNonFinite = 1u;  // a particle position became NaN or infinite
-PAVER_CONST uint kErrorNotLifted = 2u;  // a particle could not be located on the map
+PAVER_CONST uint32_t kErrorNonFinite = 1u;  // a particle position became NaN or infinite
+PAVER_CONST uint32_t kErrorNotLifted = 2u;  // a particle could not be located on the map
 
-PAVER_CONST uint kRetired = 0xffffffffu;  // stray_count of a retired particle
-PAVER_CONST uint kSpringVirtual = 1u;     // spring_flags: a bracing edge across a face
+PAVER_CONST uint32_t kRetired = 0xffffffffu;  // stray_count of a retired particle
+PAVER_CONST uint32_t kSpringVirtual = 1u;     // spring_flags: a bracing edge across a face
 // A contact spring keeps two colliding elements apart: its rest length is the required 3D
 // distance (no margin, no filter) and it only pushes, never pulls.
-PAVER_CONST uint kSpringContact = 2u;
+PAVER_CONST uint32_t kSpringContact = 2u;
 
 // The parameter block (std140 on the GPU; the C++ struct is its mirror, checked below). The
 // kernels' constants come first; the rest only the GPU needs (the CPU has them elsewhere).
@@ -108,15 +106,15 @@ struct PAVER_ALIGN16 SolverConstants {
   vec2 grid_origin;
   int grid_nx, grid_ny, boundary_count, particle_count;
   int spring_count;
-  uint filter_base_initial;  // 1: clamp against l_ab at initialisation, 0: current l_ab
-  uint stray_patience;       // pulls back in a row before a particle retires; 0 = never
-  uint pad0;
+  uint32_t filter_base_initial;  // 1: clamp against l_ab at initialisation, 0: current l_ab
+  uint32_t stray_patience;       // pulls back in a row before a particle retires; 0 = never
+  uint32_t pad0;
 };
 
 // Push constants of the lift pass (count_strays, always) and the spring pass (always).
 struct SolverPush {
-  uint first;   // lift: 1 counts strays (0 for the closing lift); springs: 1 runs even when done
-  uint second;  // lift: 1 runs even when the solve is done (initial and closing lifts)
+  uint32_t first;   // lift: 1 counts strays (0 for the closing lift); springs: 1 runs even when done
+  uint32_t second;  // lift: 1 runs even when the solve is done (initial and closing lifts)
 };
 
 #ifdef __cplusplus
@@ -203,10 +201,10 @@ PAVER_FN vec4 lift_barycentric(vec3 b, vec4 pi, vec4 pj, vec4 pk, float ki, floa
 // back, -1 otherwise, so a particle pushed out every iteration retires after `stray_patience`
 // iterations and one that goes out every other iteration after about twice that, while an
 // occasional stray recovers.
-PAVER_FN uint next_stray_count(PAVER_IN(SolverConstants) k, uint count, bool pulled_back) {
+PAVER_FN uint32_t next_stray_count(PAVER_IN(SolverConstants) k, uint32_t count, bool pulled_back) {
   if (count == kRetired) return kRetired;
   if (!pulled_back) return count > 0u ? count - 1u : 0u;
-  uint next = count + 2u;
+  uint32_t next = count + 2u;
   return k.stray_patience != 0u && next >= 2u * k.stray_patience ? kRetired : next;
 }
 
@@ -228,7 +226,7 @@ struct SpringState {
 // initialisation, and when an end was just pulled back onto the map (its wound-up target would
 // push it straight out again). `initial` is l_ab at initialisation (FilterBase::Initial).
 PAVER_FN SpringState update_spring(PAVER_IN(SolverConstants) k, vec2 d2, vec3 d3, float kappa_a, float kappa_b,
-                                   float rest, float previous, float initial, bool reset, uint flags) {
+                                   float rest, float previous, float initial, bool reset, uint32_t flags) {
   PAVER_PRECISE float len2 = length_2d(d2);
   PAVER_PRECISE float len3 = length_3d(d3);
   float target3 = (flags & kSpringContact) != 0u ? rest : target_length_3d(k, rest, kappa_a, kappa_b);
@@ -263,7 +261,7 @@ PAVER_FN float spring_constant(PAVER_IN(SolverConstants) k, float r) {
 }
 
 // Contact springs only push: one longer than its target exerts nothing.
-PAVER_FN bool spring_is_slack(uint flags, float len, float target) {
+PAVER_FN bool spring_is_slack(uint32_t flags, float len, float target) {
   return (flags & kSpringContact) != 0u && len >= target;
 }
 
@@ -336,4 +334,7 @@ PAVER_FN vec2 particle_step(PAVER_IN(SolverConstants) k, vec2 pa, SpringSums s) 
 #undef PAVER_PRECISE
 #undef PAVER_ALIGN16
 #undef PAVER_IN
+#ifndef __cplusplus
+#undef uint32_t
+#endif
 #endif  // PAVER_SOLVER_CONTRACT_H
