@@ -92,6 +92,13 @@ std::vector<double> distances_to_boundary(const SurfaceMap& map, const Elements&
   const int n = int(loop.size());
   double cell = 0;
   for (double d : elements.diameter) cell = std::max(cell, d);
+  // Cells no smaller than a quarter of the longest boundary segment, so a segment touches at most
+  // a few cells even when the elements are tiny (a wider cell only checks more segments; distances
+  // under one largest diameter stay exact).
+  double longest = 0;
+  for (int i = 0; i < n; ++i) longest = std::max(longest, glm::length(pos[loop[(i + 1) % n]] - pos[loop[i]]));
+  const double cap = cell > 0 ? cell : 1;  // what farther elements report (documented in the header)
+  cell = std::max(cell, 0.25 * longest);
   if (!(cell > 0)) cell = 1;
   // Boundary segments bucketed by the cells their bounding boxes touch; an element only needs
   // the segments within its radius (< one cell) of it; farther ones report at least `cell`.
@@ -108,7 +115,7 @@ std::vector<double> distances_to_boundary(const SurfaceMap& map, const Elements&
       for (int y = c0.y; y <= c1.y; ++y)
         for (int x = c0.x; x <= c1.x; ++x) buckets[key({x, y, z})].push_back(i);
   }
-  std::vector<double> distance(elements.size(), cell);
+  std::vector<double> distance(elements.size(), cap);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, elements.size(), 256), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t e = r.begin(); e != r.end(); ++e) {
       const glm::ivec3 c = cell_of(elements.position[e]);

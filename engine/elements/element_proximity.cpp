@@ -2,6 +2,7 @@
 
 #include "elements/contact_rule.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -13,12 +14,31 @@
 namespace paver {
 namespace {
 
-// Elements bucketed in cubic cells at least one largest diameter wide, so any touching pair
-// lies in the same or adjacent cells.
+// Elements bucketed in cubic cells at least `cell` wide (callers pass one largest diameter, so any
+// touching pair lies in the same or adjacent cells). Cells are never smaller than a millionth of the
+// elements' extent, so cell indices fit the key whatever the element size (tiny elements on a big
+// part would otherwise overflow them).
 class ElementHash {
 public:
-  ElementHash(const Elements& e, double cell) : elements_(e), cell_(cell) {
+  ElementHash(const Elements& e, double cell)
+      : elements_(e), cell_(std::max(cell, extent(e) * 1e-6)), origin_(e.size() ? lowest(e) : glm::dvec3(0)) {
     for (int i = 0; i < int(e.size()); ++i) buckets_[key(cell_of(e.position[i]))].push_back(i);
+  }
+  double cell() const { return cell_; }
+
+  static glm::dvec3 lowest(const Elements& e) {
+    glm::dvec3 lo = e.position[0];
+    for (const glm::dvec3& p : e.position) lo = glm::min(lo, p);
+    return lo;
+  }
+
+  // The largest side of the elements' bounding box.
+  static double extent(const Elements& e) {
+    if (e.size() == 0) return 0;
+    glm::dvec3 lo = e.position[0], hi = e.position[0];
+    for (const glm::dvec3& p : e.position) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    const glm::dvec3 size = hi - lo;
+    return std::max({size.x, size.y, size.z});
   }
   template <class F>
   void for_each_near(int i, F&& visit) const {
@@ -34,8 +54,10 @@ public:
   }
 
 private:
+  // Counted from the lowest corner, so indices stay in [0, 1e6] wherever the part is.
   glm::ivec3 cell_of(const glm::dvec3& p) const {
-    return glm::ivec3(int(std::floor(p.x / cell_)), int(std::floor(p.y / cell_)), int(std::floor(p.z / cell_)));
+    const glm::dvec3 r = (p - origin_) / cell_;
+    return glm::ivec3(int(std::floor(r.x)), int(std::floor(r.y)), int(std::floor(r.z)));
   }
   static std::uint64_t key(glm::ivec3 c) {
     return (std::uint64_t(std::uint32_t(c.x) & 0x1fffff) << 42) | (std::uint64_t(std::uint32_t(c.y) & 0x1fffff) << 21) |
@@ -43,6 +65,7 @@ private:
   }
   const Elements& elements_;
   double cell_;
+  glm::dvec3 origin_;
   std::unordered_map<std::uint64_t, std::vector<int>> buckets_;
 };
 
@@ -75,27 +98,28 @@ std::vector<double> nearest_neighbor_ratios(const Elements& elements) {
   const int n = int(elements.size());
   std::vector<double> ratio(n, std::numeric_limits<double>::infinity());
   if (n < 2) return ratio;
-  // Search cells two diameters wide so loose patterns (ratios up to ~2) find their neighbour in
-  // the 27 cells around them. Every element outside those cells is at least `cell` away, so a
-  // ratio found below cell / reach_max is the true minimum; above it (a loose element, or none
-  // found) the element is scanned against all others.
+  // Search the 27 cells around each element, cells two largest diameters wide at first: tight
+  // patterns (ratios up to ~2) find their nearest neighbour there. Every element outside them is at
+  // least one cell away, so a ratio found below cell / reach_max is the true minimum; the elements
+  // left (loose ones, or none found) search again in cells four times wider, until the cells span
+  // the whole set. O(n) for tight patterns, O(n log(spread)) for loose ones, never all pairs.
   const double largest = largest_diameter(elements);
-  const double cell = 2 * largest;
-  const ElementHash hash(elements, cell);
-  for (int i = 0; i < n; ++i) {
-    hash.for_each_near(i, [&](int j) {
-      const double reach = contact_distance(elements.diameter[i], elements.diameter[j]);
-      ratio[i] = std::min(ratio[i], glm::length(elements.position[i] - elements.position[j]) / reach);
-    });
-  }
-  for (int i = 0; i < n; ++i) {
-    const double proven = cell / contact_distance(elements.diameter[i], largest);
-    if (ratio[i] <= proven) continue;
-    for (int j = 0; j < n; ++j)
-      if (j != i) {
+  const double extent = ElementHash::extent(elements);
+  std::vector<int> pending(n);
+  for (int i = 0; i < n; ++i) pending[i] = i;
+  for (double width = 2 * largest; !pending.empty(); width *= 4) {
+    const ElementHash hash(elements, width);
+    const bool spans_all = hash.cell() >= extent;
+    std::vector<int> unresolved;
+    for (int i : pending) {
+      hash.for_each_near(i, [&](int j) {
         const double reach = contact_distance(elements.diameter[i], elements.diameter[j]);
         ratio[i] = std::min(ratio[i], glm::length(elements.position[i] - elements.position[j]) / reach);
-      }
+      });
+      if (!spans_all && !(ratio[i] <= hash.cell() / contact_distance(elements.diameter[i], largest)))
+        unresolved.push_back(i);
+    }
+    pending.swap(unresolved);
   }
   return ratio;
 }

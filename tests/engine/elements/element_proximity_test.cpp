@@ -197,3 +197,28 @@ TEST(ElementProximityNeighbours, LooseMixedSetsMatchAllPairs) {
 
 }  // namespace
 }  // namespace paver
+
+namespace paver {
+namespace {
+
+// Tiny elements far apart on a part far from the origin (element scale 1e-9, which used to hang:
+// the grid's cells were a billionth of the part and their indices overflowed, and every element
+// fell back to a scan of all others). Exact ratios, and a collision search that finds none.
+TEST(ElementProximityNeighbours, TinyElementsFarFromTheOriginAreExact) {
+  Elements e;
+  const glm::dvec3 origin(3e7, -2e7, 5e6);
+  for (int y = 0; y < 120; ++y)
+    for (int x = 0; x < 120; ++x) add(e, origin + glm::dvec3(2.0 * x + (y % 2), 1.5 * y, 0.25 * ((x * y) % 3)), 1e-9);
+  const std::vector<double> r = nearest_neighbor_ratios(e);
+  EXPECT_TRUE(find_collisions(e).empty());
+  // Spot-check against all pairs (the whole set would take the test a while).
+  for (int i : {0, 1, 119, 7000, 14399}) {
+    double want = std::numeric_limits<double>::infinity();
+    for (int j = 0; j < int(e.size()); ++j)
+      if (j != i) want = std::min(want, glm::length(e.position[i] - e.position[j]) / reach(e, i, j));
+    EXPECT_DOUBLE_EQ(r[i], want) << "element " << i;
+  }
+}
+
+}  // namespace
+}  // namespace paver

@@ -177,6 +177,18 @@ TEST_F(RunPipeline, TellsTheLoadersRepairsBeforeMapping) {
   EXPECT_EQ(events.front().rfind("warning: ", 0), 0u) << "the warning must come before the mapping";
 }
 
+// Element scale 1e-9 used to hang (boundary segments bucketed into billions of cells of a
+// billionth of the part; the proximity grid's indices overflowed). Now it paves like any other.
+TEST_F(RunPipeline, TinyElementsPaveLikeAnyOther) {
+  PipelineRequest request = dome_request();
+  request.map = test::bundled_map("dome");
+  request.design.elements.vertex.scale = 1e-9;
+  const PipelineResult result = run_pipeline(request);
+  EXPECT_GT(result.pavement.elements.size(), 100u);
+  EXPECT_EQ(result.pavement.after.collisions, 0);
+  EXPECT_GT(result.pavement.after.neighbor_ratio.min, 1e8) << "elements a billionth of D apart by D";
+}
+
 TEST_F(RunPipeline, MappingStopsWhenAsked) {
   int polls = 0;
   const MappedSurface mapped = map_surface_file(test::bundled_surface("dome"), {}, [&] { return ++polls > 2; });
