@@ -411,6 +411,12 @@ Design load_design(const std::filesystem::path& path) {
   } catch (const nlohmann::json::parse_error& error) {
     throw InputError(path.string() + ":" + line_and_column(text, error.byte) +
                      ": JSON syntax error: " + short_reason(error.what()));
+  } catch (const nlohmann::json::out_of_range& error) {
+    // A number beyond double's range (1e999): nlohmann reports no position, only the number.
+    std::string reason = error.what();  // "[json.exception.out_of_range.406] number overflow parsing '1e999'"
+    const size_t bracket = reason.find("] ");
+    if (bracket != std::string::npos) reason = reason.substr(bracket + 2);
+    throw InputError(path.string() + ": " + reason + "; numbers must be finite (at most about 1.8e308)");
   }
   Design design = design_from_json(json, path.string());
 

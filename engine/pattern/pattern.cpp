@@ -29,6 +29,12 @@ double estimate_point_count(const SurfaceMap& map, const UnitCell& cell, const P
 }
 
 Pattern build_pattern(const SurfaceMap& map, const UnitCell& cell, const Placement& placement) {
+  const glm::dvec2 map_extent = map.uv_max - map.uv_min;
+  const double map_size = std::max(map_extent.x, map_extent.y) * placement.scale;  // in pattern units
+  if (!(cell.spacing < map_size))
+    throw InputError("spacing D = " + format_number(cell.spacing) + " is larger than the surface (its map is about " +
+                     format_number(map_size) + " across): no two elements fit; use a spacing below " +
+                     format_number(map_size));
   const double estimate = estimate_point_count(map, cell, placement);
   if (!(estimate <= kMaxPatternPoints)) {
     // Rounded up to the three digits printed, so the spacing suggested is itself accepted.
@@ -52,6 +58,16 @@ Pattern build_pattern(const SurfaceMap& map, const UnitCell& cell, const Placeme
     const glm::dvec2 l = lattice_coords(placement.map_to_pattern(map.uv[v]));
     lo = glm::min(lo, l), hi = glm::max(hi, l);
   }
+  // An offset (or a scale) that puts the map this many cells from the lattice's origin only
+  // repeats the lattice, and its cell indices would overflow: refuse it.
+  constexpr double kMaxCellIndex = 1e8;
+  if (!(std::abs(lo.x) < kMaxCellIndex && std::abs(lo.y) < kMaxCellIndex && std::abs(hi.x) < kMaxCellIndex &&
+        std::abs(hi.y) < kMaxCellIndex))
+    throw InputError("placement: the offset (" + format_number(placement.offset.x) + ", " +
+                     format_number(placement.offset.y) + ") puts the pattern about " +
+                     format_number(std::max({std::abs(lo.x), std::abs(lo.y), std::abs(hi.x), std::abs(hi.y)})) +
+                     " cells from the surface's map; the lattice repeats every cell, so use an offset within the "
+                     "map's size (about " + format_number(map_size) + ")");
   // One extra ring of cells so edges leaving the map are seen from both ends.
   const glm::ivec2 c0 = glm::ivec2(glm::floor(lo)) - 2, c1 = glm::ivec2(glm::ceil(hi)) + 2;
   const int ncx = c1.x - c0.x + 1, ncy = c1.y - c0.y + 1, nv = int(cell.vertices.size());
@@ -98,6 +114,10 @@ Pattern build_pattern(const SurfaceMap& map, const UnitCell& cell, const Placeme
           pattern.crossing_edges.push_back({from_inside ? a : b, outside, e, from_inside});
         }
       }
+  if (pattern.point_count() == 0)
+    throw InputError("no element of the pattern lands on the surface: spacing D = " + format_number(cell.spacing) +
+                     " against a map about " + format_number(map_size) +
+                     " across; use a smaller spacing (or a placement that puts the lattice over the map)");
   return pattern;
 }
 

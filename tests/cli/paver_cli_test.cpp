@@ -314,6 +314,24 @@ void expect_input_error(const CliResult& r, const fs::path& out, std::initialize
   EXPECT_FALSE(fs::exists(out)) << "a failed run created " << out;
 }
 
+// Designs that used to run to exit 0 with nothing useful (one giant element, or none) or to an
+// internal error: each is refused with exit 2 naming what to change, and nothing is written.
+TEST_F(PaverRunErrors, SpacingOffsetAndNumbersOutOfAnyUse) {
+  const fs::path out = dir() / "out";
+  const CliResult huge = paver({"run", "assets/surfaces/dome.obj", "--spacing", "1e300", "--out", out.string()});
+  expect_input_error(huge, out, {"spacing D = 1e+300 is larger than the surface", "use a spacing below"});
+
+  const fs::path far = dir() / "far.json";
+  write_file_text(far, R"({"version": 1, "placement": {"offset": [1e12, 0]}})");
+  const CliResult offset = paver({"run", "assets/surfaces/dome.obj", "--design", far.string(), "--out", out.string()});
+  expect_input_error(offset, out, {"placement: the offset (1e+12, 0)", "use an offset within the map's size"});
+
+  const fs::path overflow = dir() / "overflow.json";
+  write_file_text(overflow, R"({"version": 1, "pattern": {"spacing": 1e999}})");
+  const CliResult number = paver({"run", "assets/surfaces/dome.obj", "--design", overflow.string(), "--out", out.string()});
+  expect_input_error(number, out, {"overflow.json: number overflow parsing '1e999'", "numbers must be finite"});
+}
+
 TEST_F(PaverRunErrors, MissingSurface) {
   const fs::path out = dir() / "out";
   const CliResult r = paver({"run", (dir() / "no_such_surface.obj").string(), "--out", out.string()});
