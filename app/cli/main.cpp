@@ -3,6 +3,8 @@
 #include "commands.h"
 
 #include "core/input_error.h"
+#include "core/interrupted.h"
+#include "interrupt.h"
 
 #include <CLI/CLI.hpp>
 
@@ -18,11 +20,15 @@ int main(int argc, char** argv) {
   const auto run_devices = paver::cli::add_devices_command(app);
   const auto run_parameters = paver::cli::add_parameters_command(app);
   if (const auto exit_code = paver::app::parse_command_line(app, argc, argv, "paver run|param|devices|parameters ...")) return *exit_code;
+  paver::cli::install_interrupt_handlers();
   try {
     if (app.got_subcommand("param")) return run_param();
     if (app.got_subcommand("run")) return run_run();
     if (app.got_subcommand("devices")) return run_devices();
     if (app.got_subcommand("parameters")) return run_parameters();
+  } catch (const paver::Interrupted&) {
+    std::cerr << "paver: interrupted; nothing was written, the output folder is as it was\n";
+    return 130;
   } catch (const paver::InputError& e) {
     std::cerr << "paver: error: " << e.what() << "\n";
     return 2;

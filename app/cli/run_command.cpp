@@ -3,6 +3,7 @@
 #include "command_line.h"
 #include "commands.h"
 #include "preview_images.h"
+#include "interrupt.h"
 #include "progress_bar.h"
 
 #include "core/input_error.h"
@@ -87,6 +88,7 @@ int run_run(const RunArgs& args) {
   options.postprocess = !args.no_postprocess;
   options.threads = args.threads;
   options.resolve_collisions = !args.no_resolve;
+  options.stop = &interrupt_requested();
   const app::BackendChoice backend = app::choose_backend(args.backend, args.device, args.threads);
   options.solver = backend.factory;
 
@@ -96,9 +98,9 @@ int run_run(const RunArgs& args) {
   if (args.png) {
     previews = PreviewImages::open();  // no device: refused now, before any work
     request.extra_outputs = {out / "preview.png", out / "param.png"};
-    request.write_extras = [&](const PipelineResult& r, StageTimings& timings) {
+    request.write_extras = [&](const PipelineResult& r, const fs::path& folder, StageTimings& timings) {
       const auto t0 = Clock::now();
-      previews->write(out, *r.map, r.pavement, r.custom_shape.get());
+      previews->write(folder, *r.map, r.pavement, r.custom_shape.get());
       timings.emplace_back("png", ms_since(t0));
     };
   }

@@ -1,5 +1,8 @@
 #include "pipeline/run_outputs.h"
 
+#include "core/interrupted.h"
+#include "io/output_set.h"
+
 #include "io/output_guard.h"
 
 #include "io/atomic_file.h"
@@ -36,15 +39,29 @@ void write_run_files(const fs::path& folder, const Pavement& pavement, const Run
   save_design(folder / "design.json", pavement.design);
 }
 
+std::vector<std::string> run_output_names() {
+  return {"placements.csv", "elements.ply", "elements.obj", "elements.stl", "design.json",
+          "report.json",    "preview.png",  "param.png"};
+}
+
 void write_run_outputs(const fs::path& folder, const RunInfo& info, const SurfaceMap& map, const Pavement& pavement,
-                       StageTimings& timings, const RunOutputOptions& options,
-                       const std::function<void(StageTimings&)>& extras) {
+                       StageTimings& timings, const RunOutputOptions& options, const ExtraOutputs& extras) {
+  const auto check_stop = [&] {
+    if (options.stop && options.stop->load()) throw Interrupted();
+  };
+  check_stop();
+  OutputSet::remove_stale_staging(folder);  // left by runs that were killed
+  OutputSet set(folder, run_output_names());
   const auto t0 = std::chrono::steady_clock::now();
-  write_run_files(folder, pavement, options);
+  write_run_files(set.staging(), pavement, options);
   timings.emplace_back("export",
                        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
-  if (extras) extras(timings);
-  write_run_report(folder, info, map, pavement, timings);
+  check_stop();
+  if (extras) extras(set.staging(), timings);
+  check_stop();
+  write_run_report(set.staging(), info, map, pavement, timings);
+  check_stop();
+  set.publish("report.json");
 }
 
 nlohmann::json write_run_report(const fs::path& folder, const RunInfo& info, const SurfaceMap& map,

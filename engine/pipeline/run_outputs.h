@@ -9,7 +9,9 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include <atomic>
 #include <filesystem>
+#include <string>
 #include <functional>
 #include <vector>
 
@@ -18,7 +20,11 @@ namespace paver {
 struct RunOutputOptions {
   const ShapeMesh* custom = nullptr;  // the design's custom shape, when an element uses it
   bool stl = false;                   // also elements.stl (binary STL)
+  const std::atomic<bool>* stop = nullptr;  // when it becomes true, nothing more is written: Interrupted
 };
+
+// Every file name a run may leave in its output folder (the CLI's previews included).
+std::vector<std::string> run_output_names();
 
 // Every path the two functions below write in `folder`, for refuse_overwriting_inputs.
 std::vector<std::filesystem::path> run_output_paths(const std::filesystem::path& folder, bool stl);
@@ -28,12 +34,15 @@ std::vector<std::filesystem::path> run_output_paths(const std::filesystem::path&
 void write_run_files(const std::filesystem::path& folder, const Pavement& pavement,
                      const RunOutputOptions& options = {});
 
-// The export stage as run_pipeline and the studio's export run it: write_run_files (timed as
-// "export" in `timings`), then `extras` (the caller's own files, which add their timings), then
-// write_run_report with every timing.
+// The export stage as run_pipeline and the studio's export run it, as one set (io/output_set.h):
+// into a staging folder, write_run_files (timed as "export" in `timings`), then `extras` (the
+// caller's own files, written into the folder it is given, adding their timings), then
+// write_run_report with every timing; then the set is published into `folder` at once. Throws
+// Interrupted, leaving `folder` as it was, when options.stop becomes true before publishing.
+using ExtraOutputs = std::function<void(const std::filesystem::path& staging, StageTimings& timings)>;
 void write_run_outputs(const std::filesystem::path& folder, const RunInfo& info, const SurfaceMap& map,
                        const Pavement& pavement, StageTimings& timings, const RunOutputOptions& options = {},
-                       const std::function<void(StageTimings&)>& extras = {});
+                       const ExtraOutputs& extras = {});
 
 // Writes report.json and returns its content.
 nlohmann::json write_run_report(const std::filesystem::path& folder, const RunInfo& info, const SurfaceMap& map,

@@ -1,6 +1,7 @@
 #include "pipeline/run_pipeline.h"
 
 #include "core/input_error.h"
+#include "core/interrupted.h"
 #include "io/output_guard.h"
 #include "pipeline/run_outputs.h"
 
@@ -29,26 +30,33 @@ PipelineResult run_pipeline(PipelineRequest request) {
     check_output_folder(*request.out);
   }
 
+  const std::atomic<bool>* stop = request.pavement.stop;
+  const auto check_stop = [&] {
+    if (stop && stop->load()) throw Interrupted();
+  };
   if (request.map) {
     result.map = std::move(request.map);
     result.timings = std::move(request.map_timings);
   } else {
-    MappedSurface mapped = map_surface_file(request.surface_path, request.progress, {}, request.on_warning);
+    const StopRequested stop_requested = [&] { return stop && stop->load(); };
+    MappedSurface mapped = map_surface_file(request.surface_path, request.progress, stop_requested, request.on_warning);
     result.map = std::move(mapped.map);
     result.warnings = std::move(mapped.warnings);
     result.timings = std::move(mapped.timings);
   }
+  check_stop();
 
   result.pavement = make_pavement(*result.map, design, request.pavement);
+  check_stop();  // the solves ended early: a partial pavement is not a result
   result.timings.insert(result.timings.end(), result.pavement.timings.begin(), result.pavement.timings.end());
   result.counts = count_pavement(result.pavement);
 
   if (request.out) {
-    const auto extras = [&](StageTimings& timings) {
-      if (request.write_extras) request.write_extras(result, timings);
+    const auto extras = [&](const std::filesystem::path& folder, StageTimings& timings) {
+      if (request.write_extras) request.write_extras(result, folder, timings);
     };
     write_run_outputs(*request.out, result.info, *result.map, result.pavement, result.timings,
-                      {.custom = result.custom_shape.get(), .stl = request.stl}, extras);
+                      {.custom = result.custom_shape.get(), .stl = request.stl, .stop = stop}, extras);
   }
   return result;
 }

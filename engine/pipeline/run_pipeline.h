@@ -43,13 +43,14 @@ struct PipelineRequest {
   PavementOptions pavement;                // stages on/off, solver backend, observer, stop, on_pattern
 
   // Export: the run's files into `out` (placements.csv, elements.ply/.obj[/.stl], design.json,
-  // report.json). `extra_outputs` are files the caller writes there itself through
-  // `write_extras` (the CLI's PNG previews): they are checked against the inputs too, and written
-  // before report.json so that its timings include them.
+  // report.json), published as one set (write_run_outputs). `extra_outputs` are files the caller
+  // writes itself through `write_extras`, into the folder it is given (the set's staging folder),
+  // with the names they will have in `out` (the CLI's PNG previews): they are checked against the
+  // inputs too, and written before report.json so that its timings include them.
   std::optional<std::filesystem::path> out;
   bool stl = false;
   std::vector<std::filesystem::path> extra_outputs;
-  std::function<void(const PipelineResult&, StageTimings&)> write_extras;
+  std::function<void(const PipelineResult&, const std::filesystem::path& folder, StageTimings&)> write_extras;
 
   PipelineProgress progress;               // loading and mapping progress
   PipelineWarning on_warning;              // the loader's repairs, as soon as they are known
@@ -66,7 +67,8 @@ struct PipelineResult {
 };
 
 // Throws InputError for bad input (before the surface is read, except for the surface's own
-// faults), std::runtime_error otherwise. When `pavement.stop` becomes true the solves end early and the result is partial.
+// faults), std::runtime_error otherwise. When `pavement.stop` becomes true it throws Interrupted
+// (core/interrupted.h) at the next stage boundary, having written nothing.
 PipelineResult run_pipeline(PipelineRequest request);
 
 }  // namespace paver

@@ -646,6 +646,27 @@ TEST_F(PaverRunErrors, OutputFolderBehindAFileIsRefusedFirst) {
   EXPECT_EQ(r.out.find("surface "), std::string::npos) << "the run went ahead: " << describe(r);
 }
 
+// Ctrl-C in the middle of a run: exit 130 soon after, the previous results untouched, no
+// temporary or staging file anywhere.
+TEST_F(PaverRun, InterruptLeavesThePreviousResultIntact) {
+  const fs::path out = dir() / "out";
+  ASSERT_EQ(paver({"run", "assets/surfaces/dome.obj", "--out", out.string()}).exit_code, 0);
+  const std::string before = read_file_text(out / "placements.csv");
+  // A run that would take minutes, interrupted after a second (mapping or solving by then).
+  std::string command = "cd " + shell_quote(PAVER_SOURCE_DIR) + " && (timeout -s KILL 60 " + shell_quote(PAVER_CLI) +
+                        " run assets/surfaces/wave.obj --iterations 1000000 --threshold 1e-12 --out " +
+                        shell_quote(out.string()) + " >/dev/null 2>" + shell_quote((dir() / "err.txt").string()) +
+                        " & pid=$!; sleep 1; kill -INT $pid; wait $pid)";
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130) << read_file_text(dir() / "err.txt");
+  EXPECT_NE(read_file_text(dir() / "err.txt").find("interrupted"), std::string::npos);
+  EXPECT_EQ(read_file_text(out / "placements.csv"), before);
+  EXPECT_TRUE(leftover_temporaries(out).empty());
+  for (const auto& entry : fs::directory_iterator(dir()))
+    EXPECT_EQ(entry.path().filename().string().find("paver-staging"), std::string::npos) << entry.path();
+}
+
 TEST_F(PaverRun, PngPreviewsAreWritten) {
   if (paver({"devices"}).exit_code != 0) {
     std::fprintf(stderr, "\n*** NO VULKAN DEVICE: PaverRun.PngPreviewsAreWritten is SKIPPED ***\n\n");

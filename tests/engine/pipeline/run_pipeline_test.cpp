@@ -2,6 +2,7 @@
 // stages give one by one, checks its inputs before any work, writes only when asked, and reports
 // the pattern before the solver moves it.
 #include "core/input_error.h"
+#include "core/interrupted.h"
 #include "io/design_io.h"
 #include "mesh/mesh_loader.h"
 #include "pipeline/run_pipeline.h"
@@ -75,14 +76,16 @@ TEST_F(RunPipeline, WritesOnlyWhenAskedAndTheReportLast) {
 
   request.out = dir_ / "out";
   request.extra_outputs = {dir_ / "out" / "extra.txt"};
-  bool report_existed = true;
-  request.write_extras = [&](const PipelineResult& r, StageTimings& timings) {
-    report_existed = fs::exists(dir_ / "out" / "report.json");
-    std::ofstream(dir_ / "out" / "extra.txt") << r.pavement.elements.size();
+  bool report_existed = true, out_existed = true;
+  request.write_extras = [&](const PipelineResult& r, const fs::path& folder, StageTimings& timings) {
+    report_existed = fs::exists(folder / "report.json");
+    out_existed = fs::exists(dir_ / "out");
+    std::ofstream(folder / "extra.txt") << r.pavement.elements.size();
     timings.emplace_back("extra", 1.0);
   };
   const PipelineResult result = run_pipeline(request);
   EXPECT_FALSE(report_existed) << "the extras must be written before report.json";
+  EXPECT_FALSE(out_existed) << "the set must appear at once, when complete";
   for (const char* name : {"placements.csv", "elements.ply", "elements.obj", "design.json", "report.json", "extra.txt"})
     EXPECT_TRUE(fs::is_regular_file(dir_ / "out" / name)) << name;
   std::ifstream in(dir_ / "out" / "report.json");
@@ -187,6 +190,20 @@ TEST_F(RunPipeline, TinyElementsPaveLikeAnyOther) {
   EXPECT_GT(result.pavement.elements.size(), 100u);
   EXPECT_EQ(result.pavement.after.collisions, 0);
   EXPECT_GT(result.pavement.after.neighbor_ratio.min, 1e8) << "elements a billionth of D apart by D";
+}
+
+// A stop (Ctrl-C) ends the run at the next stage with Interrupted, and nothing is written.
+TEST_F(RunPipeline, AStoppedRunWritesNothing) {
+  std::atomic<bool> stop{false};
+  PipelineRequest request = dome_request();
+  request.out = dir_ / "out";
+  request.pavement.stop = &stop;
+  request.pavement.observer = [&](int iteration, const std::vector<glm::vec2>&) {
+    if (iteration >= 5) stop = true;
+    return true;
+  };
+  EXPECT_THROW(run_pipeline(request), Interrupted);
+  EXPECT_TRUE(fs::is_empty(dir_)) << "an interrupted run must leave nothing behind";
 }
 
 TEST_F(RunPipeline, MappingStopsWhenAsked) {

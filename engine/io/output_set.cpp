@@ -1,0 +1,147 @@
+#include "io/output_set.h"
+
+#include "core/input_error.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <string_view>
+#include <system_error>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+namespace paver {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::string_view kStagingTag = ".paver-staging.";
+
+fs::path normal_folder(const fs::path& folder) {
+  std::error_code ec;
+  fs::path p = fs::absolute(folder, ec).lexically_normal();
+  if (p.filename().empty() && p.has_parent_path() && p.parent_path() != p) p = p.parent_path();
+  return p;
+}
+
+bool contains_only(const fs::path& folder, const std::vector<std::string>& names) {
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(folder, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (std::find(names.begin(), names.end(), name) == names.end()) return false;
+  }
+  return !ec;
+}
+
+// rename(2), or copy and remove across filesystems.
+void move_file(const fs::path& from, const fs::path& to) {
+  std::error_code ec;
+  fs::rename(from, to, ec);
+  if (ec == std::errc::cross_device_link) {
+    fs::copy_file(from, to, fs::copy_options::overwrite_existing, ec);
+    if (!ec) fs::remove(from, ec);
+  }
+  if (ec) throw InputError("cannot move " + from.string() + " to " + to.string() + ": " + ec.message());
+}
+
+// "." + folder name + kStagingTag, appended piece by piece (chained operator+ trips a GCC 12
+// -Wrestrict false positive).
+std::string beside_prefix(const fs::path& folder) {
+  std::string prefix = ".";
+  prefix += folder.filename().string();
+  prefix += kStagingTag;
+  return prefix;
+}
+
+bool process_is_gone(long pid) { return pid > 0 && ::kill(pid_t(pid), 0) != 0 && errno == ESRCH; }
+
+// Removes the entries of `folder` named `prefix`<pid> whose process is gone.
+int remove_stale(const fs::path& folder, const std::string& prefix) {
+  int removed = 0;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(folder, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind(prefix, 0) != 0) continue;
+    const std::string digits = name.substr(prefix.size());
+    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) continue;
+    if (!process_is_gone(std::stol(digits))) continue;
+    std::error_code ignored;
+    fs::remove_all(entry.path(), ignored);
+    ++removed;
+  }
+  return removed;
+}
+
+}  // namespace
+
+OutputSet::OutputSet(fs::path folder, std::vector<std::string> known_names)
+    : folder_(normal_folder(folder)), known_(std::move(known_names)) {
+  const std::string pid = std::to_string(long(::getpid()));
+  std::error_code ec;
+  fs::create_directories(folder_.parent_path(), ec);
+  // Beside the folder, so that it can become or swap with it; inside it when its parent is not ours
+  // to write (then the files are moved in one by one).
+  staging_ = folder_.parent_path() / (beside_prefix(folder_) + pid);
+  fs::remove_all(staging_, ec);
+  if (folder_.has_parent_path() && folder_.parent_path() != folder_ && fs::create_directory(staging_, ec) && !ec)
+    return;
+  ec.clear();
+  fs::create_directories(folder_, ec);
+  if (ec || !fs::is_directory(folder_))
+    throw InputError("cannot create the output folder " + folder_.string() + ": " +
+                     (ec ? ec.message() : "a file of that name exists"));
+  std::string inside(kStagingTag);
+  inside += pid;
+  staging_ = folder_ / inside;
+  fs::remove_all(staging_, ec);
+  if (!fs::create_directory(staging_, ec) || ec)
+    throw InputError("cannot write in the output folder " + folder_.string() + ": " + ec.message());
+}
+
+OutputSet::~OutputSet() {
+  if (published_) return;
+  std::error_code ignored;
+  fs::remove_all(staging_, ignored);
+}
+
+void OutputSet::publish(const std::string& last) {
+  std::error_code ec;
+  const bool beside = staging_.parent_path() == folder_.parent_path();
+  if (beside && !fs::exists(folder_, ec)) {
+    fs::rename(staging_, folder_, ec);
+    if (!ec) {
+      published_ = true;
+      return;
+    }
+  }
+  if (beside && contains_only(folder_, known_) &&
+      ::renameat2(AT_FDCWD, staging_.c_str(), AT_FDCWD, folder_.c_str(), RENAME_EXCHANGE) == 0) {
+    published_ = true;
+    fs::remove_all(staging_, ec);  // the previous run's set, swapped out
+    return;
+  }
+  // One by one: everything but `last`, then the previous run's files this run did not write, then `last`.
+  std::vector<std::string> staged;
+  for (const auto& entry : fs::directory_iterator(staging_)) staged.push_back(entry.path().filename().string());
+  std::sort(staged.begin(), staged.end());
+  for (const std::string& name : staged)
+    if (name != last) move_file(staging_ / name, folder_ / name);
+  for (const std::string& name : known_)
+    if (std::find(staged.begin(), staged.end(), name) == staged.end()) fs::remove(folder_ / name, ec);
+  if (std::find(staged.begin(), staged.end(), last) != staged.end()) move_file(staging_ / last, folder_ / last);
+  published_ = true;
+  fs::remove_all(staging_, ec);
+}
+
+int OutputSet::remove_stale_staging(const fs::path& folder) {
+  const fs::path f = normal_folder(folder);
+  int removed = remove_stale(f.parent_path(), beside_prefix(f));
+  std::error_code ec;
+  if (fs::is_directory(f, ec)) removed += remove_stale(f, std::string(kStagingTag));
+  return removed;
+}
+
+}  // namespace paver
