@@ -1,4 +1,5 @@
 // `paver param SURFACE [--out UV.obj]`: the bijective ARAP map alone, with its quality.
+#include "command_line.h"
 #include "commands.h"
 #include "io/output_guard.h"
 
@@ -30,7 +31,7 @@ int run_param(const ParamArgs& args) {
   if (!args.out.empty()) refuse_overwriting_inputs({args.surface}, {args.out});  // before any work
   const auto t0 = Clock::now();
   LoadedSurface loaded = load_surface(args.surface);
-  for (const auto& w : loaded.warnings) std::cerr << "paver: warning: " << w << "\n";
+  for (const auto& w : loaded.warnings) std::cerr << "paver: warning: " << app::printable(w) << "\n";
   const auto t1 = Clock::now();
 
   ArapOptions options;

@@ -60,7 +60,7 @@ int run_run(const RunArgs& args) {
   request.surface_path = args.surface;
   request.design_source = args.design.empty() ? "defaults" : args.design;
   request.design_path = args.design;
-  request.on_warning = [](const std::string& w) { std::cerr << "paver: warning: " << w << "\n"; };
+  request.on_warning = [](const std::string& w) { std::cerr << "paver: warning: " << app::printable(w) << "\n"; };
   Design& design = request.design;
   if (!args.design.empty()) design = load_design(args.design);
   if (!args.pattern.empty()) {

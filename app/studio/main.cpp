@@ -64,10 +64,10 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "paver-studio: Vulkan validation: %s\n", message.c_str());
     return runner ? runner->exit_code() : 0;
   } catch (const paver::InputError& e) {
-    std::fprintf(stderr, "paver-studio: error: %s\n", e.what());
+    std::fprintf(stderr, "paver-studio: error: %s\n", paver::app::printable(e.what()).c_str());
     return 2;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "paver-studio: %s\n", e.what());
+    std::fprintf(stderr, "paver-studio: %s\n", paver::app::printable(e.what()).c_str());
     return 1;
   }
 }

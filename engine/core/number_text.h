@@ -8,6 +8,7 @@
 namespace paver {
 
 inline std::string number_text(double value) {
+  if (std::isnan(value)) return "NaN";  // not "-nan": a NaN has no sign worth telling a user
   if (std::isfinite(value) && value == std::trunc(value) && std::abs(value) < 1e15)
     return std::to_string(static_cast<long long>(value));
   char buffer[64];

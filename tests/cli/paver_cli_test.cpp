@@ -332,6 +332,15 @@ TEST_F(PaverRunErrors, SpacingOffsetAndNumbersOutOfAnyUse) {
   expect_input_error(number, out, {"overflow.json: number overflow parsing '1e999'", "numbers must be finite"});
 }
 
+// A file name with an escape sequence is shown escaped, never sent raw to the terminal.
+TEST_F(PaverRunErrors, ControlCharactersInMessagesAreEscaped) {
+  const fs::path out = dir() / "out";
+  const CliResult r = paver({"run", (dir() / "\x1b[31mred\x07.obj").string(), "--out", out.string()});
+  expect_input_error(r, out, {"\\x1b[31mred\\x07.obj"});
+  EXPECT_EQ(r.err.find('\x1b'), std::string::npos) << describe(r);
+  EXPECT_EQ(r.err.find('\x07'), std::string::npos) << describe(r);
+}
+
 TEST_F(PaverRunErrors, MissingSurface) {
   const fs::path out = dir() / "out";
   const CliResult r = paver({"run", (dir() / "no_such_surface.obj").string(), "--out", out.string()});

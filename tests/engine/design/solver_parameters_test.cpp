@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <string>
@@ -121,6 +122,15 @@ TEST(SolverParameters, ValidationRefusesEveryOutOfRangeValueByName) {
   }
 }
 
+TEST(SolverParameters, NaNIsShownAsNaN) {
+  SolverParams s;
+  s.alpha = -std::numeric_limits<double>::quiet_NaN();
+  Design d;
+  d.solver = s;
+  const std::string message = error_of([&] { validate_design(d, "d.json"); });
+  EXPECT_NE(message.find("'solver.alpha' must be finite and > 0, got NaN"), std::string::npos) << message;
+}
+
 TEST(SolverParameters, UnknownKeySuggestsTheTablesName) {
   nlohmann::json json = design_to_json(Design{});
   json["solver"]["lamda_r"] = 0.5;
@@ -137,6 +147,7 @@ TEST(SolverParameters, FlagTextIsParsedStrictly) {
   EXPECT_EQ(set_solver_parameter(s, dt, "0.25x"), "must be a number");
   EXPECT_EQ(set_solver_parameter(s, dt, ""), "must be a number");
   EXPECT_EQ(set_solver_parameter(s, dt, "nan"), "must be in (0, 1]");
+  EXPECT_EQ(set_solver_parameter(s, dt, "-nan"), "must be in (0, 1]");
   const SolverParameter& iterations = *find_solver_parameter("iterations");
   EXPECT_EQ(set_solver_parameter(s, iterations, "1.5"), "must be a whole number");
   EXPECT_EQ(set_solver_parameter(s, iterations, "700"), std::nullopt);
