@@ -32,9 +32,9 @@ long long corner_vertex(std::string_view corner, const std::string& source, int 
   const std::string_view vertex = corner.substr(0, slash);
   long long index = 0;
   if (vertex.empty())
-    fail(source, at_line(line) + "face corner '" + std::string(corner) + "' has no vertex index");
+    fail(source, at_line(line) + "face corner " + quoted(corner) + " has no vertex index");
   if (!parse_integer(vertex, index))
-    fail(source, at_line(line) + "'" + std::string(corner) + "' is not a vertex index");
+    fail(source, at_line(line) + quoted(corner) + " is not a vertex index");
   if (slash == std::string_view::npos) return index;
   std::string_view rest = corner.substr(slash + 1);
   while (true) {
@@ -42,7 +42,7 @@ long long corner_vertex(std::string_view corner, const std::string& source, int 
     const std::string_view part = rest.substr(0, next);
     long long ignored = 0;
     if (!part.empty() && !parse_integer(part, ignored))
-      fail(source, at_line(line) + "'" + std::string(corner) + "' is not a valid face corner (v/vt/vn)");
+      fail(source, at_line(line) + quoted(corner) + " is not a valid face corner (v/vt/vn)");
     if (next == std::string_view::npos) return index;
     rest = rest.substr(next + 1);
   }

@@ -66,8 +66,8 @@ PolygonSoup read_off_text(LineReader reader, const OffLayout& layout, const std:
     counts_ok = parse_integer(tokens[i], counts[i]) && counts[i] >= 0 && counts[i] <= INT_MAX;
   if (!counts_ok)
     fail(source, at_line(counts_line) +
-                     "expected the counts '<vertices> <faces> <edges>' after the OFF header, found '" +
-                     std::string(data[0].text.substr(0, 40)) + "'");
+                     "expected the counts '<vertices> <faces> <edges>' after the OFF header, found " +
+                     quoted(data[0].text));
   const long long vertex_count = counts[0], face_count = counts[1];
   const std::string declared = "the counts on line " + std::to_string(counts_line) + " declare " +
                                count_of(vertex_count, "vertex", "vertices") + " and " +
@@ -95,8 +95,8 @@ PolygonSoup read_off_text(LineReader reader, const OffLayout& layout, const std:
     for (size_t i = 0; i < numbers_per_vertex; ++i) {
       double value = 0.0;
       if (!parse_double(tokens[i], value))
-        fail(source, at_line(vertex.number) + "'" + std::string(tokens[i].substr(0, 40)) +
-                         "' is not a number; vertex coordinates must be numbers");
+        fail(source, at_line(vertex.number) + quoted(tokens[i]) +
+                         " is not a number; vertex coordinates must be numbers");
       if (i < 3) p[int(i)] = coordinates.text(tokens[i], vertex.number, v);
     }
     soup.positions.push_back(p);
@@ -106,8 +106,8 @@ PolygonSoup read_off_text(LineReader reader, const OffLayout& layout, const std:
     split_tokens(face.text, tokens);
     long long corners = 0;
     if (!parse_integer(tokens[0], corners))
-      fail(source, at_line(face.number) + "a face line must start with its vertex count, found '" +
-                       std::string(tokens[0].substr(0, 40)) + "'" + counts_hint);
+      fail(source, at_line(face.number) + "a face line must start with its vertex count, found " +
+                       quoted(tokens[0]) + counts_hint);
     if (corners < 3)
       fail(source, at_line(face.number) + "a face needs at least 3 vertices but this one has " +
                        std::to_string(corners) + counts_hint);
@@ -122,8 +122,8 @@ PolygonSoup read_off_text(LineReader reader, const OffLayout& layout, const std:
     for (long long i = 1; i <= corners; ++i) {
       long long index = 0;
       if (!parse_integer(tokens[size_t(i)], index))
-        fail(source, at_line(face.number) + "'" + std::string(tokens[size_t(i)].substr(0, 40)) +
-                         "' is not a vertex index");
+        fail(source, at_line(face.number) + quoted(tokens[size_t(i)]) +
+                         " is not a vertex index");
       if (index < 0 || index >= vertex_count)
         fail(source, at_line(face.number) + "face vertex index " + std::to_string(index) + " is out of range: " +
                          vertex_count_hint(vertex_count));
@@ -214,17 +214,17 @@ PolygonSoup read_off(std::string_view bytes, const std::string& source) {
   OffLayout layout;
   const OffKeyword keyword = tokens.empty() ? OffKeyword::NotOff : parse_off_keyword(tokens[0], layout);
   if (keyword == OffKeyword::NotOff)
-    fail(source, "line 1: an OFF file must start with the header 'OFF' (found '" + std::string(line.substr(0, 40)) +
-                     "'); is it really an OFF file?");
+    fail(source, "line 1: an OFF file must start with the header 'OFF' (found " + quoted(line) +
+                     "); is it really an OFF file?");
   if (keyword == OffKeyword::HigherDimension)
     fail(source, "line 1: '" + std::string(tokens[0]) + "' (vertices of other than 3 dimensions) is not supported; "
                      "export a plain 3D OFF file");
   if (tokens.size() == 2 && tokens[1] == "BINARY")
     return read_off_binary(bytes, layout, std::min(reader.offset(), bytes.size()), source);
   if (tokens.size() >= 2)
-    fail(source, "line 1: the OFF keyword must be alone on the first line; move '" +
-                     std::string(trim(line.substr(size_t(tokens[1].data() - line.data()))).substr(0, 40)) +
-                     "' to a line of its own");
+    fail(source, "line 1: the OFF keyword must be alone on the first line; move " +
+                     quoted(trim(line.substr(size_t(tokens[1].data() - line.data())))) +
+                     " to a line of its own");
   return read_off_text(reader, layout, source);
 }
 

@@ -102,14 +102,14 @@ PlyHeader parse_ply_header(std::string_view bytes, const std::string& source) {
         const auto count_type = ply_type(tokens[2]), type = ply_type(tokens[3]);
         if (!count_type || !type) bad("unknown list type");
         if (!ply_type_is_integer(*count_type))
-          bad("a list length must have an integer type, not '" + std::string(tokens[2]) + "'");
+          bad("a list length must have an integer type, not " + quoted(tokens[2]));
         property.list = true;
         property.count_type = *count_type;
         property.type = *type;
         property.name = std::string(tokens[4]);
       } else if (tokens.size() == 3 && tokens[1] != "list") {
         const auto type = ply_type(tokens[1]);
-        if (!type) bad("unknown property type '" + std::string(tokens[1].substr(0, 40)) + "'");
+        if (!type) bad("unknown property type " + quoted(tokens[1]));
         property.type = *type;
         property.name = std::string(tokens[2]);
       } else {
@@ -126,7 +126,7 @@ PlyHeader parse_ply_header(std::string_view bytes, const std::string& source) {
       if (element_index == header.face_element && property.list && is_index_list_name(property.name) &&
           header.face_indices < 0) {
         if (!ply_type_is_integer(property.type))
-          bad("the face list '" + property.name + "' must hold integers, not '" + std::string(tokens[3]) + "'");
+          bad("the face list '" + property.name + "' must hold integers, not " + quoted(tokens[3]));
         header.face_indices = property_index;
       }
       element.properties.push_back(std::move(property));

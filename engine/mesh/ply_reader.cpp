@@ -58,8 +58,8 @@ void read_ascii(std::string_view bytes, const PlyHeader& header, const std::stri
           next();
           if (!parse_integer(token, length) || length < 0)
             fail(source, at_line(reader.line()) + "expected the length of the list '" + property.name + "' of " +
-                             element.name + " " + std::to_string(record) + ", found '" +
-                             std::string(token.substr(0, 40)) + "'");
+                             element.name + " " + std::to_string(record) + ", found " +
+                             quoted(token));
         }
         std::vector<int>* polygon = role == kIndices ? &soup.polygons.emplace_back() : nullptr;
         const bool integer = ply_type_is_integer(property.type);
@@ -68,7 +68,7 @@ void read_ascii(std::string_view bytes, const PlyHeader& header, const std::stri
           double value = 0.0;
           long long index = 0;
           if (!(integer ? parse_integer(token, index) : parse_double(token, value)))
-            fail(source, at_line(reader.line()) + "'" + std::string(token.substr(0, 40)) + "' is not " +
+            fail(source, at_line(reader.line()) + quoted(token) + " is not " +
                              (integer ? "an integer" : "a number") + " (property '" + property.name + "' of " +
                              element.name + " " + std::to_string(record) + ")");
           if (role == kIndices) {

@@ -131,10 +131,10 @@ double CoordinateReader::text(std::string_view token, int line, long long item) 
   switch (parse_float(token, value)) {
     case FloatToken::Ok: break;
     case FloatToken::NotANumber:
-      fail(source_, at_line(line) + "'" + std::string(token.substr(0, 40)) +
-                        "' is not a number; vertex coordinates must be numbers");
+      fail(source_, at_line(line) + quoted(token) +
+                        " is not a number; vertex coordinates must be numbers");
     case FloatToken::TooLarge:
-      fail(source_, at_line(line) + "coordinate " + std::string(token.substr(0, 40)) +
+      fail(source_, at_line(line) + "coordinate " + quoted(token) +
                         " is too large: Paver reads coordinates in single precision (at most about 3.4e38); "
                         "rescale the model");
   }
@@ -163,7 +163,7 @@ void CoordinateReader::note_nonfinite(const std::string& place, std::string_view
   if (item == last_nonfinite_item_) return;
   last_nonfinite_item_ = item;
   if (nonfinite_items_++ > 0) return;
-  first_nonfinite_ = place + item_name(item) + " has a non-finite coordinate '" + std::string(shown) + "'";
+  first_nonfinite_ = place + item_name(item) + " has a non-finite coordinate " + quoted(shown);
 }
 
 void CoordinateReader::finish() const {

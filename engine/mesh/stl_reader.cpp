@@ -96,8 +96,8 @@ PolygonSoup read_ascii(std::string_view text, const std::string& source) {
     const std::string_view keyword = tokens[0], second = tokens.size() > 1 ? tokens[1] : std::string_view();
     const auto is = equals_lowercase;  // STL keywords in any case
     auto expected = [&](const std::string& what) {
-      fail(source, at_line(number) + "expected " + what + " in ASCII STL, found '" +
-                       std::string(line.substr(0, 40)) + "'");
+      fail(source, at_line(number) + "expected " + what + " in ASCII STL, found " +
+                       quoted(line));
     };
     switch (state) {
       case State::BeforeSolid:
@@ -115,7 +115,7 @@ PolygonSoup read_ascii(std::string_view text, const std::string& source) {
         for (size_t i = 2; i < tokens.size(); ++i) {
           double ignored = 0.0;
           if (!parse_double(tokens[i], ignored))
-            fail(source, at_line(number) + "'" + std::string(tokens[i].substr(0, 40)) + "' is not a number");
+            fail(source, at_line(number) + quoted(tokens[i]) + " is not a number");
         }
         state = State::InFacet;
         break;

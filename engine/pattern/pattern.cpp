@@ -37,8 +37,13 @@ Pattern build_pattern(const SurfaceMap& map, const UnitCell& cell, const Placeme
                      format_number(map_size));
   const double estimate = estimate_point_count(map, cell, placement);
   if (!(estimate <= kMaxPatternPoints)) {
+    // From the cell at unit spacing, so that a spacing whose square underflows still gets an answer.
+    const glm::dvec2 u1 = cell.a1 / cell.spacing, u2 = cell.a2 / cell.spacing;
+    const double unit_cell_area = std::abs(u1.x * u2.y - u1.y * u2.x);
+    const double points_at_unit_spacing =
+        map_area(map) * placement.scale * placement.scale / unit_cell_area * double(cell.vertices.size());
     // Rounded up to the three digits printed, so the spacing suggested is itself accepted.
-    const double smallest = cell.spacing * std::sqrt(estimate / kMaxPatternPoints);
+    const double smallest = std::sqrt(points_at_unit_spacing / kMaxPatternPoints);
     const double digit = std::pow(10.0, std::floor(std::log10(smallest)) - 2);
     const double ok_spacing = std::ceil(smallest / digit) * digit;
     throw InputError("spacing D = " + format_number(cell.spacing) + " would create about " +
@@ -71,6 +76,14 @@ Pattern build_pattern(const SurfaceMap& map, const UnitCell& cell, const Placeme
   // One extra ring of cells so edges leaving the map are seen from both ends.
   const glm::ivec2 c0 = glm::ivec2(glm::floor(lo)) - 2, c1 = glm::ivec2(glm::ceil(hi)) + 2;
   const int ncx = c1.x - c0.x + 1, ncy = c1.y - c0.y + 1, nv = int(cell.vertices.size());
+  // The lattice slots below cover the map's bounding box, not its area: a long thin map turned
+  // against the lattice can need far more of them than it has points. Bounded before allocating.
+  const double slots = double(ncx) * double(ncy) * double(nv);
+  if (slots > kMaxLatticeSlots)
+    throw InputError("the map's bounding box spans " + format_number(slots) + " lattice positions at D = " +
+                     format_number(cell.spacing) + " (the surface is long and thin, or turned against the lattice; "
+                     "the limit is " + format_number(kMaxLatticeSlots) +
+                     "): use a larger spacing, or a placement rotation that lines the lattice up with it");
 
   Pattern pattern;
   std::vector<int> index(size_t(ncx) * ncy * nv, -1);  // lattice vertex -> point index

@@ -40,6 +40,8 @@ struct Pattern {
 
 // Most points a pattern may have; a spacing that would create more is an input error.
 inline constexpr double kMaxPatternPoints = 4e6;
+// Most lattice positions build_pattern lays out over the map's bounding box (about 20 bytes each).
+inline constexpr double kMaxLatticeSlots = 5e7;
 
 // Estimated number of lattice points over the map (area / cell area * vertices per cell).
 double estimate_point_count(const SurfaceMap& map, const UnitCell& cell, const Placement& placement);

@@ -4,6 +4,7 @@
 #include "mesh/mesh_loader.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <chrono>
 
 namespace paver {
@@ -16,6 +17,17 @@ double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std
 constexpr int kIterationsPerChunk = 5;
 
 }  // namespace
+
+void check_surface_size(const std::filesystem::path& path, const SurfaceMesh& mesh) {
+  const double size = bounding_box_diagonal(mesh);
+  if (!(size >= kMinSurfaceSize && size <= kMaxSurfaceSize)) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.3g", size);
+    throw InputError(path.string() + ": the surface is " + text +
+                     " units across; the optimizer computes in single precision and handles 1e-6 to 1e9: rescale "
+                     "the model (to millimetres, say) and try again");
+  }
+}
 
 MappedSurface map_surface_file(const std::filesystem::path& path, const PipelineProgress& progress,
                                const StopRequested& stop, const PipelineWarning& warn) {
@@ -31,6 +43,7 @@ MappedSurface map_surface_file(const std::filesystem::path& path, const Pipeline
   if (warn)
     for (const std::string& w : out.warnings) warn(w);
   out.timings.emplace_back("load", ms_since(t0));
+  check_surface_size(path, loaded.mesh);
   if (stopped()) return out;
 
   t0 = Clock::now();

@@ -20,6 +20,12 @@ using StopRequested = std::function<bool()>;
 // A repair the loader made (dropped faces, components), told as soon as it is known.
 using PipelineWarning = std::function<void(const std::string&)>;
 
+// The sizes (bounding-box diagonal, surface units) the pipeline accepts: the solver works in float32,
+// whose squared lengths overflow or lose all precision far outside them.
+inline constexpr double kMinSurfaceSize = 1e-6, kMaxSurfaceSize = 1e9;
+// Throws InputError naming `path` when the mesh's size is outside [kMinSurfaceSize, kMaxSurfaceSize].
+void check_surface_size(const std::filesystem::path& path, const SurfaceMesh& mesh);
+
 struct MappedSurface {
   std::shared_ptr<const SurfaceMap> map;  // null when stopped
   std::vector<std::string> warnings;      // the loader's repairs (dropped faces, components)

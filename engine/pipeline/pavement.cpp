@@ -44,16 +44,18 @@ PlacedElements place_all_elements(const SurfaceMap& map, const Pattern& pattern,
 }
 
 UnitCell check_design_cell(const Design& design) {
-  PatternDesign pattern = design.pattern;
-  if (pattern.spacing <= 0) pattern.spacing = 1;
-  UnitCell cell = make_design_cell(pattern);
+  // The checks run on the cell at D = 1: they are scale-free, and a spacing far from the surface's
+  // size (or still 0, to be derived) must not make lengths underflow into false overlaps.
+  PatternDesign unit = design.pattern;
+  unit.spacing = 1;
+  const UnitCell unit_cell = make_design_cell(unit);
   for (size_t s = 0; s < design.elements.edge.size(); ++s)
     for (int e : design.elements.edge[s].cell_edges)
-      if (e < 0 || e >= int(cell.edges.size()))
+      if (e < 0 || e >= int(unit_cell.edges.size()))
         throw InputError("elements.edge[" + std::to_string(s) + "].cell_edges: edge " + std::to_string(e) +
-                         " does not exist; the unit cell has edges 0.." + std::to_string(cell.edges.size() - 1));
-  if (!design.elements.allow_overlap) check_design_overlaps(cell, design.elements, pattern.spacing);
-  return cell;
+                         " does not exist; the unit cell has edges 0.." + std::to_string(unit_cell.edges.size() - 1));
+  if (!design.elements.allow_overlap) check_design_overlaps(unit_cell, design.elements, 1.0);
+  return design.pattern.spacing > 0 && design.pattern.spacing != 1 ? make_design_cell(design.pattern) : unit_cell;
 }
 
 Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptions& options) {

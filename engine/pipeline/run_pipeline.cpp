@@ -2,6 +2,7 @@
 
 #include "core/input_error.h"
 #include "core/interrupted.h"
+#include "core/number_text.h"
 #include "io/output_guard.h"
 #include "pipeline/run_outputs.h"
 
@@ -48,6 +49,14 @@ PipelineResult run_pipeline(PipelineRequest request) {
 
   result.pavement = make_pavement(*result.map, design, request.pavement);
   check_stop();  // the solves ended early: a partial pavement is not a result
+  if (result.pavement.elements.size() == 0) {
+    const Pavement& p = result.pavement;
+    throw InputError("no element fits on this surface: the pattern put " + std::to_string(p.pattern.point_count()) +
+                     " points on it at D = " + number_text(p.design.pattern.spacing) + ", and every element " +
+                     (p.eliminated > 0 ? "crossed its boundary (the surface is narrower than the elements)"
+                                       : "was dropped") +
+                     "; use a smaller spacing or smaller element scales");
+  }
   result.timings.insert(result.timings.end(), result.pavement.timings.begin(), result.pavement.timings.end());
   result.counts = count_pavement(result.pavement);
 

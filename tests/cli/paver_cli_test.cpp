@@ -341,6 +341,52 @@ TEST_F(PaverRunErrors, ControlCharactersInMessagesAreEscaped) {
   EXPECT_EQ(r.err.find('\x07'), std::string::npos) << describe(r);
 }
 
+// Surfaces and designs that used to end in an internal error, a bad_alloc or an empty result exit 0:
+// each is refused with exit 2 and what to change, and nothing is written.
+TEST_F(PaverRunErrors, SurfacesThePatternCannotPave) {
+  const fs::path out = dir() / "out";
+  // The dome scaled beyond what float32 arithmetic can pave.
+  std::ifstream dome(fs::path(PAVER_SOURCE_DIR) / "assets/surfaces/dome.obj");
+  std::ostringstream huge;
+  for (std::string line; std::getline(dome, line);) {
+    if (line.rfind("v ", 0) == 0) {
+      std::istringstream v(line.substr(2));
+      double x, y, z;
+      v >> x >> y >> z;
+      huge << "v " << x * 1e19 << ' ' << y * 1e19 << ' ' << z * 1e19 << '\n';
+    } else {
+      huge << line << '\n';
+    }
+  }
+  write_file_text(dir() / "huge.obj", huge.str());
+  expect_input_error(paver({"run", (dir() / "huge.obj").string(), "--out", out.string()}), out,
+                     {"huge.obj: the surface is", "rescale the model"});
+
+  // A strip 1000 long and 0.01 wide, turned 37 degrees.
+  std::ostringstream strip;
+  const double c = std::cos(37 * M_PI / 180), s = std::sin(37 * M_PI / 180);
+  for (int i = 0; i <= 1000; ++i)
+    for (int j = 0; j < 2; ++j) strip << "v " << c * i << ' ' << s * i << ' ' << 0.01 * j << '\n';
+  for (int i = 0; i < 1000; ++i) {
+    const int a = 2 * i + 1;
+    strip << "f " << a << ' ' << a + 2 << ' ' << a + 3 << "\nf " << a << ' ' << a + 3 << ' ' << a + 1 << '\n';
+  }
+  write_file_text(dir() / "strip.obj", strip.str());
+  // Elements wider than the strip: none survives.
+  expect_input_error(paver({"run", (dir() / "strip.obj").string(), "--out", out.string()}), out,
+                     {"no element fits on this surface", "use a smaller spacing"});
+  // A lattice whose bounding box over the strip would take gigabytes (it was a bad_alloc).
+  write_file_text(dir() / "fine.json", R"({"version": 1, "pattern": {"spacing": 0.005}, "placement": {"rotation_deg": 45}})");
+  expect_input_error(
+      paver({"run", (dir() / "strip.obj").string(), "--design", (dir() / "fine.json").string(), "--out", out.string()}),
+      out, {"lattice positions at D = 0.005", "use a larger spacing"});
+
+  // A NUL byte in a file is shown, not a message cut short at it.
+  write_file_text(dir() / "nul.obj", std::string("v 0 0 0\nv 1.0\0 2 3\n", 20));
+  const CliResult nul = paver({"run", (dir() / "nul.obj").string(), "--out", out.string()});
+  expect_input_error(nul, out, {"nul.obj: line 2", "\\x00"});
+}
+
 TEST_F(PaverRunErrors, MissingSurface) {
   const fs::path out = dir() / "out";
   const CliResult r = paver({"run", (dir() / "no_such_surface.obj").string(), "--out", out.string()});

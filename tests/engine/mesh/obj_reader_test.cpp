@@ -19,7 +19,7 @@ TEST(ObjReader, PositionsAreSinglePrecision) {
   const PolygonSoup soup = read_obj("v 0.1 1e-50 -2.5\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "p.obj");
   EXPECT_EQ(soup.positions[0], glm::dvec3(double(0.1f), 0.0, -2.5));
   const std::string message = error_of([] { read_obj("v 1e39 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "big.obj"); });
-  EXPECT_TRUE(Contains(message, "big.obj: line 1: coordinate 1e39 is too large"));
+  EXPECT_TRUE(Contains(message, "big.obj: line 1: coordinate '1e39' is too large"));
 }
 
 TEST(ObjReader, RepeatedCornersKeepTheFirst) {
