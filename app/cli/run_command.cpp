@@ -43,6 +43,7 @@ struct RunArgs {
   std::string backend = "auto";
   std::string device;
   bool png = false;
+  double max_output_gb = 4;
 };
 
 // A solver flag's value over the design's; a bad one blames the flag, not the design file.
@@ -94,6 +95,7 @@ int run_run(const RunArgs& args) {
 
   const fs::path out = args.out;
   request.out = out;
+  request.max_output_bytes = args.max_output_gb * 1e9;
   std::optional<PreviewImages> previews;
   if (args.png) {
     previews = PreviewImages::open();  // no device: refused now, before any work
@@ -160,6 +162,10 @@ std::function<int()> add_run_command(CLI::App& app) {
   app::add_backend_option(*cmd, args->backend);
   cmd->add_option("--device", args->device, "Vulkan device: a substring of its name (see `paver devices`)");
   cmd->add_flag("--png", args->png, "Also render preview.png (3D) and param.png (2D) offscreen with Vulkan");
+  cmd->add_option("--max-output-gb", args->max_output_gb,
+                  "Refuse to write element meshes (PLY + OBJ) larger than this, in GB")
+      ->check(CLI::Range(0.001, 1e6))
+      ->capture_default_str();
   // Every section 5 parameter from the one table, named as in design.json's "solver" object.
   cmd->add_flag("--no-resolve", args->no_resolve, "Skip the contact-spring collision resolution (paper's method only)");
   args->solver_values.reserve(solver_parameters().size());

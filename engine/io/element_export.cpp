@@ -197,6 +197,12 @@ void write_placements_csv(const std::filesystem::path& path, const Elements& ele
   });
 }
 
+ElementMeshSize element_mesh_size(const Elements& elements, const ElementMeshOptions& options) {
+  const ShapeTable shapes(elements, options, "elements");
+  const MeshCounts counts = count(elements, shapes);
+  return {counts.vertices, counts.faces};
+}
+
 void write_elements_ply(const std::filesystem::path& path, const Elements& elements,
                         const ElementMeshOptions& options) {
   check_sizes(elements);

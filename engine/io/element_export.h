@@ -22,6 +22,18 @@ struct ElementMeshOptions {
   const ShapeMesh* custom = nullptr;
   const std::vector<std::array<std::uint8_t, 3>>* colours = nullptr;
 };
+// Vertices and triangles of every element's mesh together (the size of the PLY/OBJ/STL), and
+// about how many bytes the PLY and OBJ (and the STL when asked) will take: checked before writing.
+struct ElementMeshSize {
+  std::size_t vertices = 0, faces = 0;
+  double bytes(bool stl) const {
+    return 15.0 * double(vertices) + 13.0 * double(faces)          // binary PLY
+           + 36.0 * double(vertices) + 26.0 * double(faces)        // OBJ text, about
+           + (stl ? 50.0 * double(faces) : 0.0);                   // binary STL
+  }
+};
+ElementMeshSize element_mesh_size(const Elements& elements, const ElementMeshOptions& options = {});
+
 void write_elements_ply(const std::filesystem::path& path, const Elements& elements,
                         const ElementMeshOptions& options = {});
 void write_elements_obj(const std::filesystem::path& path, const Elements& elements,

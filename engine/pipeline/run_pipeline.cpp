@@ -6,7 +6,11 @@
 #include "io/output_guard.h"
 #include "pipeline/run_outputs.h"
 
+#include "io/element_export.h"
+
 #include <nlohmann/json.hpp>
+
+#include <cstdio>
 
 #include <utility>
 
@@ -61,6 +65,16 @@ PipelineResult run_pipeline(PipelineRequest request) {
   result.counts = count_pavement(result.pavement);
 
   if (request.out) {
+    const ElementMeshSize size = element_mesh_size(result.pavement.elements, {.custom = result.custom_shape.get()});
+    const double bytes = size.bytes(request.stl);
+    if (bytes > request.max_output_bytes) {
+      char text[256];
+      std::snprintf(text, sizeof text,
+                    "the element meshes would take about %.3g GB (%zu elements, %zu triangles); the limit is %.3g GB: "
+                    "use a lighter element shape or fewer elements, or raise the limit (--max-output-gb)",
+                    bytes / 1e9, result.pavement.elements.size(), size.faces, request.max_output_bytes / 1e9);
+      throw InputError(text);
+    }
     const auto extras = [&](const std::filesystem::path& folder, StageTimings& timings) {
       if (request.write_extras) request.write_extras(result, folder, timings);
     };

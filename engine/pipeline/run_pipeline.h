@@ -49,6 +49,7 @@ struct PipelineRequest {
   // inputs too, and written before report.json so that its timings include them.
   std::optional<std::filesystem::path> out;
   bool stl = false;
+  double max_output_bytes = 4e9;           // the element meshes are refused above this, before writing
   std::vector<std::filesystem::path> extra_outputs;
   std::function<void(const PipelineResult&, const std::filesystem::path& folder, StageTimings&)> write_extras;
 

@@ -387,6 +387,14 @@ TEST_F(PaverRunErrors, SurfacesThePatternCannotPave) {
   expect_input_error(nul, out, {"nul.obj: line 2", "\\x00"});
 }
 
+// The element meshes' size is checked before anything is written (a heavy custom shape once wrote
+// a 23 GB PLY): refused with the estimate and the flag that lifts the limit.
+TEST_F(PaverRunErrors, OutputLargerThanTheLimitIsRefused) {
+  const fs::path out = dir() / "out";
+  const CliResult r = paver({"run", "assets/surfaces/dome.obj", "--max-output-gb", "0.001", "--out", out.string()});
+  expect_input_error(r, out, {"the element meshes would take about", "--max-output-gb"});
+}
+
 TEST_F(PaverRunErrors, MissingSurface) {
   const fs::path out = dir() / "out";
   const CliResult r = paver({"run", (dir() / "no_such_surface.obj").string(), "--out", out.string()});
