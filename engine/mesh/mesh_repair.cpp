@@ -336,6 +336,9 @@ LoadedSurface check_and_repair(std::vector<glm::dvec3> positions, const std::vec
     note = " (in its largest connected component, the one Paver keeps; the file has " +
            std::to_string(components.count) + ")";
   }
+  // A topology error after faces were dropped may be caused by the dropping: say so.
+  if (loaded.dropped_degenerate_faces > 0)
+    note += " (after dropping " + degenerate + " of zero area or with repeated vertices, which may have opened it)";
 
   const Edges edges = collect_edges(triangles);
   check_manifold(triangles, edges, positions, source, note);

@@ -92,7 +92,7 @@ int triangulate_polygon(const std::vector<glm::dvec3>& positions, const std::vec
 }  // namespace
 
 Triangulation triangulate(const std::vector<glm::dvec3>& positions, const std::vector<std::vector<int>>& polygons,
-                          double min_area) {
+                          double global_min_area) {
   Triangulation result;
   result.triangles.reserve(polygons.size());
   for (const std::vector<int>& polygon : polygons) {
@@ -100,6 +100,14 @@ Triangulation triangulate(const std::vector<glm::dvec3>& positions, const std::v
       ++result.degenerate;
       continue;
     }
+    // Degenerate relative to the whole part and to the face itself: one far-away vertex (a large
+    // bounding box) must not make the ordinary faces elsewhere count as degenerate.
+    double longest_edge2 = 0;
+    for (size_t i = 0; i < polygon.size(); ++i) {
+      const glm::dvec3 e = positions[polygon[(i + 1) % polygon.size()]] - positions[polygon[i]];
+      longest_edge2 = std::max(longest_edge2, glm::dot(e, e));
+    }
+    const double min_area = std::min(global_min_area, 1e-12 * longest_edge2);
     if (polygon.size() == 3) {
       const glm::ivec3 t(polygon[0], polygon[1], polygon[2]);
       if (triangle_area(positions[t.x], positions[t.y], positions[t.z]) < min_area) ++result.degenerate;

@@ -705,3 +705,33 @@ TEST_F(MeshLoaderTest, HandleIsRefused) {
 
 }  // namespace
 }  // namespace paver
+
+namespace paver {
+namespace {
+
+// One vertex far away used to make every ordinary face "degenerate" (the threshold came from the
+// whole bounding box alone): a face is now degenerate only relative to its own size too.
+TEST(MeshLoaderRepairs, AFarVertexDoesNotMakeOrdinaryFacesDegenerate) {
+  std::vector<glm::dvec3> positions;
+  std::vector<std::vector<int>> faces;
+  const int n = 10;
+  for (int y = 0; y <= n; ++y)
+    for (int x = 0; x <= n; ++x) positions.push_back({double(x), double(y), 0.0});
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      const int a = y * (n + 1) + x;
+      faces.push_back({a, a + 1, a + n + 2});
+      faces.push_back({a, a + n + 2, a + n + 1});
+    }
+  positions[n] = {1e7, 0.0, 0.0};  // a corner pulled far out
+  const LoadedSurface loaded = make_surface(positions, faces, "far.obj");
+  EXPECT_EQ(loaded.dropped_degenerate_faces, 0);
+  EXPECT_EQ(loaded.mesh.face_count(), 2 * n * n);
+  // A true sliver (area far below its own longest edge squared) is still dropped.
+  std::vector<glm::dvec3> sliver = {{0, 0, 0}, {1, 0, 0}, {2, 1e-14, 0}, {0, 1, 0}};
+  const LoadedSurface kept = make_surface(sliver, {{0, 1, 3}, {0, 1, 2}, {1, 2, 3}}, "sliver.obj");
+  EXPECT_EQ(kept.dropped_degenerate_faces, 1);
+}
+
+}  // namespace
+}  // namespace paver
