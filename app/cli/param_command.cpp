@@ -37,7 +37,13 @@ int run_param(const ParamArgs& args) {
   ArapOptions options;
   options.max_iterations = args.iterations;
   options.start = args.start == "lscm" ? ArapStart::Lscm : args.start == "tutte" ? ArapStart::Tutte : ArapStart::Auto;
-  const Parameterization param = parameterize_arap(loaded.mesh, options);
+  const Parameterization param = [&] {
+    try {
+      return parameterize_arap(loaded.mesh, options);
+    } catch (const InputError& e) {
+      throw InputError(args.surface + ": " + e.what() + "; remesh the surface or remove its sliver triangles");
+    }
+  }();
   const auto t2 = Clock::now();
   const double load_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
   const double param_ms = std::chrono::duration<double, std::milli>(t2 - t1).count();

@@ -62,8 +62,9 @@ MappedSurface map_surface_file(const std::filesystem::path& path, const Pipeline
     report(0.92f, "mapping: lifting data");
     Parameterization parameterization = finish_parameterization(loaded.mesh, solver);
     out.map = std::make_shared<const SurfaceMap>(make_surface_map(std::move(loaded.mesh), std::move(parameterization)));
-  } catch (const InputError&) {
-    throw;
+  } catch (const InputError& e) {
+    // The map's own refusals (a Laplacian that cannot be factorized) do not know the file.
+    throw InputError(path.string() + ": " + e.what() + "; remesh the surface or remove its sliver triangles");
   } catch (const std::runtime_error& e) {
     throw std::runtime_error(path.string() + ": " + e.what());
   }

@@ -381,6 +381,14 @@ TEST_F(PaverRunErrors, SurfacesThePatternCannotPave) {
       paver({"run", (dir() / "strip.obj").string(), "--design", (dir() / "fine.json").string(), "--out", out.string()}),
       out, {"lattice positions at D = 0.005", "use a larger spacing"});
 
+  // A map that cannot be made names the file and the fix (both commands).
+  write_file_text(dir() / "sliver.obj", "v 0 0 0\nv 1 0 0\nv 1 1e-10 0\nv 0 1e-10 0\nf 1 2 3\nf 1 3 4\n");
+  expect_input_error(paver({"run", (dir() / "sliver.obj").string(), "--out", out.string()}), out,
+                     {"sliver.obj: ", "remesh the surface"});
+  const CliResult param = paver({"param", (dir() / "sliver.obj").string()});
+  EXPECT_EQ(param.exit_code, 2) << describe(param);
+  EXPECT_NE(param.err.find("sliver.obj: "), std::string::npos) << describe(param);
+
   // A NUL byte in a file is shown, not a message cut short at it.
   write_file_text(dir() / "nul.obj", std::string("v 0 0 0\nv 1.0\0 2 3\n", 20));
   const CliResult nul = paver({"run", (dir() / "nul.obj").string(), "--out", out.string()});
