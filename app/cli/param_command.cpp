@@ -1,18 +1,23 @@
 // `paver param SURFACE [--out UV.obj]`: the bijective ARAP map alone, with its quality.
 #include "command_line.h"
 #include "commands.h"
+#include "interrupt.h"
 #include "io/output_guard.h"
 
 #include "map/arap_parameterization.h"
 #include "core/input_error.h"
+#include "core/interrupted.h"
 #include "mesh/mesh_loader.h"
 #include "io/uv_map_export.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <memory>
 #include <string>
+
+#include <unistd.h>
 
 namespace paver::cli {
 namespace {
@@ -33,24 +38,40 @@ int run_param(const ParamArgs& args) {
   LoadedSurface loaded = load_surface(args.surface);
   for (const auto& w : loaded.warnings) std::cerr << "paver: warning: " << app::printable(w) << "\n";
   const auto t1 = Clock::now();
+  // Said before the mapping, which can take minutes on a big mesh.
+  std::printf("%s: %d vertices, %d faces, %zu boundary vertices (loaded in %.1f ms)\n", args.surface.c_str(),
+              loaded.mesh.vertex_count(), loaded.mesh.face_count(), loaded.mesh.boundary_loop.size(),
+              std::chrono::duration<double, std::milli>(t1 - t0).count());
+  std::fflush(stdout);
 
   ArapOptions options;
   options.max_iterations = args.iterations;
   options.start = args.start == "lscm" ? ArapStart::Lscm : args.start == "tutte" ? ArapStart::Tutte : ArapStart::Auto;
+  // Iterated in chunks, as map_surface_file does: Ctrl-C is honoured between chunks and a terminal
+  // sees the progress (the start map's factorization itself cannot be interrupted).
+  const bool show_progress = ::isatty(STDERR_FILENO) != 0;
   const Parameterization param = [&] {
     try {
-      return parameterize_arap(loaded.mesh, options);
+      if (show_progress) std::fprintf(stderr, "mapping: start map and factorization...\r");
+      ArapSolver solver(loaded.mesh, options);
+      while (solver.report().iterations < options.max_iterations) {
+        if (interrupt_requested()) throw Interrupted();
+        const int chunk = std::min(5, options.max_iterations - solver.report().iterations);
+        if (solver.iterate(chunk)) break;
+        if (show_progress)
+          std::fprintf(stderr, "mapping: ARAP %d / %d        \r", solver.report().iterations, options.max_iterations);
+      }
+      if (show_progress) std::fprintf(stderr, "%60s\r", "");
+      if (interrupt_requested()) throw Interrupted();
+      return finish_parameterization(loaded.mesh, solver);
     } catch (const InputError& e) {
       throw InputError(args.surface + ": " + e.what() + "; remesh the surface or remove its sliver triangles");
     }
   }();
   const auto t2 = Clock::now();
-  const double load_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
   const double param_ms = std::chrono::duration<double, std::milli>(t2 - t1).count();
 
   const auto& q = param.quality;
-  std::printf("%s: %d vertices, %d faces, %zu boundary vertices (loaded in %.1f ms)\n", args.surface.c_str(),
-              loaded.mesh.vertex_count(), loaded.mesh.face_count(), loaded.mesh.boundary_loop.size(), load_ms);
   std::printf("ARAP from %s: %d iterations in %.1f ms (%d steps shortened to stay bijective)\n",
               std::string(start_name(param.report.start_used)).c_str(), param.report.iterations, param_ms,
               param.report.blocked_steps);
