@@ -1,5 +1,7 @@
 #include "elements/boundary_postprocess.h"
 
+#include "elements/cell_grid.h"
+
 #include "map/lifting.h"
 
 #include <glm/common.hpp>
@@ -98,15 +100,14 @@ std::vector<double> distances_to_boundary(const SurfaceMap& map, const Elements&
   double longest = 0;
   for (int i = 0; i < n; ++i) longest = std::max(longest, glm::length(pos[loop[(i + 1) % n]] - pos[loop[i]]));
   const double cap = cell > 0 ? cell : 1;  // what farther elements report (documented in the header)
-  cell = std::max(cell, 0.25 * longest);
-  if (!(cell > 0)) cell = 1;
   // Boundary segments bucketed by the cells their bounding boxes touch; an element only needs
   // the segments within its radius (< one cell) of it; farther ones report at least `cell`.
-  auto cell_of = [&](const glm::dvec3& p) { return glm::ivec3(glm::floor(p / cell)); };
-  auto key = [](glm::ivec3 c) {
-    return (std::uint64_t(std::uint32_t(c.x) & 0x1fffff) << 42) |
-           (std::uint64_t(std::uint32_t(c.y) & 0x1fffff) << 21) | std::uint64_t(std::uint32_t(c.z) & 0x1fffff);
-  };
+  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+  for (int v : loop) lo = glm::min(lo, pos[v]), hi = glm::max(hi, pos[v]);
+  for (const glm::dvec3& p : elements.position) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  const CellGrid grid(lo, hi, std::max(cell, 0.25 * longest));
+  const auto cell_of = [&](const glm::dvec3& p) { return grid.cell_of(p); };
+  const auto key = CellGrid::key;
   std::unordered_map<std::uint64_t, std::vector<int>> buckets;
   for (int i = 0; i < n; ++i) {
     const glm::dvec3 a = pos[loop[i]], b = pos[loop[(i + 1) % n]];

@@ -1,5 +1,6 @@
 #include "elements/element_proximity.h"
 
+#include "elements/cell_grid.h"
 #include "elements/contact_rule.h"
 
 #include <glm/common.hpp>
@@ -14,39 +15,35 @@
 namespace paver {
 namespace {
 
-// Elements bucketed in cubic cells at least `cell` wide (callers pass one largest diameter, so any
-// touching pair lies in the same or adjacent cells). Cells are never smaller than a millionth of the
-// elements' extent, so cell indices fit the key whatever the element size (tiny elements on a big
-// part would otherwise overflow them).
+// The elements' bounding box.
+struct Box {
+  glm::dvec3 lo{0.0}, hi{0.0};
+  double largest_side() const { return std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z}); }
+};
+
+Box bounding_box(const Elements& e) {
+  if (e.size() == 0) return {};
+  Box box{e.position[0], e.position[0]};
+  for (const glm::dvec3& p : e.position) box.lo = glm::min(box.lo, p), box.hi = glm::max(box.hi, p);
+  return box;
+}
+
+// Elements bucketed in cells at least `cell` wide (callers pass one largest diameter, so any
+// touching pair lies in the same or adjacent cells); CellGrid may widen them.
 class ElementHash {
 public:
-  ElementHash(const Elements& e, double cell)
-      : elements_(e), cell_(std::max(cell, extent(e) * 1e-6)), origin_(e.size() ? lowest(e) : glm::dvec3(0)) {
-    for (int i = 0; i < int(e.size()); ++i) buckets_[key(cell_of(e.position[i]))].push_back(i);
+  ElementHash(const Elements& e, const Box& box, double cell) : elements_(e), grid_(box.lo, box.hi, cell) {
+    for (int i = 0; i < int(e.size()); ++i) buckets_[CellGrid::key(grid_.cell_of(e.position[i]))].push_back(i);
   }
-  double cell() const { return cell_; }
+  double cell() const { return grid_.cell; }
 
-  static glm::dvec3 lowest(const Elements& e) {
-    glm::dvec3 lo = e.position[0];
-    for (const glm::dvec3& p : e.position) lo = glm::min(lo, p);
-    return lo;
-  }
-
-  // The largest side of the elements' bounding box.
-  static double extent(const Elements& e) {
-    if (e.size() == 0) return 0;
-    glm::dvec3 lo = e.position[0], hi = e.position[0];
-    for (const glm::dvec3& p : e.position) lo = glm::min(lo, p), hi = glm::max(hi, p);
-    const glm::dvec3 size = hi - lo;
-    return std::max({size.x, size.y, size.z});
-  }
   template <class F>
   void for_each_near(int i, F&& visit) const {
-    const glm::ivec3 c = cell_of(elements_.position[i]);
+    const glm::ivec3 c = grid_.cell_of(elements_.position[i]);
     for (int dz = -1; dz <= 1; ++dz)
       for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
-          const auto it = buckets_.find(key(c + glm::ivec3(dx, dy, dz)));
+          const auto it = buckets_.find(CellGrid::key(c + glm::ivec3(dx, dy, dz)));
           if (it == buckets_.end()) continue;
           for (int j : it->second)
             if (j != i) visit(j);
@@ -54,18 +51,8 @@ public:
   }
 
 private:
-  // Counted from the lowest corner, so indices stay in [0, 1e6] wherever the part is.
-  glm::ivec3 cell_of(const glm::dvec3& p) const {
-    const glm::dvec3 r = (p - origin_) / cell_;
-    return glm::ivec3(int(std::floor(r.x)), int(std::floor(r.y)), int(std::floor(r.z)));
-  }
-  static std::uint64_t key(glm::ivec3 c) {
-    return (std::uint64_t(std::uint32_t(c.x) & 0x1fffff) << 42) | (std::uint64_t(std::uint32_t(c.y) & 0x1fffff) << 21) |
-           std::uint64_t(std::uint32_t(c.z) & 0x1fffff);
-  }
   const Elements& elements_;
-  double cell_;
-  glm::dvec3 origin_;
+  CellGrid grid_;
   std::unordered_map<std::uint64_t, std::vector<int>> buckets_;
 };
 
@@ -79,7 +66,7 @@ double largest_diameter(const Elements& e) {
 
 std::vector<Collision> find_collisions(const Elements& elements) {
   std::vector<Collision> out;
-  const ElementHash hash(elements, largest_diameter(elements));
+  const ElementHash hash(elements, bounding_box(elements), largest_diameter(elements));
   for (int i = 0; i < int(elements.size()); ++i) {
     hash.for_each_near(i, [&](int j) {
       if (j < i) return;
@@ -104,11 +91,12 @@ std::vector<double> nearest_neighbor_ratios(const Elements& elements) {
   // left (loose ones, or none found) search again in cells four times wider, until the cells span
   // the whole set. O(n) for tight patterns, O(n log(spread)) for loose ones, never all pairs.
   const double largest = largest_diameter(elements);
-  const double extent = ElementHash::extent(elements);
+  const Box box = bounding_box(elements);
+  const double extent = box.largest_side();
   std::vector<int> pending(n);
   for (int i = 0; i < n; ++i) pending[i] = i;
   for (double width = 2 * largest; !pending.empty(); width *= 4) {
-    const ElementHash hash(elements, width);
+    const ElementHash hash(elements, box, width);
     const bool spans_all = hash.cell() >= extent;
     std::vector<int> unresolved;
     for (int i : pending) {
