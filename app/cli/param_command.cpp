@@ -47,23 +47,20 @@ int run_param(const ParamArgs& args) {
   ArapOptions options;
   options.max_iterations = args.iterations;
   options.start = args.start == "lscm" ? ArapStart::Lscm : args.start == "tutte" ? ArapStart::Tutte : ArapStart::Auto;
-  // Iterated in chunks, as map_surface_file does: Ctrl-C is honoured between chunks and a terminal
-  // sees the progress (the start map's factorization itself cannot be interrupted).
+  // Ctrl-C is honoured between ARAP chunks; a terminal sees the progress.
   const bool show_progress = ::isatty(STDERR_FILENO) != 0;
   const Parameterization param = [&] {
     try {
       if (show_progress) std::fprintf(stderr, "mapping: start map and factorization...\r");
-      ArapSolver solver(loaded.mesh, options);
-      while (solver.report().iterations < options.max_iterations) {
-        if (interrupt_requested()) throw Interrupted();
-        const int chunk = std::min(5, options.max_iterations - solver.report().iterations);
-        if (solver.iterate(chunk)) break;
-        if (show_progress)
-          std::fprintf(stderr, "mapping: ARAP %d / %d        \r", solver.report().iterations, options.max_iterations);
-      }
+      std::optional<Parameterization> done = parameterize_arap(
+          loaded.mesh, options,
+          [&](int iterations, int max) {
+            if (show_progress) std::fprintf(stderr, "mapping: ARAP %d / %d        \r", iterations, max);
+          },
+          [] { return interrupt_requested().load(); });
       if (show_progress) std::fprintf(stderr, "%60s\r", "");
-      if (interrupt_requested()) throw Interrupted();
-      return finish_parameterization(loaded.mesh, solver);
+      if (!done) throw Interrupted();
+      return std::move(*done);
     } catch (const InputError& e) {
       throw InputError(args.surface + ": " + e.what() + "; remesh the surface or remove its sliver triangles");
     }

@@ -335,4 +335,20 @@ Parameterization parameterize_arap(const SurfaceMesh& mesh, const ArapOptions& o
   return finish_parameterization(mesh, solver);
 }
 
+std::optional<Parameterization> parameterize_arap(const SurfaceMesh& mesh, const ArapOptions& options,
+                                                  const std::function<void(int done, int max)>& progress,
+                                                  const std::function<bool()>& stop) {
+  constexpr int kIterationsPerChunk = 5;  // a few per second on a 1M-face mesh
+  const auto stopped = [&] { return stop && stop(); };
+  ArapSolver solver(mesh, options);
+  while (solver.report().iterations < options.max_iterations) {
+    if (stopped()) return std::nullopt;
+    const int chunk = std::min(kIterationsPerChunk, options.max_iterations - solver.report().iterations);
+    if (solver.iterate(chunk)) break;
+    if (progress) progress(solver.report().iterations, options.max_iterations);
+  }
+  if (stopped()) return std::nullopt;
+  return finish_parameterization(mesh, solver);
+}
+
 }  // namespace paver

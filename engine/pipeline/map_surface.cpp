@@ -13,8 +13,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
-// ARAP iterations between progress reports and stop checks: a few per second on a 1M-face mesh.
-constexpr int kIterationsPerChunk = 5;
 
 }  // namespace
 
@@ -49,19 +47,17 @@ MappedSurface map_surface_file(const std::filesystem::path& path, const Pipeline
   t0 = Clock::now();
   try {
     report(0.05f, "mapping: start map and factorization");
-    const ArapOptions options;
-    ArapSolver solver(loaded.mesh, options);
-    while (solver.report().iterations < options.max_iterations) {
-      if (stopped()) return out;
-      const int chunk = std::min(kIterationsPerChunk, options.max_iterations - solver.report().iterations);
-      if (solver.iterate(chunk)) break;
-      const int done = solver.report().iterations;
-      report(0.15f + 0.75f * float(done) / float(options.max_iterations),
-             "mapping: ARAP " + std::to_string(done) + " / " + std::to_string(options.max_iterations));
-    }
+    std::optional<Parameterization> parameterization = parameterize_arap(
+        loaded.mesh, ArapOptions{},
+        [&](int done, int max) {
+          report(0.15f + 0.75f * float(done) / float(max),
+                 "mapping: ARAP " + std::to_string(done) + " / " + std::to_string(max));
+        },
+        stopped);
+    if (!parameterization) return out;
     report(0.92f, "mapping: lifting data");
-    Parameterization parameterization = finish_parameterization(loaded.mesh, solver);
-    out.map = std::make_shared<const SurfaceMap>(make_surface_map(std::move(loaded.mesh), std::move(parameterization)));
+    out.map =
+        std::make_shared<const SurfaceMap>(make_surface_map(std::move(loaded.mesh), std::move(*parameterization)));
   } catch (const InputError& e) {
     // The map's own refusals (a Laplacian that cannot be factorized) do not know the file.
     throw InputError(path.string() + ": " + e.what() + "; remesh the surface or remove its sliver triangles");
