@@ -3,6 +3,7 @@
 #include "commands.h"
 
 #include "core/input_error.h"
+#include "core/printable.h"
 #include "core/interrupted.h"
 #include "interrupt.h"
 
@@ -30,10 +31,10 @@ int main(int argc, char** argv) {
     std::cerr << "paver: interrupted; nothing was written, the output folder is as it was\n";
     return 130;
   } catch (const paver::InputError& e) {
-    std::cerr << "paver: error: " << paver::app::printable(e.what()) << "\n";
+    std::cerr << "paver: error: " << paver::printable(e.what()) << "\n";
     return 2;
   } catch (const std::exception& e) {
-    std::cerr << "paver: internal error: " << paver::app::printable(e.what()) << "\n";
+    std::cerr << "paver: internal error: " << paver::printable(e.what()) << "\n";
     return 1;
   }
   return 2;

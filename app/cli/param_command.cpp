@@ -6,6 +6,7 @@
 
 #include "map/arap_parameterization.h"
 #include "core/input_error.h"
+#include "core/printable.h"
 #include "core/interrupted.h"
 #include "mesh/mesh_loader.h"
 #include "io/uv_map_export.h"
@@ -36,7 +37,7 @@ int run_param(const ParamArgs& args) {
   if (!args.out.empty()) refuse_overwriting_inputs({args.surface}, {args.out});  // before any work
   const auto t0 = Clock::now();
   LoadedSurface loaded = load_surface(args.surface);
-  for (const auto& w : loaded.warnings) std::cerr << "paver: warning: " << app::printable(w) << "\n";
+  for (const auto& w : loaded.warnings) std::cerr << "paver: warning: " << printable(w) << "\n";
   const auto t1 = Clock::now();
   // Said before the mapping, which can take minutes on a big mesh.
   std::printf("%s: %d vertices, %d faces, %zu boundary vertices (loaded in %.1f ms)\n", args.surface.c_str(),

@@ -7,6 +7,7 @@
 #include "progress_bar.h"
 
 #include "core/input_error.h"
+#include "core/printable.h"
 #include "io/design_io.h"
 #include "pipeline/run_pipeline.h"
 
@@ -61,7 +62,7 @@ int run_run(const RunArgs& args) {
   request.surface_path = args.surface;
   request.design_source = args.design.empty() ? "defaults" : args.design;
   request.design_path = args.design;
-  request.on_warning = [](const std::string& w) { std::cerr << "paver: warning: " << app::printable(w) << "\n"; };
+  request.on_warning = [](const std::string& w) { std::cerr << "paver: warning: " << printable(w) << "\n"; };
   Design& design = request.design;
   if (!args.design.empty()) design = load_design(args.design);
   if (!args.pattern.empty()) {

@@ -15,22 +15,6 @@ std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, cons
   return std::nullopt;
 }
 
-std::string printable(std::string_view message) {
-  std::string out;
-  out.reserve(message.size());
-  for (const char c : message) {
-    const auto byte = static_cast<unsigned char>(c);
-    if (byte < 0x20 || byte == 0x7f) {
-      char escaped[8];
-      std::snprintf(escaped, sizeof escaped, "\\x%02x", byte);
-      out += escaped;
-    } else {
-      out += c;
-    }
-  }
-  return out;
-}
-
 CLI::Option* add_backend_option(CLI::App& app, std::string& backend) {
   return app.add_option("--backend", backend, "Solver backend: cpu, vulkan, or auto (Vulkan on a GPU, else CPU)")
       ->check(CLI::IsMember({"cpu", "vulkan", "auto"}))

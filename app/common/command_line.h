@@ -13,10 +13,6 @@ namespace paver::app {
 // --help)". CLI11's own codes (106 ...) and its two-line message would tell a script nothing more.
 std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, const std::string& usage);
 
-// A message as it may be shown on a terminal: control characters (escape sequences, NUL, ...)
-// from file names or file contents are written as \xNN instead of being sent raw.
-std::string printable(std::string_view message);
-
 // --backend cpu|vulkan|auto (default auto), as choose_backend takes it.
 CLI::Option* add_backend_option(CLI::App& app, std::string& backend);
 

@@ -2,7 +2,7 @@
 // How the mesh readers and checks word a refusal: "<file>: <place>: <what is wrong; the fix>".
 // Shared so that every format names places the same way (line N, byte offset N, vertex N).
 #include "core/input_error.h"
-
+#include "core/printable.h"
 #include <glm/vec3.hpp>
 
 #include <cstdint>
@@ -25,21 +25,10 @@ inline std::string at_line(long long line) { return "line " + std::to_string(lin
 inline std::string at_byte(std::uint64_t offset) { return "byte offset " + std::to_string(offset) + ": "; }
 
 // 'text', cut to `max` characters: a token from the file, shown as found.
-// A piece of a file in a message: bytes that are not printable ASCII (NUL, escapes, binary) are
-// written as \xNN, so a message is never cut at a NUL nor drives a terminal.
+// A piece of a file in a message, quoted and made printable (core/printable.h).
 inline std::string quoted(std::string_view text, size_t max = 40) {
-  static constexpr char kHex[] = "0123456789abcdef";
-  std::string out(1, '\'');
-  for (const char c : text.substr(0, max)) {
-    const auto byte = static_cast<unsigned char>(c);
-    if (byte >= 0x20 && byte < 0x7f) {
-      out += c;
-    } else {
-      out += "\\x";
-      out += kHex[byte >> 4];
-      out += kHex[byte & 15];
-    }
-  }
+  std::string out = "'";  // appended piece by piece: chained operator+ trips GCC 12's -Wrestrict
+  out += printable(text.substr(0, max), true);
   out += '\'';
   return out;
 }
