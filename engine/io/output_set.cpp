@@ -1,6 +1,7 @@
 #include "io/output_set.h"
 
 #include "core/input_error.h"
+#include "io/output_guard.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -88,11 +89,7 @@ OutputSet::OutputSet(fs::path folder, std::vector<std::string> known_names)
   fs::remove_all(staging_, ec);
   if (folder_.has_parent_path() && folder_.parent_path() != folder_ && fs::create_directory(staging_, ec) && !ec)
     return;
-  ec.clear();
-  fs::create_directories(folder_, ec);
-  if (ec || !fs::is_directory(folder_))
-    throw InputError("cannot create the output folder " + folder_.string() + ": " +
-                     (ec ? ec.message() : "a file of that name exists"));
+  make_output_folder(folder_);
   std::string inside(kStagingTag);
   inside += pid;
   staging_ = folder_ / inside;

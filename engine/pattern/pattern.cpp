@@ -22,10 +22,21 @@ std::string format_number(double v) {
 
 }  // namespace
 
-double estimate_point_count(const SurfaceMap& map, const UnitCell& cell, const Placement& placement) {
+namespace {
+
+// Points the lattice would put on the map at D = 1: counted from the cell at unit spacing, so that
+// a spacing whose square underflows still gets a finite answer (points scale as 1 / D^2).
+double point_count_at_unit_spacing(const SurfaceMap& map, const UnitCell& cell, const Placement& placement) {
+  const glm::dvec2 u1 = cell.a1 / cell.spacing, u2 = cell.a2 / cell.spacing;
   // The map's area seen in the pattern plane grows with the square of the placement scale.
   const double area = map_area(map) * placement.scale * placement.scale;
-  return area / cell.cell_area() * double(cell.vertices.size());
+  return area / std::abs(u1.x * u2.y - u1.y * u2.x) * double(cell.vertices.size());
+}
+
+}  // namespace
+
+double estimate_point_count(const SurfaceMap& map, const UnitCell& cell, const Placement& placement) {
+  return point_count_at_unit_spacing(map, cell, placement) / (cell.spacing * cell.spacing);
 }
 
 Pattern build_pattern(const SurfaceMap& map, const UnitCell& cell, const Placement& placement) {
@@ -37,13 +48,8 @@ Pattern build_pattern(const SurfaceMap& map, const UnitCell& cell, const Placeme
                      format_number(map_size));
   const double estimate = estimate_point_count(map, cell, placement);
   if (!(estimate <= kMaxPatternPoints)) {
-    // From the cell at unit spacing, so that a spacing whose square underflows still gets an answer.
-    const glm::dvec2 u1 = cell.a1 / cell.spacing, u2 = cell.a2 / cell.spacing;
-    const double unit_cell_area = std::abs(u1.x * u2.y - u1.y * u2.x);
-    const double points_at_unit_spacing =
-        map_area(map) * placement.scale * placement.scale / unit_cell_area * double(cell.vertices.size());
     // Rounded up to the three digits printed, so the spacing suggested is itself accepted.
-    const double smallest = std::sqrt(points_at_unit_spacing / kMaxPatternPoints);
+    const double smallest = std::sqrt(point_count_at_unit_spacing(map, cell, placement) / kMaxPatternPoints);
     const double digit = std::pow(10.0, std::floor(std::log10(smallest)) - 2);
     const double ok_spacing = std::ceil(smallest / digit) * digit;
     throw InputError("spacing D = " + format_number(cell.spacing) + " would create about " +
