@@ -13,6 +13,7 @@
 #include <iostream>
 
 int main(int argc, char** argv) {
+  paver::cli::install_interrupt_handlers();  // first: a Ctrl-C at any moment finds them in place
   CLI::App app{"Paver: element-based pattern creation on 3D free-form surfaces", "paver"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "paver 0.1.0");
@@ -21,7 +22,6 @@ int main(int argc, char** argv) {
   const auto run_devices = paver::cli::add_devices_command(app);
   const auto run_parameters = paver::cli::add_parameters_command(app);
   if (const auto exit_code = paver::app::parse_command_line(app, argc, argv, "paver run|param|devices|parameters ...")) return *exit_code;
-  paver::cli::install_interrupt_handlers();
   try {
     if (app.got_subcommand("param")) return run_param();
     if (app.got_subcommand("run")) return run_run();

@@ -723,11 +723,11 @@ TEST_F(PaverRun, InterruptLeavesThePreviousResultIntact) {
   const fs::path out = dir() / "out";
   ASSERT_EQ(paver({"run", "assets/surfaces/dome.obj", "--out", out.string()}).exit_code, 0);
   const std::string before = read_file_text(out / "placements.csv");
-  // A run that would take minutes, interrupted after a second (mapping or solving by then).
+  // A run that would take minutes, interrupted after a moment (mapping or solving by then).
   std::string command = "cd " + shell_quote(PAVER_SOURCE_DIR) + " && (timeout -s KILL 60 " + shell_quote(PAVER_CLI) +
                         " run assets/surfaces/wave.obj --iterations 1000000 --threshold 1e-12 --out " +
                         shell_quote(out.string()) + " >/dev/null 2>" + shell_quote((dir() / "err.txt").string()) +
-                        " & pid=$!; sleep 1; kill -INT $pid; wait $pid)";
+                        " & pid=$!; sleep 1.5; kill -INT $pid; wait $pid)";
   const int status = std::system(command.c_str());
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 130) << read_file_text(dir() / "err.txt");

@@ -10,6 +10,8 @@
 #include "map/lifting.h"
 #include "pattern/pattern.h"
 #include "pipeline/pavement.h"
+#include "surface_maps.h"
+#include "map_polygon.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>
@@ -28,10 +30,10 @@
 namespace paver {
 namespace {
 
-const SurfaceMap& dome_map() {
-  static const SurfaceMap map = build_surface_map(load_surface(test::bundled_surface("dome")).mesh);
-  return map;
-}
+using test::boundary_polygon;
+using test::inside;
+
+const SurfaceMap& dome_map() { return *test::bundled_map("dome"); }
 
 // Hexagonal, D = 6, half-size V-elements, E-elements at the middle of every edge and a second,
 // smaller kind near the `from` end of cell edge 1 only (so the edge's direction matters).
@@ -63,21 +65,6 @@ const DomeFilling& dome_setup() {
     return s;
   }();
   return setup;
-}
-
-std::vector<glm::dvec2> boundary_polygon(const SurfaceMap& map) {
-  std::vector<glm::dvec2> polygon;
-  for (int v : map.mesh.boundary_loop) polygon.push_back(map.uv[v]);
-  return polygon;
-}
-
-bool inside(const std::vector<glm::dvec2>& polygon, glm::dvec2 p) {
-  bool in = false;
-  for (size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
-    const glm::dvec2 a = polygon[i], b = polygon[j];
-    if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y)) in = !in;
-  }
-  return in;
 }
 
 template <class Vec>

@@ -6,6 +6,7 @@
 
 #include "map/surface_map.h"
 #include "mesh/mesh_loader.h"
+#include "surface_maps.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>
@@ -109,7 +110,7 @@ void expect_matches(const Obj& obj, const SurfaceMesh& mesh, const std::vector<g
 }
 
 TEST_F(UvMapExport, ThePendantsMapIsWrittenVertexForVertex) {
-  const SurfaceMap map = build_surface_map(load_surface(test::bundled_surface("pendant")).mesh);
+  const SurfaceMap& map = *test::bundled_map("pendant");
   const fs::path path = folder_ / "map.obj";
   write_uv_map_obj(path, map.mesh, map.uv);
 

@@ -3,6 +3,7 @@
 #include "mesh/mean_curvature.h"
 #include "mesh/mesh_loader.h"
 #include "map/surface_map.h"
+#include "surface_maps.h"
 #include "test_meshes.h"
 
 #include <glm/geometric.hpp>
@@ -53,7 +54,7 @@ INSTANTIATE_TEST_SUITE_P(Surfaces, LiftingOnRealMeshes,
                          ::testing::Values("dome", "saddle", "vase", "pendant", "bunnyhead", "maze"));
 
 TEST(Lifting, PointsOutsideTheMapAreReported) {
-  const SurfaceMap map = build_surface_map(load_surface(test::bundled_surface("wave")).mesh);
+  const SurfaceMap& map = *test::bundled_map("wave");
   const std::vector<glm::dvec2> points = {map.uv_max + glm::dvec2(1, 1), map.uv_min - glm::dvec2(5, 0),
                                           0.5 * (map.uv_min + map.uv_max)};
   LiftedPoints lifted;
@@ -94,7 +95,7 @@ TEST(MeanCurvature, PlaneIsFlatAndNormalsAreUp) {
 }
 
 TEST(SurfaceMap, CurvatureRangeAndBoundingBox) {
-  const SurfaceMap map = build_surface_map(load_surface(test::bundled_surface("saddle")).mesh);
+  const SurfaceMap& map = *test::bundled_map("saddle");
   EXPECT_LT(map.curvature_min, map.curvature_max);
   for (const auto& p : map.uv) {
     EXPECT_GE(p.x, map.uv_min.x);

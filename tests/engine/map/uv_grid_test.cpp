@@ -6,6 +6,7 @@
 #include "map/uv_grid.h"
 
 #include "map/surface_map.h"
+#include "surface_maps.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>
@@ -24,12 +25,7 @@
 namespace paver {
 namespace {
 
-const SurfaceMap& map_of(const std::string& name) {
-  static std::map<std::string, SurfaceMap> cache;
-  auto it = cache.find(name);
-  if (it == cache.end()) it = cache.emplace(name, build_surface_map(load_surface(test::bundled_surface(name)).mesh)).first;
-  return it->second;
-}
+const SurfaceMap& map_of(const std::string& name) { return *test::bundled_map(name); }
 
 double cross(glm::dvec2 a, glm::dvec2 b) { return a.x * b.y - a.y * b.x; }
 

@@ -12,6 +12,8 @@
 
 #include "surface_maps.h"
 
+#include "map_polygon.h"
+
 #include <gtest/gtest.h>
 
 #include <glm/common.hpp>
@@ -31,6 +33,9 @@
 
 namespace paver {
 namespace {
+
+using test::boundary_polygon;
+using test::inside;
 
 constexpr double kSide = 10;  // L: the flat square is [0, L]^2 before parameterization
 constexpr int kQuads = 10;    // quads per side of the flat square's triangulation
@@ -56,26 +61,6 @@ const SurfaceMap& flat_map() {
 }
 
 const SurfaceMap& dome_map() { return *test::bundled_map("dome"); }
-
-// The map's boundary as a polygon in the uv plane.
-std::vector<glm::dvec2> boundary_polygon(const SurfaceMap& map) {
-  std::vector<glm::dvec2> polygon;
-  for (int v : map.mesh.boundary_loop) polygon.push_back(map.uv[v]);
-  return polygon;
-}
-
-// Crossing-number point-in-polygon test.
-bool inside(const std::vector<glm::dvec2>& polygon, glm::dvec2 p) {
-  bool in = false;
-  for (size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
-    const glm::dvec2 a = polygon[i], b = polygon[j];
-    if ((a.y > p.y) != (b.y > p.y)) {
-      const double x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
-      if (p.x < x) in = !in;
-    }
-  }
-  return in;
-}
 
 double distance_to_boundary(const std::vector<glm::dvec2>& polygon, glm::dvec2 p) {
   double best = std::numeric_limits<double>::infinity();

@@ -169,7 +169,7 @@ namespace paver {
 namespace {
 
 TEST(PavementOptimization, StopFlagEndsEverySolveWithoutAnObserver) {
-  const SurfaceMap map = build_surface_map(load_surface(test::bundled_surface("saddle")).mesh);
+  const SurfaceMap& map = *test::bundled_map("saddle");
   Design design;
   design.pattern.tessellation = Tessellation::Triangle;
   design.pattern.spacing = 18;

@@ -8,6 +8,7 @@
 #include "io/design_io.h"
 #include "pipeline/pavement.h"
 #include "bundled_designs.h"
+#include "surface_maps.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>
@@ -22,14 +23,7 @@
 namespace paver {
 namespace {
 
-const SurfaceMap& map_of(const std::string& surface) {
-  static std::map<std::string, SurfaceMap> cache;
-  auto it = cache.find(surface);
-  if (it == cache.end())
-    it = cache.emplace(surface, build_surface_map(load_surface(test::source_dir() / "assets/surfaces" / surface).mesh))
-             .first;
-  return it->second;
-}
+const SurfaceMap& map_of(const std::string& surface) { return *test::bundled_map(surface); }
 
 void add_element(Elements& e, ElementKind kind) {
   e.push_back(kind, 0, 0, {}, {}, {0, 0, 1}, 1, ShapeKind::Sphere);
