@@ -6,6 +6,8 @@
 
 #include "input_error_assertions.h"
 
+#include "temp_folder.h"
+
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
@@ -33,28 +35,7 @@ using test::error_of;
 
 namespace fs = std::filesystem;
 
-// A fresh directory per test, removed afterwards.
-class MeshLoaderTest : public ::testing::Test {
-protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("paver_mesh_loader_" + std::string(info->name()) + "_" + std::to_string(std::random_device{}()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ignored;
-    fs::remove_all(dir_, ignored);
-  }
-
-  fs::path write(const std::string& name, const std::string& content) const {
-    const fs::path path = dir_ / name;
-    std::ofstream(path, std::ios::binary) << content;
-    return path;
-  }
-
-  fs::path dir_;
-};
+class MeshLoaderTest : public test::TempFolderTest {};
 
 // The InputError message `load` throws, or a test failure if it throws none.
 std::string load_error(const fs::path& path) {

@@ -4,6 +4,8 @@
 
 #include "input_error_assertions.h"
 
+#include "temp_folder.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -20,25 +22,7 @@ using test::error_of;
 
 namespace fs = std::filesystem;
 
-class ReadMeshFileTest : public ::testing::Test {
-protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("paver_read_mesh_file_" + std::string(
-                                            ::testing::UnitTest::GetInstance()->current_test_info()->name()) +
-                                        "_" + std::to_string(std::random_device{}()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ignored;
-    fs::remove_all(dir_, ignored);
-  }
-  fs::path write(const std::string& name, const std::string& content) const {
-    const fs::path path = dir_ / name;
-    std::ofstream(path, std::ios::binary) << content;
-    return path;
-  }
-  fs::path dir_;
-};
+class ReadMeshFileTest : public test::TempFolderTest {};
 
 TEST_F(ReadMeshFileTest, ExtensionChoosesTheReaderWhateverItsCase) {
   const PolygonSoup off = read_mesh_file(write("tri.OFF", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"), "tri.OFF");

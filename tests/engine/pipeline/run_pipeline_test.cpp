@@ -7,6 +7,7 @@
 #include "mesh/mesh_loader.h"
 #include "pipeline/run_pipeline.h"
 #include "surface_maps.h"
+#include "temp_folder.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>
@@ -21,15 +22,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class RunPipeline : public ::testing::Test {
+class RunPipeline : public test::TempFolderTest {
 protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("paver_run_pipeline_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   static PipelineRequest dome_request() {
     PipelineRequest r;
     r.surface_path = test::bundled_surface("dome");
@@ -38,8 +32,6 @@ protected:
     r.pavement.threads = 1;
     return r;
   }
-
-  fs::path dir_;
 };
 
 TEST_F(RunPipeline, EqualsItsStagesCalledOneByOne) {
