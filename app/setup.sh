@@ -43,7 +43,14 @@ case "$mode" in
     echo "       preview.png: the paved surface, param.png: the pattern on the 2D map)"
     ;;
   test)
-    ctest --test-dir build --output-on-failure -j"$jobs"
+    if ! ctest --test-dir build --output-on-failure -j"$jobs"; then
+      # A long log cuts a failure's text out of view: run the failed ones again, alone, so their
+      # messages end the log (and a failure that passes alone shows itself as timing-dependent).
+      echo
+      echo "setup: tests failed; running the failed ones again, one at a time, with their output:"
+      ctest --test-dir build --rerun-failed --output-on-failure -j1 || true
+      exit 1
+    fi
     ;;
   build) ;;
 esac

@@ -1,23 +1,52 @@
 #include "interrupt.h"
 
-#include <csignal>
+#include <signal.h>
+#include <time.h>
+#include <unistd.h>
 
 namespace paver::cli {
 namespace {
 
 std::atomic<bool> requested{false};
-static_assert(std::atomic<bool>::is_always_lock_free, "the flag is set from a signal handler");
+std::atomic<long long> first_request_ns{0};
+static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<long long>::is_always_lock_free,
+              "both are touched from a signal handler");
 
-extern "C" void on_interrupt(int signal) {
-  requested.store(true);
-  std::signal(signal, SIG_DFL);  // a second one is not waited on
+constexpr long long kForceAfterNs = 1'000'000'000;
+
+long long monotonic_ns() {  // clock_gettime is async-signal-safe
+  timespec now{};
+  clock_gettime(CLOCK_MONOTONIC, &now);
+  return static_cast<long long>(now.tv_sec) * 1'000'000'000 + now.tv_nsec;
+}
+
+extern "C" void on_interrupt(int) {
+  const long long now = monotonic_ns();
+  if (!requested.exchange(true)) {
+    first_request_ns.store(now);
+    return;
+  }
+  if (now - first_request_ns.load() < kForceAfterNs) return;
+  static const char message[] = "paver: interrupted again; stopped at once\n";
+  [[maybe_unused]] const auto written = write(STDERR_FILENO, message, sizeof message - 1);
+  _exit(130);
 }
 
 }  // namespace
 
 void install_interrupt_handlers() {
-  std::signal(SIGINT, on_interrupt);
-  std::signal(SIGTERM, on_interrupt);
+  struct sigaction action {};
+  action.sa_handler = on_interrupt;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = SA_RESTART;
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+  // A parent may have blocked them (signal masks are inherited); a blocked Ctrl-C would never arrive.
+  sigset_t ours;
+  sigemptyset(&ours);
+  sigaddset(&ours, SIGINT);
+  sigaddset(&ours, SIGTERM);
+  sigprocmask(SIG_UNBLOCK, &ours, nullptr);
 }
 
 const std::atomic<bool>& interrupt_requested() { return requested; }

@@ -1,7 +1,9 @@
 #pragma once
 // Ctrl-C and SIGTERM for `paver run`: the first one sets a flag that every stage of the pipeline
 // polls (the run stops within a moment, removes its staging folder and leaves the output folder
-// as it was); a second one ends the process at once (its staging folder is removed by the next run).
+// as it was). Another one a second or more later ends the process at once (its staging folder is
+// removed by the next run). Repeats closer than that are the same request: a terminal signals the
+// whole process group and wrappers such as `timeout` pass a signal on twice.
 #include <atomic>
 
 namespace paver::cli {
