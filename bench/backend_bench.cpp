@@ -165,7 +165,7 @@ int main(int argc, char** argv) {
         std::printf(" | %25.1f ms", ms);
         std::fflush(stdout);
         out["designs"].push_back({{"design", name}, {"backend", b.name}, {"ms", ms}, {"elements", p.elements.size()},
-                                  {"iterations", p.solve.iterations}, {"collisions", p.after.collisions}});
+                                  {"iterations", p.solve.iterations}, {"collisions", p.after.contact_violations}});
       }
       bool same = true;
       for (const auto& r : results) same = same && r.position == results.front().position;

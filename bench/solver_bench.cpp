@@ -46,9 +46,9 @@ void design(benchmark::State& state, std::string name, std::string surface) {
   state.counters["elements"] = double(p.elements.size());
   state.counters["iterations"] = p.solve.iterations;
   state.counters["converged"] = p.solve.reason == paver::StopReason::Converged;
-  state.counters["collisions_initial"] = double(p.before.collisions);
-  state.counters["collisions_paper"] = double(p.paper.collisions);
-  state.counters["collisions_final"] = double(p.after.collisions);
+  state.counters["collisions_initial"] = double(p.before.contact_violations);
+  state.counters["collisions_paper"] = double(p.paper.contact_violations);
+  state.counters["collisions_final"] = double(p.after.contact_violations);
   state.counters["removed"] = p.resolution.removed;
   state.counters["nn_p5"] = p.after.neighbor_ratio.p5;
   state.counters["nn_median"] = p.after.neighbor_ratio.median;

@@ -27,7 +27,7 @@ void PreviewImages::write(const std::filesystem::path& folder, const SurfaceMap&
                           const ShapeMesh* custom, PreviewSize size) {
   render::Renderer& r = *impl_->renderer;
   r.set_surface(map);
-  r.set_elements(pavement.elements, render::element_colours(pavement.elements, render::ColourMode::NeighbourRatio),
+  r.set_elements(pavement.elements, render::element_colours(pavement.elements, render::ColourMode::NeighbourRatio, pavement.design.elements.gap),
                  custom);
   r.set_pattern(map, pavement.pattern, pavement.points);
   render::SceneStyle style;

@@ -10,6 +10,7 @@
 #include "core/printable.h"
 #include "io/design_io.h"
 #include "pipeline/run_pipeline.h"
+#include "report/verdict.h"
 
 #include <algorithm>
 #include <chrono>
@@ -34,6 +35,7 @@ struct RunArgs {
   std::string design;
   std::string pattern;
   std::optional<double> spacing;
+  std::optional<double> gap;
   std::string out = "out";
   bool no_optimize = false;
   bool no_postprocess = false;
@@ -81,6 +83,14 @@ int run_run(const RunArgs& args) {
     }
     design.pattern.spacing = *args.spacing;
   }
+  if (args.gap) {
+    if (!(std::isfinite(*args.gap) && *args.gap >= 0)) {
+      std::ostringstream given;
+      given << *args.gap;
+      throw InputError("--gap " + given.str() + ": must be finite and >= 0 (free space between elements, surface units)");
+    }
+    design.elements.gap = *args.gap;
+  }
   // What the flags and the file give together (c + m >= 0), named after where it came from.
   validate_design(design, args.design.empty() ? "command line" : args.design);
 
@@ -112,10 +122,14 @@ int run_run(const RunArgs& args) {
   const SurfaceMap& map = *result.map;
   const Pavement& pavement = result.pavement;
   const PavementCounts& counts = result.counts;
+
+  const Verdict verdict = judge_pavement(pavement.after);
+  std::printf("verdict  %s\n", verdict.ok ? "ok: no contact violations, no boundary crossings, pattern intact"
+                                          : "NOT OK:");
+  for (const std::string& problem : verdict.problems) std::printf("         - %s\n", problem.c_str());
   if (result.info.spacing_derived)
     std::printf("no spacing given: using D = %g, about 1000 points over this surface\n",
                 pavement.design.pattern.spacing);
-
   const auto& q = map.parameterization.quality;
   const auto& pr = map.parameterization.report;
   std::printf("surface  %s: %d vertices, %d faces, area %.6g\n", args.surface.c_str(), map.mesh.vertex_count(),
@@ -127,17 +141,19 @@ int run_run(const RunArgs& args) {
               std::string(tessellation_name(pavement.design.pattern.tessellation)).c_str(),
               pavement.design.pattern.spacing, pavement.pattern.point_count(), counts.pattern_edges,
               counts.virtual_edges, counts.boundary_crossing_edges);
-  std::printf("optimize %s%s%s: %d iterations, %s (last max step %.3g); %d filled, %d eliminated at the boundary\n",
+  std::printf("optimize %s%s%s: %d iterations, %s (last max step %.3g); %d filled, %d eliminated at the boundary, "
+              "%d removed still colliding\n",
               backend.name.c_str(), backend.device.empty() ? "" : " on ", backend.device.c_str(), pavement.solve.iterations, std::string(stop_reason_name(pavement.solve.reason)).c_str(),
-              pavement.solve.last_max_step, pavement.filled, pavement.eliminated);
+              pavement.solve.last_max_step, pavement.filled, pavement.eliminated, pavement.resolution.removed);
   std::printf("elements %zu (%ld V, %ld E)\n", pavement.elements.size(), counts.vertex_elements,
               counts.edge_elements);
-  std::printf("quality           collisions  worst overlap  NN ratio min / p5 / median / p95   cv     crossings\n");
+  std::printf("quality (gap %g)\n", pavement.design.elements.gap);
+  std::printf("                  violations  min clearance  NN ratio min / p5 / median / p95   cv     crossings  fill\n");
   for (const auto& [label, q] : {std::pair{"  initial", &pavement.before}, std::pair{"  paper's method", &pavement.paper},
                                  std::pair{"  final", &pavement.after}})
-    std::printf("%-17s %10ld  %13.3f  %.3f / %.3f / %.3f / %.3f  %.3f  %ld\n", label, q->collisions,
-                q->worst_overlap, q->neighbor_ratio.min, q->neighbor_ratio.p5, q->neighbor_ratio.median,
-                q->neighbor_ratio.p95, q->neighbor_ratio.cv, q->boundary_crossings);
+    std::printf("%-17s %10ld  %13.4g  %.4f / %.4f / %.4f / %.4f  %.3f  %-9ld  %.3f\n", label, q->contact_violations,
+                q->min_clearance, q->neighbor_ratio.min, q->neighbor_ratio.p5, q->neighbor_ratio.median,
+                q->neighbor_ratio.p95, q->neighbor_ratio.cv, q->boundary_crossings, q->fill);
   std::printf("time    ");
   double total = 0;
   for (const auto& [stage, ms] : result.timings) std::printf(" %s %.1f ms,", stage.c_str(), ms), total += ms;
@@ -156,6 +172,8 @@ std::function<int()> add_run_command(CLI::App& app) {
   cmd->add_option("--design", args->design, "design.json (flags below override it)");
   cmd->add_option("--pattern", args->pattern, "Tessellation: tri, grid or hex");
   cmd->add_option("--spacing", args->spacing, "Edge length D in surface units (default: from the surface size)");
+  cmd->add_option("--gap", args->gap,
+                  "Required free space between neighbouring elements, surface units (default 0: touching)");
   cmd->add_option("--out", args->out, "Output folder")->capture_default_str();
   cmd->add_flag("--no-optimize", args->no_optimize, "Skip the section 5 optimizer (initial pavement only)");
   cmd->add_flag("--no-postprocess", args->no_postprocess, "Skip boundary filling and elimination (5.4)");

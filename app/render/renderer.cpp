@@ -255,15 +255,15 @@ MapView frame_map(const SurfaceMap& map) {
 }
 
 std::vector<LegendStop> neighbour_ratio_legend() {
-  const std::vector<double> ratios = {0.90, 0.95, kContactFactor, 1.00, 1.02, 1.10, 1.20, 1.30};
+  const std::vector<double> ratios = {0.90, 0.95, 0.99, 1.00, 1.02, 1.10, 1.20, 1.30};
   const auto colours = neighbor_ratio_colours(ratios);
   std::vector<LegendStop> out;
   for (size_t i = 0; i < ratios.size(); ++i) out.push_back({ratios[i], colours[i]});
   return out;
 }
 
-std::vector<std::array<std::uint8_t, 3>> element_colours(const Elements& elements, ColourMode mode) {
-  if (mode == ColourMode::NeighbourRatio) return neighbor_ratio_colours(nearest_neighbor_ratios(elements));
+std::vector<std::array<std::uint8_t, 3>> element_colours(const Elements& elements, ColourMode mode, double gap) {
+  if (mode == ColourMode::NeighbourRatio) return contact_colours(elements, gap);
   std::vector<std::array<std::uint8_t, 3>> out(elements.size());
   for (size_t i = 0; i < elements.size(); ++i)
     out[i] = elements.kind[i] == ElementKind::Vertex ? std::array<std::uint8_t, 3>{52, 101, 164}

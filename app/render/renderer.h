@@ -64,7 +64,7 @@ struct LegendStop {
 std::vector<LegendStop> neighbour_ratio_legend();
 
 // Per element colours for a mode: nearest-neighbour ratio scale, or V blue / E orange.
-std::vector<std::array<std::uint8_t, 3>> element_colours(const Elements& elements, ColourMode mode);
+std::vector<std::array<std::uint8_t, 3>> element_colours(const Elements& elements, ColourMode mode, double gap = 0);
 
 struct Image {
   int width = 0, height = 0;

@@ -75,7 +75,7 @@ void set_result(Document& doc, std::shared_ptr<const Pavement> pavement, std::ui
   r = {};
   r.revision = revision;
   r.run_ms = run_ms;
-  r.neighbour_ratios = nearest_neighbor_ratios(pavement->elements);
+  r.neighbour_ratios = nearest_neighbor_ratios(pavement->elements, pavement->design.elements.gap);
   r.ratio_histogram.assign(kHistogramBins, 0.0f);
   for (const double ratio : r.neighbour_ratios) {
     if (!std::isfinite(ratio)) continue;

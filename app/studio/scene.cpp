@@ -27,7 +27,7 @@ bool sync_scene(Scene& scene, render::Renderer& renderer, Document& doc, const L
     // final pavement is exported.
     const PlacedElements placed =
         place_all_elements(*map, *snapshot->pattern, snapshot->points, snapshot->design, false);
-    renderer.set_elements(placed.elements, render::element_colours(placed.elements, views.colour_mode),
+    renderer.set_elements(placed.elements, render::element_colours(placed.elements, views.colour_mode, snapshot->design.elements.gap),
                           custom_shape(doc));
     renderer.set_pattern(*map, *snapshot->pattern, snapshot->points);
     scene.pavement = nullptr;
@@ -40,7 +40,7 @@ bool sync_scene(Scene& scene, render::Renderer& renderer, Document& doc, const L
   if (!result.pavement || result.revision != doc.revision) return false;
   const Pavement& p = *result.pavement;
   if (scene.pavement == &p && !recolour) return false;
-  renderer.set_elements(p.elements, render::element_colours(p.elements, views.colour_mode), custom_shape(doc));
+  renderer.set_elements(p.elements, render::element_colours(p.elements, views.colour_mode, p.design.elements.gap), custom_shape(doc));
   renderer.set_pattern(*map, p.pattern, p.points);
   const bool first_upload = scene.pavement != &p;
   scene.pavement = &p;

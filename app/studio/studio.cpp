@@ -60,7 +60,7 @@ void take_run_outcome(Studio& s) {
   }
   const Pavement& p = *outcome->pavement;
   set_result(s.doc, outcome->pavement, outcome->revision, outcome->milliseconds);
-  report_status(s.doc, std::to_string(p.elements.size()) + " elements, " + std::to_string(p.after.collisions) +
+  report_status(s.doc, std::to_string(p.elements.size()) + " elements, " + std::to_string(p.after.contact_violations) +
                            " collisions; " + std::to_string(p.solve.iterations) + " iterations (" +
                            std::string(stop_reason_name(p.solve.reason)) + ")");
 }

@@ -62,6 +62,8 @@ void validate_pattern(const Validator& v, const PatternDesign& pattern) {
 
 void validate_elements(const Validator& v, const ElementsDesign& elements) {
   v.unit_scale(elements.vertex.scale, "elements.vertex.scale");
+  v.require(std::isfinite(elements.gap) && elements.gap >= 0, "elements.gap", "finite and >= 0 (surface units)",
+            elements.gap);
   std::string custom_user;  // first key that asks for the custom shape
   if (elements.vertex.enabled && elements.vertex.shape == ShapeKind::Custom) custom_user = "elements.vertex.shape";
   for (size_t i = 0; i < elements.edge.size(); ++i) {

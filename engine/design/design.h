@@ -38,6 +38,7 @@ struct ElementsDesign {
   std::vector<EdgeElementDesign> edge;
   std::string custom_shape;               // OBJ/OFF/PLY/STL path for ShapeKind::Custom
   bool allow_overlap = false;             // allow elements that intersect by design (paper Fig. 15)
+  double gap = 0;                         // required free space between footprints, surface units
 };
 
 struct Design {

@@ -64,15 +64,16 @@ double largest_diameter(const Elements& e) {
 
 }  // namespace
 
-std::vector<Collision> find_collisions(const Elements& elements) {
+std::vector<Collision> find_collisions(const Elements& elements, double gap) {
   std::vector<Collision> out;
-  const ElementHash hash(elements, bounding_box(elements), largest_diameter(elements));
+  const ElementHash hash(elements, bounding_box(elements), largest_diameter(elements) + gap);
   for (int i = 0; i < int(elements.size()); ++i) {
     hash.for_each_near(i, [&](int j) {
       if (j < i) return;
-      const double reach = contact_distance(elements.diameter[i], elements.diameter[j]);
+      const double need = contact_distance(elements.diameter[i], elements.diameter[j], gap);
       const double d = glm::length(elements.position[i] - elements.position[j]);
-      if (elements_collide(d, elements.diameter[i], elements.diameter[j])) out.push_back({i, j, d, 1 - d / reach});
+      if (elements_collide(d, elements.diameter[i], elements.diameter[j], gap))
+        out.push_back({i, j, d, 1 - d / need, clearance_between(d, elements.diameter[i], elements.diameter[j])});
     });
   }
   std::sort(out.begin(), out.end(), [](const Collision& a, const Collision& b) {
@@ -81,35 +82,55 @@ std::vector<Collision> find_collisions(const Elements& elements) {
   return out;
 }
 
-std::vector<double> nearest_neighbor_ratios(const Elements& elements) {
+namespace {
+
+// Per element, the smallest `score(i, j, distance)` over all other elements, found without
+// visiting all pairs: the 27 cells around each element, cells two largest diameters wide at first
+// (tight patterns find their nearest neighbour there). Every element outside them is at least one
+// cell away, so a score at or below `floor(i, cell)` (the least score a pair that far apart can
+// have) is the true minimum; the elements left (loose ones, or none found) search again in cells
+// four times wider, until the cells span the whole set. O(n) for tight patterns,
+// O(n log(spread)) for loose ones, never all pairs. +inf for an element alone.
+template <class Score, class Floor>
+std::vector<double> smallest_over_others(const Elements& elements, Score score, Floor floor) {
   const int n = int(elements.size());
-  std::vector<double> ratio(n, std::numeric_limits<double>::infinity());
-  if (n < 2) return ratio;
-  // Search the 27 cells around each element, cells two largest diameters wide at first: tight
-  // patterns (ratios up to ~2) find their nearest neighbour there. Every element outside them is at
-  // least one cell away, so a ratio found below cell / reach_max is the true minimum; the elements
-  // left (loose ones, or none found) search again in cells four times wider, until the cells span
-  // the whole set. O(n) for tight patterns, O(n log(spread)) for loose ones, never all pairs.
-  const double largest = largest_diameter(elements);
+  std::vector<double> best(n, std::numeric_limits<double>::infinity());
+  if (n < 2) return best;
   const Box box = bounding_box(elements);
   const double extent = box.largest_side();
   std::vector<int> pending(n);
   for (int i = 0; i < n; ++i) pending[i] = i;
-  for (double width = 2 * largest; !pending.empty(); width *= 4) {
+  for (double width = 2 * largest_diameter(elements); !pending.empty(); width *= 4) {
     const ElementHash hash(elements, box, width);
     const bool spans_all = hash.cell() >= extent;
     std::vector<int> unresolved;
     for (int i : pending) {
       hash.for_each_near(i, [&](int j) {
-        const double reach = contact_distance(elements.diameter[i], elements.diameter[j]);
-        ratio[i] = std::min(ratio[i], glm::length(elements.position[i] - elements.position[j]) / reach);
+        best[i] = std::min(best[i], score(i, j, glm::length(elements.position[i] - elements.position[j])));
       });
-      if (!spans_all && !(ratio[i] <= hash.cell() / contact_distance(elements.diameter[i], largest)))
-        unresolved.push_back(i);
+      if (!spans_all && !(best[i] <= floor(i, hash.cell()))) unresolved.push_back(i);
     }
     pending.swap(unresolved);
   }
-  return ratio;
+  return best;
+}
+
+}  // namespace
+
+std::vector<double> nearest_neighbor_ratios(const Elements& elements, double gap) {
+  const double largest = largest_diameter(elements);
+  return smallest_over_others(
+      elements,
+      [&](int i, int j, double d) { return d / contact_distance(elements.diameter[i], elements.diameter[j], gap); },
+      [&](int i, double cell) { return cell / contact_distance(elements.diameter[i], largest, gap); });
+}
+
+std::vector<double> nearest_clearances(const Elements& elements) {
+  const double largest = largest_diameter(elements);
+  return smallest_over_others(
+      elements,
+      [&](int i, int j, double d) { return clearance_between(d, elements.diameter[i], elements.diameter[j]); },
+      [&](int i, double cell) { return clearance_between(cell, elements.diameter[i], largest); });
 }
 
 }  // namespace paver

@@ -10,14 +10,20 @@ namespace paver {
 struct Collision {
   int i, j;          // element indices, i < j
   double distance;   // centre distance
-  double overlap;    // 1 - distance / (r_i + r_j): 0 = touching, 1 = same centre
+  double overlap;    // 1 - distance / (r_i + r_j + gap): 0 = just at the required distance, 1 = same centre
+  double clearance;  // distance - r_i - r_j: free space between the footprints (negative = overlap)
 };
 
-// Pairs that collide by the contact rule (elements/contact_rule.h), sorted by (i, j).
-std::vector<Collision> find_collisions(const Elements& elements);
+// Pairs that collide by the contact rule with `gap` (elements/contact_rule.h), sorted by (i, j).
+std::vector<Collision> find_collisions(const Elements& elements, double gap);
 
 // Per element: distance to its nearest other element over (r_i + r_j) — 1 means touching;
 // for equal elements it is the nearest-neighbour distance over the diameter. +inf when alone.
-std::vector<double> nearest_neighbor_ratios(const Elements& elements);
+// With a gap, the ratio is over (r_i + r_j + gap): below 1 means the pair violates the contact rule.
+std::vector<double> nearest_neighbor_ratios(const Elements& elements, double gap = 0);
+
+// Per element: the smallest free space to any other element, distance - r_i - r_j (negative =
+// overlap); exact over all pairs. +inf when alone.
+std::vector<double> nearest_clearances(const Elements& elements);
 
 }  // namespace paver

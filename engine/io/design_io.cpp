@@ -192,11 +192,12 @@ public:
   }
 
   void read(const json& value, const std::string& path, ElementsDesign& out) const {
-    check_object(value, path, {"vertex", "edge", "custom_shape", "allow_overlap"});
+    check_object(value, path, {"vertex", "edge", "custom_shape", "allow_overlap", "gap"});
     field(value, path, "vertex", out.vertex);
     field(value, path, "edge", out.edge);
     field(value, path, "custom_shape", out.custom_shape);
     field(value, path, "allow_overlap", out.allow_overlap);
+    field(value, path, "gap", out.gap);
   }
 
   void read(const json& value, const std::string& path, Placement& out) const {
@@ -304,6 +305,7 @@ Json to_json(const Design& design) {
   elements_json["edge"] = std::move(edges);
   elements_json["custom_shape"] = elements.custom_shape;
   elements_json["allow_overlap"] = elements.allow_overlap;
+  elements_json["gap"] = elements.gap;
 
   Json placement = Json::object();
   placement["offset"] = Json::array({design.placement.offset.x, design.placement.offset.y});

@@ -18,8 +18,12 @@ SurfaceMap make_surface_map(SurfaceMesh mesh, std::vector<glm::dvec2> uv) {
   map.normals = vertex_normals(map.mesh);
   map.curvature = mean_curvature(map.mesh);
   if (!map.curvature.empty()) {
-    const auto [lo, hi] = std::minmax_element(map.curvature.begin(), map.curvature.end());
-    map.curvature_min = *lo, map.curvature_max = *hi;
+    // Percentiles, not the extremes: one sliver's huge |H| would squeeze every other vertex into
+    // the bottom of the range, and c and m would act nowhere on a scanned mesh.
+    std::vector<double> sorted = map.curvature;
+    std::sort(sorted.begin(), sorted.end());
+    const auto at = [&](double p) { return sorted[size_t(p * double(sorted.size() - 1) + 0.5)]; };
+    map.curvature_min = at(kCurvatureLowPercentile), map.curvature_max = at(kCurvatureHighPercentile);
   }
   map.uv_min = glm::dvec2(std::numeric_limits<double>::infinity());
   map.uv_max = -map.uv_min;

@@ -12,12 +12,15 @@
 
 namespace paver {
 
+inline constexpr double kCurvatureLowPercentile = 0.05;
+inline constexpr double kCurvatureHighPercentile = 0.95;
+
 struct SurfaceMap {
   SurfaceMesh mesh;                    // M: positions, triangles, boundary loop
   std::vector<glm::dvec2> uv;          // #V: M^, 2D area equals 3D area
   std::vector<glm::dvec3> normals;     // #V unit vertex normals
   std::vector<double> curvature;       // #V mean curvature |H|
-  double curvature_min = 0, curvature_max = 0;
+  double curvature_min = 0, curvature_max = 0;  // |H| at the percentiles below: eq. 5's normalisation
   UvGrid grid;
   glm::dvec2 uv_min{0}, uv_max{0};     // bounding box of M^ (its centre is O(M^), eq. 12)
   Parameterization parameterization;   // how the map was made and how good it is

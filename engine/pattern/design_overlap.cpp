@@ -29,7 +29,7 @@ std::string format(double v) {
 
 }  // namespace
 
-void check_design_overlaps(const UnitCell& cell, const ElementsDesign& design, double spacing) {
+void check_design_overlaps(const UnitCell& cell, const ElementsDesign& design, double spacing, double gap) {
   // Elements of the cells around the origin cell: enough to see every neighbour of its own. An
   // edge reaching k cells away carries elements up to k cells out, whose neighbours lie up to two
   // cells further (a lattice cell is no smaller than an element).
@@ -67,11 +67,18 @@ void check_design_overlaps(const UnitCell& cell, const ElementsDesign& design, d
     for (size_t j = 0; j < all.size(); ++j) {
       if (j == i) continue;
       const double d = glm::length(all[i].centre - all[j].centre);
-      const double need = all[i].radius + all[j].radius;
-      if (elements_collide(d, 2 * all[i].radius, 2 * all[j].radius))
-        throw InputError("the design's elements overlap: " + all[i].name + " and " + all[j].name +
-                         " are " + format(d / spacing) + " D apart but need " + format(need / spacing) +
-                         " D; reduce their scales or move t (or set elements.allow_overlap to allow it)");
+      const double need = contact_distance(2 * all[i].radius, 2 * all[j].radius, gap);
+      // The lattice's positions come from cos/sin: elements that touch by design (scale 1 on a
+      // triangle lattice) sit at D up to rounding, which must not read as an overlap.
+      const double rounding = 1e-9 * spacing;
+      if (elements_collide(d + rounding, 2 * all[i].radius, 2 * all[j].radius, gap))
+        throw InputError(std::string(gap > 0 ? "the design's elements are closer than the gap: "
+                                             : "the design's elements overlap: ") +
+                         all[i].name + " and " + all[j].name + " are " + format(d / spacing) +
+                         " D apart but need " + format(need / spacing) + " D" +
+                         (gap > 0 ? " (their radii plus elements.gap)" : "") +
+                         "; reduce their scales, move t" + (gap > 0 ? ", reduce the gap or raise the spacing" : "") +
+                         " (or set elements.allow_overlap to allow it)");
     }
 }
 

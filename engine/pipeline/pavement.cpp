@@ -55,7 +55,12 @@ UnitCell check_design_cell(const Design& design) {
         throw InputError("elements.edge[" + std::to_string(s) + "].cell_edges: edge " + std::to_string(e) +
                          " does not exist; the unit cell has edges 0.." + std::to_string(unit_cell.edges.size() - 1));
   if (!design.elements.allow_overlap) check_design_overlaps(unit_cell, design.elements, 1.0);
-  return design.pattern.spacing > 0 && design.pattern.spacing != 1 ? make_design_cell(design.pattern) : unit_cell;
+  if (design.pattern.spacing <= 0) return unit_cell;
+  UnitCell cell = design.pattern.spacing != 1 ? make_design_cell(design.pattern) : unit_cell;
+  // The gap is in surface units: it is checked at the real spacing, once that is known.
+  if (!design.elements.allow_overlap && design.elements.gap > 0)
+    check_design_overlaps(cell, design.elements, design.pattern.spacing, design.elements.gap);
+  return cell;
 }
 
 Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptions& options) {
@@ -64,6 +69,7 @@ Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptio
   if (design.pattern.spacing <= 0)
     design.pattern.spacing = default_spacing(map.mesh, design.pattern.tessellation);
   pavement.cell = check_design_cell(design);
+  const QualityBasis basis = quality_basis(pavement.cell, design.elements, design.solver);
   pavement.pattern = build_pattern(map, pavement.cell, design.placement);
   pavement.points = pavement.pattern.points;
   pavement.timings.emplace_back("pattern", ms_since(t0));
@@ -71,7 +77,7 @@ Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptio
 
   t0 = Clock::now();
   const PlacedElements initial = place_all_elements(map, pavement.pattern, pavement.points, design, options.postprocess);
-  pavement.before = measure_pavement(map, pavement.pattern, pavement.points, initial.elements, design.solver);
+  pavement.before = measure_pavement(map, pavement.pattern, pavement.points, initial.elements, basis);
   pavement.timings.emplace_back("measure_initial", ms_since(t0));
 
   pavement.retired.assign(pavement.points.size(), 0);
@@ -95,7 +101,7 @@ Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptio
     t0 = Clock::now();
     pavement.elements = place(pavement.points, system.stray_count);
     pavement.paper =
-        measure_pavement(map, pavement.pattern, pavement.points, pavement.elements, design.solver, &pavement.retired);
+        measure_pavement(map, pavement.pattern, pavement.points, pavement.elements, basis, &pavement.retired);
     pavement.timings.emplace_back("measure_paper", ms_since(t0));
     // Designs that overlap on purpose keep their overlaps.
     if (options.resolve_collisions && !design.elements.allow_overlap) {
@@ -111,7 +117,7 @@ Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptio
 
   t0 = Clock::now();
   pavement.after =
-      measure_pavement(map, pavement.pattern, pavement.points, pavement.elements, design.solver, &pavement.retired);
+      measure_pavement(map, pavement.pattern, pavement.points, pavement.elements, basis, &pavement.retired);
   pavement.timings.emplace_back("measure", ms_since(t0));
   pavement.design = std::move(design);
   return pavement;

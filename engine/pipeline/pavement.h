@@ -59,8 +59,8 @@ UnitCell make_design_cell(const PatternDesign& pattern);
 
 // The design's checks that need no surface: its operators apply to the unit cell, E-elements name
 // cell edges that exist, and (unless allowed) no two elements overlap in the regular lattice.
-// Scale-free, so a design whose spacing is still 0 (derived later) is checked at D = 1. Throws
-// InputError naming the key.
+// Scale-free, so a design whose spacing is still 0 (derived later) is checked at D = 1; a gap
+// (surface units) is checked once the spacing is known. Throws InputError naming the key.
 UnitCell check_design_cell(const Design& design);
 
 // Resolves spacing 0 to the surface's default and checks the design (check_design_cell), then

@@ -30,7 +30,7 @@ void write_run_files(const fs::path& folder, const Pavement& pavement, const Run
   make_output_folder(folder);
   ElementMeshOptions mesh_options;
   mesh_options.custom = options.custom;
-  const auto colours = neighbor_ratio_colours(nearest_neighbor_ratios(pavement.elements));
+  const auto colours = contact_colours(pavement.elements, pavement.design.elements.gap);
   mesh_options.colours = &colours;
   write_placements_csv(folder / "placements.csv", pavement.elements);
   write_elements_ply(folder / "elements.ply", pavement.elements, mesh_options);

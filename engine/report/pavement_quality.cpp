@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+
 #include <numbers>
 #include <numeric>
 
@@ -113,18 +114,79 @@ double spacing_curvature_correlation(const SurfaceMap& map, const Elements& elem
   return pearson(ranks(s), ranks(k));
 }
 
+namespace {
+double boundary_length(const SurfaceMesh& mesh) {
+  double length = 0;
+  const std::vector<int>& loop = mesh.boundary_loop;
+  for (size_t k = 0; k < loop.size(); ++k)
+    length += glm::length(mesh.positions[loop[(k + 1) % loop.size()]] - mesh.positions[loop[k]]);
+  return length;
+}
+}  // namespace
+
+// Mean over the surface (vertex weights: a third of each triangle's area) of the squared spacing
+// factor of eq. 5, 1 + c + m * normalised |H|: a curvature-aware design asks for that much more
+// area per element. 1 for a uniform design.
+double mean_area_factor(const SurfaceMap& map, const SolverParams& params) {
+  if (params.c == 0 && params.m == 0) return 1;
+  const SurfaceMesh& mesh = map.mesh;
+  std::vector<double> weight(mesh.positions.size(), 0.0);
+  for (const glm::ivec3& t : mesh.triangles) {
+    const double third = glm::length(glm::cross(mesh.positions[t.y] - mesh.positions[t.x],
+                                                mesh.positions[t.z] - mesh.positions[t.x])) / 6;
+    weight[t.x] += third, weight[t.y] += third, weight[t.z] += third;
+  }
+  const double range = map.curvature_max - map.curvature_min;
+  double sum = 0, total = 0;
+  for (size_t v = 0; v < weight.size() && v < map.curvature.size(); ++v) {
+    const double normalised = range > 0 ? std::clamp((map.curvature[v] - map.curvature_min) / range, 0.0, 1.0) : 0.0;
+    const double factor = 1 + params.c + params.m * normalised;
+    sum += weight[v] * factor * factor, total += weight[v];
+  }
+  return total > 0 ? sum / total : 1;
+}
+
+double ideal_element_count(const SurfaceMap& map, const QualityBasis& basis) {
+  if (!(basis.area_per_element > 0)) return 0;
+  const double area = surface_area(map.mesh) - basis.boundary_strip * boundary_length(map.mesh);
+  return std::max(area, 0.0) / (basis.area_per_element * mean_area_factor(map, basis.solver));
+}
+
+QualityBasis quality_basis(const UnitCell& cell, const ElementsDesign& elements, const SolverParams& solver) {
+  QualityBasis basis;
+  basis.solver = solver;
+  basis.gap = elements.gap;
+  double per_cell = 0, largest = 0;
+  if (elements.vertex.enabled) per_cell += double(cell.vertices.size());
+  for (const EdgeElementDesign& spec : elements.edge) {
+    for (int e = 0; e < int(cell.edges.size()); ++e)
+      if (!cell.edges[e].is_virtual &&
+          (spec.cell_edges.empty() || std::find(spec.cell_edges.begin(), spec.cell_edges.end(), e) != spec.cell_edges.end()))
+        ++per_cell;
+    largest = std::max(largest, spec.scale * cell.spacing);
+  }
+  if (per_cell > 0) basis.area_per_element = std::abs(cell.cell_area()) / per_cell;
+  basis.boundary_strip = 0.5 * (elements.vertex.enabled ? elements.vertex.scale * cell.spacing : largest);
+  return basis;
+}
+
 PavementQuality measure_pavement(const SurfaceMap& map, const Pattern& pattern,
                                  const std::vector<glm::dvec2>& points, const Elements& elements,
-                                 const SolverParams& params, const std::vector<std::uint8_t>* retired) {
+                                 const QualityBasis& basis, const std::vector<std::uint8_t>* retired) {
   PavementQuality q;
   q.elements = long(elements.size());
   q.vertex_elements = std::count(elements.kind.begin(), elements.kind.end(), ElementKind::Vertex);
   q.edge_elements = q.elements - q.vertex_elements;
-  const std::vector<Collision> collisions = find_collisions(elements);
-  q.collisions = long(collisions.size());
+  q.gap = basis.gap;
+  const std::vector<Collision> collisions = find_collisions(elements, basis.gap);
+  q.contact_violations = long(collisions.size());
   for (const Collision& c : collisions) q.worst_overlap = std::max(q.worst_overlap, c.overlap);
+  const Distribution clearance = distribution_of(nearest_clearances(elements));
+  q.min_clearance = clearance.min;
+  const double ideal = ideal_element_count(map, basis);
+  q.fill = ideal > 0 ? double(q.elements) / ideal : 0;
   q.neighbor_ratio = distribution_of(nearest_neighbor_ratios(elements));
-  std::vector<double> deviation = spring_length_ratios(map, pattern, points, params, retired);
+  std::vector<double> deviation = spring_length_ratios(map, pattern, points, basis.solver, retired);
   for (double& r : deviation) r = std::abs(r - 1);
   const Distribution dev = distribution_of(deviation);
   q.spring_deviation_median = dev.median;
@@ -149,8 +211,11 @@ nlohmann::json to_json(const PavementQuality& q) {
       {"elements", q.elements},
       {"vertex_elements", q.vertex_elements},
       {"edge_elements", q.edge_elements},
-      {"collisions", q.collisions},
+      {"contact_violations", q.contact_violations},
       {"worst_overlap", q.worst_overlap},
+      {"min_clearance", q.min_clearance},
+      {"gap", q.gap},
+      {"fill", q.fill},
       {"neighbor_ratio", dist(q.neighbor_ratio)},
       {"spring_deviation_median", q.spring_deviation_median},
       {"spring_deviation_p95", q.spring_deviation_p95},
@@ -160,14 +225,19 @@ nlohmann::json to_json(const PavementQuality& q) {
   };
 }
 
+std::vector<std::array<std::uint8_t, 3>> contact_colours(const Elements& elements, double gap) {
+  return neighbor_ratio_colours(nearest_neighbor_ratios(elements, gap));
+}
+
 std::vector<std::array<std::uint8_t, 3>> neighbor_ratio_colours(const std::vector<double>& ratios) {
-  // Stops: red below 0.90, orange to yellow up to the collision threshold (kContactFactor), dark green at
-  // touching (1.0, the target of a uniform design), light green when loose (1.3 and more).
+  // Ratios are over the required distance (radii plus gap): red below 0.90, orange to yellow just
+  // below 1 (still a violation), dark green at 1 (touching with the gap, the target of a uniform
+  // design), light green when loose (1.3 and more).
   struct Stop {
     double ratio;
     double r, g, b;
   };
-  static constexpr Stop stops[] = {{0.90, 215, 25, 28},  {0.97, 244, 109, 67}, {kContactFactor, 254, 224, 139},
+  static constexpr Stop stops[] = {{0.90, 215, 25, 28},  {0.97, 244, 109, 67}, {0.9999, 254, 224, 139},
                                    {1.00, 26, 152, 80},  {1.30, 199, 233, 160}};
   std::vector<std::array<std::uint8_t, 3>> colours(ratios.size());
   for (size_t i = 0; i < ratios.size(); ++i) {

@@ -5,6 +5,7 @@
 #include "design/design.h"
 #include "elements/elements.h"
 #include "pattern/pattern.h"
+#include "pattern/unit_cell.h"
 #include "map/surface_map.h"
 
 #include <nlohmann/json_fwd.hpp>
@@ -23,10 +24,22 @@ struct Distribution {
 
 Distribution distribution_of(std::vector<double> values);
 
+// What the figures are measured against: the design's solver parameters (spring targets), its gap
+// and its ideal density.
+struct QualityBasis {
+  SolverParams solver;
+  double gap = 0;                   // elements.gap: the contact rule's required free space
+  double area_per_element = 0;      // the regular pattern's area per element; 0 = fill not measured
+  double boundary_strip = 0;        // half an element diameter: the strip along the boundary left bare
+};
+
 struct PavementQuality {
   long elements = 0, vertex_elements = 0, edge_elements = 0;
-  long collisions = 0;              // pairs that collide by the contact rule (elements/contact_rule.h)
-  double worst_overlap = 0;         // max of 1 - d / (r_i + r_j) over colliding pairs
+  long contact_violations = 0;      // pairs closer than r_i + r_j + gap (elements/contact_rule.h), all pairs
+  double worst_overlap = 0;         // max of 1 - d / (r_i + r_j + gap) over violating pairs
+  double min_clearance = 0;         // smallest d - r_i - r_j over all pairs, surface units (negative = overlap)
+  double gap = 0;                   // the gap it was measured with
+  double fill = 0;                  // elements / the ideal count (QualityBasis), 0 when not measured
   Distribution neighbor_ratio;      // nearest-neighbour distance / (r_i + r_j)
   double spring_deviation_median = 0;  // |3D length / L_ab - 1| over pattern (non-virtual) edges
   double spring_deviation_p95 = 0;
@@ -45,13 +58,26 @@ std::vector<double> spring_length_ratios(const SurfaceMap& map, const Pattern& p
 // distance) and the surface's mean curvature there. 0 when either does not vary.
 double spacing_curvature_correlation(const SurfaceMap& map, const Elements& elements);
 
+// How many elements the ideal pavement puts on the surface: its area less a strip of
+// `basis.boundary_strip` along the boundary, over the area per element (grown by eq. 5's spacing
+// factor, squared and averaged over the surface, for curvature-aware designs). 0 without a basis.
+double ideal_element_count(const SurfaceMap& map, const QualityBasis& basis);
+
+// The basis of a design whose spacing is resolved, with its unit cell at that spacing: the
+// cell's area over the elements one cell carries, and the V-element's (else the largest) radius.
+QualityBasis quality_basis(const UnitCell& cell, const ElementsDesign& elements, const SolverParams& solver);
+
 PavementQuality measure_pavement(const SurfaceMap& map, const Pattern& pattern,
                                  const std::vector<glm::dvec2>& points, const Elements& elements,
-                                 const SolverParams& params, const std::vector<std::uint8_t>* retired = nullptr);
+                                 const QualityBasis& basis, const std::vector<std::uint8_t>* retired = nullptr);
 
 nlohmann::json to_json(const PavementQuality& q);
 
 // Colour per element on the paper's scale: red (too close) through yellow to green (loose).
 std::vector<std::array<std::uint8_t, 3>> neighbor_ratio_colours(const std::vector<double>& ratios);
+
+// The colours of every picture and exported mesh: each element's nearest-neighbour ratio over the
+// required distance (radii plus `gap`), so anything not green-ish violates the contact rule.
+std::vector<std::array<std::uint8_t, 3>> contact_colours(const Elements& elements, double gap);
 
 }  // namespace paver

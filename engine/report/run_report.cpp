@@ -1,6 +1,7 @@
 #include "report/run_report.h"
 
 #include "report/pavement_quality.h"
+#include "report/verdict.h"
 
 #include <nlohmann/json.hpp>
 
@@ -72,6 +73,7 @@ nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const
       {"design", {{"source", info.design_source},
                   {"tessellation", tessellation_name(pavement.design.pattern.tessellation)},
                   {"spacing", pavement.design.pattern.spacing},
+                  {"gap", pavement.design.elements.gap},
                   {"spacing_derived", info.spacing_derived}}},
       {"pattern", {{"cell_edges", pavement.cell.edges.size()},
                    {"points", pattern.point_count()},
@@ -94,6 +96,10 @@ nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const
                                 {"solver_iterations", pavement.resolution.solver_iterations},
                                 {"removed", pavement.resolution.removed},
                                 {"milliseconds", pavement.resolution.milliseconds}}},
+      {"removed", {{"total", pavement.eliminated + pavement.resolution.removed},
+                   {"crossing_the_boundary", pavement.eliminated},
+                   {"still_colliding_after_resolution", pavement.resolution.removed}}},
+      {"verdict", to_json(judge_pavement(pavement.after))},
       {"quality_before", to_json(pavement.before)},
       {"quality_paper_method", to_json(pavement.paper)},
       {"quality_after", to_json(pavement.after)},

@@ -24,10 +24,10 @@ int carrier(const ElementAnchor& anchor, int avoid) {
 }
 
 // Removes one element of every pair that still collides, the one in most collisions first.
-int remove_colliding(Elements& elements) {
+int remove_colliding(Elements& elements, double gap) {
   int removed = 0;
   for (;;) {
-    const std::vector<Collision> collisions = find_collisions(elements);
+    const std::vector<Collision> collisions = find_collisions(elements, gap);
     if (collisions.empty()) return removed;
     std::vector<int> count(elements.size(), 0);
     for (const Collision& c : collisions) ++count[c.i], ++count[c.j];
@@ -70,7 +70,7 @@ Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface,
   std::map<std::pair<int, int>, int> contact_of;  // particle pair -> its contact spring
   LiftedPoints lifted;
   for (int round = 0; round < options.max_rounds; ++round) {
-    const std::vector<Collision> collisions = find_collisions(elements);
+    const std::vector<Collision> collisions = find_collisions(elements, design.elements.gap);
     if (collisions.empty() || (stop && stop->load())) break;
     ++report.rounds;
     lifted.resize(points.size());
@@ -83,7 +83,8 @@ Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface,
       if (pi < 0 || pj < 0 || pi == pj || lifted.triangle[pi] < 0 || lifted.triangle[pj] < 0) continue;
       if (system.stray_count[pi] == kRetired || system.stray_count[pj] == kRetired) continue;
       // The particles must end up as much farther apart as the elements need to.
-      const double need = options.clearance * contact_distance(elements.diameter[c.i], elements.diameter[c.j]);
+      const double need =
+          options.clearance * contact_distance(elements.diameter[c.i], elements.diameter[c.j], design.elements.gap);
       const double stretch = need / std::max(c.distance, 1e-9 * need);
       const double particles = glm::length(lifted.position[pi] - lifted.position[pj]);
       const float rest = float(std::max(particles * stretch, need));
@@ -100,11 +101,14 @@ Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface,
     rebuild_neighbors(system);
     SolverParams params = design.solver;
     params.iterations = options.iterations_per_round;
+    // The round's iterations all run: a pattern at rest but for a few compressed contact springs
+    // moves by less than the convergence threshold per step and would stop before they act.
+    params.threshold = 0;
     report.solver_iterations += solver(surface, system, params, design.pattern.spacing)->solve({}, stop).iterations;
     for (int i = 0; i < system.particle_count(); ++i) points[i] = glm::dvec2(system.position[i]);
     elements = place(points, system.stray_count);
   }
-  report.removed = remove_colliding(elements);
+  report.removed = remove_colliding(elements, design.elements.gap);
   report.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return elements;
 }

@@ -24,7 +24,7 @@ namespace paver {
 struct CollisionResolutionOptions {
   int max_rounds = 8;              // detect + relax rounds
   int iterations_per_round = 60;   // solver iterations after each round of new contact springs
-  double clearance = 1.01;         // contact rest length = clearance * (r_i + r_j)
+  double clearance = 1.01;         // contact rest length = clearance * (r_i + r_j + gap): aims past the rule
 };
 
 struct CollisionResolutionReport {

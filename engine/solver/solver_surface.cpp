@@ -1,5 +1,9 @@
 #include "solver/solver_surface.h"
 
+#include <glm/common.hpp>
+
+#include <limits>
+
 namespace paver {
 namespace {
 
@@ -37,8 +41,16 @@ SolverSurface make_solver_surface(const SurfaceMap& map) {
   const auto& mesh = map.mesh;
   s.uv.reserve(map.uv.size());
   for (const auto& q : map.uv) s.uv.emplace_back(float(q.x), float(q.y));
+  // The solver uses 3D differences only: centred before the cast to float32, a part far from the
+  // origin keeps the precision of one at it.
+  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+  for (const auto& p : mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  const glm::dvec3 middle = mesh.positions.empty() ? glm::dvec3(0) : 0.5 * (lo + hi);
   s.position.reserve(mesh.positions.size());
-  for (const auto& p : mesh.positions) s.position.emplace_back(float(p.x), float(p.y), float(p.z), 0.0f);
+  for (const auto& p : mesh.positions) {
+    const glm::dvec3 q = p - middle;
+    s.position.emplace_back(float(q.x), float(q.y), float(q.z), 0.0f);
+  }
   s.curvature.assign(map.curvature.begin(), map.curvature.end());
   s.triangles.reserve(mesh.triangles.size() * 3);
   for (const auto& t : mesh.triangles) s.triangles.insert(s.triangles.end(), {t.x, t.y, t.z});

@@ -1,5 +1,7 @@
 #include "solver/spring_system.h"
 
+#include "elements/contact_rule.h"
+
 namespace paver {
 
 void rebuild_neighbors(SpringSystem& sys) {
@@ -40,7 +42,9 @@ SpringSystem make_spring_system(const Pattern& pattern) {
   sys.rest_length.resize(e);
   sys.spring_flags.resize(e);
   for (int s = 0; s < e; ++s) {
-    sys.rest_length[s] = float(pattern.edge_rest_length[s]);
+    // Aimed just past the lattice length: where that length is the contact distance (touching
+    // elements), a spring settled within the solver's tolerance must still land on the right side.
+    sys.rest_length[s] = float(pattern.edge_rest_length[s] * (1 + kContactAim));
     sys.spring_flags[s] = pattern.edge_virtual[s] ? kSpringVirtual : 0u;
   }
   sys.target.assign(e, 0.0f);

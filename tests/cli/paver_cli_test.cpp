@@ -623,8 +623,8 @@ TEST_F(PaverRun, OptimizedPavementReportsZeroCollisions) {
                              "--backend", "cpu", "--out", out.string()});
   ASSERT_EQ(r.exit_code, 0) << describe(r);
   const json report = read_json(out / "report.json");
-  EXPECT_GT(report["quality_before"]["collisions"].get<long>(), 0);
-  EXPECT_EQ(report["quality_after"]["collisions"].get<long>(), 0);
+  EXPECT_GT(report["quality_before"]["contact_violations"].get<long>(), 0);
+  EXPECT_EQ(report["quality_after"]["contact_violations"].get<long>(), 0);
   EXPECT_EQ(report["quality_after"]["boundary_crossings"].get<long>(), 0);
   EXPECT_GE(report["quality_after"]["neighbor_ratio"]["p5"].get<double>(), 0.99);
   EXPECT_GT(report["optimization"]["iterations"].get<int>(), 0);
@@ -638,7 +638,7 @@ TEST_F(PaverRun, OptimizedPavementReportsZeroCollisions) {
   const CliResult r2 = paver({"run", "assets/surfaces/dome.obj", "--design", "assets/designs/dome_hex_d6.json",
                               "--no-optimize", "--out", raw.string()});
   ASSERT_EQ(r2.exit_code, 0) << describe(r2);
-  EXPECT_GT(read_json(raw / "report.json")["quality_after"]["collisions"].get<long>(), 0);
+  EXPECT_GT(read_json(raw / "report.json")["quality_after"]["contact_violations"].get<long>(), 0);
 }
 
 
@@ -658,7 +658,7 @@ TEST_F(PaverRun, VulkanBackendWritesTheSamePlacements) {
   const json ra = read_json(cpu / "report.json"), rb = read_json(gpu / "report.json");
   EXPECT_EQ(ra["elements"]["total"], rb["elements"]["total"]);
   EXPECT_EQ(ra["optimization"]["iterations"], rb["optimization"]["iterations"]);
-  EXPECT_EQ(rb["quality_after"]["collisions"].get<long>(), 0);
+  EXPECT_EQ(rb["quality_after"]["contact_violations"].get<long>(), 0);
   // lavapipe computes exactly what the CPU computes; a real GPU may differ in the last bits.
   if (b.out.find("llvmpipe") != std::string::npos) {
     EXPECT_EQ(read_file_text(cpu / "placements.csv"), read_file_text(gpu / "placements.csv"));

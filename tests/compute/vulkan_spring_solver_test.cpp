@@ -137,8 +137,8 @@ TEST(VulkanPipeline, SamePavementAsTheCpu) {
     const Pavement cpu = make_pavement(map_of(surface), design, cpu_options);
     const Pavement gpu = make_pavement(map_of(surface), design, gpu_options);
     EXPECT_EQ(gpu.elements.size(), cpu.elements.size()) << name;
-    EXPECT_EQ(gpu.after.collisions, 0) << name;
-    EXPECT_EQ(gpu.after.collisions, cpu.after.collisions) << name;
+    EXPECT_EQ(gpu.after.contact_violations, 0) << name;
+    EXPECT_EQ(gpu.after.contact_violations, cpu.after.contact_violations) << name;
     EXPECT_EQ(gpu.after.boundary_crossings, cpu.after.boundary_crossings) << name;
     EXPECT_EQ(gpu.resolution.removed, cpu.resolution.removed) << name;
     if (on_lavapipe()) {

@@ -174,7 +174,7 @@ TEST_F(LivePavementTest, VulkanSolverStepsByBatchesAndMatchesTheCpu) {
   ASSERT_TRUE(outcome && outcome->pavement) << (outcome ? outcome->error : "no outcome");
   const Pavement cpu = make_pavement(*map_, other);
   EXPECT_EQ(outcome->pavement->elements.size(), cpu.elements.size());
-  EXPECT_EQ(outcome->pavement->after.collisions, 0);
+  EXPECT_EQ(outcome->pavement->after.contact_violations, 0);
   if (vulkan_solver().context->device().type == "cpu") {
     EXPECT_EQ(outcome->pavement->elements.position, cpu.elements.position) << "bit-identical on lavapipe";
   }

@@ -11,6 +11,7 @@
 #include <imgui_stdlib.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace paver::studio {
@@ -106,6 +107,14 @@ void elements_panel(Document& doc, UiState& ui) {
     }
   }
   help_marker("Elements whose shape is 'custom' use this mesh, normalised to unit width.");
+  double gap = d.elements.gap;
+  if (ImGui::InputDouble("gap", &gap, 0.01, 0.1, "%.4g") && std::isfinite(gap) && gap >= 0) {
+    d.elements.gap = gap;
+    change_design(doc, d, ImGui::IsItemActive());
+  }
+  help_marker("Required free space between neighbouring elements, in surface units (0 = touching). "
+              "Two elements collide when their centres are closer than the sum of their radii plus "
+              "the gap.");
   if (ImGui::Checkbox("allow overlapping elements", &d.elements.allow_overlap)) change_design(doc, d);
   help_marker("Designs whose elements intersect on purpose (paper Fig. 15): no overlap check, no "
               "collision resolution.");

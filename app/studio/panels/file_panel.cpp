@@ -38,7 +38,7 @@ void export_one(Studio& s, const char* name,
     prepare_output(s.doc, path);
     // The same colours as "Export all" and `paver run`: nearest-neighbour ratio.
     const Elements& elements = s.doc.result.pavement->elements;
-    const auto colours = neighbor_ratio_colours(nearest_neighbor_ratios(elements));
+    const auto colours = contact_colours(elements, s.doc.result.pavement->design.elements.gap);
     write(path, elements, {.custom = custom_shape(s.doc), .colours = &colours});
     report_status(s.doc, "wrote " + path.string());
   });

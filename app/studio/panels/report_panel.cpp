@@ -33,8 +33,10 @@ void quality_table(const Pavement& p) {
     }
   };
   row("elements", [](const PavementQuality& x) { return x.elements; }, "%ld");
-  row("collisions", [](const PavementQuality& x) { return x.collisions; }, "%ld");
-  row("worst overlap", [](const PavementQuality& x) { return x.worst_overlap; }, "%.3f");
+  row("contact violations", [](const PavementQuality& x) { return x.contact_violations; }, "%ld");
+  row("worst overlap", [](const PavementQuality& x) { return x.worst_overlap; }, "%.3g");
+  row("min clearance", [](const PavementQuality& x) { return x.min_clearance; }, "%.3g");
+  row("fill", [](const PavementQuality& x) { return x.fill; }, "%.3f");
   row("NN ratio min", [](const PavementQuality& x) { return x.neighbor_ratio.min; }, "%.3f");
   row("NN ratio p5", [](const PavementQuality& x) { return x.neighbor_ratio.p5; }, "%.3f");
   row("NN ratio median", [](const PavementQuality& x) { return x.neighbor_ratio.median; }, "%.3f");
@@ -84,9 +86,10 @@ void report_panel(const Studio& s) {
                        peak * 1.1f, ImVec2(ImGui::GetContentRegionAvail().x, 110));
   char contact[200];
   std::snprintf(contact, sizeof contact,
-                "Per element: distance to the nearest other element over the sum of their radii. Below %.2f "
-                "is a collision; values outside the range are counted in the end bins.",
-                kContactFactor);
+                "Per element: distance to the nearest other element over the sum of their radii plus the "
+                "gap (%.4g). Below 1 violates the contact rule; values outside the range are counted in "
+                "the end bins.",
+                p.design.elements.gap);
   help_marker(contact);
 
   section("Stages (ms)");

@@ -1,7 +1,8 @@
 // Tests for engine/elements/element_proximity.cpp: find_collisions and nearest_neighbor_ratios,
 // which use a spatial hash, give exactly what a plain all-pairs loop written here gives, on random
 // element sets with mixed diameters, pairs placed exactly at the collision threshold and elements
-// sharing a centre; and the threshold itself is strict (d < 0.99 (r_i + r_j)).
+// sharing a centre, at gap 0 and with a gap; and the rule itself is exact and strict
+// (d < r_i + r_j + gap, no tolerance). nearest_clearances likewise against all pairs.
 #include "elements/element_proximity.h"
 
 #include <gtest/gtest.h>
@@ -23,15 +24,25 @@ void add(Elements& e, glm::dvec3 centre, double diameter) {
 
 double reach(const Elements& e, int i, int j) { return 0.5 * (e.diameter[i] + e.diameter[j]); }
 
-// The rule of element_proximity.h, over every pair, with no spatial structure.
-std::vector<Collision> all_pairs_collisions(const Elements& e, double factor) {
+// The contact rule, written out here, over every pair, with no spatial structure.
+std::vector<Collision> all_pairs_collisions(const Elements& e, double gap) {
   std::vector<Collision> out;
   for (int i = 0; i < int(e.size()); ++i)
     for (int j = i + 1; j < int(e.size()); ++j) {
       const double d = glm::length(e.position[i] - e.position[j]);
-      if (d < factor * reach(e, i, j)) out.push_back({i, j, d, 1 - d / reach(e, i, j)});
+      const double need = reach(e, i, j) + gap;
+      if (d < need) out.push_back({i, j, d, 1 - d / need, d - reach(e, i, j)});
     }
   return out;  // already sorted by (i, j)
+}
+
+// min over j != i of d_ij - r_i - r_j; +inf for a lone element.
+std::vector<double> all_pairs_clearances(const Elements& e) {
+  std::vector<double> out(e.size(), std::numeric_limits<double>::infinity());
+  for (int i = 0; i < int(e.size()); ++i)
+    for (int j = 0; j < int(e.size()); ++j)
+      if (j != i) out[i] = std::min(out[i], glm::length(e.position[i] - e.position[j]) - reach(e, i, j));
+  return out;
 }
 
 // min over j != i of d_ij / (r_i + r_j); +inf for a lone element.
@@ -44,22 +55,23 @@ std::vector<double> all_pairs_ratios(const Elements& e) {
 }
 
 // `n` elements in a box of side `side` (centred on `centre`), diameters drawn from a mix of small
-// and large; then pairs put exactly at the threshold along an axis and pairs on one centre.
-Elements random_elements(std::mt19937& rng, int n, double side, glm::dvec3 centre, double factor) {
+// and large; then pairs put exactly at the required distance (radii + gap) along an axis and pairs
+// on one centre.
+Elements random_elements(std::mt19937& rng, int n, double side, glm::dvec3 centre, double gap) {
   std::uniform_real_distribution<double> coordinate(-0.5 * side, 0.5 * side);
   std::uniform_real_distribution<double> small(0.1, 0.5), large(0.8, 2.0);
   std::bernoulli_distribution is_large(0.3);
   Elements e;
   for (int i = 0; i < n; ++i)
     add(e, centre + glm::dvec3(coordinate(rng), coordinate(rng), coordinate(rng)), is_large(rng) ? large(rng) : small(rng));
-  // Partners at exactly factor * (r_i + r_j) from an element (the distance the test's own loop
+  // Partners at exactly r_i + r_j + gap from an element (the distance the test's own loop
   // computes is the one that decides, so the pair lands on whichever side rounding puts it), one
   // ulp closer, and on the same centre.
   std::uniform_int_distribution<int> any(0, n - 1);
   for (int k = 0; k < 60; ++k) {
     const int i = any(rng);
     const double d = is_large(rng) ? large(rng) : small(rng);
-    const double at = factor * 0.5 * (e.diameter[i] + d);
+    const double at = 0.5 * (e.diameter[i] + d) + gap;
     const glm::dvec3 axis = k % 3 == 0 ? glm::dvec3(1, 0, 0) : k % 3 == 1 ? glm::dvec3(0, -1, 0) : glm::dvec3(0, 0, 1);
     switch (k % 4) {
       case 0: add(e, e.position[i] + at * axis, d); break;
@@ -78,6 +90,7 @@ void expect_same_collisions(const std::vector<Collision>& got, const std::vector
     EXPECT_EQ(got[k].j, want[k].j) << k;
     EXPECT_EQ(got[k].distance, want[k].distance) << k;
     EXPECT_EQ(got[k].overlap, want[k].overlap) << k;
+    EXPECT_EQ(got[k].clearance, want[k].clearance) << k;
   }
 }
 
@@ -89,30 +102,41 @@ TEST(ElementProximityCollisions, MatchAllPairsOnRandomMixedSets) {
     double side;
     glm::dvec3 centre;
   } sets[] = {{3000, 14, {0, 0, 0}}, {3000, 30, {0, 0, 0}}, {2000, 20, {-1e4, 3e5, -77.5}}};
-  for (const auto& set : sets) {
-    const Elements e = random_elements(rng, set.n, set.side, set.centre, 0.99);
-    const std::vector<Collision> want = all_pairs_collisions(e, 0.99);
-    ASSERT_GT(want.size(), 60u) << "the set should have collisions to find";
-    expect_same_collisions(find_collisions(e), want);
+  for (const double gap : {0.0, 0.3}) {
+    for (const auto& set : sets) {
+      const Elements e = random_elements(rng, set.n, set.side, set.centre, gap);
+      const std::vector<Collision> want = all_pairs_collisions(e, gap);
+      ASSERT_GT(want.size(), 60u) << "the set should have collisions to find";
+      expect_same_collisions(find_collisions(e, gap), want);
+      const std::vector<double> got = nearest_clearances(e), clear = all_pairs_clearances(e);
+      ASSERT_EQ(got.size(), clear.size());
+      for (size_t i = 0; i < got.size(); ++i) ASSERT_EQ(got[i], clear[i]) << "element " << i << ", gap " << gap;
+    }
   }
 }
 
-TEST(ElementProximityCollisions, ThresholdIsStrict) {
-  // Diameters 2 and 2: the threshold is 0.99 * 2 = 1.98, exactly representable as 2 * 0.99.
-  Elements at;
-  add(at, {0, 0, 0}, 2);
-  add(at, {1.98, 0, 0}, 2);
-  ASSERT_EQ(glm::length(at.position[1] - at.position[0]), 0.99 * 2);
-  EXPECT_TRUE(find_collisions(at).empty()) << "a pair exactly at 0.99 (r_i + r_j) is not a collision";
+TEST(ElementProximityCollisions, TheRuleIsExactWithNoTolerance) {
+  // Diameters 2 and 2: touching at 2; with gap 0.5 they need 2.5. Exactly there is no violation;
+  // one ulp closer is one, and a pair 0.5% short (which a forgiving rule would pass) is one.
+  for (const double gap : {0.0, 0.5}) {
+    const double need = 2 + gap;
+    Elements at;
+    add(at, {0, 0, 0}, 2);
+    add(at, {need, 0, 0}, 2);
+    EXPECT_TRUE(find_collisions(at, gap).empty()) << "a pair exactly at r_i + r_j + gap is fine, gap " << gap;
 
-  Elements below;
-  add(below, {0, 0, 0}, 2);
-  add(below, {std::nextafter(1.98, 0.0), 0, 0}, 2);
-  const std::vector<Collision> c = find_collisions(below);
-  ASSERT_EQ(c.size(), 1u);
-  EXPECT_EQ(c[0].i, 0);
-  EXPECT_EQ(c[0].j, 1);
-  EXPECT_NEAR(c[0].overlap, 0.01, 1e-15);
+    for (const double d : {std::nextafter(need, 0.0), 0.995 * need}) {
+      Elements below;
+      add(below, {0, 0, 0}, 2);
+      add(below, {d, 0, 0}, 2);
+      const std::vector<Collision> c = find_collisions(below, gap);
+      ASSERT_EQ(c.size(), 1u) << "d " << d << ", gap " << gap;
+      EXPECT_EQ(c[0].i, 0);
+      EXPECT_EQ(c[0].j, 1);
+      EXPECT_DOUBLE_EQ(c[0].overlap, 1 - d / need);
+      EXPECT_DOUBLE_EQ(c[0].clearance, d - 2);
+    }
+  }
 }
 
 TEST(ElementProximityCollisions, CoincidentCentresOverlapFully) {
@@ -120,7 +144,7 @@ TEST(ElementProximityCollisions, CoincidentCentresOverlapFully) {
   add(e, {5, 5, 5}, 1);
   add(e, {5, 5, 5}, 0.25);
   add(e, {5, 5, 5}, 3);
-  const std::vector<Collision> c = find_collisions(e);
+  const std::vector<Collision> c = find_collisions(e, 0);
   ASSERT_EQ(c.size(), 3u);
   const int pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
   for (int k = 0; k < 3; ++k) {
@@ -134,10 +158,10 @@ TEST(ElementProximityCollisions, CoincidentCentresOverlapFully) {
 
 TEST(ElementProximityCollisions, EmptyAndSingleSetsHaveNone) {
   Elements e;
-  EXPECT_TRUE(find_collisions(e).empty());
+  EXPECT_TRUE(find_collisions(e, 0).empty());
   EXPECT_TRUE(nearest_neighbor_ratios(e).empty());
   add(e, {1, 2, 3}, 1);
-  EXPECT_TRUE(find_collisions(e).empty());
+  EXPECT_TRUE(find_collisions(e, 0).empty());
   ASSERT_EQ(nearest_neighbor_ratios(e).size(), 1u);
   EXPECT_EQ(nearest_neighbor_ratios(e)[0], std::numeric_limits<double>::infinity());
 }
@@ -156,7 +180,7 @@ TEST(ElementProximityNeighbours, MatchAllPairsOnRandomMixedSets) {
   std::mt19937 rng(99);
   // Dense sets: every element has a neighbour within twice its reach.
   for (double side : {14.0, 20.0}) {
-    const Elements e = random_elements(rng, 3000, side, {0, 0, 0}, 0.99);
+    const Elements e = random_elements(rng, 3000, side, {0, 0, 0}, 0.0);
     const std::vector<double> want = all_pairs_ratios(e);
     expect_same_ratios(nearest_neighbor_ratios(e), want);
   }
@@ -191,8 +215,10 @@ TEST(ElementProximityNeighbours, LooseMixedSetsMatchAllPairs) {
 
   // The same on a random loose set (elements a few diameters apart, diameters 0.1 to 2).
   std::mt19937 rng(5);
-  const Elements loose = random_elements(rng, 2000, 60, {0, 0, 0}, 0.99);
+  const Elements loose = random_elements(rng, 2000, 60, {0, 0, 0}, 0.0);
   expect_same_ratios(nearest_neighbor_ratios(loose), all_pairs_ratios(loose));
+  const std::vector<double> clear = nearest_clearances(loose), want_clear = all_pairs_clearances(loose);
+  for (size_t i = 0; i < clear.size(); ++i) ASSERT_EQ(clear[i], want_clear[i]) << "element " << i;
 }
 
 }  // namespace
@@ -210,7 +236,7 @@ TEST(ElementProximityNeighbours, TinyElementsFarFromTheOriginAreExact) {
   for (int y = 0; y < 120; ++y)
     for (int x = 0; x < 120; ++x) add(e, origin + glm::dvec3(2.0 * x + (y % 2), 1.5 * y, 0.25 * ((x * y) % 3)), 1e-9);
   const std::vector<double> r = nearest_neighbor_ratios(e);
-  EXPECT_TRUE(find_collisions(e).empty());
+  EXPECT_TRUE(find_collisions(e, 0).empty());
   // Spot-check against all pairs (the whole set would take the test a while).
   for (int i : {0, 1, 119, 7000, 14399}) {
     double want = std::numeric_limits<double>::infinity();

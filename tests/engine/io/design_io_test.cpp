@@ -150,7 +150,7 @@ TEST(DesignIo, WritesEveryKey) {
   const json j = design_to_json(Design{});
   EXPECT_EQ(j.at("version"), 1);
   EXPECT_EQ(j.at("pattern").size(), 4u);
-  EXPECT_EQ(j.at("elements").size(), 4u);
+  EXPECT_EQ(j.at("elements").size(), 5u);
   EXPECT_EQ(j.at("elements").at("vertex").size(), 3u);
   EXPECT_EQ(j.at("placement").size(), 3u);
   EXPECT_EQ(j.at("solver").size(), 16u);

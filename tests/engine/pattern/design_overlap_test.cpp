@@ -45,9 +45,9 @@ UnitCell cell_of(Tessellation tessellation, double spacing, std::vector<EdgeOper
   return make_design_cell(pattern);
 }
 
-bool accepted(Tessellation tessellation, const ElementsDesign& elements, double spacing = 6) {
+bool accepted(Tessellation tessellation, const ElementsDesign& elements, double spacing = 6, double gap = 0) {
   try {
-    check_design_overlaps(cell_of(tessellation, spacing), elements, spacing);
+    check_design_overlaps(cell_of(tessellation, spacing), elements, spacing, gap);
     return true;
   } catch (const InputError&) {
     return false;
@@ -56,7 +56,7 @@ bool accepted(Tessellation tessellation, const ElementsDesign& elements, double 
 
 TEST(DesignOverlap, VertexAndMidEdgeElementsOverlappingAreRefusedByName) {
   // Honeycomb, D = 6: a V-element and the E-element at the middle of its edge are D/2 apart.
-  // Scales 0.5 and 0.52 need (0.5 + 0.52) / 2 = 0.51 D > 0.5 D / 0.99.
+  // Scales 0.5 and 0.52 need (0.5 + 0.52) / 2 = 0.51 D > 0.5 D.
   const double spacing = 6;
   const std::string message = error_of([&] {
     check_design_overlaps(cell_of(Tessellation::Hexagon, spacing), elements_with(0.5, {edge_element(0.5, 0.52)}),
@@ -65,15 +65,15 @@ TEST(DesignOverlap, VertexAndMidEdgeElementsOverlappingAreRefusedByName) {
   EXPECT_TRUE(Contains(message, "the design's elements overlap"));
   EXPECT_TRUE(Contains(message, "the V-element on cell vertex 0 and elements.edge[0] on cell edge 0"));
   EXPECT_TRUE(Contains(message, "are 0.5 D apart but need 0.51 D"));
-  EXPECT_TRUE(Contains(message, "reduce their scales or move t"));
+  EXPECT_TRUE(Contains(message, "reduce their scales, move t"));
   EXPECT_TRUE(Contains(message, "elements.allow_overlap"));
 }
 
 TEST(DesignOverlap, JustBelowTheLimitIsAcceptedJustAboveIsRefused) {
-  // The limit is scale_v + scale_e = 1 / 0.99 = 1.010101... with the E-element at mid-edge.
+  // The limit is exact: scale_v + scale_e = 1 with the E-element at mid-edge; no 1% forgiven.
   for (double spacing : {1.0, 6.0, 18.0}) {
-    EXPECT_TRUE(accepted(Tessellation::Hexagon, elements_with(0.5, {edge_element(0.5, 0.5101)}), spacing)) << spacing;
-    EXPECT_FALSE(accepted(Tessellation::Hexagon, elements_with(0.5, {edge_element(0.5, 0.5102)}), spacing)) << spacing;
+    EXPECT_TRUE(accepted(Tessellation::Hexagon, elements_with(0.5, {edge_element(0.5, 0.4999)}), spacing)) << spacing;
+    EXPECT_FALSE(accepted(Tessellation::Hexagon, elements_with(0.5, {edge_element(0.5, 0.5001)}), spacing)) << spacing;
     // Touching exactly (scales summing to 1) is what a uniform design does: accepted.
     EXPECT_TRUE(accepted(Tessellation::Hexagon, elements_with(0.5, {edge_element(0.5, 0.5)}), spacing)) << spacing;
   }
@@ -83,14 +83,26 @@ TEST(DesignOverlap, JustBelowTheLimitIsAcceptedJustAboveIsRefused) {
 }
 
 TEST(DesignOverlap, MidEdgeElementsOfATriangleMeetAtHalfTheSpacing) {
-  // The three mid-edge points of a triangle are D/2 apart: the limit is scale 0.5 / 0.99 = 0.50505.
-  EXPECT_TRUE(accepted(Tessellation::Triangle, elements_with(0, {edge_element(0.5, 0.505)})));
+  // The three mid-edge points of a triangle are D/2 apart: the limit is scale 0.5, exactly.
+  EXPECT_TRUE(accepted(Tessellation::Triangle, elements_with(0, {edge_element(0.5, 0.5)})));
   const std::string message = error_of([] {
-    check_design_overlaps(cell_of(Tessellation::Triangle, 4), elements_with(0, {edge_element(0.5, 0.5052)}), 4);
+    check_design_overlaps(cell_of(Tessellation::Triangle, 4), elements_with(0, {edge_element(0.5, 0.52)}), 4);
   });
   EXPECT_TRUE(Contains(message, "elements.edge[0] on cell edge "));
   EXPECT_TRUE(Contains(message, " and elements.edge[0] on cell edge "));
-  EXPECT_TRUE(Contains(message, "are 0.5 D apart but need 0.505 D"));
+  EXPECT_TRUE(Contains(message, "are 0.5 D apart but need 0.52 D"));
+}
+
+TEST(DesignOverlap, TheGapIsPartOfTheRule) {
+  // Triangle lattice, D = 10, V-elements of scale 0.9 (diameter 9): the free space is 1.
+  EXPECT_TRUE(accepted(Tessellation::Triangle, elements_with(0.9, {}), 10, 1.0));
+  EXPECT_FALSE(accepted(Tessellation::Triangle, elements_with(0.9, {}), 10, 1.01));
+  const std::string message = error_of([] {
+    check_design_overlaps(cell_of(Tessellation::Triangle, 10), elements_with(1, {}), 10, 0.5);
+  });
+  EXPECT_TRUE(Contains(message, "closer than the gap"));
+  EXPECT_TRUE(Contains(message, "are 1 D apart but need 1.05 D (their radii plus elements.gap)"));
+  EXPECT_TRUE(Contains(message, "reduce the gap or raise the spacing"));
 }
 
 TEST(DesignOverlap, TwoEElementsOnOneEdgeAreNamedWithTheirIndices) {

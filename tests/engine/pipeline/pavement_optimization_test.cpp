@@ -35,9 +35,9 @@ TEST_P(BundledDesign, ReachesZeroCollisionsAndCrossings) {
   const Design design = load_design(test::source_dir() / "assets/designs" / name);
   const Pavement p = make_pavement(map_of(surfaces.at(name)), design);
   EXPECT_GT(p.after.elements, 40) << name;
-  EXPECT_EQ(p.after.collisions, 0) << name;
+  EXPECT_EQ(p.after.contact_violations, 0) << name;
   EXPECT_EQ(p.after.boundary_crossings, 0) << name;
-  EXPECT_EQ(find_collisions(p.elements).size(), 0u) << name;
+  EXPECT_EQ(find_collisions(p.elements, p.design.elements.gap).size(), 0u) << name;
   // The optimizer, not the last-resort removal, does the work: at most 2% of elements removed.
   EXPECT_LE(p.resolution.removed, 0.02 * double(p.after.elements)) << name;
   if (is_uniform_spheres_of_diameter_d(design)) {
@@ -45,7 +45,7 @@ TEST_P(BundledDesign, ReachesZeroCollisionsAndCrossings) {
     EXPECT_LE(p.after.neighbor_ratio.median, 1.05) << name;
   }
   // Every design starts with collisions the optimizer has to remove, or none at all.
-  EXPECT_LE(p.after.collisions, p.before.collisions) << name;
+  EXPECT_LE(p.after.contact_violations, p.before.contact_violations) << name;
 }
 
 INSTANTIATE_TEST_SUITE_P(Assets, BundledDesign, ::testing::ValuesIn([] {
@@ -78,14 +78,14 @@ TEST_P(ScannedSurface, UniformPatternIsCollisionFreeAndRegular) {
   design.pattern.tessellation = GetParam();
   const Pavement p = make_pavement(bunnyhead(), design);
   EXPECT_GT(p.after.elements, 300);
-  EXPECT_EQ(p.after.collisions, 0);
+  EXPECT_EQ(p.after.contact_violations, 0);
   EXPECT_EQ(p.after.boundary_crossings, 0);
   EXPECT_GE(p.after.neighbor_ratio.p5, 0.99);
   EXPECT_LE(p.after.neighbor_ratio.median, 1.05);
   // The initial pavement had collisions: the optimizer removed them (contact springs finish
   // what the paper's forces leave; see docs/solver.md for the figures of each).
-  EXPECT_GT(p.before.collisions, 0);
-  EXPECT_LT(p.paper.collisions, p.before.collisions);
+  EXPECT_GT(p.before.contact_violations, 0);
+  EXPECT_LT(p.paper.contact_violations, p.before.contact_violations);
 }
 
 INSTANTIATE_TEST_SUITE_P(Bunnyhead, ScannedSurface,
@@ -101,6 +101,7 @@ Pavement saddle_with_margins(double c, double m) {
   design.solver.c = c;
   design.solver.m = m;
   design.solver.lambda_g = 0.001;  // the paper's value for curvature-aware designs
+  design.solver.iterations = 3000;  // as the bundled curvature-aware design: growing by 30-80% is slow
   return make_pavement(map_of("saddle.obj"), design);
 }
 
@@ -112,7 +113,7 @@ TEST(CurvatureAwareSpacing, PositiveMSpreadsNegativeMCrowdsZeroIsUniform) {
   EXPECT_LT(denser.after.spacing_curvature_spearman, -0.3);
   EXPECT_LT(std::abs(uniform.after.spacing_curvature_spearman), 0.3);
   EXPECT_LT(uniform.after.neighbor_ratio.cv, looser.after.neighbor_ratio.cv);
-  for (const Pavement* p : {&looser, &denser, &uniform}) EXPECT_EQ(p->after.collisions, 0);
+  for (const Pavement* p : {&looser, &denser, &uniform}) EXPECT_EQ(p->after.contact_violations, 0);
   // The margin c = 0.3 keeps gaps between elements: nearest neighbours are >= 1.3 D apart mostly.
   EXPECT_GT(uniform.after.neighbor_ratio.median, 1.25);
 }

@@ -180,7 +180,7 @@ TEST_F(RunPipeline, TinyElementsPaveLikeAnyOther) {
   request.design.elements.vertex.scale = 1e-9;
   const PipelineResult result = run_pipeline(request);
   EXPECT_GT(result.pavement.elements.size(), 100u);
-  EXPECT_EQ(result.pavement.after.collisions, 0);
+  EXPECT_EQ(result.pavement.after.contact_violations, 0);
   EXPECT_GT(result.pavement.after.neighbor_ratio.min, 1e8) << "elements a billionth of D apart by D";
 }
 

@@ -44,7 +44,7 @@ void add(Elements& e, double x, double y, double diameter, ElementKind kind = El
 //   pair 1.6 apart               0.8, 0.8   collision, overlap 0.2
 //   pair 2.4 apart               1.2, 1.2
 //   diameters 2 and 1, 1.35 apart  0.9, 0.9  collision, overlap 0.1
-//   pair 1.99 apart              0.995, 0.995 (not a collision: the rule is 0.99)
+//   pair 1.99 apart              0.995, 0.995 collision, overlap 0.005 (the rule forgives nothing)
 //   diameters 2 and 1, one centre  0, 0      collision, overlap 1
 //   pair 0.9 from the boundary   1, 1       the first crosses the boundary
 //   pair 1.1 from the boundary   1, 1       neither crosses
@@ -64,7 +64,7 @@ Elements known_set() {
 const std::vector<double> kKnownRatios = {1, 1, 1.5, 0.8, 0.8, 1.2, 1.2, 0.9, 0.9, 0.995, 0.995, 0, 0, 1, 1, 1, 1};
 
 PavementQuality measure(const Elements& elements) {
-  return measure_pavement(flat_map(), Pattern{}, {}, elements, SolverParams{});
+  return measure_pavement(flat_map(), Pattern{}, {}, elements, QualityBasis{});
 }
 
 TEST(PavementQualityKnownSet, CountsElementsByKind) {
@@ -76,8 +76,9 @@ TEST(PavementQualityKnownSet, CountsElementsByKind) {
 
 TEST(PavementQualityKnownSet, CountsCollisionsAndTheWorstOverlap) {
   const PavementQuality q = measure(known_set());
-  EXPECT_EQ(q.collisions, 3);
+  EXPECT_EQ(q.contact_violations, 4);
   EXPECT_DOUBLE_EQ(q.worst_overlap, 1) << "the pair on one centre";
+  EXPECT_DOUBLE_EQ(q.min_clearance, -1.5) << "the pair on one centre: radii 1 and 0.5";
 
   // Without the coincident pair the worst is the pair 1.6 apart: 1 - 1.6 / 2.
   Elements e;
@@ -85,8 +86,34 @@ TEST(PavementQualityKnownSet, CountsCollisionsAndTheWorstOverlap) {
   add(e, 70, 50, 2), add(e, 71.35, 50, 1);
   add(e, 50, 20, 2), add(e, 51.99, 20, 2);
   const PavementQuality q2 = measure(e);
-  EXPECT_EQ(q2.collisions, 2);
+  EXPECT_EQ(q2.contact_violations, 3);
   EXPECT_NEAR(q2.worst_overlap, 0.2, 1e-12);
+  EXPECT_NEAR(q2.min_clearance, -0.4, 1e-12);
+
+  // With a gap of 0.5 the pair 2.4 apart (clearance 0.4) violates too; 2.5 apart does not.
+  Elements spaced;
+  add(spaced, 30, 50, 2), add(spaced, 32.4, 50, 2);
+  add(spaced, 60, 50, 2), add(spaced, 62.5, 50, 2);
+  QualityBasis basis;
+  basis.gap = 0.5;
+  const PavementQuality q3 = measure_pavement(flat_map(), Pattern{}, {}, spaced, basis);
+  EXPECT_EQ(q3.contact_violations, 1);
+  EXPECT_EQ(q3.gap, 0.5);
+  EXPECT_NEAR(q3.worst_overlap, 1 - 2.4 / 2.5, 1e-12);
+  EXPECT_NEAR(q3.min_clearance, 0.4, 1e-12);
+}
+
+TEST(PavementQualityKnownSet, FillCountsAgainstTheIdealDensity) {
+  // 100 x 100 square, 1 element per 10 x 10 cell, strip of 1 along a boundary 400 long: ideal 96.
+  QualityBasis basis;
+  basis.area_per_element = 100;
+  basis.boundary_strip = 1;
+  EXPECT_NEAR(ideal_element_count(flat_map(), basis), (kSide * kSide - 400) / 100, 1e-9);
+  Elements e;
+  for (int i = 0; i < 48; ++i) add(e, 5 + 10 * (i % 8), 5 + 10 * (i / 8), 2);
+  const PavementQuality q = measure_pavement(flat_map(), Pattern{}, {}, e, basis);
+  EXPECT_NEAR(q.fill, 0.5, 1e-9);
+  EXPECT_EQ(measure(e).fill, 0) << "no basis, no fill";
 }
 
 TEST(PavementQualityKnownSet, NeighbourRatioDistribution) {
@@ -116,7 +143,7 @@ TEST(PavementQualityKnownSet, BoundaryCrossingsAndCoverage) {
 TEST(PavementQualityKnownSet, EmptyAndLoneElementSetsMeasureZero) {
   const PavementQuality none = measure(Elements{});
   EXPECT_EQ(none.elements, 0);
-  EXPECT_EQ(none.collisions, 0);
+  EXPECT_EQ(none.contact_violations, 0);
   EXPECT_EQ(none.worst_overlap, 0);
   EXPECT_EQ(none.neighbor_ratio.max, 0);
   EXPECT_EQ(none.coverage, 0);
@@ -125,7 +152,7 @@ TEST(PavementQualityKnownSet, EmptyAndLoneElementSetsMeasureZero) {
   add(one, 50, 50, 4);
   const PavementQuality q = measure(one);
   EXPECT_EQ(q.elements, 1);
-  EXPECT_EQ(q.collisions, 0);
+  EXPECT_EQ(q.contact_violations, 0);
   // Its ratio is +inf, which a distribution leaves out.
   EXPECT_EQ(q.neighbor_ratio.max, 0);
   EXPECT_EQ(q.neighbor_ratio.mean, 0);
@@ -152,7 +179,7 @@ TEST(PavementQualitySprings, DeviationFromTheRestLengthOverRealEdgesInUse) {
   EXPECT_NEAR(ratios[1], 1.25, 1e-6);
   EXPECT_NEAR(ratios[2], 0.8, 1e-6);
 
-  const PavementQuality q = measure_pavement(map, pattern, pattern.points, Elements{}, SolverParams{}, &retired);
+  const PavementQuality q = measure_pavement(map, pattern, pattern.points, Elements{}, QualityBasis{}, &retired);
   // Deviations 0, 0.25, 0.2: median 0.2, p95 at rank 1.9 = 0.2 + 0.9 * 0.05.
   EXPECT_NEAR(q.spring_deviation_median, 0.2, 1e-6);
   EXPECT_NEAR(q.spring_deviation_p95, 0.245, 1e-6);
@@ -164,7 +191,10 @@ TEST(PavementQualityJson, HoldsEveryFigure) {
   EXPECT_EQ(j["elements"].get<long>(), 17);
   EXPECT_EQ(j["vertex_elements"].get<long>(), 13);
   EXPECT_EQ(j["edge_elements"].get<long>(), 4);
-  EXPECT_EQ(j["collisions"].get<long>(), 3);
+  EXPECT_EQ(j["contact_violations"].get<long>(), 4);
+  EXPECT_EQ(j["min_clearance"].get<double>(), q.min_clearance);
+  EXPECT_EQ(j["gap"].get<double>(), 0);
+  EXPECT_EQ(j["fill"].get<double>(), q.fill);
   EXPECT_EQ(j["worst_overlap"].get<double>(), q.worst_overlap);
   EXPECT_EQ(j["boundary_crossings"].get<long>(), 1);
   EXPECT_EQ(j["coverage"].get<double>(), q.coverage);
@@ -176,10 +206,10 @@ TEST(PavementQualityJson, HoldsEveryFigure) {
 TEST(PavementQualityColours, FollowThePapersScale) {
   using Rgb = std::array<std::uint8_t, 3>;
   const std::vector<Rgb> c =
-      neighbor_ratio_colours({0.5, 0.90, 0.99, 1.0, 1.3, 5.0, std::numeric_limits<double>::infinity(), 0.995});
+      neighbor_ratio_colours({0.5, 0.90, 0.9999, 1.0, 1.3, 5.0, std::numeric_limits<double>::infinity(), 0.99995});
   EXPECT_EQ(c[0], (Rgb{215, 25, 28})) << "too close: red";
   EXPECT_EQ(c[1], (Rgb{215, 25, 28}));
-  EXPECT_EQ(c[2], (Rgb{254, 224, 139})) << "at the collision threshold: yellow";
+  EXPECT_EQ(c[2], (Rgb{254, 224, 139})) << "just short of the required distance: yellow";
   EXPECT_EQ(c[3], (Rgb{26, 152, 80})) << "touching: dark green";
   EXPECT_EQ(c[4], (Rgb{199, 233, 160})) << "loose: light green";
   EXPECT_EQ(c[5], c[4]);

@@ -124,9 +124,9 @@ TEST_P(RunReportOnPavement, CountsAgreeWithThePavement) {
   EXPECT_EQ(r["elements"]["vertex"].get<long>(), vertex);
   EXPECT_EQ(r["elements"]["edge"].get<long>(), edge);
   EXPECT_EQ(r["quality_after"]["elements"].get<long>(), long(p.elements.size()));
-  EXPECT_EQ(r["quality_after"]["collisions"].get<long>(), p.after.collisions);
-  EXPECT_EQ(r["quality_paper_method"]["collisions"].get<long>(), p.paper.collisions);
-  EXPECT_EQ(r["quality_before"]["collisions"].get<long>(), p.before.collisions);
+  EXPECT_EQ(r["quality_after"]["contact_violations"].get<long>(), p.after.contact_violations);
+  EXPECT_EQ(r["quality_paper_method"]["contact_violations"].get<long>(), p.paper.contact_violations);
+  EXPECT_EQ(r["quality_before"]["contact_violations"].get<long>(), p.before.contact_violations);
   EXPECT_EQ(r["optimization"]["retired_particles"].get<long>(), retired);
   EXPECT_EQ(r["optimization"]["iterations"].get<int>(), p.solve.iterations);
   EXPECT_EQ(r["postprocess"]["filled"].get<int>(), p.filled);

@@ -1,6 +1,6 @@
 // Tests for engine/solver/collision_resolution.cpp, through make_pavement on bundled designs and
 // checked with an all-pairs loop written here (a collision is a centre distance below
-// 0.99 (r_i + r_j), element_proximity.h): with resolution the final elements have no colliding
+// r_i + r_j + gap, exactly: elements/contact_rule.h): with resolution the final elements have no colliding
 // pair; without it, a design the paper's method leaves colliding still collides. Contact springs
 // do the work when the optimizer was stopped early, the last-resort removal takes out at most one
 // element per pair, and element_anchor names the particles that carry each kind of element.
@@ -25,12 +25,12 @@
 namespace paver {
 namespace {
 
-// The project's collision rule, over every pair of elements.
-std::vector<std::pair<int, int>> colliding_pairs(const Elements& e) {
+// The project's contact rule, written out, over every pair of elements.
+std::vector<std::pair<int, int>> colliding_pairs(const Elements& e, double gap = 0) {
   std::vector<std::pair<int, int>> out;
   for (int i = 0; i < int(e.size()); ++i)
     for (int j = i + 1; j < int(e.size()); ++j)
-      if (glm::length(e.position[i] - e.position[j]) < 0.99 * 0.5 * (e.diameter[i] + e.diameter[j]))
+      if (glm::length(e.position[i] - e.position[j]) < 0.5 * (e.diameter[i] + e.diameter[j]) + gap)
         out.emplace_back(i, j);
   return out;
 }
@@ -63,7 +63,7 @@ TEST_P(CollisionResolutionOnBundledDesign, LeavesNoCollidingPair) {
   const auto pairs = colliding_pairs(p.elements);
   EXPECT_TRUE(pairs.empty()) << pairs.size() << " pairs collide, the first " << pairs.front().first << " and "
                              << pairs.front().second;
-  EXPECT_EQ(p.after.collisions, 0);
+  EXPECT_EQ(p.after.contact_violations, 0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Assets, CollisionResolutionOnBundledDesign,
@@ -79,13 +79,13 @@ TEST(CollisionResolution, WithoutItThePapersMethodLeavesCollisionsOnPendantGems)
   const Pavement off = make_pavement(*b.map, b.design, without_resolution());
   const auto pairs = colliding_pairs(off.elements);
   EXPECT_GT(pairs.size(), 0u);
-  EXPECT_EQ(long(pairs.size()), off.paper.collisions);
-  EXPECT_EQ(off.after.collisions, off.paper.collisions);
+  EXPECT_EQ(long(pairs.size()), off.paper.contact_violations);
+  EXPECT_EQ(off.after.contact_violations, off.paper.contact_violations);
   EXPECT_EQ(off.resolution.rounds, 0);
 
   const Pavement on = make_pavement(*b.map, b.design);
   EXPECT_TRUE(colliding_pairs(on.elements).empty());
-  EXPECT_EQ(on.paper.collisions, off.paper.collisions) << "the same paper's method before resolution";
+  EXPECT_EQ(on.paper.contact_violations, off.paper.contact_violations) << "the same paper's method before resolution";
   EXPECT_GT(on.resolution.rounds, 0);
   // At most one element per colliding pair is given up.
   EXPECT_LE(on.resolution.removed, long(pairs.size()));
@@ -104,7 +104,9 @@ TEST(CollisionResolution, ContactSpringsSeparateWhatAShortOptimizationLeaves) {
   EXPECT_TRUE(colliding_pairs(on.elements).empty());
   EXPECT_GE(on.resolution.rounds, 1);
   EXPECT_GT(on.resolution.contact_springs, 0);
-  EXPECT_LE(on.resolution.contact_springs, long(before.size())) << "one spring per colliding particle pair at most";
+  // One spring per colliding particle pair; later rounds add a few for pairs that the first
+  // round's pushes brought into contact, not one per pair per round.
+  EXPECT_LE(on.resolution.contact_springs, 2 * long(before.size()));
   EXPECT_GT(on.resolution.solver_iterations, 0);
   EXPECT_EQ(on.resolution.removed, 0);
 }
@@ -112,7 +114,7 @@ TEST(CollisionResolution, ContactSpringsSeparateWhatAShortOptimizationLeaves) {
 TEST(CollisionResolution, NothingToResolveNoRounds) {
   const Bundled b = bundled("dome_hex_d6.json");
   const Pavement p = make_pavement(*b.map, b.design);
-  ASSERT_EQ(p.paper.collisions, 0);
+  ASSERT_EQ(p.paper.contact_violations, 0);
   EXPECT_EQ(p.resolution.rounds, 0);
   EXPECT_EQ(p.resolution.contact_springs, 0);
   EXPECT_EQ(p.resolution.removed, 0);

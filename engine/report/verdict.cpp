@@ -1,0 +1,42 @@
+#include "report/verdict.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+
+namespace paver {
+namespace {
+
+std::string format(const char* pattern, double a, double b = 0) {
+  char text[200];
+  std::snprintf(text, sizeof text, pattern, a, b);
+  return text;
+}
+
+}  // namespace
+
+Verdict judge_pavement(const PavementQuality& q) {
+  Verdict v;
+  if (q.elements == 0) v.problems.push_back("no elements were placed");
+  if (q.contact_violations > 0)
+    v.problems.push_back(format("%.0f pairs are closer than their radii plus the gap (smallest clearance %.4g)",
+                                double(q.contact_violations), q.min_clearance));
+  if (q.boundary_crossings > 0)
+    v.problems.push_back(format("%.0f elements cross the surface boundary", double(q.boundary_crossings)));
+  if (q.spring_deviation_p95 > kTornSpringDeviation)
+    v.problems.push_back(format("the pattern is torn: 5%% of its springs are more than %.0f%% off their "
+                                "target (p95 deviation %.3g)",
+                                100 * kTornSpringDeviation, q.spring_deviation_p95));
+  if (q.fill > 0 && q.fill < kBareFill)
+    v.problems.push_back(format("bare patches: %.0f%% of the elements that the pattern's density puts on this "
+                                "surface (below %.0f%%)",
+                                100 * q.fill, 100 * kBareFill));
+  v.ok = v.problems.empty();
+  return v;
+}
+
+nlohmann::json to_json(const Verdict& verdict) {
+  return nlohmann::json{{"ok", verdict.ok}, {"problems", verdict.problems}};
+}
+
+}  // namespace paver

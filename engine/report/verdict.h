@@ -1,0 +1,30 @@
+#pragma once
+// Whether a pavement is fit to use, in one word and a list of reasons: what the summary prints
+// first and report.json carries as `verdict`. A pavement is ok when no pair violates the contact
+// rule, no element crosses the boundary, the pattern is not torn and it is not mostly bare.
+#include "report/pavement_quality.h"
+
+#include <nlohmann/json_fwd.hpp>
+
+#include <string>
+#include <vector>
+
+namespace paver {
+
+// A pattern is torn when the 95th percentile of |3D spring length / target - 1| exceeds this:
+// springs half their target too long or too short are rips and piles, not the stretch a
+// triangle lattice takes on a saddle (0.26 on the bundled saddle, with touching elements).
+inline constexpr double kTornSpringDeviation = 0.5;
+// Fewer elements than this share of the ideal count (quality `fill`) leaves bare patches.
+inline constexpr double kBareFill = 0.85;
+
+struct Verdict {
+  bool ok = true;
+  std::vector<std::string> problems;  // each a sentence with its figures; empty when ok
+};
+
+Verdict judge_pavement(const PavementQuality& final_quality);
+
+nlohmann::json to_json(const Verdict& verdict);
+
+}  // namespace paver
