@@ -43,6 +43,7 @@ struct RunArgs {
   // Section 5 parameters given on the command line (by name, as text), applied over the design's.
   std::vector<std::pair<const SolverParameter*, std::optional<std::string>>> solver_values;
   bool no_resolve = false;
+  bool no_refill = false;
   std::string backend = "auto";
   std::string device;
   bool png = false;
@@ -100,6 +101,7 @@ int run_run(const RunArgs& args) {
   options.postprocess = !args.no_postprocess;
   options.threads = args.threads;
   options.resolve_collisions = !args.no_resolve;
+  options.refill = !args.no_refill;
   options.stop = &interrupt_requested();
   const app::BackendChoice backend = app::choose_backend(args.backend, args.device, args.threads);
   options.solver = backend.factory;
@@ -145,8 +147,8 @@ int run_run(const RunArgs& args) {
               "%d removed still colliding\n",
               backend.name.c_str(), backend.device.empty() ? "" : " on ", backend.device.c_str(), pavement.solve.iterations, std::string(stop_reason_name(pavement.solve.reason)).c_str(),
               pavement.solve.last_max_step, pavement.filled, pavement.eliminated, pavement.resolution.removed);
-  std::printf("elements %zu (%ld V, %ld E)\n", pavement.elements.size(), counts.vertex_elements,
-              counts.edge_elements);
+  std::printf("elements %zu (%ld V, %ld E), %d of them added into bare regions\n", pavement.elements.size(),
+              counts.vertex_elements, counts.edge_elements, pavement.refill.added);
   std::printf("quality (gap %g)\n", pavement.design.elements.gap);
   std::printf("                  violations  min clearance  NN ratio min / p5 / median / p95   cv     crossings  fill\n");
   for (const auto& [label, q] : {std::pair{"  initial", &pavement.before}, std::pair{"  paper's method", &pavement.paper},
@@ -186,7 +188,8 @@ std::function<int()> add_run_command(CLI::App& app) {
       ->check(CLI::Range(0.001, 1e6))
       ->capture_default_str();
   // Every section 5 parameter from the one table, named as in design.json's "solver" object.
-  cmd->add_flag("--no-resolve", args->no_resolve, "Skip the contact-spring collision resolution (paper's method only)");
+  cmd->add_flag("--no-resolve", args->no_resolve, "Skip the contact-spring collision resolution (with --no-refill: the paper's method only)");
+  cmd->add_flag("--no-refill", args->no_refill, "Leave bare regions bare (no elements added where the pattern tore)");
   args->solver_values.reserve(solver_parameters().size());
   for (const SolverParameter& p : solver_parameters()) {
     auto& slot = args->solver_values.emplace_back(&p, std::nullopt);

@@ -114,6 +114,12 @@ Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptio
     pavement.elements = place(pavement.points, {});
     pavement.paper = pavement.before;
   }
+  if (options.refill && !design.elements.allow_overlap) {
+    t0 = Clock::now();
+    pavement.refill =
+        refill_bare_regions(map, pavement.elements, design, basis.area_per_element, options.stop);
+    pavement.timings.emplace_back("refill", ms_since(t0));
+  }
 
   t0 = Clock::now();
   pavement.after =

@@ -4,6 +4,7 @@
 // surface, post-processing, collision resolution and the quality figures. run_pipeline calls it
 // after mapping; the studio re-runs it (through run_pipeline, on its map) on every design change.
 #include "solver/collision_resolution.h"
+#include "elements/refill.h"
 #include "design/design.h"
 #include "elements/elements.h"
 #include "pattern/pattern.h"
@@ -26,6 +27,7 @@ struct PavementOptions {
   bool optimize = true;              // run the section 5 solver
   bool postprocess = true;           // section 5.4: fill boundary edges, eliminate crossing elements
   bool resolve_collisions = true;    // beyond the paper: contact springs until no pair collides
+  bool refill = true;                // beyond the paper: elements into bare regions (elements/refill.h)
   CollisionResolutionOptions resolution;
   int threads = 0;                   // CPU solver threads, 0 = all cores
   SolverFactory solver;              // the backend; empty = the CPU reference with `threads`
@@ -47,6 +49,7 @@ struct Pavement {
   int eliminated = 0;                // elements removed for crossing the boundary
   SolveReport solve;                 // iterations, stop reason, time
   CollisionResolutionReport resolution;
+  RefillReport refill;
   PavementQuality before;            // the initial pavement, post-processed the same way
   PavementQuality paper;             // after the paper's optimizer and post-processing alone
   PavementQuality after;             // the final pavement

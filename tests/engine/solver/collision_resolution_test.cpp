@@ -48,9 +48,11 @@ Bundled bundled(const std::string& design) {
   return {load_design(test::source_dir() / "assets/designs" / design), &map_of(surfaces.at(design))};
 }
 
+// The paper's method alone: no contact springs, no refill.
 PavementOptions without_resolution() {
   PavementOptions options;
   options.resolve_collisions = false;
+  options.refill = false;
   return options;
 }
 
@@ -129,6 +131,7 @@ TEST(CollisionResolution, WithNoRoundsTheLastResortRemovesOneElementPerPair) {
 
   PavementOptions removal_only;
   removal_only.resolution.max_rounds = 0;
+  removal_only.refill = false;
   const Pavement on = make_pavement(*b.map, b.design, removal_only);
   EXPECT_EQ(on.resolution.rounds, 0);
   EXPECT_EQ(on.resolution.contact_springs, 0);

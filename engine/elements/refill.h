@@ -1,0 +1,32 @@
+#pragma once
+// Refill: bare regions get elements. Where the pattern tore, or elements were eliminated at the
+// boundary or removed as a last resort, a pavement has holes a whole element would fit in. Grown
+// outwards from every element in waves: candidates in 12 tangent directions, put on the surface
+// through the map, kept when they stay inside the boundary, keep the contact rule (with the gap)
+// with every element, and lie no closer to any element than the design's own density allows: the
+// spacing of a triangle packing with the design's area per element, times eq. 5's factor
+// (1 + c + m * normalised |H|) there. So a design with margins keeps its margins and a honeycomb
+// is not packed denser than a honeycomb. Linear in the elements (a spatial hash; each element
+// seeds once). Beyond the paper (its future work on combinatorial singularities); the added
+// elements are V-elements of the design's vertex spec, in a close packing of their own.
+#include "design/design.h"
+#include "elements/elements.h"
+#include "map/surface_map.h"
+
+#include <atomic>
+
+namespace paver {
+
+struct RefillReport {
+  int added = 0;
+  int waves = 0;
+  double milliseconds = 0;
+};
+
+// Appends the added elements to `elements` (their source is -1: no pattern point carries them).
+// Does nothing when the design has no V-elements or no element exists to grow from.
+// `design` has its spacing resolved; `area_per_element` is the regular pattern's (QualityBasis).
+RefillReport refill_bare_regions(const SurfaceMap& map, Elements& elements, const Design& design,
+                                 double area_per_element, const std::atomic<bool>* stop = nullptr);
+
+}  // namespace paver
