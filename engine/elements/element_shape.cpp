@@ -3,6 +3,7 @@
 #include "core/input_error.h"
 #include "mesh/read_mesh_file.h"
 
+#include <glm/geometric.hpp>
 #include <glm/common.hpp>
 #include <glm/vec2.hpp>
 
@@ -213,11 +214,16 @@ ShapeMesh load_custom_shape(const std::filesystem::path& path) {
   }
   if (shape.triangles.empty()) shape_error(path, "it has no faces");
 
-  const double width = std::max(hi.x - lo.x, hi.y - lo.y);
+  // The footprint the contact rule assumes is a disc of the element's diameter: the shape is
+  // scaled so that its outline seen along +Z fits the unit disc around its bounding box's centre
+  // (a square fits by its corners, not by its sides).
+  const glm::dvec3 centre = 0.5 * (lo + hi);
+  double reach = 0;
+  for (const glm::dvec3& p : points) reach = std::max(reach, glm::length(glm::dvec2(p - centre)));
+  const double width = 2 * reach;
   if (!(width > 0))
     shape_error(path, "it has no horizontal extent (all vertices lie on one vertical line); "
                       "model it with +Z as the surface normal");
-  const glm::dvec3 centre = 0.5 * (lo + hi);
   shape.positions.reserve(points.size());
   for (const glm::dvec3& p : points) shape.positions.emplace_back((p - centre) / width);
   return shape;

@@ -15,7 +15,8 @@ namespace paver {
 enum class ShapeKind { Sphere, Gem, HexPrism, Disc, Custom };
 
 struct ShapeMesh {
-  std::vector<glm::vec3> positions;   // #V, unit diameter in the XY plane, centred at the origin
+  std::vector<glm::vec3> positions;   // #V, inside the unit-diameter disc in the XY plane (the contact
+                                      // rule's footprint), centred at the origin
   std::vector<glm::ivec3> triangles;  // #F, counter-clockwise seen from outside
 };
 

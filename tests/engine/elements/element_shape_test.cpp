@@ -194,10 +194,16 @@ TEST(ElementShape, LoadCustomShapeNormalisesAndTriangulates) {
   const ShapeMesh shape = load_custom_shape(path);
   EXPECT_EQ(shape.triangles.size(), 12u);
   EXPECT_EQ(shape.positions.size(), 8u);
+  // Scaled so that its outline fits the unit disc: the 4 x 2 footprint's corners reach
+  // sqrt(2^2 + 1^2) = sqrt(5) from its centre, which becomes 0.5.
   const Box box = bounds(shape);
-  EXPECT_NEAR(box.hi.x - box.lo.x, 1.0, 1e-6);
-  EXPECT_NEAR(box.hi.y - box.lo.y, 0.5, 1e-6);
-  EXPECT_NEAR(box.hi.z - box.lo.z, 0.25, 1e-6);
+  const double scale = 0.5 / std::sqrt(5.0);
+  EXPECT_NEAR(box.hi.x - box.lo.x, 4 * scale, 1e-6);
+  EXPECT_NEAR(box.hi.y - box.lo.y, 2 * scale, 1e-6);
+  EXPECT_NEAR(box.hi.z - box.lo.z, 1 * scale, 1e-6);
+  float reach = 0;
+  for (const glm::vec3& p : shape.positions) reach = std::max(reach, std::sqrt(p.x * p.x + p.y * p.y));
+  EXPECT_NEAR(reach, 0.5, 1e-6) << "the footprint touches the element's disc, inside it";
   for (int axis = 0; axis < 3; ++axis) EXPECT_NEAR(box.lo[axis] + box.hi[axis], 0.0, 1e-6);
   expect_closed(shape);
   EXPECT_GT(signed_volume(shape), 0);
@@ -286,6 +292,25 @@ TEST(ElementShape, CoarseShapesAreLighterButStillUnitWideAndClosed) {
     for (const auto& t : coarse.triangles) edges.insert({t.x, t.y}), edges.insert({t.y, t.z}), edges.insert({t.z, t.x});
     for (const auto& [a, b] : edges) EXPECT_TRUE(edges.count({b, a})) << shape_name(kind);
   }
+}
+
+}  // namespace
+}  // namespace paver
+
+namespace paver {
+namespace {
+
+// The contact rule takes each element's footprint as the disc of its diameter: every built-in
+// shape's outline along +Z must fit the unit disc, and fill it (else the rule would be loose).
+TEST(ElementShape, BuiltInFootprintsFitTheUnitDisc) {
+  for (ShapeKind kind : {ShapeKind::Sphere, ShapeKind::Gem, ShapeKind::HexPrism, ShapeKind::Disc})
+    for (ShapeDetail detail : {ShapeDetail::Full, ShapeDetail::Coarse}) {
+      const ShapeMesh shape = make_builtin_shape(kind, detail);
+      float reach = 0;
+      for (const glm::vec3& p : shape.positions) reach = std::max(reach, std::sqrt(p.x * p.x + p.y * p.y));
+      EXPECT_LE(reach, 0.5f + 1e-6f) << shape_name(kind);
+      EXPECT_GE(reach, 0.49f) << shape_name(kind);
+    }
 }
 
 }  // namespace
