@@ -617,6 +617,37 @@ namespace paver::cli_test {
 namespace {
 
 // The optimizer runs by default and the report shows what it did.
+TEST_F(PaverRun, TheGapIsTheUsersAndTheVerdictComesFirst) {
+  // A design whose touching spheres leave no room for a gap is refused before any work, naming the fix.
+  const fs::path refused = dir() / "refused";
+  const CliResult no_room = paver({"run", "assets/surfaces/saddle.obj", "--design", "assets/designs/saddle_hex_d18.json",
+                                   "--gap", "0.5", "--out", refused.string()});
+  EXPECT_EQ(no_room.exit_code, 2) << describe(no_room);
+  EXPECT_NE(no_room.err.find("closer than the gap"), std::string::npos) << no_room.err;
+  EXPECT_FALSE(fs::exists(refused));
+  const CliResult negative = paver({"run", "assets/surfaces/saddle.obj", "--gap", "-1", "--out", refused.string()});
+  EXPECT_EQ(negative.exit_code, 2);
+  EXPECT_NE(negative.err.find("--gap -1"), std::string::npos) << negative.err;
+
+  // Smaller spheres with a gap: every pair keeps it, and the report and summary say so.
+  const fs::path design = dir() / "gap.json";
+  write_file_text(design, R"({"version": 1, "pattern": {"tessellation": "tri", "spacing": 18},
+                         "elements": {"vertex": {"scale": 0.9}, "gap": 1.5}})");
+  const fs::path out = dir() / "gap";
+  const CliResult r = paver({"run", "assets/surfaces/saddle.obj", "--design", design.string(), "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  EXPECT_EQ(r.out.rfind("verdict  ok", 0), 0u) << "the summary starts with the verdict:\n" << r.out;
+  const json report = read_json(out / "report.json");
+  EXPECT_EQ(report["design"]["gap"].get<double>(), 1.5);
+  EXPECT_EQ(report["quality_after"]["gap"].get<double>(), 1.5);
+  EXPECT_EQ(report["quality_after"]["contact_violations"].get<long>(), 0);
+  EXPECT_GE(report["quality_after"]["min_clearance"].get<double>(), 1.5);
+  EXPECT_TRUE(report["verdict"]["ok"].get<bool>());
+  EXPECT_TRUE(report["verdict"]["problems"].empty());
+  EXPECT_TRUE(report["removed"].contains("crossing_the_boundary"));
+  EXPECT_TRUE(report["refill"].contains("added"));
+}
+
 TEST_F(PaverRun, OptimizedPavementReportsZeroCollisions) {
   const fs::path out = dir() / "optimized";
   const CliResult r = paver({"run", "assets/surfaces/dome.obj", "--design", "assets/designs/dome_hex_d6.json",
