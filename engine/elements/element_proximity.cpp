@@ -1,6 +1,6 @@
 #include "elements/element_proximity.h"
 
-#include "elements/cell_grid.h"
+#include "elements/element_hash.h"
 #include "elements/contact_rule.h"
 
 #include <glm/common.hpp>
@@ -8,9 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <limits>
-#include <unordered_map>
 
 namespace paver {
 namespace {
@@ -28,33 +26,9 @@ Box bounding_box(const Elements& e) {
   return box;
 }
 
-// Elements bucketed in cells at least `cell` wide (callers pass one largest diameter, so any
-// touching pair lies in the same or adjacent cells); CellGrid may widen them.
-class ElementHash {
-public:
-  ElementHash(const Elements& e, const Box& box, double cell) : elements_(e), grid_(box.lo, box.hi, cell) {
-    for (int i = 0; i < int(e.size()); ++i) buckets_[CellGrid::key(grid_.cell_of(e.position[i]))].push_back(i);
-  }
-  double cell() const { return grid_.cell; }
-
-  template <class F>
-  void for_each_near(int i, F&& visit) const {
-    const glm::ivec3 c = grid_.cell_of(elements_.position[i]);
-    for (int dz = -1; dz <= 1; ++dz)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const auto it = buckets_.find(CellGrid::key(c + glm::ivec3(dx, dy, dz)));
-          if (it == buckets_.end()) continue;
-          for (int j : it->second)
-            if (j != i) visit(j);
-        }
-  }
-
-private:
-  const Elements& elements_;
-  CellGrid grid_;
-  std::unordered_map<std::uint64_t, std::vector<int>> buckets_;
-};
+// Cells at least `cell` wide over the elements' box (callers pass one largest diameter plus the
+// gap, so any violating pair lies in the same or adjacent cells); CellGrid may widen them.
+ElementHash hash_over(const Elements& e, const Box& box, double cell) { return ElementHash(e, CellGrid(box.lo, box.hi, cell)); }
 
 double largest_diameter(const Elements& e) {
   double d = 0;
@@ -66,10 +40,10 @@ double largest_diameter(const Elements& e) {
 
 std::vector<Collision> find_collisions(const Elements& elements, double gap) {
   std::vector<Collision> out;
-  const ElementHash hash(elements, bounding_box(elements), largest_diameter(elements) + gap);
+  const ElementHash hash = hash_over(elements, bounding_box(elements), largest_diameter(elements) + gap);
   for (int i = 0; i < int(elements.size()); ++i) {
-    hash.for_each_near(i, [&](int j) {
-      if (j < i) return;
+    hash.for_each_near(elements.position[i], [&](int j) {
+      if (j <= i) return;
       const double need = contact_distance(elements.diameter[i], elements.diameter[j], gap);
       const double d = glm::length(elements.position[i] - elements.position[j]);
       if (elements_collide(d, elements.diameter[i], elements.diameter[j], gap))
@@ -101,11 +75,12 @@ std::vector<double> smallest_over_others(const Elements& elements, Score score, 
   std::vector<int> pending(n);
   for (int i = 0; i < n; ++i) pending[i] = i;
   for (double width = 2 * largest_diameter(elements); !pending.empty(); width *= 4) {
-    const ElementHash hash(elements, box, width);
+    const ElementHash hash = hash_over(elements, box, width);
     const bool spans_all = hash.cell() >= extent;
     std::vector<int> unresolved;
     for (int i : pending) {
-      hash.for_each_near(i, [&](int j) {
+      hash.for_each_near(elements.position[i], [&](int j) {
+        if (j == i) return;
         best[i] = std::min(best[i], score(i, j, glm::length(elements.position[i] - elements.position[j])));
       });
       if (!spans_all && !(best[i] <= floor(i, hash.cell()))) unresolved.push_back(i);

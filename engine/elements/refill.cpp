@@ -1,7 +1,7 @@
 #include "elements/refill.h"
 
 #include "elements/boundary_postprocess.h"
-#include "elements/cell_grid.h"
+#include "elements/element_hash.h"
 #include "elements/contact_rule.h"
 #include "map/lifting.h"
 
@@ -13,7 +13,6 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include <unordered_map>
 #include <vector>
 
 namespace paver {
@@ -22,53 +21,41 @@ namespace {
 constexpr int kDirections = 12;
 constexpr int kMaxWaves = 1000;  // a hole is crossed in about its width / D waves
 
-// Elements bucketed in cells one required distance wide, growing as elements are accepted.
-class GrowingHash {
-public:
-  GrowingHash(const Elements& elements, const CellGrid& grid) : elements_(elements), grid_(grid) {
-    for (int i = 0; i < int(elements.size()); ++i) insert(i);
-  }
-  void insert(int i) { buckets_[CellGrid::key(grid_.cell_of(elements_.position[i]))].push_back(i); }
-
-  // Whether a new element of `diameter` at `p` keeps the contact rule with every element and lies
-  // at least `spacing` from each (spacing no more than the hash's cell).
-  bool clear(const glm::dvec3& p, double diameter, double gap, double spacing) const {
-    const glm::ivec3 c = grid_.cell_of(p);
-    for (int dz = -1; dz <= 1; ++dz)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const auto it = buckets_.find(CellGrid::key(c + glm::ivec3(dx, dy, dz)));
-          if (it == buckets_.end()) continue;
-          for (int j : it->second) {
-            const double d = glm::length(p - elements_.position[j]);
-            if (d < spacing || elements_collide(d, diameter, elements_.diameter[j], gap)) return false;
-          }
-        }
-    return true;
-  }
-
-private:
-  const Elements& elements_;
-  const CellGrid& grid_;
-  std::unordered_map<std::uint64_t, std::vector<int>> buckets_;
-};
-
-// 3D tangent displacement -> uv displacement through triangle t's affine map (least squares).
-glm::dvec2 uv_step(const SurfaceMap& map, int t, const glm::dvec3& step) {
-  const glm::ivec3 tri = map.mesh.triangles[t];
-  const glm::dvec2 u0 = map.uv[tri.x], u1 = map.uv[tri.y], u2 = map.uv[tri.z];
-  const glm::dvec3 p0 = map.mesh.positions[tri.x], p1 = map.mesh.positions[tri.y], p2 = map.mesh.positions[tri.z];
-  const glm::dmat2 uv_edges(u1 - u0, u2 - u0);
-  if (std::abs(glm::determinant(uv_edges)) == 0) return glm::dvec2(0);
-  const glm::dmat2 to_bary = glm::inverse(uv_edges);
-  // Columns of the Jacobian dP/du: E = [p1 - p0, p2 - p0] * to_bary.
-  const glm::dvec3 e1 = p1 - p0, e2 = p2 - p0;
-  const glm::dvec3 ju = e1 * to_bary[0][0] + e2 * to_bary[0][1];
-  const glm::dvec3 jv = e1 * to_bary[1][0] + e2 * to_bary[1][1];
-  const glm::dmat2 normal_matrix(glm::dot(ju, ju), glm::dot(ju, jv), glm::dot(jv, ju), glm::dot(jv, jv));
-  if (std::abs(glm::determinant(normal_matrix)) == 0) return glm::dvec2(0);
-  return glm::inverse(normal_matrix) * glm::dvec2(glm::dot(ju, step), glm::dot(jv, step));
+// Whether a new element of `diameter` at `p` keeps the contact rule with every element and lies
+// at least `spacing` from each (spacing no more than the hash's cell).
+bool clears_all(const ElementHash& hash, const Elements& elements, const glm::dvec3& p, double diameter, double gap,
+                double spacing) {
+  bool clear = true;
+  hash.for_each_near(p, [&](int j) {
+    const double d = glm::length(p - elements.position[j]);
+    if (d < spacing || elements_collide(d, diameter, elements.diameter[j], gap)) clear = false;
+  });
+  return clear;
 }
+
+// The least-squares inverse of triangle t's affine map: a 3D tangent displacement to the uv
+// displacement that produces it. Zero for a degenerate triangle.
+struct UvFromTangent {
+  glm::dvec3 ju{0.0}, jv{0.0};  // dP/du, dP/dv
+  glm::dmat2 inverse_normal{0.0};
+
+  UvFromTangent(const SurfaceMap& map, int t) {
+    const glm::ivec3 tri = map.mesh.triangles[t];
+    const glm::dvec2 u0 = map.uv[tri.x];
+    const glm::dmat2 uv_edges(map.uv[tri.y] - u0, map.uv[tri.z] - u0);
+    if (std::abs(glm::determinant(uv_edges)) == 0) return;
+    const glm::dmat2 to_bary = glm::inverse(uv_edges);
+    const glm::dvec3 p0 = map.mesh.positions[tri.x];
+    const glm::dvec3 e1 = map.mesh.positions[tri.y] - p0, e2 = map.mesh.positions[tri.z] - p0;
+    ju = e1 * to_bary[0][0] + e2 * to_bary[0][1];
+    jv = e1 * to_bary[1][0] + e2 * to_bary[1][1];
+    const glm::dmat2 normal(glm::dot(ju, ju), glm::dot(ju, jv), glm::dot(jv, ju), glm::dot(jv, jv));
+    if (std::abs(glm::determinant(normal)) > 0) inverse_normal = glm::inverse(normal);
+  }
+  glm::dvec2 operator()(const glm::dvec3& step) const {
+    return inverse_normal * glm::dvec2(glm::dot(ju, step), glm::dot(jv, step));
+  }
+};
 
 }  // namespace
 
@@ -86,10 +73,8 @@ RefillReport refill_bare_regions(const SurfaceMap& map, Elements& elements, cons
   // Spacing of a triangle packing (sqrt(3)/2 s^2 per element) with the design's density.
   const double packing = std::sqrt(area_per_element / (0.5 * std::sqrt(3.0)));
   const double c = design.solver.c, m = design.solver.m;
-  const double range = map.curvature_max - map.curvature_min;
   const auto local_spacing = [&](double curvature) {
-    const double normalised = range > 0 ? std::clamp((curvature - map.curvature_min) / range, 0.0, 1.0) : 0.0;
-    return packing * (1 + c + m * normalised);
+    return packing * (1 + c + m * normalised_curvature(map, curvature));
   };
   const double widest = packing * (1 + c + std::max(m, 0.0));
 
@@ -97,7 +82,7 @@ RefillReport refill_bare_regions(const SurfaceMap& map, Elements& elements, cons
   for (const glm::dvec3& p : map.mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
   const double reach = std::max(0.5 * (largest + diameter) + gap, widest);
   const CellGrid grid(lo - glm::dvec3(reach), hi + glm::dvec3(reach), reach);
-  GrowingHash hash(elements, grid);
+  ElementHash hash(elements, grid);
 
   std::vector<int> seeds(elements.size());
   for (int i = 0; i < int(elements.size()); ++i) seeds[i] = i;
@@ -121,13 +106,14 @@ RefillReport refill_bare_regions(const SurfaceMap& map, Elements& elements, cons
       glm::dvec3 t1 = map.mesh.positions[tri.y] - map.mesh.positions[tri.x];
       t1 = glm::normalize(t1 - glm::dot(t1, n) * n);
       const glm::dvec3 t2 = glm::cross(n, t1);
+      const UvFromTangent uv_step(map, t);
       const double need = std::max(contact_distance(elements.diameter[s], diameter, gap),
                                    local_spacing(seed_lift.curvature[k])) *
                           (1 + 2 * kContactAim);
       for (int d = 0; d < kDirections; ++d) {
         const double angle = 2 * std::numbers::pi * d / kDirections;
         const glm::dvec3 step = need * (std::cos(angle) * t1 + std::sin(angle) * t2);
-        candidates.push_back(elements.uv[s] + uv_step(map, t, step));
+        candidates.push_back(elements.uv[s] + uv_step(step));
         wanted.push_back(need);
         from.push_back(s);
       }
@@ -151,7 +137,7 @@ RefillReport refill_bare_regions(const SurfaceMap& map, Elements& elements, cons
     std::vector<int> next;
     for (size_t c = 0; c < candidates.size(); ++c) {
       if (lifted.triangle[c] < 0 || to_boundary[c] < 0.5 * diameter) continue;
-      if (!hash.clear(lifted.position[c], diameter, gap, local_spacing(lifted.curvature[c]))) continue;
+      if (!clears_all(hash, elements, lifted.position[c], diameter, gap, local_spacing(lifted.curvature[c]))) continue;
       elements.push_back(ElementKind::Vertex, -1, 0, candidates[c], lifted.position[c], lifted.normal[c], diameter,
                          spec.vertex.shape);
       hash.insert(int(elements.size()) - 1);

@@ -11,6 +11,11 @@
 
 namespace paver {
 
+double normalised_curvature(const SurfaceMap& map, double kappa) {
+  const double range = map.curvature_max - map.curvature_min;
+  return range > 0 ? std::clamp((kappa - map.curvature_min) / range, 0.0, 1.0) : 0.0;
+}
+
 SurfaceMap make_surface_map(SurfaceMesh mesh, std::vector<glm::dvec2> uv) {
   SurfaceMap map;
   map.mesh = std::move(mesh);

@@ -15,6 +15,12 @@ namespace paver {
 inline constexpr double kCurvatureLowPercentile = 0.05;
 inline constexpr double kCurvatureHighPercentile = 0.95;
 
+struct SurfaceMap;
+
+// Eq. 5's normalised curvature: |H| = kappa placed between the map's curvature_min and
+// curvature_max, clamped to [0, 1]; 0 on a surface whose curvature does not vary.
+double normalised_curvature(const SurfaceMap& map, double kappa);
+
 struct SurfaceMap {
   SurfaceMesh mesh;                    // M: positions, triangles, boundary loop
   std::vector<glm::dvec2> uv;          // #V: M^, 2D area equals 3D area
