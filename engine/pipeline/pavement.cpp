@@ -69,7 +69,7 @@ Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptio
   if (design.pattern.spacing <= 0)
     design.pattern.spacing = default_spacing(map.mesh, design.pattern.tessellation);
   pavement.cell = check_design_cell(design);
-  const QualityBasis basis = quality_basis(pavement.cell, design.elements, design.solver);
+  const QualityBasis basis = quality_basis(map, pavement.cell, design.elements, design.solver);
   pavement.pattern = build_pattern(map, pavement.cell, design.placement);
   pavement.points = pavement.pattern.points;
   pavement.timings.emplace_back("pattern", ms_since(t0));

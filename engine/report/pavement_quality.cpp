@@ -81,7 +81,6 @@ std::vector<double> spring_length_ratios(const SurfaceMap& map, const Pattern& p
                                          const std::vector<glm::dvec2>& points, const SolverParams& params,
                                          const std::vector<std::uint8_t>* retired) {
   const LiftedPoints lifted = lift_all(map, points);
-  const double range = map.curvature_max - map.curvature_min;
   std::vector<double> ratios;
   for (int e = 0; e < pattern.edge_count(); ++e) {
     if (pattern.edge_virtual[e]) continue;
@@ -89,7 +88,7 @@ std::vector<double> spring_length_ratios(const SurfaceMap& map, const Pattern& p
     if (lifted.triangle[a] < 0 || lifted.triangle[b] < 0) continue;
     if (retired && ((*retired)[a] || (*retired)[b])) continue;
     const double kappa = std::max(lifted.curvature[a], lifted.curvature[b]);
-    const double normalised = range > 0 ? std::clamp((kappa - map.curvature_min) / range, 0.0, 1.0) : 0.0;
+    const double normalised = normalised_curvature(map, kappa);
     const double rest = pattern.edge_rest_length[e];
     const double target = (params.c + params.m * normalised) * rest + rest;
     ratios.push_back(glm::length(lifted.position[b] - lifted.position[a]) / target);
@@ -136,11 +135,9 @@ double mean_area_factor(const SurfaceMap& map, const SolverParams& params) {
                                                 mesh.positions[t.z] - mesh.positions[t.x])) / 6;
     weight[t.x] += third, weight[t.y] += third, weight[t.z] += third;
   }
-  const double range = map.curvature_max - map.curvature_min;
   double sum = 0, total = 0;
   for (size_t v = 0; v < weight.size() && v < map.curvature.size(); ++v) {
-    const double normalised = range > 0 ? std::clamp((map.curvature[v] - map.curvature_min) / range, 0.0, 1.0) : 0.0;
-    const double factor = 1 + params.c + params.m * normalised;
+    const double factor = 1 + params.c + params.m * normalised_curvature(map, map.curvature[v]);
     sum += weight[v] * factor * factor, total += weight[v];
   }
   return total > 0 ? sum / total : 1;
@@ -152,7 +149,8 @@ double ideal_element_count(const SurfaceMap& map, const QualityBasis& basis) {
   return std::max(area, 0.0) / (basis.area_per_element * mean_area_factor(map, basis.solver));
 }
 
-QualityBasis quality_basis(const UnitCell& cell, const ElementsDesign& elements, const SolverParams& solver) {
+QualityBasis quality_basis(const SurfaceMap& map, const UnitCell& cell, const ElementsDesign& elements,
+                           const SolverParams& solver) {
   QualityBasis basis;
   basis.solver = solver;
   basis.gap = elements.gap;
@@ -167,6 +165,7 @@ QualityBasis quality_basis(const UnitCell& cell, const ElementsDesign& elements,
   }
   if (per_cell > 0) basis.area_per_element = std::abs(cell.cell_area()) / per_cell;
   basis.boundary_strip = 0.5 * (elements.vertex.enabled ? elements.vertex.scale * cell.spacing : largest);
+  basis.ideal_count = ideal_element_count(map, basis);
   return basis;
 }
 
@@ -183,8 +182,7 @@ PavementQuality measure_pavement(const SurfaceMap& map, const Pattern& pattern,
   for (const Collision& c : collisions) q.worst_overlap = std::max(q.worst_overlap, c.overlap);
   const Distribution clearance = distribution_of(nearest_clearances(elements));
   q.min_clearance = clearance.min;
-  const double ideal = ideal_element_count(map, basis);
-  q.fill = ideal > 0 ? double(q.elements) / ideal : 0;
+  q.fill = basis.ideal_count > 0 ? double(q.elements) / basis.ideal_count : 0;
   q.neighbor_ratio = distribution_of(nearest_neighbor_ratios(elements));
   std::vector<double> deviation = spring_length_ratios(map, pattern, points, basis.solver, retired);
   for (double& r : deviation) r = std::abs(r - 1);

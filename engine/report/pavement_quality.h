@@ -31,6 +31,7 @@ struct QualityBasis {
   double gap = 0;                   // elements.gap: the contact rule's required free space
   double area_per_element = 0;      // the regular pattern's area per element; 0 = fill not measured
   double boundary_strip = 0;        // half an element diameter: the strip along the boundary left bare
+  double ideal_count = 0;           // ideal_element_count of the surface: what fill is measured against
 };
 
 struct PavementQuality {
@@ -63,9 +64,11 @@ double spacing_curvature_correlation(const SurfaceMap& map, const Elements& elem
 // factor, squared and averaged over the surface, for curvature-aware designs). 0 without a basis.
 double ideal_element_count(const SurfaceMap& map, const QualityBasis& basis);
 
-// The basis of a design whose spacing is resolved, with its unit cell at that spacing: the
-// cell's area over the elements one cell carries, and the V-element's (else the largest) radius.
-QualityBasis quality_basis(const UnitCell& cell, const ElementsDesign& elements, const SolverParams& solver);
+// The basis of a design whose spacing is resolved, with its unit cell at that spacing, on `map`:
+// the cell's area over the elements one cell carries, the V-element's (else the largest) radius,
+// and the ideal count they give (computed once here, for every measure of the run).
+QualityBasis quality_basis(const SurfaceMap& map, const UnitCell& cell, const ElementsDesign& elements,
+                           const SolverParams& solver);
 
 PavementQuality measure_pavement(const SurfaceMap& map, const Pattern& pattern,
                                  const std::vector<glm::dvec2>& points, const Elements& elements,

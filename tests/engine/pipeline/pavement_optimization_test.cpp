@@ -85,7 +85,7 @@ TEST_P(ScannedSurface, UniformPatternIsCollisionFreeAndRegular) {
   EXPECT_GE(p.after.neighbor_ratio.p5, 0.99);
   // Refill packs bare regions at the design's density in a triangle packing: its spacing over D is
   // 1 for tri, 1.075 for grid, 1.225 for hex, and a fair share of the elements are refilled here.
-  const double packing = std::sqrt(quality_basis(p.cell, design.elements, design.solver).area_per_element /
+  const double packing = std::sqrt(quality_basis(bunnyhead(), p.cell, design.elements, design.solver).area_per_element /
                                    (0.5 * std::sqrt(3.0))) / p.design.pattern.spacing;
   EXPECT_LE(p.after.neighbor_ratio.median, 1.05 * packing);
   PavementOptions no_refill;

@@ -109,6 +109,7 @@ TEST(PavementQualityKnownSet, FillCountsAgainstTheIdealDensity) {
   basis.area_per_element = 100;
   basis.boundary_strip = 1;
   EXPECT_NEAR(ideal_element_count(flat_map(), basis), (kSide * kSide - 400) / 100, 1e-9);
+  basis.ideal_count = ideal_element_count(flat_map(), basis);
   Elements e;
   for (int i = 0; i < 48; ++i) add(e, 5 + 10 * (i % 8), 5 + 10 * (i / 8), 2);
   const PavementQuality q = measure_pavement(flat_map(), Pattern{}, {}, e, basis);
