@@ -56,6 +56,14 @@ void apply_solver_flag(SolverParams& solver, const SolverParameter& p, const std
     throw InputError("--" + std::string(p.flag) + " " + text + ": " + *problem);
 }
 
+// A numeric flag that must be finite and >= 0: its value, or an InputError naming the flag.
+double finite_non_negative(const char* flag, double value, const char* meaning) {
+  if (std::isfinite(value) && value >= 0) return value;
+  std::ostringstream given;
+  given << value;
+  throw InputError(std::string(flag) + " " + given.str() + ": must be finite and >= 0 (" + meaning + ")");
+}
+
 double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
@@ -75,23 +83,11 @@ int run_run(const RunArgs& args) {
   }
   for (const auto& [parameter, value] : args.solver_values)
     if (value) apply_solver_flag(design.solver, *parameter, *value);
-  if (args.spacing) {
-    // Checked here so that a bad flag is not reported as a fault of the design file.
-    if (!(std::isfinite(*args.spacing) && *args.spacing >= 0)) {
-      std::ostringstream given;
-      given << *args.spacing;
-      throw InputError("--spacing " + given.str() + ": must be finite and >= 0 (0 = derive from the surface)");
-    }
-    design.pattern.spacing = *args.spacing;
-  }
-  if (args.gap) {
-    if (!(std::isfinite(*args.gap) && *args.gap >= 0)) {
-      std::ostringstream given;
-      given << *args.gap;
-      throw InputError("--gap " + given.str() + ": must be finite and >= 0 (free space between elements, surface units)");
-    }
-    design.elements.gap = *args.gap;
-  }
+  // Checked here so that a bad flag is not reported as a fault of the design file.
+  if (args.spacing)
+    design.pattern.spacing = finite_non_negative("--spacing", *args.spacing, "0 = derive from the surface");
+  if (args.gap)
+    design.elements.gap = finite_non_negative("--gap", *args.gap, "free space between elements, surface units");
   // What the flags and the file give together (c + m >= 0), named after where it came from.
   validate_design(design, args.design.empty() ? "command line" : args.design);
 

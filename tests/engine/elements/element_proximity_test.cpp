@@ -83,6 +83,20 @@ Elements random_elements(std::mt19937& rng, int n, double side, glm::dvec3 centr
   return e;
 }
 
+// Per element, the search's value must be exactly the all-pairs one; `what` names the function.
+void expect_same_per_element(const std::vector<double>& got, const std::vector<double>& want, const char* what) {
+  ASSERT_EQ(got.size(), want.size());
+  int wrong = 0;
+  for (size_t i = 0; i < want.size(); ++i)
+    if (got[i] != want[i] && ++wrong <= 10)
+      ADD_FAILURE() << "element " << i << ": " << what << " gives " << got[i] << ", all pairs give " << want[i];
+  EXPECT_EQ(wrong, 0) << "elements whose value differs from the all-pairs minimum";
+}
+
+void expect_same_ratios(const std::vector<double>& got, const std::vector<double>& want) {
+  expect_same_per_element(got, want, "nearest_neighbor_ratios");
+}
+
 void expect_same_collisions(const std::vector<Collision>& got, const std::vector<Collision>& want) {
   ASSERT_EQ(got.size(), want.size());
   for (size_t k = 0; k < want.size(); ++k) {
@@ -108,9 +122,7 @@ TEST(ElementProximityCollisions, MatchAllPairsOnRandomMixedSets) {
       const std::vector<Collision> want = all_pairs_collisions(e, gap);
       ASSERT_GT(want.size(), 60u) << "the set should have collisions to find";
       expect_same_collisions(find_collisions(e, gap), want);
-      const std::vector<double> got = nearest_clearances(e), clear = all_pairs_clearances(e);
-      ASSERT_EQ(got.size(), clear.size());
-      for (size_t i = 0; i < got.size(); ++i) ASSERT_EQ(got[i], clear[i]) << "element " << i << ", gap " << gap;
+      expect_same_per_element(nearest_clearances(e), all_pairs_clearances(e), "nearest_clearances");
     }
   }
 }
@@ -166,16 +178,6 @@ TEST(ElementProximityCollisions, EmptyAndSingleSetsHaveNone) {
   EXPECT_EQ(nearest_neighbor_ratios(e)[0], std::numeric_limits<double>::infinity());
 }
 
-void expect_same_ratios(const std::vector<double>& got, const std::vector<double>& want) {
-  ASSERT_EQ(got.size(), want.size());
-  int wrong = 0;
-  for (size_t i = 0; i < want.size(); ++i)
-    if (got[i] != want[i] && ++wrong <= 10)
-      ADD_FAILURE() << "element " << i << ": nearest_neighbor_ratios gives " << got[i] << ", all pairs give "
-                    << want[i];
-  EXPECT_EQ(wrong, 0) << "elements whose ratio differs from the all-pairs minimum";
-}
-
 TEST(ElementProximityNeighbours, MatchAllPairsOnRandomMixedSets) {
   std::mt19937 rng(99);
   // Dense sets: every element has a neighbour within twice its reach.
@@ -217,8 +219,7 @@ TEST(ElementProximityNeighbours, LooseMixedSetsMatchAllPairs) {
   std::mt19937 rng(5);
   const Elements loose = random_elements(rng, 2000, 60, {0, 0, 0}, 0.0);
   expect_same_ratios(nearest_neighbor_ratios(loose), all_pairs_ratios(loose));
-  const std::vector<double> clear = nearest_clearances(loose), want_clear = all_pairs_clearances(loose);
-  for (size_t i = 0; i < clear.size(); ++i) ASSERT_EQ(clear[i], want_clear[i]) << "element " << i;
+  expect_same_per_element(nearest_clearances(loose), all_pairs_clearances(loose), "nearest_clearances");
 }
 
 }  // namespace
