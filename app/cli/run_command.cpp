@@ -34,6 +34,7 @@ struct RunArgs {
   std::string surface;
   std::string design;
   std::string pattern;
+  std::string topology;
   std::optional<double> spacing;
   std::optional<double> gap;
   std::string out = "out";
@@ -80,6 +81,11 @@ int run_run(const RunArgs& args) {
     const auto t = tessellation_from_name(args.pattern);
     if (!t) throw InputError("--pattern " + args.pattern + ": use tri, grid or hex");
     design.pattern.tessellation = *t;
+  }
+  if (!args.topology.empty()) {
+    const auto t = topology_from_name(args.topology);
+    if (!t) throw InputError("--topology " + args.topology + ": use lattice or adaptive");
+    design.pattern.topology = *t;
   }
   for (const auto& [parameter, value] : args.solver_values)
     if (value) apply_solver_flag(design.solver, *parameter, *value);
@@ -135,10 +141,15 @@ int run_run(const RunArgs& args) {
   std::printf("map      ARAP from %s, %d iterations: %d flips, %d boundary overlaps, s1/s2 mean %.3f max %.3f\n",
               pr.start_used == ArapStart::Lscm ? "LSCM" : "Tutte", pr.iterations, q.flipped_triangles,
               q.boundary_intersections, q.stretch_mean, q.stretch_max);
-  std::printf("pattern  %s, D = %g: %d points, %ld edges (+%ld virtual), %ld edges cross the boundary\n",
+  std::printf("pattern  %s %s, D = %g: %d points, %ld edges (+%ld virtual), %ld edges cross the boundary",
               std::string(tessellation_name(pavement.design.pattern.tessellation)).c_str(),
+              std::string(topology_name(pavement.design.pattern.topology)).c_str(),
               pavement.design.pattern.spacing, pavement.pattern.point_count(), counts.pattern_edges,
               counts.virtual_edges, counts.boundary_crossing_edges);
+  if (pavement.pattern.adaptive)
+    std::printf("; %zu point defects, relaxed in %d iterations (%.0f ms)", pavement.pattern.defects.size(),
+                pavement.relaxation.iterations, pavement.relaxation.milliseconds);
+  std::printf("\n");
   std::printf("optimize %s%s%s: %d iterations, %s (last max step %.3g); %d filled, %d eliminated at the boundary, "
               "%d removed still colliding\n",
               backend.name.c_str(), backend.device.empty() ? "" : " on ", backend.device.c_str(), pavement.solve.iterations, std::string(stop_reason_name(pavement.solve.reason)).c_str(),
@@ -169,6 +180,9 @@ std::function<int()> add_run_command(CLI::App& app) {
   cmd->add_option("SURFACE", args->surface, "Open surface: OBJ, OFF, PLY or STL")->required();
   cmd->add_option("--design", args->design, "design.json (flags below override it)");
   cmd->add_option("--pattern", args->pattern, "Tessellation: tri, grid or hex");
+  cmd->add_option("--topology", args->topology,
+                  "lattice (the paper's, default) or adaptive: particles grown on the surface with point defects, "
+                  "for maps that distort a lattice (tri and hex; docs/topology.md)");
   cmd->add_option("--spacing", args->spacing, "Edge length D in surface units (default: from the surface size)");
   cmd->add_option("--gap", args->gap,
                   "Required free space between neighbouring elements, surface units (default 0: touching)");

@@ -10,6 +10,20 @@
 
 namespace paver {
 
+std::string_view topology_name(Topology t) {
+  switch (t) {
+    case Topology::Lattice: return "lattice";
+    case Topology::Adaptive: return "adaptive";
+  }
+  return "lattice";
+}
+
+std::optional<Topology> topology_from_name(std::string_view name) {
+  for (Topology t : {Topology::Lattice, Topology::Adaptive})
+    if (name == topology_name(t)) return t;
+  return std::nullopt;
+}
+
 bool uses_custom_shape(const ElementsDesign& e) {
   if (e.vertex.enabled && e.vertex.shape == ShapeKind::Custom) return true;
   return std::any_of(e.edge.begin(), e.edge.end(), [](const auto& s) { return s.shape == ShapeKind::Custom; });

@@ -1,6 +1,6 @@
 #include "elements/boundary_postprocess.h"
 
-#include "elements/cell_grid.h"
+#include "map/boundary_index.h"
 
 #include "map/lifting.h"
 
@@ -38,12 +38,6 @@ double first_boundary_hit(const SurfaceMap& map, glm::dvec2 p, glm::dvec2 q) {
   return best;
 }
 
-double point_segment_distance(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b) {
-  const glm::dvec3 ab = b - a;
-  const double len2 = glm::dot(ab, ab);
-  const double t = len2 > 0 ? std::clamp(glm::dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-  return glm::length(p - (a + t * ab));
-}
 
 }  // namespace
 
@@ -89,47 +83,13 @@ int fill_boundary_edges(const SurfaceMap& map, const Pattern& pattern, const std
 }
 
 std::vector<double> distances_to_boundary(const SurfaceMap& map, const Elements& elements) {
-  const auto& loop = map.mesh.boundary_loop;
-  const auto& pos = map.mesh.positions;
-  const int n = int(loop.size());
-  double cell = 0;
-  for (double d : elements.diameter) cell = std::max(cell, d);
-  // Cells no smaller than a quarter of the longest boundary segment, so a segment touches at most
-  // a few cells even when the elements are tiny (a wider cell only checks more segments; distances
-  // under one largest diameter stay exact).
-  double longest = 0;
-  for (int i = 0; i < n; ++i) longest = std::max(longest, glm::length(pos[loop[(i + 1) % n]] - pos[loop[i]]));
-  const double cap = cell > 0 ? cell : 1;  // what farther elements report (documented in the header)
-  // Boundary segments bucketed by the cells their bounding boxes touch; an element only needs
-  // the segments within its radius (< one cell) of it; farther ones report at least `cell`.
-  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-  for (int v : loop) lo = glm::min(lo, pos[v]), hi = glm::max(hi, pos[v]);
-  for (const glm::dvec3& p : elements.position) lo = glm::min(lo, p), hi = glm::max(hi, p);
-  const CellGrid grid(lo, hi, std::max(cell, 0.25 * longest));
-  const auto cell_of = [&](const glm::dvec3& p) { return grid.cell_of(p); };
-  const auto key = CellGrid::key;
-  std::unordered_map<std::uint64_t, std::vector<int>> buckets;
-  for (int i = 0; i < n; ++i) {
-    const glm::dvec3 a = pos[loop[i]], b = pos[loop[(i + 1) % n]];
-    const glm::ivec3 c0 = cell_of(glm::min(a, b)), c1 = cell_of(glm::max(a, b));
-    for (int z = c0.z; z <= c1.z; ++z)
-      for (int y = c0.y; y <= c1.y; ++y)
-        for (int x = c0.x; x <= c1.x; ++x) buckets[key({x, y, z})].push_back(i);
-  }
-  std::vector<double> distance(elements.size(), cap);
+  double cap = 0;
+  for (double d : elements.diameter) cap = std::max(cap, d);
+  // Only near elements matter (crossing and coverage tests): farther ones report the cap.
+  const BoundaryIndex boundary(map.mesh, cap > 0 ? cap : 1);
+  std::vector<double> distance(elements.size());
   tbb::parallel_for(tbb::blocked_range<size_t>(0, elements.size(), 256), [&](const tbb::blocked_range<size_t>& r) {
-    for (size_t e = r.begin(); e != r.end(); ++e) {
-      const glm::ivec3 c = cell_of(elements.position[e]);
-      for (int dz = -1; dz <= 1; ++dz)
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dx = -1; dx <= 1; ++dx) {
-            const auto it = buckets.find(key(c + glm::ivec3(dx, dy, dz)));
-            if (it == buckets.end()) continue;
-            for (int i : it->second)
-              distance[e] = std::min(distance[e], point_segment_distance(elements.position[e], pos[loop[i]],
-                                                                         pos[loop[(i + 1) % n]]));
-          }
-    }
+    for (size_t e = r.begin(); e != r.end(); ++e) distance[e] = boundary.nearest(elements.position[e]).distance;
   });
   return distance;
 }

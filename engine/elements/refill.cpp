@@ -4,9 +4,9 @@
 #include "elements/element_hash.h"
 #include "elements/contact_rule.h"
 #include "map/lifting.h"
+#include "map/uv_from_tangent.h"
 
 #include <glm/geometric.hpp>
-#include <glm/mat2x2.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -32,30 +32,6 @@ bool clears_all(const ElementHash& hash, const Elements& elements, const glm::dv
   });
   return clear;
 }
-
-// The least-squares inverse of triangle t's affine map: a 3D tangent displacement to the uv
-// displacement that produces it. Zero for a degenerate triangle.
-struct UvFromTangent {
-  glm::dvec3 ju{0.0}, jv{0.0};  // dP/du, dP/dv
-  glm::dmat2 inverse_normal{0.0};
-
-  UvFromTangent(const SurfaceMap& map, int t) {
-    const glm::ivec3 tri = map.mesh.triangles[t];
-    const glm::dvec2 u0 = map.uv[tri.x];
-    const glm::dmat2 uv_edges(map.uv[tri.y] - u0, map.uv[tri.z] - u0);
-    if (std::abs(glm::determinant(uv_edges)) == 0) return;
-    const glm::dmat2 to_bary = glm::inverse(uv_edges);
-    const glm::dvec3 p0 = map.mesh.positions[tri.x];
-    const glm::dvec3 e1 = map.mesh.positions[tri.y] - p0, e2 = map.mesh.positions[tri.z] - p0;
-    ju = e1 * to_bary[0][0] + e2 * to_bary[0][1];
-    jv = e1 * to_bary[1][0] + e2 * to_bary[1][1];
-    const glm::dmat2 normal(glm::dot(ju, ju), glm::dot(ju, jv), glm::dot(jv, ju), glm::dot(jv, jv));
-    if (std::abs(glm::determinant(normal)) > 0) inverse_normal = glm::inverse(normal);
-  }
-  glm::dvec2 operator()(const glm::dvec3& step) const {
-    return inverse_normal * glm::dvec2(glm::dot(ju, step), glm::dot(jv, step));
-  }
-};
 
 }  // namespace
 

@@ -25,6 +25,7 @@ namespace {
 using nlohmann::json;
 
 constexpr Tessellation kTessellations[] = {Tessellation::Triangle, Tessellation::Grid, Tessellation::Hexagon};
+constexpr Topology kTopologies[] = {Topology::Lattice, Topology::Adaptive};
 constexpr FilterBase kFilterBases[] = {FilterBase::Current, FilterBase::Initial};
 constexpr ShapeKind kShapes[] = {ShapeKind::Sphere, ShapeKind::Gem, ShapeKind::HexPrism, ShapeKind::Disc,
                                  ShapeKind::Custom};
@@ -142,6 +143,9 @@ public:
   void read(const json& value, const std::string& path, Tessellation& out) const {
     read_name(value, path, out, kTessellations, tessellation_name);
   }
+  void read(const json& value, const std::string& path, Topology& out) const {
+    read_name(value, path, out, kTopologies, topology_name);
+  }
   void read(const json& value, const std::string& path, FilterBase& out) const {
     read_name(value, path, out, kFilterBases, filter_base_name);
   }
@@ -169,11 +173,12 @@ public:
   }
 
   void read(const json& value, const std::string& path, PatternDesign& out) const {
-    check_object(value, path, {"tessellation", "spacing", "bracing", "operators"});
+    check_object(value, path, {"tessellation", "spacing", "bracing", "operators", "topology"});
     field(value, path, "tessellation", out.tessellation);
     field(value, path, "spacing", out.spacing);
     field(value, path, "bracing", out.bracing);
     field(value, path, "operators", out.operators);
+    field(value, path, "topology", out.topology);
   }
 
   void read(const json& value, const std::string& path, VertexElementDesign& out) const {
@@ -285,6 +290,7 @@ Json to_json(const Design& design) {
   pattern["spacing"] = design.pattern.spacing;
   pattern["bracing"] = design.pattern.bracing;
   pattern["operators"] = std::move(operators);
+  pattern["topology"] = std::string(topology_name(design.pattern.topology));
 
   const ElementsDesign& elements = design.elements;
   Json vertex = Json::object();

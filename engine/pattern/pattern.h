@@ -34,6 +34,15 @@ struct Pattern {
   };
   std::vector<CrossingEdge> crossing_edges;
 
+  // Point defects of an adaptive pattern (a lattice has none): a particle (tri) or a face (hex:
+  // the points around a pentagon or heptagon) whose valence is not the regular lattice's.
+  struct Defect {
+    int valence;
+    std::vector<int> points;
+  };
+  std::vector<Defect> defects;
+  bool adaptive = false;  // particles relaxed on the surface (adaptive_pattern.h), not a lattice
+
   int point_count() const { return static_cast<int>(points.size()); }
   int edge_count() const { return static_cast<int>(edge_a.size()); }
 };

@@ -1,6 +1,8 @@
 #include "pipeline/pavement.h"
 
 #include "elements/boundary_postprocess.h"
+#include "pattern/adaptive_pattern.h"
+#include "solver/surface_spring_relaxation.h"
 #include "pattern/default_spacing.h"
 #include "pattern/design_overlap.h"
 #include "elements/element_placement.h"
@@ -55,6 +57,10 @@ UnitCell check_design_cell(const Design& design) {
         throw InputError("elements.edge[" + std::to_string(s) + "].cell_edges: edge " + std::to_string(e) +
                          " does not exist; the unit cell has edges 0.." + std::to_string(unit_cell.edges.size() - 1));
   if (!design.elements.allow_overlap) check_design_overlaps(unit_cell, design.elements, 1.0);
+  if (design.pattern.topology == Topology::Adaptive)
+    if (const std::string why = adaptive_pattern_unsupported(design); !why.empty())
+      throw InputError("pattern.topology: \"adaptive\" cannot take this design: " + why +
+                       "; use \"lattice\"");
   if (design.pattern.spacing <= 0) return unit_cell;
   UnitCell cell = design.pattern.spacing != 1 ? make_design_cell(design.pattern) : unit_cell;
   // The gap is in surface units: it is checked at the real spacing, once that is known.
@@ -73,12 +79,24 @@ Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptio
   pavement.pattern = build_pattern(map, pavement.cell, design.placement);
   pavement.points = pavement.pattern.points;
   pavement.timings.emplace_back("pattern", ms_since(t0));
-  if (options.on_pattern) options.on_pattern(pavement.pattern, design);
 
   t0 = Clock::now();
   const PlacedElements initial = place_all_elements(map, pavement.pattern, pavement.points, design, options.postprocess);
   pavement.before = measure_pavement(map, pavement.pattern, pavement.points, initial.elements, basis);
   pavement.timings.emplace_back("measure_initial", ms_since(t0));
+
+  // The adaptive pattern replaces the lattice; the lattice's own figures stay out of the report.
+  if (design.pattern.topology == Topology::Adaptive && pavement.pattern.point_count() > 0) {
+    t0 = Clock::now();
+    AdaptivePattern adaptive = build_adaptive_pattern(map, pavement.cell, design, options.stop);
+    pavement.pattern = std::move(adaptive.pattern);
+    pavement.relaxation = adaptive.relaxation;
+    pavement.points = pavement.pattern.points;
+    const PlacedElements grown = place_all_elements(map, pavement.pattern, pavement.points, design, options.postprocess);
+    pavement.before = measure_pavement(map, pavement.pattern, pavement.points, grown.elements, basis);
+    pavement.timings.emplace_back("adaptive_pattern", ms_since(t0));
+  }
+  if (options.on_pattern) options.on_pattern(pavement.pattern, design);
 
   pavement.retired.assign(pavement.points.size(), 0);
   const auto place = [&](const std::vector<glm::dvec2>& points, const std::vector<std::uint32_t>& stray_count) {
@@ -89,7 +107,22 @@ Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptio
     pavement.eliminated = placed.eliminated;
     return std::move(placed.elements);
   };
-  if (options.optimize && pavement.pattern.point_count() > 0) {
+  if (options.optimize && pavement.pattern.adaptive && pavement.pattern.point_count() > 0) {
+    // The adaptive pattern's own optimizer, on the surface, with contact in it; removal is the
+    // last resort for what still collides.
+    t0 = Clock::now();
+    pavement.solve = relax_pattern_on_surface(map, pavement.pattern, pavement.points, design, {}, options.stop);
+    pavement.timings.emplace_back("optimize", ms_since(t0));
+    t0 = Clock::now();
+    pavement.elements = place(pavement.points, {});
+    pavement.paper = measure_pavement(map, pavement.pattern, pavement.points, pavement.elements, basis, &pavement.retired);
+    pavement.timings.emplace_back("measure_paper", ms_since(t0));
+    if (options.resolve_collisions && !design.elements.allow_overlap) {
+      t0 = Clock::now();
+      pavement.resolution.removed = remove_colliding(pavement.elements, design.elements.gap);
+      pavement.timings.emplace_back("resolve_collisions", ms_since(t0));
+    }
+  } else if (options.optimize && pavement.pattern.point_count() > 0) {
     t0 = Clock::now();
     const SolverSurface surface = make_solver_surface(map);
     SpringSystem system = make_spring_system(pavement.pattern);

@@ -3,6 +3,7 @@
 // design's operators, the trimmed pattern, the optimized particles, the elements lifted to the
 // surface, post-processing, collision resolution and the quality figures. run_pipeline calls it
 // after mapping; the studio re-runs it (through run_pipeline, on its map) on every design change.
+#include "pattern/particle_relaxation.h"
 #include "solver/collision_resolution.h"
 #include "elements/refill.h"
 #include "design/design.h"
@@ -50,6 +51,7 @@ struct Pavement {
   SolveReport solve;                 // iterations, stop reason, time
   CollisionResolutionReport resolution;
   RefillReport refill;
+  RelaxationReport relaxation;       // the adaptive pattern's particle relaxation
   PavementQuality before;            // the initial pavement, post-processed the same way
   PavementQuality paper;             // after the paper's optimizer and post-processing alone
   PavementQuality after;             // the final pavement

@@ -23,7 +23,8 @@ int carrier(const ElementAnchor& anchor, int avoid) {
   return nearer == avoid && other >= 0 ? other : nearer;
 }
 
-// Removes one element of every pair that still collides, the one in most collisions first.
+}  // namespace
+
 int remove_colliding(Elements& elements, double gap) {
   int removed = 0;
   for (;;) {
@@ -35,7 +36,9 @@ int remove_colliding(Elements& elements, double gap) {
     std::vector<std::uint8_t> settled(elements.size(), 0);
     for (const Collision& c : collisions) {
       if (settled[c.i] || settled[c.j]) continue;
-      const int victim = count[c.j] > count[c.i] ? c.j : c.i;
+      // An edge element goes before the vertex element it touches; else the one in more pairs.
+      const bool i_edge = elements.kind[c.i] == ElementKind::Edge, j_edge = elements.kind[c.j] == ElementKind::Edge;
+      const int victim = i_edge != j_edge ? (i_edge ? c.i : c.j) : count[c.j] > count[c.i] ? c.j : c.i;
       remove[victim] = 1;
       settled[c.i] = settled[c.j] = 1;
       ++removed;
@@ -43,8 +46,6 @@ int remove_colliding(Elements& elements, double gap) {
     elements.erase_flagged(remove);
   }
 }
-
-}  // namespace
 
 ElementAnchor element_anchor(const Pattern& pattern, const Elements& elements, int i, const ElementsDesign& design) {
   ElementAnchor anchor;

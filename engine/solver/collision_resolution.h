@@ -47,6 +47,10 @@ ElementAnchor element_anchor(const Pattern& pattern, const Elements& elements, i
 using ElementPlacer =
     std::function<Elements(const std::vector<glm::dvec2>& points, const std::vector<std::uint32_t>& stray_count)>;
 
+// The last resort: removes one element of every pair that still collides (an edge element before
+// the vertex element it touches, else the one in more pairs) until none does; returns how many.
+int remove_colliding(Elements& elements, double gap);
+
 // Resolves collisions by contact springs and returns the final elements; `system` and `points`
 // are updated in place.
 Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface, SpringSystem& system,

@@ -28,6 +28,7 @@ Design non_default_design() {
   d.pattern.tessellation = Tessellation::Grid;
   d.pattern.spacing = 0.1 + 0.2;
   d.pattern.bracing = false;
+  d.pattern.topology = Topology::Adaptive;
   d.pattern.operators.push_back({EdgeOperator::Kind::Flip, 0, 0, {1, -1}, false});
   d.pattern.operators.push_back({EdgeOperator::Kind::Add, 0, 1, {-2, 3}, true});
   d.pattern.operators.push_back({EdgeOperator::Kind::Remove, 1, 0, {0, 1}, false});
@@ -65,6 +66,7 @@ void expect_same(const Design& a, const Design& b) {
   EXPECT_EQ(a.pattern.tessellation, b.pattern.tessellation);
   EXPECT_EQ(a.pattern.spacing, b.pattern.spacing);
   EXPECT_EQ(a.pattern.bracing, b.pattern.bracing);
+  EXPECT_EQ(a.pattern.topology, b.pattern.topology);
   ASSERT_EQ(a.pattern.operators.size(), b.pattern.operators.size());
   for (size_t i = 0; i < a.pattern.operators.size(); ++i) {
     SCOPED_TRACE("operator " + std::to_string(i));
@@ -149,7 +151,8 @@ TEST(DesignIo, RoundTripKeepsEveryField) {
 TEST(DesignIo, WritesEveryKey) {
   const json j = design_to_json(Design{});
   EXPECT_EQ(j.at("version"), 1);
-  EXPECT_EQ(j.at("pattern").size(), 4u);
+  EXPECT_EQ(j.at("pattern").size(), 5u);
+  EXPECT_EQ(j.at("pattern").at("topology"), "lattice");
   EXPECT_EQ(j.at("elements").size(), 5u);
   EXPECT_EQ(j.at("elements").at("vertex").size(), 3u);
   EXPECT_EQ(j.at("placement").size(), 3u);
@@ -160,6 +163,12 @@ TEST(DesignIo, WritesEveryKey) {
   EXPECT_EQ(full.at("elements").at("edge").at(0).size(), 4u);
   EXPECT_EQ(full.at("elements").at("edge").at(0).at("shape"), "hex_prism");
   EXPECT_EQ(full.at("pattern").at("tessellation"), "grid");
+  EXPECT_EQ(full.at("pattern").at("topology"), "adaptive");
+}
+
+TEST(DesignIo, TopologyIsLatticeOrAdaptive) {
+  const std::string message = json_error(R"({"version": 1, "pattern": {"topology": "auto"}})");
+  EXPECT_TRUE(contains(message, "'pattern.topology' must be one of \"lattice\", \"adaptive\"")) << message;
 }
 
 TEST(DesignIo, MissingKeysTakeDefaults) {

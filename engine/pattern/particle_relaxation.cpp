@@ -1,0 +1,238 @@
+#include "pattern/particle_relaxation.h"
+
+#include "elements/cell_grid.h"
+#include "map/boundary_index.h"
+#include "map/lifting.h"
+#include "map/surface_particles.h"
+#include "pattern/surface_triangulation.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <unordered_map>
+
+namespace paver {
+namespace {
+
+constexpr int kIterations = 800;
+constexpr int kPopulationIterations = 400;  // population control only before this
+constexpr int kRetriangulateEvery = 5;
+constexpr double kPressure = 1.1;  // bars push until 1.1x their length (DistMesh: 1.2; 1.1 left fewer defects here)           // DistMesh's Fscale: bars push until 1.2x their length
+constexpr double kStep = 0.2;               // DistMesh's time step
+constexpr double kMaxMove = 0.2;            // of the local spacing per iteration
+constexpr double kSettled = 2e-4;           // of the local spacing: the largest move when settled
+constexpr double kThin = 0.7;               // seeds nearer each other than this x spacing thin out
+constexpr double kCollapseBelow = 0.55;     // a bar this short (x spacing) is a pile-up: merge
+constexpr double kSplitAbove = 1.7;         // a bar this long (x spacing) spans a hole: split
+constexpr double kLongestEdge = 2.5;        // triangles with a longer 3D edge (x spacing) are dropped
+constexpr double kPopulationShare = 0.03;   // population control changes at most 3% per step
+constexpr double kLoose = 1.06;  // the count aims the mean bar 6% past the spacing: room for contact
+constexpr double kCountTolerance = 0.005;   // the count is left alone within 0.5% of the wanted one
+constexpr int kLocalPopulationIterations = 150;  // pile-ups and holes are fixed before this
+
+struct Particles : SurfaceParticles {
+  std::vector<double> spacing;
+
+  // Lifts, drops what fell outside the map (a seed or a split midpoint over a concave boundary)
+  // and updates each particle's wanted spacing.
+  void lift(const SurfaceMap& map, const RelaxationTarget& target) {
+    lift_dropping_outside(map);
+    update_spacing(map, target);
+  }
+  void update_spacing(const SurfaceMap& map, const RelaxationTarget& target) {
+    spacing.resize(uv.size());
+    for (int i = 0; i < size(); ++i) spacing[i] = relaxation_spacing(map, target, lifted.curvature[i]);
+  }
+};
+
+struct Bar {
+  int a, b;
+};
+
+std::vector<Bar> bars_of(const std::vector<glm::ivec3>& triangles) {
+  std::vector<Bar> bars;
+  bars.reserve(triangles.size() * 3);
+  for (const glm::ivec3& t : triangles)
+    for (int k = 0; k < 3; ++k) {
+      const int a = t[k], b = t[(k + 1) % 3];
+      bars.push_back({std::min(a, b), std::max(a, b)});
+    }
+  std::sort(bars.begin(), bars.end(), [](Bar x, Bar y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
+  bars.erase(std::unique(bars.begin(), bars.end(), [](Bar x, Bar y) { return x.a == y.a && x.b == y.b; }),
+             bars.end());
+  return bars;
+}
+
+// Keeps seeds greedily, in their order, when no kept seed lies nearer than kThin x spacing.
+void thin_seeds(Particles& p, double largest_spacing) {
+  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+  for (const glm::dvec3& x : p.lifted.position) lo = glm::min(lo, x), hi = glm::max(hi, x);
+  const CellGrid grid(lo, hi, kThin * largest_spacing);
+  std::unordered_map<std::uint64_t, std::vector<int>> kept_in;
+  std::vector<int> kept;
+  for (int i = 0; i < p.size(); ++i) {
+    const glm::dvec3 x = p.lifted.position[i];
+    const glm::ivec3 c = grid.cell_of(x);
+    bool clear = true;
+    for (int dz = -1; dz <= 1 && clear; ++dz)
+      for (int dy = -1; dy <= 1 && clear; ++dy)
+        for (int dx = -1; dx <= 1 && clear; ++dx) {
+          const auto it = kept_in.find(CellGrid::key(c + glm::ivec3(dx, dy, dz)));
+          if (it == kept_in.end()) continue;
+          for (int j : it->second)
+            if (glm::length(x - p.lifted.position[j]) < kThin * 0.5 * (p.spacing[i] + p.spacing[j])) clear = false;
+        }
+    if (!clear) continue;
+    kept_in[CellGrid::key(c)].push_back(i);
+    kept.push_back(i);
+  }
+  std::vector<glm::dvec2> uv;
+  for (int i : kept) uv.push_back(p.uv[i]);
+  p.uv.swap(uv);
+}
+
+// Collapses pile-ups and splits holes; then, by count, the shortest or longest bars until the
+// mean bar matches the spacing. Each particle takes part in one change per step.
+void control_population(Particles& p, const std::vector<Bar>& bars, bool allow_local, RelaxationReport& report) {
+  const int n = p.size();
+  std::vector<double> ratio(bars.size());
+  double sum_l2 = 0, sum_h2 = 0;
+  for (size_t e = 0; e < bars.size(); ++e) {
+    const double l = glm::length(p.lifted.position[bars[e].a] - p.lifted.position[bars[e].b]);
+    const double h = 0.5 * (p.spacing[bars[e].a] + p.spacing[bars[e].b]);
+    ratio[e] = l / h;
+    sum_l2 += l * l, sum_h2 += h * h;
+  }
+  if (bars.empty() || !(sum_h2 > 0)) return;
+  // Density goes with 1 / spacing^2: the count that would make the mean bar the spacing.
+  const double wanted = n * sum_l2 / (sum_h2 * kLoose * kLoose);
+  const int budget = std::max(1, int(kPopulationShare * n));
+  // Half the difference per step, and none within a tolerance, so the count settles instead of
+  // churning (every change leaves a defect to heal).
+  int change = std::abs(wanted - n) > kCountTolerance * n + 1 ? int(std::lround(0.5 * (wanted - n))) : 0;
+  change = std::clamp(change, -budget, budget);
+  const bool local = allow_local;
+
+  std::vector<int> order(bars.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int x, int y) { return ratio[x] < ratio[y]; });
+  std::vector<char> touched(n, 0), removed(n, 0);
+  std::vector<glm::dvec2> added;
+  const auto collapse = [&](int e) {
+    const Bar b = bars[e];
+    if (touched[b.a] || touched[b.b]) return false;
+    touched[b.a] = touched[b.b] = 1;
+    p.uv[b.a] = 0.5 * (p.uv[b.a] + p.uv[b.b]);
+    removed[b.b] = 1;
+    ++report.removed;
+    return true;
+  };
+  const auto split = [&](int e) {
+    const Bar b = bars[e];
+    if (touched[b.a] || touched[b.b]) return false;
+    touched[b.a] = touched[b.b] = 1;
+    added.push_back(0.5 * (p.uv[b.a] + p.uv[b.b]));
+    ++report.inserted;
+    return true;
+  };
+  int done = 0;
+  for (size_t k = 0; k < order.size() && ((local && ratio[order[k]] < kCollapseBelow) || (change < 0 && done < -change)); ++k)
+    done += collapse(order[k]);
+  done = 0;
+  for (size_t k = order.size(); k-- > 0 && ((local && ratio[order[k]] > kSplitAbove) || (change > 0 && done < change));)
+    done += split(order[k]);
+
+  std::vector<glm::dvec2> uv;
+  uv.reserve(n + added.size());
+  for (int i = 0; i < n; ++i)
+    if (!removed[i]) uv.push_back(p.uv[i]);
+  uv.insert(uv.end(), added.begin(), added.end());
+  p.uv.swap(uv);
+}
+
+}  // namespace
+
+double relaxation_spacing(const SurfaceMap& map, const RelaxationTarget& target, double kappa) {
+  return target.spacing * (1 + target.c + target.m * normalised_curvature(map, kappa));
+}
+
+RelaxedParticles relax_particles(const SurfaceMap& map, const std::vector<glm::dvec2>& seeds,
+                                 const RelaxationTarget& target, const std::atomic<bool>* stop) {
+  const auto t0 = std::chrono::steady_clock::now();
+  RelaxedParticles out;
+  RelaxationReport& report = out.report;
+  const double largest = target.spacing * (1 + target.c + std::max(target.m, 0.0));
+  Particles p;
+  p.uv = seeds;
+  p.lift(map, target);
+  thin_seeds(p, largest);
+  p.lift(map, target);
+  report.seeds_kept = p.size();
+
+  const BoundaryIndex boundary(map.mesh, std::max(target.boundary_margin, 1e-9 * largest) * 2);
+  std::vector<glm::ivec3> triangles;
+  std::vector<Bar> bars;
+  std::vector<glm::dvec3> force;
+  std::vector<glm::dvec3> moved_from;
+  for (int iteration = 0; iteration < kIterations; ++iteration) {
+    if (stop && stop->load()) break;
+    report.iterations = iteration + 1;
+    if (iteration % kRetriangulateEvery == 0) {
+      triangles = triangulate_surface_points(p.uv, p.lifted.position, kLongestEdge * largest);
+      bars = bars_of(triangles);
+      if (iteration > 0 && iteration < kPopulationIterations) {
+        control_population(p, bars, iteration < kLocalPopulationIterations, report);
+        p.lift(map, target);
+        triangles = triangulate_surface_points(p.uv, p.lifted.position, kLongestEdge * largest);
+        bars = bars_of(triangles);
+      }
+    }
+    const int n = p.size();
+    if (n < 3) break;
+    // DistMesh's scale: bars push until they are kPressure times the spacing, scaled by the
+    // present mean, so the pressure spreads the particles evenly whatever their number.
+    double sum_l2 = 0, sum_h2 = 0;
+    for (const Bar& b : bars) {
+      const double l = glm::length(p.lifted.position[b.a] - p.lifted.position[b.b]);
+      const double h = 0.5 * (p.spacing[b.a] + p.spacing[b.b]);
+      sum_l2 += l * l, sum_h2 += h * h;
+    }
+    const double scale = sum_h2 > 0 ? std::sqrt(sum_l2 / sum_h2) : 1;
+    force.assign(n, glm::dvec3(0));
+    for (const Bar& b : bars) {
+      const glm::dvec3 d = p.lifted.position[b.a] - p.lifted.position[b.b];
+      const double l = glm::length(d);
+      const double rest = kPressure * scale * 0.5 * (p.spacing[b.a] + p.spacing[b.b]);
+      if (l <= 0 || l >= rest) continue;
+      const glm::dvec3 f = (rest - l) / l * d;
+      force[b.a] += f, force[b.b] -= f;
+    }
+    // Steps in each particle's tangent plane, capped; then the boundary margin.
+    moved_from = p.lifted.position;
+    std::vector<glm::dvec3> step(n);
+    for (int i = 0; i < n; ++i) {
+      step[i] = kStep * force[i];
+      const double cap = kMaxMove * p.spacing[i];
+      if (glm::length(step[i]) > cap) step[i] *= cap / glm::length(step[i]);
+    }
+    p.step(map, std::move(step));
+    p.keep_from_boundary(map, boundary, target.boundary_margin);
+    double largest_move = 0;
+    for (int i = 0; i < n; ++i) {
+      largest_move = std::max(largest_move, glm::length(p.lifted.position[i] - moved_from[i]) / p.spacing[i]);
+    }
+    p.update_spacing(map, target);
+    if (iteration >= kPopulationIterations && largest_move < kSettled) break;
+  }
+  out.triangles = triangulate_surface_points(p.uv, p.lifted.position, kLongestEdge * largest);
+  out.uv = std::move(p.uv);
+  report.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace paver

@@ -1,0 +1,284 @@
+#include "pattern/surface_triangulation.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numbers>
+#include <unordered_map>
+#include <utility>
+
+namespace paver {
+namespace {
+
+double orient(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
+  return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
+
+// > 0 when d lies inside the circle through the counter-clockwise triangle (a, b, c).
+double in_circle(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, glm::dvec2 d) {
+  const glm::dvec2 ad = a - d, bd = b - d, cd = c - d;
+  const double a2 = glm::dot(ad, ad), b2 = glm::dot(bd, bd), c2 = glm::dot(cd, cd);
+  return ad.x * (bd.y * c2 - b2 * cd.y) - ad.y * (bd.x * c2 - b2 * cd.x) + a2 * (bd.x * cd.y - bd.y * cd.x);
+}
+
+// Triangles with their neighbours: nb[t][i] lies across the edge opposite v[t][i], -1 on the hull.
+struct Mesh2 {
+  std::vector<glm::ivec3> v, nb;
+
+  int edge_to(int u, int t) const {
+    for (int j = 0; j < 3; ++j)
+      if (nb[u][j] == t) return j;
+    return -1;
+  }
+  void relink(int u, int from, int to) {
+    if (u < 0) return;
+    const int j = edge_to(u, from);
+    if (j >= 0) nb[u][j] = to;
+  }
+};
+
+// Neighbours from shared edges, for triangles given as a plain list.
+Mesh2 connect(const std::vector<glm::ivec3>& triangles) {
+  Mesh2 m;
+  m.v = triangles;
+  m.nb.assign(triangles.size(), glm::ivec3(-1));
+  std::unordered_map<std::uint64_t, int> half_edge;  // (from, to) -> triangle * 3 + opposite corner
+  half_edge.reserve(triangles.size() * 3);
+  const auto key = [](int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); };
+  for (int t = 0; t < int(triangles.size()); ++t)
+    for (int i = 0; i < 3; ++i) half_edge[key(triangles[t][(i + 1) % 3], triangles[t][(i + 2) % 3])] = t * 3 + i;
+  for (int t = 0; t < int(triangles.size()); ++t)
+    for (int i = 0; i < 3; ++i) {
+      const auto it = half_edge.find(key(triangles[t][(i + 2) % 3], triangles[t][(i + 1) % 3]));
+      if (it != half_edge.end()) m.nb[t][i] = it->second / 3;
+    }
+  return m;
+}
+
+// The angle at corner `at` of a 3D triangle.
+double corner_angle(const glm::dvec3& at, const glm::dvec3& p, const glm::dvec3& q) {
+  const glm::dvec3 a = p - at, b = q - at;
+  return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
+}
+
+// Insertion order with locality (rows of cells walked alternately left and right), so each point
+// is located by a short walk from the previous one.
+std::vector<int> insertion_order(std::span<const glm::dvec2> p, glm::dvec2 lo, double size) {
+  const int n = int(p.size());
+  const int side = std::max(1, int(std::sqrt(n / 4.0)));
+  std::vector<std::pair<std::int64_t, int>> keyed(n);
+  for (int i = 0; i < n; ++i) {
+    const int cx = std::clamp(int((p[i].x - lo.x) / size * side), 0, side - 1);
+    const int cy = std::clamp(int((p[i].y - lo.y) / size * side), 0, side - 1);
+    const int x = cy % 2 ? side - 1 - cx : cx;
+    keyed[i] = {std::int64_t(cy) * side + x, i};
+  }
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<int> order(n);
+  for (int i = 0; i < n; ++i) order[i] = keyed[i].second;
+  return order;
+}
+
+}  // namespace
+
+std::vector<glm::ivec3> delaunay_triangulation(std::span<const glm::dvec2> points) {
+  const int n = int(points.size());
+  if (n < 3) return {};
+  glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+  for (const glm::dvec2& p : points) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  const double size = std::max({hi.x - lo.x, hi.y - lo.y, 1e-300});
+  // Points in a local frame scaled to the unit box, then three far corners around them.
+  std::vector<glm::dvec2> p(n + 3);
+  for (int i = 0; i < n; ++i) p[i] = (points[i] - lo) / size;
+  // Far enough that only a hull point within about 1e-5 of the hull's line (a circumcircle wider
+  // than the corners) can miss its hull triangle; near enough for in_circle to stay exact there.
+  constexpr double kFar = 1e5;
+  p[n] = {-kFar, -kFar}, p[n + 1] = {kFar, -kFar}, p[n + 2] = {0.5, kFar};
+
+  Mesh2 m;
+  m.v.push_back({n, n + 1, n + 2});
+  m.nb.push_back(glm::ivec3(-1));
+  std::vector<char> alive{1};
+  std::vector<int> free_slots;
+  int last = 0;
+  std::vector<int> cavity, stack;
+  std::vector<char> in_cavity;
+  struct Rim { int a, b, outer; };
+  std::vector<Rim> rim;
+
+  for (int i : insertion_order(std::span(p.data(), n), glm::dvec2(0), 1.0)) {
+    const glm::dvec2 q = p[i];
+    // Walk to the triangle containing q; a bounded walk falls back to a scan.
+    int t = last;
+    for (int steps = 0; t >= 0 && steps < 4 * int(m.v.size()) + 16; ++steps) {
+      int next = -1;
+      for (int k = 0; k < 3 && next < 0; ++k) {
+        const int e = (k + steps) % 3;
+        if (orient(p[m.v[t][(e + 1) % 3]], p[m.v[t][(e + 2) % 3]], q) < 0) next = m.nb[t][e];
+      }
+      if (next < 0) break;
+      t = next;
+    }
+    bool inside = t >= 0 && alive[t];
+    for (int k = 0; inside && k < 3; ++k)
+      if (orient(p[m.v[t][(k + 1) % 3]], p[m.v[t][(k + 2) % 3]], q) < 0) inside = false;
+    if (!inside) {
+      t = -1;
+      for (int u = 0; u < int(m.v.size()) && t < 0; ++u) {
+        if (!alive[u]) continue;
+        bool ok = true;
+        for (int k = 0; k < 3 && ok; ++k) ok = orient(p[m.v[u][(k + 1) % 3]], p[m.v[u][(k + 2) % 3]], q) >= 0;
+        if (ok) t = u;
+      }
+      if (t < 0) continue;
+    }
+    bool duplicate = false;
+    for (int k = 0; k < 3; ++k) duplicate = duplicate || p[m.v[t][k]] == q;
+    if (duplicate) continue;
+
+    // The cavity: triangles whose circumcircle holds q, grown from t; a triangle whose rim edge q
+    // does not see strictly (rounding) is taken back out so the new fan stays positive.
+    in_cavity.resize(m.v.size(), 0);
+    cavity.assign(1, t);
+    in_cavity[t] = 1;
+    stack.assign(1, t);
+    while (!stack.empty()) {
+      const int u = stack.back();
+      stack.pop_back();
+      for (int k = 0; k < 3; ++k) {
+        const int w = m.nb[u][k];
+        if (w < 0 || in_cavity[w]) continue;
+        if (in_circle(p[m.v[w][0]], p[m.v[w][1]], p[m.v[w][2]], q) > 0) {
+          in_cavity[w] = 1;
+          cavity.push_back(w);
+          stack.push_back(w);
+        }
+      }
+    }
+    for (bool changed = true; changed;) {
+      changed = false;
+      rim.clear();
+      for (int u : cavity)
+        for (int k = 0; k < 3; ++k) {
+          const int w = m.nb[u][k];
+          if (w >= 0 && in_cavity[w]) continue;
+          const int a = m.v[u][(k + 1) % 3], b = m.v[u][(k + 2) % 3];
+          if (u != t && orient(p[a], p[b], q) <= 0) {
+            in_cavity[u] = 0;
+            cavity.erase(std::find(cavity.begin(), cavity.end(), u));
+            changed = true;
+            break;
+          }
+          rim.push_back({a, b, w});
+        }
+      // A removal can disconnect the cavity; keep only what is still connected to t.
+      if (changed) {
+        for (int u : cavity) in_cavity[u] = 0;
+        std::vector<int> kept{t};
+        in_cavity[t] = 1;
+        for (size_t s = 0; s < kept.size(); ++s)
+          for (int k = 0; k < 3; ++k) {
+            const int w = m.nb[kept[s]][k];
+            if (w >= 0 && !in_cavity[w] && std::find(cavity.begin(), cavity.end(), w) != cavity.end())
+              in_cavity[w] = 1, kept.push_back(w);
+          }
+        cavity.swap(kept);
+      }
+    }
+    // The fan from q over the rim, in the cavity's freed slots first.
+    std::vector<int> fan(rim.size());
+    for (int u : cavity) alive[u] = 0, in_cavity[u] = 0, free_slots.push_back(u);
+    for (size_t r = 0; r < rim.size(); ++r) {
+      int s;
+      if (!free_slots.empty()) {
+        s = free_slots.back();
+        free_slots.pop_back();
+      } else {
+        s = int(m.v.size());
+        m.v.emplace_back();
+        m.nb.emplace_back();
+        alive.push_back(0);
+        in_cavity.push_back(0);
+      }
+      fan[r] = s;
+      m.v[s] = {i, rim[r].a, rim[r].b};
+      m.nb[s] = {rim[r].outer, -1, -1};
+      alive[s] = 1;
+    }
+    for (size_t r = 0; r < rim.size(); ++r) {
+      const int s = fan[r];
+      if (const int o = rim[r].outer; o >= 0)
+        for (int k = 0; k < 3; ++k)
+          if (m.v[o][(k + 1) % 3] == rim[r].b && m.v[o][(k + 2) % 3] == rim[r].a) m.nb[o][k] = s;
+      // Across (a_r, q), opposite b_r: the fan triangle whose rim edge ends at a_r; across
+      // (q, b_r), opposite a_r: the one whose rim edge starts at b_r.
+      for (size_t o = 0; o < rim.size(); ++o) {
+        if (rim[o].b == rim[r].a) m.nb[s][2] = fan[o];
+        if (rim[o].a == rim[r].b) m.nb[s][1] = fan[o];
+      }
+    }
+    last = fan.empty() ? last : fan[0];
+  }
+
+  std::vector<glm::ivec3> out;
+  for (size_t t = 0; t < m.v.size(); ++t)
+    if (alive[t] && m.v[t][0] < n && m.v[t][1] < n && m.v[t][2] < n) out.push_back(m.v[t]);
+  return out;
+}
+
+int flip_to_surface_delaunay(std::vector<glm::ivec3>& triangles, std::span<const glm::dvec2> uv,
+                             std::span<const glm::dvec3> position) {
+  Mesh2 m = connect(triangles);
+  const int nt = int(triangles.size());
+  std::vector<std::pair<int, int>> queue;
+  for (int t = 0; t < nt; ++t)
+    for (int i = 0; i < 3; ++i) queue.emplace_back(t, i);
+  int flips = 0;
+  // Extrinsic angles need not settle like intrinsic ones: a bound keeps a rare cycle finite.
+  const long max_flips = 10L * nt + 100;
+  while (!queue.empty() && flips < max_flips) {
+    const auto [t, i] = queue.back();
+    queue.pop_back();
+    const int u = m.nb[t][i];
+    if (u < 0) continue;
+    const int j = m.edge_to(u, t);
+    if (j < 0) continue;
+    const int c = m.v[t][i], p = m.v[t][(i + 1) % 3], q = m.v[t][(i + 2) % 3], d = m.v[u][j];
+    if (m.v[u][(j + 1) % 3] != q || m.v[u][(j + 2) % 3] != p || c == d) continue;
+    const double opposite = corner_angle(position[c], position[p], position[q]) +
+                            corner_angle(position[d], position[q], position[p]);
+    if (opposite <= std::numbers::pi + 1e-9) continue;
+    // The flipped pair must stay positive in the map, or the triangulation would fold.
+    const double scale = glm::dot(uv[p] - uv[q], uv[p] - uv[q]);
+    if (orient(uv[c], uv[p], uv[d]) <= 1e-12 * scale || orient(uv[d], uv[q], uv[c]) <= 1e-12 * scale) continue;
+    const int e_qc = m.nb[t][(i + 1) % 3], e_cp = m.nb[t][(i + 2) % 3];
+    const int e_pd = m.nb[u][(j + 1) % 3], e_dq = m.nb[u][(j + 2) % 3];
+    m.v[t] = {c, p, d};
+    m.nb[t] = {e_pd, u, e_cp};
+    m.v[u] = {d, q, c};
+    m.nb[u] = {e_qc, t, e_dq};
+    m.relink(e_pd, u, t);
+    m.relink(e_qc, t, u);
+    ++flips;
+    queue.emplace_back(t, 0), queue.emplace_back(t, 2), queue.emplace_back(u, 0), queue.emplace_back(u, 2);
+  }
+  triangles = m.v;
+  return flips;
+}
+
+std::vector<glm::ivec3> triangulate_surface_points(std::span<const glm::dvec2> uv,
+                                                   std::span<const glm::dvec3> position, double longest_edge) {
+  std::vector<glm::ivec3> triangles = delaunay_triangulation(uv);
+  flip_to_surface_delaunay(triangles, uv, position);
+  std::erase_if(triangles, [&](const glm::ivec3& t) {
+    for (int k = 0; k < 3; ++k)
+      if (glm::length(position[t[k]] - position[t[(k + 1) % 3]]) > longest_edge) return true;
+    return false;
+  });
+  return triangles;
+}
+
+}  // namespace paver

@@ -1,0 +1,136 @@
+#include "solver/surface_spring_relaxation.h"
+
+#include "elements/cell_grid.h"
+#include "elements/contact_rule.h"
+#include "map/boundary_index.h"
+#include "map/surface_particles.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <limits>
+#include <unordered_map>
+
+namespace paver {
+namespace {
+constexpr double kSpringWeight = 0.5;  // honeycomb springs: half the length error per iteration
+constexpr double kPushReach = 1.05;    // triangle bars push out to 1.05x their length
+constexpr double kPushWeight = 0.3;
+}  // namespace
+
+SolveReport relax_pattern_on_surface(const SurfaceMap& map, const Pattern& pattern, std::vector<glm::dvec2>& points,
+                                     const Design& design, const SurfaceSpringOptions& options,
+                                     const std::atomic<bool>* stop) {
+  const auto t0 = std::chrono::steady_clock::now();
+  SolveReport report;
+  const int n = int(points.size());
+  if (n == 0) return report;
+  const double spacing = design.pattern.spacing;
+  const SolverParams& params = design.solver;
+  const ElementsDesign& elements = design.elements;
+  const double diameter = elements.vertex.enabled ? elements.vertex.scale * spacing : 0;
+  // Contact aims a little past the rule, as the lattice's springs do (contact_rule.h).
+  const double contact = contact_distance(diameter, diameter, elements.gap) * (1 + 2 * kContactAim);
+  double radius = 0.5 * diameter;
+  for (const EdgeElementDesign& e : elements.edge) radius = std::max(radius, 0.5 * e.scale * spacing);
+  const double margin = radius * (1 + 2 * kContactAim);
+  const BoundaryIndex boundary(map.mesh, std::max(margin, 1e-9 * spacing) * 2);
+
+  SurfaceParticles p;
+  p.uv = points;
+  p.lifted.resize(n);
+  // A honeycomb point (a map centroid) over a concave stretch of the boundary lies outside the
+  // map: it carries no element and stays where it is.
+  lift_points(map, p.uv, p.lifted);
+  std::vector<char> outside(n);
+  for (int i = 0; i < n; ++i) outside[i] = p.lifted.triangle[i] < 0;
+
+  std::vector<glm::dvec3> force(n), from(n), push(n);
+  std::vector<int> pushes(n);
+  // A triangle pattern is held by contact alone (its relaxation made it regular; springs would
+  // hold compressed patches compressed); a honeycomb needs its springs, or it folds into triangles.
+  const bool hex = design.pattern.tessellation == Tessellation::Hexagon;
+  std::unordered_map<std::uint64_t, std::vector<int>> cells;
+  for (int iteration = 0; iteration < options.iterations; ++iteration) {
+    if (stop && stop->load()) {
+      report.reason = StopReason::Observer;
+      break;
+    }
+    report.iterations = iteration + 1;
+    std::fill(force.begin(), force.end(), glm::dvec3(0));
+    for (int e = 0; e < pattern.edge_count(); ++e) {
+      const int a = pattern.edge_a[e], b = pattern.edge_b[e];
+      if (outside[a] || outside[b]) continue;
+      const glm::dvec3 d = p.lifted.position[b] - p.lifted.position[a];
+      const double length = glm::length(d);
+      if (length <= 0) continue;
+      const double kappa = 0.5 * (p.lifted.curvature[a] + p.lifted.curvature[b]);
+      const double rest = pattern.edge_rest_length[e] * (1 + params.c + params.m * normalised_curvature(map, kappa)) *
+                          (1 + kContactAim);
+      // Half the correction to each end.
+      // Triangle patterns: bars only push, up to a little past their length, so crowded patches
+      // spread into sparse ones; honeycombs: full springs.
+      const double pushing = kPushReach * rest;
+      const double weight = hex ? kSpringWeight : (length < pushing ? kPushWeight : 0.0);
+      const glm::dvec3 f = weight * (length - (hex ? rest : pushing)) / length * d;
+      force[a] += f, force[b] -= f;
+    }
+    long contacts = 0;
+    std::fill(pushes.begin(), pushes.end(), 0);
+    std::fill(push.begin(), push.end(), glm::dvec3(0));
+    if (contact > 0) {
+      glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
+      for (int i = 0; i < n; ++i)
+        if (!outside[i]) lo = glm::min(lo, p.lifted.position[i]), hi = glm::max(hi, p.lifted.position[i]);
+      const CellGrid grid(lo, hi, contact);
+      cells.clear();
+      for (int i = 0; i < n; ++i)
+        if (!outside[i]) cells[CellGrid::key(grid.cell_of(p.lifted.position[i]))].push_back(i);
+      for (int i = 0; i < n; ++i) {
+        if (outside[i]) continue;
+        const glm::ivec3 c = grid.cell_of(p.lifted.position[i]);
+        for (int dz = -1; dz <= 1; ++dz)
+          for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+              const auto it = cells.find(CellGrid::key(c + glm::ivec3(dx, dy, dz)));
+              if (it == cells.end()) continue;
+              for (int j : it->second) {
+                if (j <= i) continue;
+                const glm::dvec3 d = p.lifted.position[j] - p.lifted.position[i];
+                const double length = glm::length(d);
+                if (length >= contact || length <= 0) continue;
+                ++contacts;
+                const glm::dvec3 f = 0.5 * (length - contact) / length * d;
+                push[i] += f, push[j] -= f;
+                ++pushes[i], ++pushes[j];
+              }
+            }
+      }
+    }
+    from = p.lifted.position;
+    std::vector<glm::dvec3> step(n);
+    for (int i = 0; i < n; ++i) {
+      // Contact as a projection: each overlap corrected in full, averaged over a particle's pairs.
+      step[i] = options.step * force[i] + (pushes[i] > 0 ? push[i] / double(pushes[i]) : glm::dvec3(0));
+      const double cap = options.max_move * spacing;
+      if (glm::length(step[i]) > cap) step[i] *= cap / glm::length(step[i]);
+    }
+    p.step(map, std::move(step));
+    p.keep_from_boundary(map, boundary, margin);
+    double largest = 0;
+    for (int i = 0; i < n; ++i) largest = std::max(largest, glm::length(p.lifted.position[i] - from[i]));
+    report.last_max_step = float(largest);
+    if (largest < options.settled * spacing && contacts == 0) {
+      report.reason = StopReason::Converged;
+      break;
+    }
+  }
+  points = p.uv;
+  report.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return report;
+}
+
+}  // namespace paver
