@@ -146,7 +146,7 @@ int run_run(const RunArgs& args) {
               std::string(topology_name(pavement.design.pattern.topology)).c_str(),
               pavement.design.pattern.spacing, pavement.pattern.point_count(), counts.pattern_edges,
               counts.virtual_edges, counts.boundary_crossing_edges);
-  if (pavement.pattern.adaptive)
+  if (pavement.design.pattern.topology == Topology::Adaptive)
     std::printf("; %zu point defects, relaxed in %d iterations (%.0f ms)", pavement.pattern.defects.size(),
                 pavement.relaxation.iterations, pavement.relaxation.milliseconds);
   std::printf("\n");

@@ -10,7 +10,11 @@
 
 namespace paver {
 
-BoundaryIndex::BoundaryIndex(const SurfaceMesh& mesh, double reach) : mesh_(mesh), reach_(reach > 0 ? reach : 1) {
+namespace {
+
+// Cells at least `reach` wide over the mesh's box grown by it, and no smaller than a quarter of
+// the longest boundary segment.
+CellGrid boundary_grid(const SurfaceMesh& mesh, double reach) {
   const auto& loop = mesh.boundary_loop;
   const auto& pos = mesh.positions;
   const int n = int(loop.size());
@@ -19,12 +23,19 @@ BoundaryIndex::BoundaryIndex(const SurfaceMesh& mesh, double reach) : mesh_(mesh
   glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
   for (const glm::dvec3& p : pos) lo = glm::min(lo, p), hi = glm::max(hi, p);
   if (pos.empty()) lo = hi = glm::dvec3(0);
-  const CellGrid grid(lo - glm::dvec3(reach_), hi + glm::dvec3(reach_), std::max(reach_, 0.25 * longest));
-  origin_ = grid.origin;
-  cell_ = grid.cell;
+  return CellGrid(lo - glm::dvec3(reach), hi + glm::dvec3(reach), std::max(reach, 0.25 * longest));
+}
+
+}  // namespace
+
+BoundaryIndex::BoundaryIndex(const SurfaceMesh& mesh, double reach)
+    : mesh_(mesh), reach_(reach > 0 ? reach : 1), grid_(boundary_grid(mesh, reach_)) {
+  const auto& loop = mesh.boundary_loop;
+  const auto& pos = mesh.positions;
+  const int n = int(loop.size());
   for (int i = 0; i < n; ++i) {
     const glm::dvec3 a = pos[loop[i]], b = pos[loop[(i + 1) % n]];
-    const glm::ivec3 c0 = grid.cell_of(glm::min(a, b)), c1 = grid.cell_of(glm::max(a, b));
+    const glm::ivec3 c0 = grid_.cell_of(glm::min(a, b)), c1 = grid_.cell_of(glm::max(a, b));
     for (int z = c0.z; z <= c1.z; ++z)
       for (int y = c0.y; y <= c1.y; ++y)
         for (int x = c0.x; x <= c1.x; ++x) buckets_[CellGrid::key({x, y, z})].push_back(i);
@@ -36,8 +47,7 @@ BoundaryIndex::Nearest BoundaryIndex::nearest(const glm::dvec3& p) const {
   const auto& pos = mesh_.positions;
   const int n = int(loop.size());
   Nearest best{reach_, p};
-  const glm::dvec3 r = (p - origin_) / cell_;
-  const glm::ivec3 c(int(std::floor(r.x)), int(std::floor(r.y)), int(std::floor(r.z)));
+  const glm::ivec3 c = grid_.cell_of(p);
   for (int dz = -1; dz <= 1; ++dz)
     for (int dy = -1; dy <= 1; ++dy)
       for (int dx = -1; dx <= 1; ++dx) {

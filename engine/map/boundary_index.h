@@ -2,6 +2,7 @@
 // The surface's boundary polyline in 3D, its segments bucketed in cubic cells, for nearest-point
 // queries within a reach: which elements cross the boundary, and how far the adaptive pattern's
 // particles must stay from it.
+#include "elements/cell_grid.h"
 #include "mesh/surface_mesh.h"
 
 #include <glm/vec3.hpp>
@@ -28,8 +29,7 @@ public:
 private:
   const SurfaceMesh& mesh_;
   double reach_;
-  glm::dvec3 origin_{0.0};
-  double cell_ = 1;
+  CellGrid grid_;
   std::unordered_map<std::uint64_t, std::vector<int>> buckets_;  // cell -> boundary segments
 };
 

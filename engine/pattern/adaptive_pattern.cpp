@@ -1,20 +1,17 @@
 #include "pattern/adaptive_pattern.h"
 
 #include "pattern/pattern.h"
+#include "pattern/surface_triangulation.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <numbers>
 #include <set>
-#include <unordered_map>
 
 namespace paver {
 namespace {
 
 constexpr double kMarginSlack = 0.01;  // x D past the element radius, so a settled spring solve keeps it
-
-std::uint64_t half_edge_key(int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); }
 
 // The triangles around each vertex in cyclic order, and whether they close around it.
 struct Fan {
@@ -22,45 +19,32 @@ struct Fan {
   bool closed = false;
 };
 
-std::vector<Fan> vertex_fans(const std::vector<glm::ivec3>& triangles, int vertex_count) {
-  std::unordered_map<std::uint64_t, int> triangle_of;  // half-edge a->b -> its triangle
-  triangle_of.reserve(triangles.size() * 3);
+std::vector<Fan> vertex_fans(const std::vector<glm::ivec3>& triangles, const std::vector<glm::ivec3>& neighbours,
+                             int vertex_count) {
   std::vector<int> any(vertex_count, -1);
   for (int t = 0; t < int(triangles.size()); ++t)
-    for (int k = 0; k < 3; ++k) {
-      triangle_of[half_edge_key(triangles[t][k], triangles[t][(k + 1) % 3])] = t;
-      any[triangles[t][k]] = t;
-    }
-  const auto find = [&](int a, int b) {
-    const auto it = triangle_of.find(half_edge_key(a, b));
-    return it == triangle_of.end() ? -1 : it->second;
-  };
-  // In triangle t, the corner v is followed by a and then b.
-  const auto after = [&](int t, int v, int step) {
-    for (int k = 0; k < 3; ++k)
-      if (triangles[t][k] == v) return triangles[t][(k + step) % 3];
-    return -1;
-  };
+    for (int k = 0; k < 3; ++k) any[triangles[t][k]] = t;
+  const auto corner = [&](int t, int v) { return triangles[t][0] == v ? 0 : triangles[t][1] == v ? 1 : 2; };
+  // Around v at corner k of (v, a, b): forward across (v, b), opposite a; backward across (v, a).
+  const auto forward = [&](int t, int v) { return neighbours[t][(corner(t, v) + 1) % 3]; };
+  const auto backward = [&](int t, int v) { return neighbours[t][(corner(t, v) + 2) % 3]; };
   std::vector<Fan> fans(vertex_count);
   for (int v = 0; v < vertex_count; ++v) {
     const int start = any[v];
     if (start < 0) continue;
     Fan& fan = fans[v];
     fan.triangles.push_back(start);
-    // Forward: across the edge (v, b) of (v, a, b) lies the triangle with half-edge v -> b.
-    for (int t = find(v, after(start, v, 2)); t >= 0; t = find(v, after(t, v, 2))) {
+    // Bounded for safety: a fan has fewer triangles than the whole triangulation.
+    for (int t = forward(start, v); t >= 0 && fan.triangles.size() <= triangles.size(); t = forward(t, v)) {
       if (t == start) {
         fan.closed = true;
         break;
       }
       fan.triangles.push_back(t);
-      if (fan.triangles.size() > 64) break;  // cannot happen in a valid triangulation
     }
     if (fan.closed) continue;
-    // Backward from the start: across (v, a) lies the triangle with half-edge a -> v.
     std::vector<int> back;
-    for (int t = find(after(start, v, 1), v); t >= 0 && back.size() <= 64; t = find(after(t, v, 1), v))
-      back.push_back(t);
+    for (int t = backward(start, v); t >= 0 && back.size() <= triangles.size(); t = backward(t, v)) back.push_back(t);
     fan.triangles.insert(fan.triangles.begin(), back.rbegin(), back.rend());
   }
   return fans;
@@ -87,7 +71,6 @@ void add_edge(Pattern& p, int a, int b, double rest, bool is_virtual) {
 
 Pattern triangle_pattern(const RelaxedParticles& relaxed, double edge_length) {
   Pattern p;
-  p.adaptive = true;
   p.points = relaxed.uv;
   p.point_cell_vertex.assign(p.points.size(), 0);
   p.point_cell.assign(p.points.size(), glm::ivec2(0));
@@ -95,7 +78,8 @@ Pattern triangle_pattern(const RelaxedParticles& relaxed, double edge_length) {
   for (const glm::ivec3& t : relaxed.triangles)
     for (int k = 0; k < 3; ++k) edges.insert(std::minmax(t[k], t[(k + 1) % 3]));
   for (const auto& [a, b] : edges) add_edge(p, a, b, edge_length, false);
-  const std::vector<Fan> fans = vertex_fans(relaxed.triangles, p.point_count());
+  const std::vector<Fan> fans =
+      vertex_fans(relaxed.triangles, triangle_neighbours(relaxed.triangles), p.point_count());
   for (int v = 0; v < p.point_count(); ++v)
     if (fans[v].closed && fans[v].triangles.size() != 6) p.defects.push_back({int(fans[v].triangles.size()), {v}});
   return p;
@@ -105,21 +89,16 @@ Pattern triangle_pattern(const RelaxedParticles& relaxed, double edge_length) {
 // edge, a face (and, with bracing, its long diagonals) around each interior vertex.
 Pattern honeycomb_pattern(const RelaxedParticles& relaxed, double edge_length, bool bracing) {
   Pattern p;
-  p.adaptive = true;
   const auto& tris = relaxed.triangles;
   for (const glm::ivec3& t : tris)
     p.points.push_back((relaxed.uv[t.x] + relaxed.uv[t.y] + relaxed.uv[t.z]) / 3.0);
   p.point_cell_vertex.assign(p.points.size(), 0);
   p.point_cell.assign(p.points.size(), glm::ivec2(0));
-  std::unordered_map<std::uint64_t, int> triangle_of;
+  const std::vector<glm::ivec3> neighbours = triangle_neighbours(tris);
   for (int t = 0; t < int(tris.size()); ++t)
-    for (int k = 0; k < 3; ++k) triangle_of[half_edge_key(tris[t][k], tris[t][(k + 1) % 3])] = t;
-  for (int t = 0; t < int(tris.size()); ++t)
-    for (int k = 0; k < 3; ++k) {
-      const auto it = triangle_of.find(half_edge_key(tris[t][(k + 1) % 3], tris[t][k]));
-      if (it != triangle_of.end() && t < it->second) add_edge(p, t, it->second, edge_length, false);
-    }
-  const std::vector<Fan> fans = vertex_fans(tris, int(relaxed.uv.size()));
+    for (int k = 0; k < 3; ++k)
+      if (t < neighbours[t][k]) add_edge(p, t, neighbours[t][k], edge_length, false);
+  const std::vector<Fan> fans = vertex_fans(tris, neighbours, int(relaxed.uv.size()));
   for (const Fan& fan : fans) {
     if (!fan.closed) continue;
     const int k = int(fan.triangles.size());

@@ -1,6 +1,6 @@
 #include "pattern/particle_relaxation.h"
 
-#include "elements/cell_grid.h"
+#include "elements/element_hash.h"
 #include "map/boundary_index.h"
 #include "map/lifting.h"
 #include "map/surface_particles.h"
@@ -14,7 +14,6 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
-#include <unordered_map>
 
 namespace paver {
 namespace {
@@ -35,8 +34,15 @@ constexpr double kLoose = 1.06;  // the count aims the mean bar 6% past the spac
 constexpr double kCountTolerance = 0.005;   // the count is left alone within 0.5% of the wanted one
 constexpr int kLocalPopulationIterations = 150;  // pile-ups and holes are fixed before this
 
+struct Bar {
+  int a, b;
+};
+
 struct Particles : SurfaceParticles {
   std::vector<double> spacing;
+
+  double bar_length(Bar b) const { return glm::length(lifted.position[b.a] - lifted.position[b.b]); }
+  double bar_spacing(Bar b) const { return 0.5 * (spacing[b.a] + spacing[b.b]); }
 
   // Lifts, drops what fell outside the map (a seed or a split midpoint over a concave boundary)
   // and updates each particle's wanted spacing.
@@ -48,10 +54,6 @@ struct Particles : SurfaceParticles {
     spacing.resize(uv.size());
     for (int i = 0; i < size(); ++i) spacing[i] = relaxation_spacing(map, target, lifted.curvature[i]);
   }
-};
-
-struct Bar {
-  int a, b;
 };
 
 std::vector<Bar> bars_of(const std::vector<glm::ivec3>& triangles) {
@@ -68,27 +70,30 @@ std::vector<Bar> bars_of(const std::vector<glm::ivec3>& triangles) {
   return bars;
 }
 
+// The bars' root-mean-square length over their wanted spacing (DistMesh's scale); 1 without bars.
+double mean_bar_scale(const Particles& p, const std::vector<Bar>& bars) {
+  double sum_l2 = 0, sum_h2 = 0;
+  for (const Bar& b : bars) {
+    const double l = p.bar_length(b), h = p.bar_spacing(b);
+    sum_l2 += l * l, sum_h2 += h * h;
+  }
+  return sum_h2 > 0 ? std::sqrt(sum_l2 / sum_h2) : 1;
+}
+
 // Keeps seeds greedily, in their order, when no kept seed lies nearer than kThin x spacing.
 void thin_seeds(Particles& p, double largest_spacing) {
   glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
   for (const glm::dvec3& x : p.lifted.position) lo = glm::min(lo, x), hi = glm::max(hi, x);
-  const CellGrid grid(lo, hi, kThin * largest_spacing);
-  std::unordered_map<std::uint64_t, std::vector<int>> kept_in;
+  ElementHash kept_near(p.lifted.position, CellGrid(lo, hi, kThin * largest_spacing), ElementHash::Fill::None);
   std::vector<int> kept;
   for (int i = 0; i < p.size(); ++i) {
-    const glm::dvec3 x = p.lifted.position[i];
-    const glm::ivec3 c = grid.cell_of(x);
     bool clear = true;
-    for (int dz = -1; dz <= 1 && clear; ++dz)
-      for (int dy = -1; dy <= 1 && clear; ++dy)
-        for (int dx = -1; dx <= 1 && clear; ++dx) {
-          const auto it = kept_in.find(CellGrid::key(c + glm::ivec3(dx, dy, dz)));
-          if (it == kept_in.end()) continue;
-          for (int j : it->second)
-            if (glm::length(x - p.lifted.position[j]) < kThin * 0.5 * (p.spacing[i] + p.spacing[j])) clear = false;
-        }
+    kept_near.for_each_near(p.lifted.position[i], [&](int j) {
+      if (glm::length(p.lifted.position[i] - p.lifted.position[j]) < kThin * 0.5 * (p.spacing[i] + p.spacing[j]))
+        clear = false;
+    });
     if (!clear) continue;
-    kept_in[CellGrid::key(c)].push_back(i);
+    kept_near.insert(i);
     kept.push_back(i);
   }
   std::vector<glm::dvec2> uv;
@@ -100,23 +105,17 @@ void thin_seeds(Particles& p, double largest_spacing) {
 // mean bar matches the spacing. Each particle takes part in one change per step.
 void control_population(Particles& p, const std::vector<Bar>& bars, bool allow_local, RelaxationReport& report) {
   const int n = p.size();
+  if (bars.empty()) return;
   std::vector<double> ratio(bars.size());
-  double sum_l2 = 0, sum_h2 = 0;
-  for (size_t e = 0; e < bars.size(); ++e) {
-    const double l = glm::length(p.lifted.position[bars[e].a] - p.lifted.position[bars[e].b]);
-    const double h = 0.5 * (p.spacing[bars[e].a] + p.spacing[bars[e].b]);
-    ratio[e] = l / h;
-    sum_l2 += l * l, sum_h2 += h * h;
-  }
-  if (bars.empty() || !(sum_h2 > 0)) return;
-  // Density goes with 1 / spacing^2: the count that would make the mean bar the spacing.
-  const double wanted = n * sum_l2 / (sum_h2 * kLoose * kLoose);
+  for (size_t e = 0; e < bars.size(); ++e) ratio[e] = p.bar_length(bars[e]) / p.bar_spacing(bars[e]);
+  // Density goes with 1 / spacing^2: the count that would make the mean bar kLoose x the spacing.
+  const double scale = mean_bar_scale(p, bars) / kLoose;
+  const double wanted = n * scale * scale;
   const int budget = std::max(1, int(kPopulationShare * n));
   // Half the difference per step, and none within a tolerance, so the count settles instead of
   // churning (every change leaves a defect to heal).
   int change = std::abs(wanted - n) > kCountTolerance * n + 1 ? int(std::lround(0.5 * (wanted - n))) : 0;
   change = std::clamp(change, -budget, budget);
-  const bool local = allow_local;
 
   std::vector<int> order(bars.size());
   std::iota(order.begin(), order.end(), 0);
@@ -140,12 +139,21 @@ void control_population(Particles& p, const std::vector<Bar>& bars, bool allow_l
     ++report.inserted;
     return true;
   };
+  // Shortest bars first: pile-ups, then as many more as the count asks to lose.
+  const int to_remove = std::max(0, -change), to_add = std::max(0, change);
   int done = 0;
-  for (size_t k = 0; k < order.size() && ((local && ratio[order[k]] < kCollapseBelow) || (change < 0 && done < -change)); ++k)
+  for (size_t k = 0; k < order.size(); ++k) {
+    const bool pile_up = allow_local && ratio[order[k]] < kCollapseBelow;
+    if (!pile_up && done >= to_remove) break;
     done += collapse(order[k]);
+  }
+  // Longest bars first: holes, then as many more as the count asks to gain.
   done = 0;
-  for (size_t k = order.size(); k-- > 0 && ((local && ratio[order[k]] > kSplitAbove) || (change > 0 && done < change));)
+  for (size_t k = order.size(); k-- > 0;) {
+    const bool hole = allow_local && ratio[order[k]] > kSplitAbove;
+    if (!hole && done >= to_add) break;
     done += split(order[k]);
+  }
 
   std::vector<glm::dvec2> uv;
   uv.reserve(n + added.size());
@@ -196,18 +204,12 @@ RelaxedParticles relax_particles(const SurfaceMap& map, const std::vector<glm::d
     if (n < 3) break;
     // DistMesh's scale: bars push until they are kPressure times the spacing, scaled by the
     // present mean, so the pressure spreads the particles evenly whatever their number.
-    double sum_l2 = 0, sum_h2 = 0;
-    for (const Bar& b : bars) {
-      const double l = glm::length(p.lifted.position[b.a] - p.lifted.position[b.b]);
-      const double h = 0.5 * (p.spacing[b.a] + p.spacing[b.b]);
-      sum_l2 += l * l, sum_h2 += h * h;
-    }
-    const double scale = sum_h2 > 0 ? std::sqrt(sum_l2 / sum_h2) : 1;
+    const double scale = mean_bar_scale(p, bars);
     force.assign(n, glm::dvec3(0));
     for (const Bar& b : bars) {
       const glm::dvec3 d = p.lifted.position[b.a] - p.lifted.position[b.b];
       const double l = glm::length(d);
-      const double rest = kPressure * scale * 0.5 * (p.spacing[b.a] + p.spacing[b.b]);
+      const double rest = kPressure * scale * p.bar_spacing(b);
       if (l <= 0 || l >= rest) continue;
       const glm::dvec3 f = (rest - l) / l * d;
       force[b.a] += f, force[b.b] -= f;

@@ -41,7 +41,6 @@ struct Pattern {
     std::vector<int> points;
   };
   std::vector<Defect> defects;
-  bool adaptive = false;  // particles relaxed on the surface (adaptive_pattern.h), not a lattice
 
   int point_count() const { return static_cast<int>(points.size()); }
   int edge_count() const { return static_cast<int>(edge_a.size()); }

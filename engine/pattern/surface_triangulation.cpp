@@ -40,24 +40,6 @@ struct Mesh2 {
   }
 };
 
-// Neighbours from shared edges, for triangles given as a plain list.
-Mesh2 connect(const std::vector<glm::ivec3>& triangles) {
-  Mesh2 m;
-  m.v = triangles;
-  m.nb.assign(triangles.size(), glm::ivec3(-1));
-  std::unordered_map<std::uint64_t, int> half_edge;  // (from, to) -> triangle * 3 + opposite corner
-  half_edge.reserve(triangles.size() * 3);
-  const auto key = [](int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); };
-  for (int t = 0; t < int(triangles.size()); ++t)
-    for (int i = 0; i < 3; ++i) half_edge[key(triangles[t][(i + 1) % 3], triangles[t][(i + 2) % 3])] = t * 3 + i;
-  for (int t = 0; t < int(triangles.size()); ++t)
-    for (int i = 0; i < 3; ++i) {
-      const auto it = half_edge.find(key(triangles[t][(i + 2) % 3], triangles[t][(i + 1) % 3]));
-      if (it != half_edge.end()) m.nb[t][i] = it->second / 3;
-    }
-  return m;
-}
-
 // The angle at corner `at` of a 3D triangle.
 double corner_angle(const glm::dvec3& at, const glm::dvec3& p, const glm::dvec3& q) {
   const glm::dvec3 a = p - at, b = q - at;
@@ -83,6 +65,21 @@ std::vector<int> insertion_order(std::span<const glm::dvec2> p, glm::dvec2 lo, d
 }
 
 }  // namespace
+
+std::vector<glm::ivec3> triangle_neighbours(const std::vector<glm::ivec3>& triangles) {
+  std::vector<glm::ivec3> nb(triangles.size(), glm::ivec3(-1));
+  std::unordered_map<std::uint64_t, int> triangle_of;  // half-edge (from, to) -> its triangle
+  triangle_of.reserve(triangles.size() * 3);
+  const auto key = [](int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); };
+  for (int t = 0; t < int(triangles.size()); ++t)
+    for (int i = 0; i < 3; ++i) triangle_of[key(triangles[t][(i + 1) % 3], triangles[t][(i + 2) % 3])] = t;
+  for (int t = 0; t < int(triangles.size()); ++t)
+    for (int i = 0; i < 3; ++i) {
+      const auto it = triangle_of.find(key(triangles[t][(i + 2) % 3], triangles[t][(i + 1) % 3]));
+      if (it != triangle_of.end()) nb[t][i] = it->second;
+    }
+  return nb;
+}
 
 std::vector<glm::ivec3> delaunay_triangulation(std::span<const glm::dvec2> points) {
   const int n = int(points.size());
@@ -231,7 +228,7 @@ std::vector<glm::ivec3> delaunay_triangulation(std::span<const glm::dvec2> point
 
 int flip_to_surface_delaunay(std::vector<glm::ivec3>& triangles, std::span<const glm::dvec2> uv,
                              std::span<const glm::dvec3> position) {
-  Mesh2 m = connect(triangles);
+  Mesh2 m{triangles, triangle_neighbours(triangles)};
   const int nt = int(triangles.size());
   std::vector<std::pair<int, int>> queue;
   for (int t = 0; t < nt; ++t)

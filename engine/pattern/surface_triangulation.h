@@ -12,6 +12,10 @@
 
 namespace paver {
 
+// For each triangle, the triangle across the edge opposite each of its corners (-1 where none):
+// triangles that share an edge in opposite directions.
+std::vector<glm::ivec3> triangle_neighbours(const std::vector<glm::ivec3>& triangles);
+
 // Delaunay triangulation of 2D points (Bowyer-Watson): counter-clockwise triangles covering their
 // convex hull. Duplicate points are left out of every triangle.
 std::vector<glm::ivec3> delaunay_triangulation(std::span<const glm::dvec2> points);

@@ -76,7 +76,15 @@ Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptio
     design.pattern.spacing = default_spacing(map.mesh, design.pattern.tessellation);
   pavement.cell = check_design_cell(design);
   const QualityBasis basis = quality_basis(map, pavement.cell, design.elements, design.solver);
-  pavement.pattern = build_pattern(map, pavement.cell, design.placement);
+  // The adaptive pattern is grown instead of the lattice (docs/topology.md).
+  const bool adaptive = design.pattern.topology == Topology::Adaptive;
+  if (adaptive) {
+    AdaptivePattern grown = build_adaptive_pattern(map, pavement.cell, design, options.stop);
+    pavement.pattern = std::move(grown.pattern);
+    pavement.relaxation = grown.relaxation;
+  } else {
+    pavement.pattern = build_pattern(map, pavement.cell, design.placement);
+  }
   pavement.points = pavement.pattern.points;
   pavement.timings.emplace_back("pattern", ms_since(t0));
 
@@ -84,18 +92,6 @@ Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptio
   const PlacedElements initial = place_all_elements(map, pavement.pattern, pavement.points, design, options.postprocess);
   pavement.before = measure_pavement(map, pavement.pattern, pavement.points, initial.elements, basis);
   pavement.timings.emplace_back("measure_initial", ms_since(t0));
-
-  // The adaptive pattern replaces the lattice; the lattice's own figures stay out of the report.
-  if (design.pattern.topology == Topology::Adaptive && pavement.pattern.point_count() > 0) {
-    t0 = Clock::now();
-    AdaptivePattern adaptive = build_adaptive_pattern(map, pavement.cell, design, options.stop);
-    pavement.pattern = std::move(adaptive.pattern);
-    pavement.relaxation = adaptive.relaxation;
-    pavement.points = pavement.pattern.points;
-    const PlacedElements grown = place_all_elements(map, pavement.pattern, pavement.points, design, options.postprocess);
-    pavement.before = measure_pavement(map, pavement.pattern, pavement.points, grown.elements, basis);
-    pavement.timings.emplace_back("adaptive_pattern", ms_since(t0));
-  }
   if (options.on_pattern) options.on_pattern(pavement.pattern, design);
 
   pavement.retired.assign(pavement.points.size(), 0);
@@ -107,7 +103,7 @@ Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptio
     pavement.eliminated = placed.eliminated;
     return std::move(placed.elements);
   };
-  if (options.optimize && pavement.pattern.adaptive && pavement.pattern.point_count() > 0) {
+  if (options.optimize && adaptive && pavement.pattern.point_count() > 0) {
     // The adaptive pattern's own optimizer, on the surface, with contact in it; removal is the
     // last resort for what still collides.
     t0 = Clock::now();

@@ -1,6 +1,6 @@
 #include "solver/surface_spring_relaxation.h"
 
-#include "elements/cell_grid.h"
+#include "elements/element_hash.h"
 #include "elements/contact_rule.h"
 #include "map/boundary_index.h"
 #include "map/surface_particles.h"
@@ -12,7 +12,6 @@
 #include <chrono>
 #include <cstdint>
 #include <limits>
-#include <unordered_map>
 
 namespace paver {
 namespace {
@@ -53,7 +52,6 @@ SolveReport relax_pattern_on_surface(const SurfaceMap& map, const Pattern& patte
   // A triangle pattern is held by contact alone (its relaxation made it regular; springs would
   // hold compressed patches compressed); a honeycomb needs its springs, or it folds into triangles.
   const bool hex = design.pattern.tessellation == Tessellation::Hexagon;
-  std::unordered_map<std::uint64_t, std::vector<int>> cells;
   for (int iteration = 0; iteration < options.iterations; ++iteration) {
     if (stop && stop->load()) {
       report.reason = StopReason::Observer;
@@ -70,7 +68,6 @@ SolveReport relax_pattern_on_surface(const SurfaceMap& map, const Pattern& patte
       const double kappa = 0.5 * (p.lifted.curvature[a] + p.lifted.curvature[b]);
       const double rest = pattern.edge_rest_length[e] * (1 + params.c + params.m * normalised_curvature(map, kappa)) *
                           (1 + kContactAim);
-      // Half the correction to each end.
       // Triangle patterns: bars only push, up to a little past their length, so crowded patches
       // spread into sparse ones; honeycombs: full springs.
       const double pushing = kPushReach * rest;
@@ -85,29 +82,22 @@ SolveReport relax_pattern_on_surface(const SurfaceMap& map, const Pattern& patte
       glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
       for (int i = 0; i < n; ++i)
         if (!outside[i]) lo = glm::min(lo, p.lifted.position[i]), hi = glm::max(hi, p.lifted.position[i]);
-      const CellGrid grid(lo, hi, contact);
-      cells.clear();
+      // Particles off the map are not bucketed: they have no position.
+      ElementHash near(p.lifted.position, CellGrid(lo, hi, contact), ElementHash::Fill::None);
       for (int i = 0; i < n; ++i)
-        if (!outside[i]) cells[CellGrid::key(grid.cell_of(p.lifted.position[i]))].push_back(i);
+        if (!outside[i]) near.insert(i);
       for (int i = 0; i < n; ++i) {
         if (outside[i]) continue;
-        const glm::ivec3 c = grid.cell_of(p.lifted.position[i]);
-        for (int dz = -1; dz <= 1; ++dz)
-          for (int dy = -1; dy <= 1; ++dy)
-            for (int dx = -1; dx <= 1; ++dx) {
-              const auto it = cells.find(CellGrid::key(c + glm::ivec3(dx, dy, dz)));
-              if (it == cells.end()) continue;
-              for (int j : it->second) {
-                if (j <= i) continue;
-                const glm::dvec3 d = p.lifted.position[j] - p.lifted.position[i];
-                const double length = glm::length(d);
-                if (length >= contact || length <= 0) continue;
-                ++contacts;
-                const glm::dvec3 f = 0.5 * (length - contact) / length * d;
-                push[i] += f, push[j] -= f;
-                ++pushes[i], ++pushes[j];
-              }
-            }
+        near.for_each_near(p.lifted.position[i], [&](int j) {
+          if (j <= i) return;
+          const glm::dvec3 d = p.lifted.position[j] - p.lifted.position[i];
+          const double length = glm::length(d);
+          if (length >= contact || length <= 0) return;
+          ++contacts;
+          const glm::dvec3 f = 0.5 * (length - contact) / length * d;
+          push[i] += f, push[j] -= f;
+          ++pushes[i], ++pushes[j];
+        });
       }
     }
     from = p.lifted.position;
