@@ -1,5 +1,6 @@
 #include "pattern/adaptive_pattern.h"
 
+#include "pattern/bar_length_floor.h"
 #include "pattern/pattern.h"
 #include "pattern/surface_triangulation.h"
 
@@ -148,7 +149,10 @@ AdaptivePattern build_adaptive_pattern(const SurfaceMap& map, const UnitCell& ce
   // Honeycomb vertices sit half an edge inside the particles' outer row.
   const double margin = std::max(0.0, radius - (hex ? 0.5 * edge_length : 0)) + kMarginSlack * spacing;
   const Pattern seeds = build_pattern(map, make_unit_cell(Tessellation::Triangle, primal), design.placement);
-  const RelaxationTarget target{primal, design.solver.c, design.solver.m, margin};
+  // Triangle particles are the elements' vertices: packed to contact before they are connected.
+  // Honeycomb vertices are the triangles' centres, packed by the optimizer once they exist.
+  const double contact = hex ? 0 : particle_contact_distance(design);
+  const RelaxationTarget target{primal, design.solver.c, design.solver.m, margin, contact};
   const RelaxedParticles relaxed = relax_particles(map, seeds.points, target, stop);
   AdaptivePattern out;
   out.relaxation = relaxed.report;

@@ -19,12 +19,15 @@ struct RelaxationTarget {
   double spacing = 0;         // wanted edge length on the surface where eq. 5 adds nothing
   double c = 0, m = 0;        // eq. 5: the length grows by (c + m |H|normalised) spacing
   double boundary_margin = 0; // particles stay at least this far (3D) from the surface's boundary
+  double contact = 0;         // > 0: relaxed particles are then packed no nearer than this (3D)
 };
 
 struct RelaxationReport {
   int iterations = 0;
   int inserted = 0, removed = 0;   // by population control (the seeds' thinning not counted)
   int seeds_kept = 0;              // seeds left after thinning the piled-up ones
+  int packing_iterations = 0;      // contact packing after the relaxation (contact_packing.h)
+  int jammed = 0;                  // particles the packing removed where no push made room
   double milliseconds = 0;
 };
 

@@ -86,6 +86,8 @@ nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const
                                    {"seeds_kept", pavement.relaxation.seeds_kept},
                                    {"inserted", pavement.relaxation.inserted},
                                    {"removed", pavement.relaxation.removed},
+                                   {"packing_iterations", pavement.relaxation.packing_iterations},
+                                   {"jammed_removed", pavement.relaxation.jammed},
                                    {"milliseconds", pavement.relaxation.milliseconds}}}}},
       {"elements", {{"total", elements.size()},
                     {"vertex", counts.vertex_elements},

@@ -4,6 +4,8 @@
 #include "elements/contact_rule.h"
 #include "map/boundary_index.h"
 #include "map/surface_particles.h"
+#include "pattern/bar_length_floor.h"
+#include "pattern/contact_packing.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -16,28 +18,16 @@
 namespace paver {
 namespace {
 constexpr double kSpringWeight = 0.5;  // honeycomb springs: half the length error per iteration
-constexpr double kPushReach = 1.05;    // triangle bars push out to 1.05x their length
-constexpr double kPushWeight = 0.3;
-}  // namespace
 
-SolveReport relax_pattern_on_surface(const SurfaceMap& map, const Pattern& pattern, std::vector<glm::dvec2>& points,
-                                     const Design& design, const SurfaceSpringOptions& options,
-                                     const std::atomic<bool>* stop) {
-  const auto t0 = std::chrono::steady_clock::now();
-  SolveReport report;
+// The honeycomb's springs pull each edge to its eq. 5 target while contact pushes every pair
+// apart (a projection, averaged over a particle's pairs); particles keep `margin` from the boundary.
+void relax_honeycomb_springs(const SurfaceMap& map, const Pattern& pattern, std::vector<glm::dvec2>& points,
+                             const Design& design, const SurfaceSpringOptions& options, double contact,
+                             const BoundaryIndex& boundary, double margin, const std::atomic<bool>* stop,
+                             SolveReport& report) {
   const int n = int(points.size());
-  if (n == 0) return report;
   const double spacing = design.pattern.spacing;
   const SolverParams& params = design.solver;
-  const ElementsDesign& elements = design.elements;
-  const double diameter = elements.vertex.enabled ? elements.vertex.scale * spacing : 0;
-  // Contact aims a little past the rule, as the lattice's springs do (contact_rule.h).
-  const double contact = contact_distance(diameter, diameter, elements.gap) * (1 + 2 * kContactAim);
-  double radius = 0.5 * diameter;
-  for (const EdgeElementDesign& e : elements.edge) radius = std::max(radius, 0.5 * e.scale * spacing);
-  const double margin = radius * (1 + 2 * kContactAim);
-  const BoundaryIndex boundary(map.mesh, std::max(margin, 1e-9 * spacing) * 2);
-
   SurfaceParticles p;
   p.uv = points;
   p.lifted.resize(n);
@@ -49,9 +39,6 @@ SolveReport relax_pattern_on_surface(const SurfaceMap& map, const Pattern& patte
 
   std::vector<glm::dvec3> force(n), from(n), push(n);
   std::vector<int> pushes(n);
-  // A triangle pattern is held by contact alone (its relaxation made it regular; springs would
-  // hold compressed patches compressed); a honeycomb needs its springs, or it folds into triangles.
-  const bool hex = design.pattern.tessellation == Tessellation::Hexagon;
   for (int iteration = 0; iteration < options.iterations; ++iteration) {
     if (stop && stop->load()) {
       report.reason = StopReason::Observer;
@@ -68,11 +55,7 @@ SolveReport relax_pattern_on_surface(const SurfaceMap& map, const Pattern& patte
       const double kappa = 0.5 * (p.lifted.curvature[a] + p.lifted.curvature[b]);
       const double rest = pattern.edge_rest_length[e] * (1 + params.c + params.m * normalised_curvature(map, kappa)) *
                           (1 + kContactAim);
-      // Triangle patterns: bars only push, up to a little past their length, so crowded patches
-      // spread into sparse ones; honeycombs: full springs.
-      const double pushing = kPushReach * rest;
-      const double weight = hex ? kSpringWeight : (length < pushing ? kPushWeight : 0.0);
-      const glm::dvec3 f = weight * (length - (hex ? rest : pushing)) / length * d;
+      const glm::dvec3 f = kSpringWeight * (length - rest) / length * d;
       force[a] += f, force[b] -= f;
     }
     long contacts = 0;
@@ -119,6 +102,40 @@ SolveReport relax_pattern_on_surface(const SurfaceMap& map, const Pattern& patte
     }
   }
   points = p.uv;
+}
+}  // namespace
+
+SolveReport relax_pattern_on_surface(const SurfaceMap& map, const Pattern& pattern, std::vector<glm::dvec2>& points,
+                                     const Design& design, const SurfaceSpringOptions& options,
+                                     const std::atomic<bool>* stop) {
+  const auto t0 = std::chrono::steady_clock::now();
+  SolveReport report;
+  const int n = int(points.size());
+  if (n == 0) return report;
+  const double spacing = design.pattern.spacing;
+  const ElementsDesign& elements = design.elements;
+  // Particles keep the contact rule of the elements on and around their bars (bar_length_floor.h).
+  const double contact = particle_contact_distance(design);
+  double radius = elements.vertex.enabled ? 0.5 * elements.vertex.scale * spacing : 0;
+  for (const EdgeElementDesign& e : elements.edge) radius = std::max(radius, 0.5 * e.scale * spacing);
+  const double margin = radius * (1 + 2 * kContactAim);
+  const BoundaryIndex boundary(map.mesh, std::max(margin, 1e-9 * spacing) * 2);
+
+  // A triangle pattern's particles are its vertex elements, packed to contact as they were
+  // relaxed: contact alone holds them (springs would hold a compressed patch compressed). A
+  // honeycomb needs its springs first, or it folds into triangles.
+  const bool hex = design.pattern.tessellation == Tessellation::Hexagon;
+  if (hex) relax_honeycomb_springs(map, pattern, points, design, options, contact, boundary, margin, stop, report);
+  if (report.reason != StopReason::Observer) {
+    ContactPackingOptions packing;
+    packing.contact = contact;
+    packing.margin = margin;
+    packing.iterations = options.packing_iterations;
+    const ContactPackingReport packed = pack_by_contact(map, points, packing, stop);
+    report.iterations += packed.iterations;
+    if (packed.overlapping_pairs == 0 && report.reason == StopReason::IterationLimit)
+      report.reason = StopReason::Converged;
+  }
   report.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return report;
 }

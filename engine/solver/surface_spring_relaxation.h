@@ -22,6 +22,7 @@ struct SurfaceSpringOptions {
   double step = 0.2;          // of the force (a spring's full correction is 1)
   double max_move = 0.1;      // x D per iteration
   double settled = 1e-4;      // x D: the largest move once converged
+  int packing_iterations = 1500;  // the contact packing that ends it (contact_packing.h)
 };
 
 // Relaxes `points` (the pattern's particles, in the map) in place.
