@@ -1,13 +1,17 @@
 #include "elements/element_placement.h"
 
 #include "map/lifting.h"
+#include "map/surface_particles.h"
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 namespace paver {
 namespace {
+
+constexpr int kChordSteps = 4;  // tangent steps from the map's point to the chord's: converged to 1e-6 D on the head
 
 bool on_cell_edge(const EdgeElementDesign& spec, int cell_edge) {
   return spec.cell_edges.empty() ||
@@ -18,7 +22,7 @@ bool on_cell_edge(const EdgeElementDesign& spec, int cell_edge) {
 
 Elements place_elements(const SurfaceMap& map, const Pattern& pattern,
                         const std::vector<glm::dvec2>& points, const ElementsDesign& design,
-                        double spacing, const std::vector<std::uint8_t>* retired) {
+                        double spacing, const std::vector<std::uint8_t>* retired, EdgeAnchor anchor) {
   // Gather every element centre in 2D first, then lift them in one parallel call.
   struct Pending {
     ElementKind kind;
@@ -28,6 +32,12 @@ Elements place_elements(const SurfaceMap& map, const Pattern& pattern,
   };
   std::vector<Pending> pending;
   std::vector<glm::dvec2> centres;
+  std::vector<glm::dvec3> chord_points;  // SurfaceChord: where each E-element aims, in 3D
+  LiftedPoints ends;
+  if (anchor == EdgeAnchor::SurfaceChord && !design.edge.empty()) {
+    ends.resize(points.size());
+    lift_points(map, points, ends);
+  }
   if (design.vertex.enabled)
     for (int p = 0; p < pattern.point_count(); ++p) {
       if (retired && (*retired)[p]) continue;
@@ -41,11 +51,45 @@ Elements place_elements(const SurfaceMap& map, const Pattern& pattern,
       const glm::dvec2 a = points[pattern.edge_a[e]], b = points[pattern.edge_b[e]];
       pending.push_back({ElementKind::Edge, e, s, spec.scale * spacing, spec.shape});
       centres.push_back(a + spec.t * (b - a));
+      if (anchor != EdgeAnchor::SurfaceChord) continue;
+      const int ia = pattern.edge_a[e], ib = pattern.edge_b[e];
+      const bool lifted_ends = ends.triangle[ia] >= 0 && ends.triangle[ib] >= 0;
+      chord_points.push_back(lifted_ends ? ends.position[ia] + spec.t * (ends.position[ib] - ends.position[ia])
+                                         : glm::dvec3(std::nan("")));
     }
   }
   LiftedPoints lifted;
   lifted.resize(centres.size());
   lift_points(map, centres, lifted);
+  if (!chord_points.empty()) {
+    // From the map's point, a few tangent steps towards the chord point: they end where the
+    // surface is nearest it. The E-elements follow the V-elements in `centres`.
+    const size_t first_edge = centres.size() - chord_points.size();
+    SurfaceParticles on_surface;
+    on_surface.uv.assign(centres.begin() + first_edge, centres.end());
+    on_surface.lifted.resize(chord_points.size());
+    for (size_t k = 0; k < chord_points.size(); ++k) {
+      const size_t i = first_edge + k;
+      on_surface.lifted.triangle[k] = lifted.triangle[i];
+      on_surface.lifted.position[k] = lifted.position[i];
+      on_surface.lifted.normal[k] = lifted.normal[i];
+      on_surface.lifted.curvature[k] = lifted.curvature[i];
+    }
+    for (int attempt = 0; attempt < kChordSteps; ++attempt) {
+      std::vector<glm::dvec3> step(chord_points.size(), glm::dvec3(0));
+      for (size_t k = 0; k < chord_points.size(); ++k)
+        if (!std::isnan(chord_points[k].x)) step[k] = chord_points[k] - on_surface.lifted.position[k];
+      on_surface.step(map, std::move(step));
+    }
+    for (size_t k = 0; k < chord_points.size(); ++k) {
+      const size_t i = first_edge + k;
+      centres[i] = on_surface.uv[k];
+      lifted.triangle[i] = on_surface.lifted.triangle[k];
+      lifted.position[i] = on_surface.lifted.position[k];
+      lifted.normal[i] = on_surface.lifted.normal[k];
+      lifted.curvature[i] = on_surface.lifted.curvature[k];
+    }
+  }
 
   Elements elements;
   elements.reserve(pending.size());

@@ -36,7 +36,9 @@ UnitCell make_design_cell(const PatternDesign& pattern) {
 PlacedElements place_all_elements(const SurfaceMap& map, const Pattern& pattern, const std::vector<glm::dvec2>& points,
                                   const Design& design, bool postprocess, const std::vector<std::uint8_t>* retired) {
   PlacedElements placed;
-  placed.elements = place_elements(map, pattern, points, design.elements, design.pattern.spacing, retired);
+  const EdgeAnchor anchor =
+      design.pattern.topology == Topology::Adaptive ? EdgeAnchor::SurfaceChord : EdgeAnchor::MapLine;
+  placed.elements = place_elements(map, pattern, points, design.elements, design.pattern.spacing, retired, anchor);
   if (postprocess) {
     placed.filled = fill_boundary_edges(map, pattern, points, design.elements, design.pattern.spacing, placed.elements,
                                         retired);
