@@ -82,10 +82,10 @@ int fill_boundary_edges(const SurfaceMap& map, const Pattern& pattern, const std
   return added;
 }
 
-std::vector<double> distances_to_boundary(const SurfaceMap& map, const Elements& elements) {
-  double cap = 0;
+std::vector<double> distances_to_boundary(const SurfaceMap& map, const Elements& elements, double reach) {
+  double cap = reach;
   for (double d : elements.diameter) cap = std::max(cap, d);
-  // Only near elements matter (crossing and coverage tests): farther ones report the cap.
+  // Only near elements matter: farther ones than the cap report it.
   const BoundaryIndex boundary(map.mesh, cap > 0 ? cap : 1);
   std::vector<double> distance(elements.size());
   tbb::parallel_for(tbb::blocked_range<size_t>(0, elements.size(), 256), [&](const tbb::blocked_range<size_t>& r) {

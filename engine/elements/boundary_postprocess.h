@@ -18,9 +18,10 @@ int fill_boundary_edges(const SurfaceMap& map, const Pattern& pattern, const std
                         const ElementsDesign& design, double spacing, Elements& elements,
                         const std::vector<std::uint8_t>* retired = nullptr);
 
-// 3D distance from each element centre to the surface's boundary polyline, capped at the largest
-// element diameter (only near elements matter: crossing and coverage tests; farther ones get the cap).
-std::vector<double> distances_to_boundary(const SurfaceMap& map, const Elements& elements);
+// 3D distance from each element centre to the surface's boundary polyline, capped at the larger of
+// the largest element diameter and `reach` (only near elements matter: crossing tests, the
+// interior of the valence share; farther ones get the cap).
+std::vector<double> distances_to_boundary(const SurfaceMap& map, const Elements& elements, double reach = 0);
 
 // Removes the elements that cross the boundary; returns how many.
 int eliminate_boundary_elements(const SurfaceMap& map, Elements& elements);

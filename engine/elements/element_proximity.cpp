@@ -108,4 +108,35 @@ std::vector<double> nearest_clearances(const Elements& elements) {
       [&](int i, double cell) { return clearance_between(cell, elements.diameter[i], largest); });
 }
 
+std::vector<int> vertex_valences(const Elements& elements, double shell) {
+  const int n = int(elements.size());
+  std::vector<int> valence(n, -1);
+  const auto is_vertex = [&](int i) { return elements.kind[i] == ElementKind::Vertex; };
+  const double inf = std::numeric_limits<double>::infinity();
+  const std::vector<double> nearest = smallest_over_others(
+      elements, [&](int i, int j, double d) { return is_vertex(i) && is_vertex(j) ? d : inf; },
+      [&](int i, double cell) { return is_vertex(i) ? cell : inf; });
+  std::vector<double> finite;
+  for (int i = 0; i < n; ++i)
+    if (is_vertex(i) && std::isfinite(nearest[i])) finite.push_back(nearest[i]);
+  if (finite.empty()) {
+    for (int i = 0; i < n; ++i)
+      if (is_vertex(i)) valence[i] = 0;
+    return valence;
+  }
+  std::nth_element(finite.begin(), finite.begin() + finite.size() / 2, finite.end());
+  const double reach = 1.5 * finite[finite.size() / 2];
+  const ElementHash hash = hash_over(elements, bounding_box(elements), shell * reach);
+  for (int i = 0; i < n; ++i) {
+    if (!is_vertex(i)) continue;
+    valence[i] = 0;
+    if (!(nearest[i] <= reach)) continue;
+    hash.for_each_near(elements.position[i], [&](int j) {
+      if (j != i && is_vertex(j) && glm::length(elements.position[i] - elements.position[j]) <= shell * nearest[i])
+        ++valence[i];
+    });
+  }
+  return valence;
+}
+
 }  // namespace paver

@@ -26,4 +26,11 @@ std::vector<double> nearest_neighbor_ratios(const Elements& elements, double gap
 // overlap); exact over all pairs. +inf when alone.
 std::vector<double> nearest_clearances(const Elements& elements);
 
+// Per V-element, its valence in space: how many V-elements lie within `shell` (> 1) times its
+// nearest V-element's distance (1.25 separates the first ring from the second in triangle, square
+// and hexagonal lattices alike). -1 for E-elements; 0 for a V-element whose nearest V-element lies
+// farther than 1.5 times the median nearest distance (a bare patch, not a lattice site).
+// The report's valence share uses it for square and hexagonal lattices (report/lattice_valence.h).
+std::vector<int> vertex_valences(const Elements& elements, double shell);
+
 }  // namespace paver

@@ -5,6 +5,7 @@
 #include "elements/boundary_postprocess.h"
 #include "elements/element_proximity.h"
 #include "map/lifting.h"
+#include "report/lattice_valence.h"
 
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
@@ -164,6 +165,14 @@ QualityBasis quality_basis(const SurfaceMap& map, const UnitCell& cell, const El
     largest = std::max(largest, spec.scale * cell.spacing);
   }
   if (per_cell > 0) basis.area_per_element = std::abs(cell.cell_area()) / per_cell;
+  if (elements.vertex.enabled && per_cell > 0) {
+    const double vertices = double(cell.vertices.size());
+    basis.vertex_share = vertices / per_cell;
+    int real_edges = 0;
+    for (const CellEdge& e : cell.edges) real_edges += !e.is_virtual;
+    basis.regular_valence = int(std::lround(2 * real_edges / vertices));
+  }
+  basis.spacing = cell.spacing;
   basis.boundary_strip = 0.5 * (elements.vertex.enabled ? elements.vertex.scale * cell.spacing : largest);
   basis.ideal_count = ideal_element_count(map, basis);
   return basis;
@@ -183,19 +192,33 @@ PavementQuality measure_pavement(const SurfaceMap& map, const Pattern& pattern,
   const Distribution clearance = distribution_of(nearest_clearances(elements));
   q.min_clearance = clearance.min;
   q.fill = basis.ideal_count > 0 ? double(q.elements) / basis.ideal_count : 0;
+  const double ideal_vertices = basis.ideal_count * basis.vertex_share;
+  const double ideal_edges = basis.ideal_count - ideal_vertices;
+  q.vertex_fill = ideal_vertices > 0 ? double(q.vertex_elements) / ideal_vertices : 0;
+  q.edge_fill = ideal_edges > 0 && q.edge_elements > 0 ? double(q.edge_elements) / ideal_edges : 0;
   q.neighbor_ratio = distribution_of(nearest_neighbor_ratios(elements));
   std::vector<double> deviation = spring_length_ratios(map, pattern, points, basis.solver, retired);
   for (double& r : deviation) r = std::abs(r - 1);
   const Distribution dev = distribution_of(deviation);
   q.spring_deviation_median = dev.median;
   q.spring_deviation_p95 = dev.p95;
-  const std::vector<double> to_boundary = distances_to_boundary(map, elements);
+  const std::vector<double> to_boundary = distances_to_boundary(map, elements, kInteriorDepth * basis.spacing);
   double disc_area = 0;
   for (size_t i = 0; i < elements.size(); ++i) {
     if (to_boundary[i] < 0.5 * elements.diameter[i]) ++q.boundary_crossings;
     disc_area += std::numbers::pi * 0.25 * elements.diameter[i] * elements.diameter[i];
   }
   q.coverage = disc_area / surface_area(map.mesh);
+  if (basis.regular_valence > 0) {
+    const std::vector<int> valence = lattice_valences(elements, basis.regular_valence, basis.spacing);
+    long regular = 0;
+    for (size_t i = 0; i < elements.size(); ++i) {
+      if (valence[i] < 0 || to_boundary[i] < kInteriorDepth * basis.spacing) continue;
+      ++q.interior_vertex_elements;
+      regular += valence[i] == basis.regular_valence;
+    }
+    q.regular_valence_share = q.interior_vertex_elements > 0 ? double(regular) / q.interior_vertex_elements : 0;
+  }
   q.spacing_curvature_spearman = spacing_curvature_correlation(map, elements);
   return q;
 }
@@ -214,6 +237,10 @@ nlohmann::json to_json(const PavementQuality& q) {
       {"min_clearance", q.min_clearance},
       {"gap", q.gap},
       {"fill", q.fill},
+      {"vertex_fill", q.vertex_fill},
+      {"edge_fill", q.edge_fill},
+      {"interior_vertex_elements", q.interior_vertex_elements},
+      {"regular_valence_share", q.regular_valence_share},
       {"neighbor_ratio", dist(q.neighbor_ratio)},
       {"spring_deviation_median", q.spring_deviation_median},
       {"spring_deviation_p95", q.spring_deviation_p95},

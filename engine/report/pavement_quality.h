@@ -32,7 +32,14 @@ struct QualityBasis {
   double area_per_element = 0;      // the regular pattern's area per element; 0 = fill not measured
   double boundary_strip = 0;        // half an element diameter: the strip along the boundary left bare
   double ideal_count = 0;           // ideal_element_count of the surface: what fill is measured against
+  double vertex_share = 0;          // V-elements' share of the ideal count (1 per cell vertex)
+  int regular_valence = 0;          // V-neighbours of a lattice vertex: 6 tri, 4 grid, 3 hex; 0 = no V
+  double spacing = 0;               // D: interior elements lie kInteriorDepth D from the boundary
 };
+
+// Elements at least this many D from the boundary count as interior for the valence share.
+inline constexpr double kInteriorDepth = 2;
+
 
 struct PavementQuality {
   long elements = 0, vertex_elements = 0, edge_elements = 0;
@@ -41,6 +48,9 @@ struct PavementQuality {
   double min_clearance = 0;         // smallest d - r_i - r_j over all pairs, surface units (negative = overlap)
   double gap = 0;                   // the gap it was measured with
   double fill = 0;                  // elements / the ideal count (QualityBasis), 0 when not measured
+  double vertex_fill = 0, edge_fill = 0;  // each kind over its own ideal count; 0 when not placed
+  long interior_vertex_elements = 0;  // V-elements kInteriorDepth D or more from the boundary
+  double regular_valence_share = 0;   // of those, the share with the lattice's valence (lattice_valence.h)
   Distribution neighbor_ratio;      // nearest-neighbour distance / (r_i + r_j)
   double spring_deviation_median = 0;  // |3D length / L_ab - 1| over pattern (non-virtual) edges
   double spring_deviation_p95 = 0;

@@ -1,0 +1,20 @@
+#pragma once
+// How many lattice neighbours each V-element has, measured on the final elements alone (not on the
+// solver's pattern), for the report's regular-valence share:
+// - triangle lattices: its degree in the surface-Delaunay triangulation of the V-elements (the
+//   coordination number of packings; 5 and 7 are the point defects);
+// - square and hexagonal lattices, whose Delaunay triangulations are degenerate: the V-elements
+//   within kValenceShell times its nearest one's distance (element_proximity.h).
+#include "elements/elements.h"
+
+#include <vector>
+
+namespace paver {
+
+inline constexpr double kValenceShell = 1.25;  // between the first ring (1) and the second (sqrt 2)
+
+// Per element: its valence, -1 for E-elements. `regular_valence` is the lattice's (6, 4 or 3);
+// `spacing` is D (triangles longer than 2.5 D, across a concave boundary, are not edges).
+std::vector<int> lattice_valences(const Elements& elements, int regular_valence, double spacing);
+
+}  // namespace paver
