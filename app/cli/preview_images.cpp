@@ -9,6 +9,23 @@
 namespace paver::cli {
 
 #ifdef PAVER_WITH_VULKAN
+namespace {
+constexpr std::array<std::uint8_t, 3> kFewer{40, 110, 240}, kMore{230, 50, 210};
+
+// `colours` with the V-elements of each defect's particles in kFewer or kMore.
+std::vector<std::array<std::uint8_t, 3>> defect_marked_colours(const Pavement& pavement,
+                                                               std::vector<std::array<std::uint8_t, 3>> colours) {
+  std::vector<int> mark(pavement.pattern.point_count(), 0);
+  for (const Pattern::Defect& d : pavement.pattern.defects)
+    for (int p : d.points) mark[p] = d.valence < 6 ? -1 : 1;
+  const Elements& e = pavement.elements;
+  for (size_t i = 0; i < e.size(); ++i)
+    if (e.kind[i] == ElementKind::Vertex && e.source[i] >= 0 && e.source[i] < int(mark.size()) && mark[e.source[i]])
+      colours[i] = mark[e.source[i]] < 0 ? kFewer : kMore;
+  return colours;
+}
+}  // namespace
+
 struct PreviewImages::Impl {
   std::unique_ptr<render::Renderer> renderer;
 };
@@ -27,8 +44,9 @@ void PreviewImages::write(const std::filesystem::path& folder, const SurfaceMap&
                           const ShapeMesh* custom, PreviewSize size) {
   render::Renderer& r = *impl_->renderer;
   r.set_surface(map);
-  r.set_elements(pavement.elements, render::element_colours(pavement.elements, render::ColourMode::NeighbourRatio, pavement.design.elements.gap),
-                 custom);
+  const auto colours =
+      render::element_colours(pavement.elements, render::ColourMode::NeighbourRatio, pavement.design.elements.gap);
+  r.set_elements(pavement.elements, colours, custom);
   r.set_pattern(map, pavement.pattern, pavement.points);
   render::SceneStyle style;
   r.render_3d(size.width, size.height, render::frame_surface(map.mesh), style);
@@ -36,8 +54,14 @@ void PreviewImages::write(const std::filesystem::path& folder, const SurfaceMap&
   render::draw_ratio_legend(preview);
   render::write_png(folder / "preview.png", preview);
   style.show_lattice = true;
+  // The map view marks an adaptive pattern's point defects on the V-elements around them.
+  const bool marks_defects = !pavement.pattern.defects.empty();
+  if (marks_defects)
+    r.set_elements(pavement.elements, defect_marked_colours(pavement, colours), custom);
   r.render_2d(size.width, size.height, render::frame_map(map), style);
-  render::write_png(folder / "param.png", r.read_back(1));
+  render::Image param = r.read_back(1);
+  if (marks_defects) render::draw_defect_legend(param, kFewer, kMore);
+  render::write_png(folder / "param.png", param);
 }
 #else
 struct PreviewImages::Impl {};

@@ -10,6 +10,7 @@
 #include "core/printable.h"
 #include "io/design_io.h"
 #include "pipeline/run_pipeline.h"
+#include "pattern/adaptive_pattern.h"
 #include "report/verdict.h"
 
 #include <algorithm>
@@ -131,6 +132,14 @@ int run_run(const RunArgs& args) {
   std::printf("verdict  %s\n", verdict.ok ? "ok: no contact violations, no boundary crossings, pattern intact"
                                           : "NOT OK:");
   for (const std::string& problem : verdict.problems) std::printf("         - %s\n", problem.c_str());
+  // A lattice that tore or left bare patches is what the adaptive topology is for.
+  const bool lattice_failed = std::any_of(verdict.problems.begin(), verdict.problems.end(), [](const std::string& p) {
+    return p.starts_with("bare patches") || p.starts_with("the pattern is torn");
+  });
+  if (lattice_failed && pavement.design.pattern.topology == Topology::Lattice &&
+      adaptive_pattern_unsupported(pavement.design).empty())
+    std::printf("         hint: the map distorts the lattice here; --topology adaptive grows the pattern on the "
+                "surface instead (docs/topology.md)\n");
   if (result.info.spacing_derived)
     std::printf("no spacing given: using D = %g, about 1000 points over this surface\n",
                 pavement.design.pattern.spacing);
@@ -147,8 +156,9 @@ int run_run(const RunArgs& args) {
               pavement.design.pattern.spacing, pavement.pattern.point_count(), counts.pattern_edges,
               counts.virtual_edges, counts.boundary_crossing_edges);
   if (pavement.design.pattern.topology == Topology::Adaptive)
-    std::printf("; %zu point defects, relaxed in %d iterations (%.0f ms)", pavement.pattern.defects.size(),
-                pavement.relaxation.iterations, pavement.relaxation.milliseconds);
+    std::printf("; %zu point defects, relaxed in %d iterations and packed in %d (%d jammed removed), %.0f ms",
+                pavement.pattern.defects.size(), pavement.relaxation.iterations,
+                pavement.relaxation.packing_iterations, pavement.relaxation.jammed, pavement.relaxation.milliseconds);
   std::printf("\n");
   std::printf("optimize %s%s%s: %d iterations, %s (last max step %.3g); %d filled, %d eliminated at the boundary, "
               "%d removed still colliding\n",
@@ -163,6 +173,13 @@ int run_run(const RunArgs& args) {
     std::printf("%-17s %10ld  %13.4g  %.4f / %.4f / %.4f / %.4f  %.3f  %-9ld  %.3f\n", label, q->contact_violations,
                 q->min_clearance, q->neighbor_ratio.min, q->neighbor_ratio.p5, q->neighbor_ratio.median,
                 q->neighbor_ratio.p95, q->neighbor_ratio.cv, q->boundary_crossings, q->fill);
+  const PavementQuality& final_quality = pavement.after;
+  std::printf("fill by kind: V %.3f", final_quality.vertex_fill);
+  if (counts.edge_elements > 0) std::printf(", E %.3f", final_quality.edge_fill);
+  if (final_quality.interior_vertex_elements > 0)
+    std::printf("; regular valence: %.1f%% of %ld interior V-elements", 100 * final_quality.regular_valence_share,
+                final_quality.interior_vertex_elements);
+  std::printf("\n");
   std::printf("time    ");
   double total = 0;
   for (const auto& [stage, ms] : result.timings) std::printf(" %s %.1f ms,", stage.c_str(), ms), total += ms;

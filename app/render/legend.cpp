@@ -23,6 +23,10 @@ const std::map<char, std::array<const char*, 7>>& glyphs() {
       {'.', {"     ", "     ", "     ", "     ", "     ", " ##  ", " ##  "}},
       {' ', {"     ", "     ", "     ", "     ", "     ", "     ", "     "}},
       {'/', {"    #", "    #", "   # ", "  #  ", " #   ", "#    ", "#    "}},
+      {'<', {"   # ", "  #  ", " #   ", "#    ", " #   ", "  #  ", "   # "}},
+      {'>', {" #   ", "  #  ", "   # ", "    #", "   # ", "  #  ", " #   "}},
+      {'f', {"  ## ", " #   ", "###  ", " #   ", " #   ", " #   ", " #   "}},
+      {'p', {"     ", "     ", "#### ", "#   #", "#   #", "#### ", "#    "}},
       {'N', {"#   #", "##  #", "# # #", "#  ##", "#   #", "#   #", "#   #"}},
       {'a', {"     ", "     ", " ### ", "    #", " ####", "#   #", " ####"}},
       {'c', {"     ", "     ", " ### ", "#    ", "#    ", "#   #", " ### "}},
@@ -87,6 +91,22 @@ void draw_ratio_legend(Image& image) {
     char label[16];
     std::snprintf(label, sizeof label, "%.1f", tick);
     text(image, x - 8 * scale, y0 + bar_h + 6 * scale, label, scale, white);
+  }
+}
+
+void draw_defect_legend(Image& image, std::array<std::uint8_t, 3> fewer, std::array<std::uint8_t, 3> more) {
+  const int scale = image.height >= 600 ? 2 : 1;
+  const int x0 = 16 * scale, y0 = image.height - 64 * scale;
+  for (int y = y0 - 8 * scale; y < y0 + 48 * scale; ++y)
+    for (int x = x0 - 8 * scale; x < x0 + 110 * scale; ++x) put(image, x, y, {28, 30, 34});
+  const std::array<std::uint8_t, 3> white{235, 235, 235};
+  text(image, x0, y0, "point defects", scale, white);
+  int row = y0 + 14 * scale;
+  for (const auto& [rgb, label] : {std::pair{fewer, "< 6"}, std::pair{more, "> 6"}}) {
+    for (int y = 0; y < 9 * scale; ++y)
+      for (int x = 0; x < 9 * scale; ++x) put(image, x0 + x, row + y, rgb);
+    text(image, x0 + 16 * scale, row + scale, label, scale, white);
+    row += 14 * scale;
   }
 }
 

@@ -111,4 +111,8 @@ void write_png(const std::filesystem::path& path, const Image& image);
 // numbers in a small built-in bitmap font: the CLI's preview carries its own legend.
 void draw_ratio_legend(Image& image);
 
+// The legend of the point-defect markers (param.png of an adaptive pattern): the colours of
+// particles or faces with fewer than 6 neighbours or sides, and with more.
+void draw_defect_legend(Image& image, std::array<std::uint8_t, 3> fewer, std::array<std::uint8_t, 3> more);
+
 }  // namespace paver::render
