@@ -94,20 +94,55 @@ TEST(AdaptivePattern, AHoneycombIsTheDualWithThreeEdgesAtEveryInnerPointAndFaces
 }
 
 // The nearly closed bunny head: its map squeezes the ears 20-fold, so the lattice piles up and
-// tears. The adaptive pattern keeps more elements, closer to regular, and still no contact.
-TEST(AdaptivePattern, OnTheBunnyHeadItCoversMoreThanTheLatticeAndStaysRegular) {
+// tears. The adaptive pattern, packed to contact, covers it (issue 10's targets; docs/topology.md
+// has the figures): fill >= 0.90, NN p95 <= 1.15, NN cv <= 0.05, with no contact violation and
+// no removal after the pattern is built. Regular valence: hex meets 85%; tri measured 0.81 (the
+// packing's jamming disorders it) and is held here at 0.78 so that it cannot slip unseen.
+struct HeadTargets {
+  Tessellation tessellation;
+  double least_regular_share;
+};
+
+class AdaptiveOnTheHead : public ::testing::TestWithParam<HeadTargets> {};
+
+TEST_P(AdaptiveOnTheHead, ItCoversTheHeadRegularlyWithNoContact) {
   const auto map = test::cached_map(test::scanned_mesh("bunnyhead"));
-  Design design = design_of(*map, Tessellation::Triangle);
+  Design design = design_of(*map, GetParam().tessellation);
   const Pavement adaptive = make_pavement(*map, design);
   design.pattern.topology = Topology::Lattice;
   const Pavement lattice = make_pavement(*map, design);
-  EXPECT_EQ(adaptive.after.contact_violations, 0);
-  EXPECT_EQ(adaptive.after.boundary_crossings, 0);
-  // Measured 0.71 against 0.56 (docs/topology.md).
-  EXPECT_GT(adaptive.after.fill, lattice.after.fill + 0.1);
-  EXPECT_LE(adaptive.after.neighbor_ratio.p95, 1.15);
-  EXPECT_LE(adaptive.after.neighbor_ratio.cv, 0.05);
+  const PavementQuality& q = adaptive.after;
+  EXPECT_EQ(q.contact_violations, 0);
+  EXPECT_EQ(q.boundary_crossings, 0);
+  EXPECT_EQ(adaptive.resolution.removed, 0);  // packed, not deleted
+  EXPECT_GE(q.fill, 0.90);
+  EXPECT_LE(q.neighbor_ratio.p95, 1.15);
+  EXPECT_LE(q.neighbor_ratio.cv, 0.05);
+  EXPECT_GT(q.interior_vertex_elements, 500);
+  EXPECT_GE(q.regular_valence_share, GetParam().least_regular_share);
+  // The lattice on the same head: torn and bare.
+  EXPECT_LT(lattice.after.fill, 0.70);
   EXPECT_GT(lattice.after.neighbor_ratio.p95, 1.15);
+}
+
+INSTANTIATE_TEST_SUITE_P(TriAndHex, AdaptiveOnTheHead,
+                         ::testing::Values(HeadTargets{Tessellation::Triangle, 0.78},
+                                           HeadTargets{Tessellation::Hexagon, 0.85}));
+
+// Vertex and edge gems (the bundled pendant_tri_gems design at the head's default spacing): each
+// kind keeps 85% of its ideal count. The edge gems sit on the surface nearest their bar's 3D
+// midpoint; at the map's midpoint (lifted) about 800 of them collided with a vertex gem.
+TEST(AdaptivePattern, VertexAndEdgeGemsOnTheHeadEachKeepTheirCount) {
+  const auto map = test::cached_map(test::scanned_mesh("bunnyhead"));
+  Design design = design_of(*map, Tessellation::Triangle);
+  design.elements.vertex = {true, 0.6, ShapeKind::Gem};
+  design.elements.edge = {EdgeElementDesign{0.5, 0.35, ShapeKind::Gem, {}}};
+  const Pavement p = make_pavement(*map, design);
+  EXPECT_EQ(p.after.contact_violations, 0);
+  EXPECT_EQ(p.after.boundary_crossings, 0);
+  EXPECT_LT(p.paper.contact_violations, long(0.01 * p.paper.elements));
+  EXPECT_GE(p.after.vertex_fill, 0.85);
+  EXPECT_GE(p.after.edge_fill, 0.85);
 }
 
 TEST(AdaptivePattern, DesignsItCannotTakeAreRefusedNamingTheKey) {
