@@ -29,6 +29,16 @@ struct CellGrid {
     return glm::ivec3(int(std::floor(r.x)), int(std::floor(r.y)), int(std::floor(r.z)));
   }
 
+  // Calls visit(key) for the 27 cells around p's cell (its own included): everything within one
+  // cell width of p lies in them.
+  template <class F>
+  void for_each_key_around(const glm::dvec3& p, F&& visit) const {
+    const glm::ivec3 c = cell_of(p);
+    for (int dz = -1; dz <= 1; ++dz)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) visit(key(c + glm::ivec3(dx, dy, dz)));
+  }
+
   static std::uint64_t key(glm::ivec3 c) {
     return (std::uint64_t(std::uint32_t(c.x) & 0x1fffff) << 42) | (std::uint64_t(std::uint32_t(c.y) & 0x1fffff) << 21) |
            std::uint64_t(std::uint32_t(c.z) & 0x1fffff);

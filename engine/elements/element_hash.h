@@ -33,14 +33,11 @@ public:
   // cell width of it), p's own element included if it is one.
   template <class F>
   void for_each_near(const glm::dvec3& p, F&& visit) const {
-    const glm::ivec3 c = grid_.cell_of(p);
-    for (int dz = -1; dz <= 1; ++dz)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const auto it = buckets_.find(CellGrid::key(c + glm::ivec3(dx, dy, dz)));
-          if (it == buckets_.end()) continue;
-          for (int j : it->second) visit(j);
-        }
+    grid_.for_each_key_around(p, [&](std::uint64_t key) {
+      const auto it = buckets_.find(key);
+      if (it != buckets_.end())
+        for (int j : it->second) visit(j);
+    });
   }
 
 private:

@@ -11,7 +11,7 @@
 namespace paver {
 namespace {
 
-constexpr int kChordSteps = 4;  // tangent steps from the map's point to the chord's: converged to 1e-6 D on the head
+constexpr int kChordSteps = 4;  // tangent steps from the map's point towards the chord's
 
 bool on_cell_edge(const EdgeElementDesign& spec, int cell_edge) {
   return spec.cell_edges.empty() ||
@@ -58,9 +58,6 @@ Elements place_elements(const SurfaceMap& map, const Pattern& pattern,
                                          : glm::dvec3(std::nan("")));
     }
   }
-  LiftedPoints lifted;
-  lifted.resize(centres.size());
-  lift_points(map, centres, lifted);
   if (!chord_points.empty()) {
     // From the map's point, a few tangent steps towards the chord point: they end where the
     // surface is nearest it. The E-elements follow the V-elements in `centres`.
@@ -68,28 +65,18 @@ Elements place_elements(const SurfaceMap& map, const Pattern& pattern,
     SurfaceParticles on_surface;
     on_surface.uv.assign(centres.begin() + first_edge, centres.end());
     on_surface.lifted.resize(chord_points.size());
-    for (size_t k = 0; k < chord_points.size(); ++k) {
-      const size_t i = first_edge + k;
-      on_surface.lifted.triangle[k] = lifted.triangle[i];
-      on_surface.lifted.position[k] = lifted.position[i];
-      on_surface.lifted.normal[k] = lifted.normal[i];
-      on_surface.lifted.curvature[k] = lifted.curvature[i];
-    }
+    lift_points(map, on_surface.uv, on_surface.lifted);
     for (int attempt = 0; attempt < kChordSteps; ++attempt) {
       std::vector<glm::dvec3> step(chord_points.size(), glm::dvec3(0));
       for (size_t k = 0; k < chord_points.size(); ++k)
         if (!std::isnan(chord_points[k].x)) step[k] = chord_points[k] - on_surface.lifted.position[k];
       on_surface.step(map, std::move(step));
     }
-    for (size_t k = 0; k < chord_points.size(); ++k) {
-      const size_t i = first_edge + k;
-      centres[i] = on_surface.uv[k];
-      lifted.triangle[i] = on_surface.lifted.triangle[k];
-      lifted.position[i] = on_surface.lifted.position[k];
-      lifted.normal[i] = on_surface.lifted.normal[k];
-      lifted.curvature[i] = on_surface.lifted.curvature[k];
-    }
+    std::copy(on_surface.uv.begin(), on_surface.uv.end(), centres.begin() + first_edge);
   }
+  LiftedPoints lifted;
+  lifted.resize(centres.size());
+  lift_points(map, centres, lifted);
 
   Elements elements;
   elements.reserve(pending.size());

@@ -47,21 +47,18 @@ BoundaryIndex::Nearest BoundaryIndex::nearest(const glm::dvec3& p) const {
   const auto& pos = mesh_.positions;
   const int n = int(loop.size());
   Nearest best{reach_, p};
-  const glm::ivec3 c = grid_.cell_of(p);
-  for (int dz = -1; dz <= 1; ++dz)
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dx = -1; dx <= 1; ++dx) {
-        const auto it = buckets_.find(CellGrid::key(c + glm::ivec3(dx, dy, dz)));
-        if (it == buckets_.end()) continue;
-        for (int i : it->second) {
-          const glm::dvec3 a = pos[loop[i]], ab = pos[loop[(i + 1) % n]] - a;
-          const double len2 = glm::dot(ab, ab);
-          const double t = len2 > 0 ? std::clamp(glm::dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-          const glm::dvec3 q = a + t * ab;
-          const double d = glm::length(p - q);
-          if (d < best.distance) best = {d, q};
-        }
-      }
+  grid_.for_each_key_around(p, [&](std::uint64_t key) {
+    const auto it = buckets_.find(key);
+    if (it == buckets_.end()) return;
+    for (int i : it->second) {
+      const glm::dvec3 a = pos[loop[i]], ab = pos[loop[(i + 1) % n]] - a;
+      const double len2 = glm::dot(ab, ab);
+      const double t = len2 > 0 ? std::clamp(glm::dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+      const glm::dvec3 q = a + t * ab;
+      const double d = glm::length(p - q);
+      if (d < best.distance) best = {d, q};
+    }
+  });
   return best;
 }
 
