@@ -1,14 +1,18 @@
 #!/usr/bin/env bash
 # One-stop set-up for a fresh Debian 12 machine: installs the missing Debian packages, builds
 # everything (Release, build/), then either runs the main job on a bundled surface (`demo`) or the
-# whole test suite (`test`). README's quick start is these two commands.
+# whole test suite (`test`). README's quick start is these two commands. `sanitize` (CI's second
+# stage) builds the engine, the CLI and the fuzz targets with clang under ASan+UBSan into
+# build-sanitize/, runs their tests there and each fuzz target for PAVER_FUZZ_SECONDS (default 60).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-usage() { echo "usage: app/setup.sh demo|test|build" >&2; exit 2; }
+usage() { echo "usage: app/setup.sh demo|test|build|sanitize" >&2; exit 2; }
 [ $# -eq 1 ] || usage
 mode=$1
-case "$mode" in demo|test|build) ;; *) usage ;; esac
+case "$mode" in demo|test|build|sanitize) ;; *) usage ;; esac
+fuzz_seconds=${PAVER_FUZZ_SECONDS:-60}
+[[ "$fuzz_seconds" =~ ^[0-9]+$ ]] || { echo "setup: PAVER_FUZZ_SECONDS must be a whole number of seconds, got '$fuzz_seconds'" >&2; exit 2; }
 
 packages=(
   cmake ninja-build g++ pkg-config
@@ -17,6 +21,8 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools glslang-tools spirv-tools
   libglfw3-dev libimgui-dev xvfb xauth
 )
+# libFuzzer and the sanitizer runtimes come with clang's compiler-rt.
+[ "$mode" = sanitize ] && packages+=(clang libclang-rt-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -31,8 +37,10 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 jobs=$(nproc 2>/dev/null || echo 2)
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
-cmake --build build -j"$jobs"
+if [ "$mode" != sanitize ]; then
+  cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
+  cmake --build build -j"$jobs"
+fi
 
 case "$mode" in
   demo)
@@ -53,4 +61,38 @@ case "$mode" in
     fi
     ;;
   build) ;;
+  sanitize)
+    # Without Vulkan: lavapipe and the validation layer are not ours to sanitize, and the Vulkan
+    # path is covered by the main build's tests.
+    cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
+      -DPAVER_FUZZ=ON -DPAVER_WITH_VULKAN=OFF -DPAVER_BUILD_BENCH=OFF
+    cmake --build build-sanitize -j"$jobs"
+    export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 UBSAN_OPTIONS=print_stacktrace=1
+    if ! ctest --test-dir build-sanitize --output-on-failure -j"$jobs"; then
+      echo
+      echo "setup: tests failed under the sanitizers; running the failed ones again, one at a time:"
+      ctest --test-dir build-sanitize --rerun-failed --output-on-failure -j1 || true
+      exit 1
+    fi
+    # Each fuzz target from the committed seeds, into a scratch corpus that is removed afterwards
+    # (the committed corpus stays as it is). A finding leaves its input in build-sanitize/fuzz-findings.
+    scratch=$(mktemp -d)
+    trap 'rm -rf "$scratch"' EXIT
+    mkdir -p build-sanitize/fuzz-findings
+    for target in obj off ply stl design; do
+      echo "setup: fuzzing $target for ${fuzz_seconds} s"
+      mkdir -p "$scratch/$target"
+      log="$scratch/$target.log"
+      status=0
+      build-sanitize/bin/fuzz_$target -max_total_time="$fuzz_seconds" -timeout=10 -rss_limit_mb=3072 \
+        -max_len=65536 -print_final_stats=1 -artifact_prefix=build-sanitize/fuzz-findings/$target- \
+        "$scratch/$target" tests/fuzz/corpus/$target >"$log" 2>&1 || status=$?
+      grep -E "^(stat::number_of_executed_units|stat::peak_rss_mb|#[0-9]+ +DONE)" "$log" || true
+      if [ "$status" -ne 0 ]; then
+        tail -n 60 "$log"
+        echo "setup: fuzz_$target found a problem (exit $status); its input is in build-sanitize/fuzz-findings"
+        exit 1
+      fi
+    done
+    ;;
 esac

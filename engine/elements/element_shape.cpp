@@ -163,8 +163,8 @@ bool has_repeated_corner(const std::vector<int>& polygon) {
   return false;
 }
 
-[[noreturn]] void shape_error(const std::filesystem::path& path, const std::string& what) {
-  throw InputError("custom shape " + path.string() + ": " + what);
+[[noreturn]] void shape_error(const std::string& source, const std::string& what) {
+  throw InputError(source + ": " + what);
 }
 
 }  // namespace
@@ -184,7 +184,11 @@ ShapeMesh make_builtin_shape(ShapeKind kind, ShapeDetail detail) {
 
 ShapeMesh load_custom_shape(const std::filesystem::path& path) {
   // The surfaces' strict readers: a bad file is refused with the same message as a bad surface.
-  const PolygonSoup soup = read_mesh_file(path, "custom shape " + path.string());
+  const std::string source = "custom shape " + path.string();
+  return custom_shape_from_soup(read_mesh_file(path, source), source);
+}
+
+ShapeMesh custom_shape_from_soup(const PolygonSoup& soup, const std::string& source) {
 
   // Polygons become fans from their first corner; faces repeating a vertex are skipped. Only the
   // vertices that faces use are kept, numbered in order of use, so that stray points do not move
@@ -212,7 +216,7 @@ ShapeMesh load_custom_shape(const std::filesystem::path& path) {
       shape.triangles.emplace_back(a, b, c);
     }
   }
-  if (shape.triangles.empty()) shape_error(path, "it has no faces");
+  if (shape.triangles.empty()) shape_error(source, "it has no faces");
 
   // The footprint the contact rule assumes is a disc of the element's diameter: the shape is
   // scaled so that its outline seen along +Z fits the unit disc around its bounding box's centre
@@ -222,7 +226,7 @@ ShapeMesh load_custom_shape(const std::filesystem::path& path) {
   for (const glm::dvec3& p : points) reach = std::max(reach, glm::length(glm::dvec2(p - centre)));
   const double width = 2 * reach;
   if (!(width > 0))
-    shape_error(path, "it has no horizontal extent (all vertices lie on one vertical line); "
+    shape_error(source, "it has no horizontal extent (all vertices lie on one vertical line); "
                       "model it with +Z as the surface normal");
   shape.positions.reserve(points.size());
   for (const glm::dvec3& p : points) shape.positions.emplace_back((p - centre) / width);

@@ -2,6 +2,8 @@
 // Element shapes (section 4.1): unit-diameter triangle meshes centred at the origin, with +Z the
 // surface normal they get aligned to. The widest horizontal extent is 1 so that scaling by the
 // element diameter makes the element exactly that wide.
+#include "mesh/polygon_soup.h"
+
 #include <glm/vec3.hpp>
 
 #include <filesystem>
@@ -32,6 +34,8 @@ ShapeMesh make_builtin_shape(ShapeKind kind, ShapeDetail detail = ShapeDetail::F
 // normalises it: centred on its bounding box, scaled so its widest XY extent is 1. Throws
 // InputError ("custom shape <file>: ...", the place and what is wrong) when it cannot.
 ShapeMesh load_custom_shape(const std::filesystem::path& path);
+// The same normalisation for a file already read; `source` starts its error messages.
+ShapeMesh custom_shape_from_soup(const PolygonSoup& soup, const std::string& source);
 
 std::string_view shape_name(ShapeKind kind);  // "sphere", "gem", "hex_prism", "disc", "custom"
 std::optional<ShapeKind> shape_from_name(std::string_view name);

@@ -341,7 +341,7 @@ Json to_json(const Design& design) {
 }
 
 // parse_error::byte counts the bytes read, the offending one included (1-based).
-std::string line_and_column(const std::string& text, size_t byte) {
+std::string line_and_column(std::string_view text, size_t byte) {
   const size_t position = std::min(byte == 0 ? 0 : byte - 1, text.size());
   size_t line = 1, line_start = 0;
   for (size_t i = 0; i < position; ++i) {
@@ -411,22 +411,25 @@ Design design_from_json(const nlohmann::json& json, const std::string& source) {
 
 nlohmann::json design_to_json(const Design& design) { return to_json<nlohmann::json>(design); }
 
-Design load_design(const std::filesystem::path& path) {
-  const std::string text = read_design_text(path);
+Design design_from_text(std::string_view text, const std::string& source) {
   nlohmann::json json;
   try {
     json = nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& error) {
-    throw InputError(path.string() + ":" + line_and_column(text, error.byte) +
-                     ": JSON syntax error: " + short_reason(error.what()));
+    throw InputError(source + ":" + line_and_column(text, error.byte) + ": JSON syntax error: " +
+                     short_reason(error.what()));
   } catch (const nlohmann::json::out_of_range& error) {
     // A number beyond double's range (1e999): nlohmann reports no position, only the number.
     std::string reason = error.what();  // "[json.exception.out_of_range.406] number overflow parsing '1e999'"
     const size_t bracket = reason.find("] ");
     if (bracket != std::string::npos) reason = reason.substr(bracket + 2);
-    throw InputError(path.string() + ": " + reason + "; numbers must be finite (at most about 1.8e308)");
+    throw InputError(source + ": " + reason + "; numbers must be finite (at most about 1.8e308)");
   }
-  Design design = design_from_json(json, path.string());
+  return design_from_json(json, source);
+}
+
+Design load_design(const std::filesystem::path& path) {
+  Design design = design_from_text(read_design_text(path), path.string());
 
   // A relative custom shape path means "beside the design file", wherever the program runs from.
   const std::filesystem::path shape = design.elements.custom_shape;

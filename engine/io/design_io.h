@@ -7,11 +7,16 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 namespace paver {
 
 Design design_from_json(const nlohmann::json& json, const std::string& source);
 nlohmann::json design_to_json(const Design& design);
+
+// Parses and reads a design file's text; `source` names it in errors. Syntax errors name the
+// line and column.
+Design design_from_text(std::string_view text, const std::string& source);
 
 // Reads and validates a design file. Syntax errors name the line and column.
 Design load_design(const std::filesystem::path& path);
