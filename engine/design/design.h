@@ -6,6 +6,7 @@
 #include "pattern/unit_cell.h"
 #include "design/solver_parameters.h"
 
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -38,6 +39,10 @@ struct EdgeElementDesign {
   double scale = 0.5;                     // s in (0, 1]: diameter = s * D
   ShapeKind shape = ShapeKind::Sphere;
   std::vector<int> cell_edges;            // unit-cell edge indices it sits on; empty = all
+
+  bool sits_on(int cell_edge) const {
+    return cell_edges.empty() || std::find(cell_edges.begin(), cell_edges.end(), cell_edge) != cell_edges.end();
+  }
 };
 
 struct ElementsDesign {

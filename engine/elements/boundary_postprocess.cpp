@@ -58,9 +58,7 @@ int fill_boundary_edges(const SurfaceMap& map, const Pattern& pattern, const std
     const glm::dvec2 to = edge.inside_is_from ? outside : inside;
     for (int s = 0; s < int(design.edge.size()); ++s) {
       const EdgeElementDesign& spec = design.edge[s];
-      if (!spec.cell_edges.empty() &&
-          std::find(spec.cell_edges.begin(), spec.cell_edges.end(), edge.cell_edge) == spec.cell_edges.end())
-        continue;
+      if (!spec.sits_on(edge.cell_edge)) continue;
       // Distance along the edge from the inside end, as a fraction of the edge.
       const double from_inside = edge.inside_is_from ? spec.t : 1 - spec.t;
       if (from_inside >= hit) continue;

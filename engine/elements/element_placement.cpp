@@ -13,11 +13,6 @@ namespace {
 
 constexpr int kChordSteps = 4;  // tangent steps from the map's point towards the chord's
 
-bool on_cell_edge(const EdgeElementDesign& spec, int cell_edge) {
-  return spec.cell_edges.empty() ||
-         std::find(spec.cell_edges.begin(), spec.cell_edges.end(), cell_edge) != spec.cell_edges.end();
-}
-
 }  // namespace
 
 Elements place_elements(const SurfaceMap& map, const Pattern& pattern,
@@ -47,7 +42,7 @@ Elements place_elements(const SurfaceMap& map, const Pattern& pattern,
   for (int s = 0; s < int(design.edge.size()); ++s) {
     const EdgeElementDesign& spec = design.edge[s];
     for (int e = 0; e < pattern.edge_count(); ++e) {
-      if (pattern.edge_virtual[e] || !on_cell_edge(spec, pattern.edge_cell_edge[e])) continue;
+      if (pattern.edge_virtual[e] || !spec.sits_on(pattern.edge_cell_edge[e])) continue;
       const glm::dvec2 a = points[pattern.edge_a[e]], b = points[pattern.edge_b[e]];
       pending.push_back({ElementKind::Edge, e, s, spec.scale * spacing, spec.shape});
       centres.push_back(a + spec.t * (b - a));

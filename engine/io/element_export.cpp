@@ -4,6 +4,7 @@
 
 #include "io/atomic_file.h"
 #include "core/input_error.h"
+#include "core/interrupted.h"
 
 #include <glm/geometric.hpp>
 
@@ -36,7 +37,9 @@ void check_sizes(const Elements& e) {
 // of small values cost neither a stream call each nor a string of the whole file.
 class ChunkedWriter {
 public:
-  explicit ChunkedWriter(std::ostream& out) : out_(out), buffer_(kCapacity) {}
+  // `stop` is polled at every flush (each MiB): a large export ends within moments of a Ctrl-C.
+  explicit ChunkedWriter(std::ostream& out, const std::atomic<bool>* stop = nullptr)
+      : out_(out), stop_(stop), buffer_(kCapacity) {}
 
   // At least `n` writable bytes (n <= kMaxReserve); finish with advance().
   char* room(std::size_t n) {
@@ -76,6 +79,7 @@ public:
   }
 
   void flush() {
+    if (stop_ && stop_->load()) throw Interrupted();
     out_.write(buffer_.data(), static_cast<std::streamsize>(used_));
     used_ = 0;
   }
@@ -86,6 +90,7 @@ public:
 private:
   static constexpr std::size_t kCapacity = std::size_t{1} << 20;
   std::ostream& out_;
+  const std::atomic<bool>* stop_;
   std::vector<char> buffer_;
   std::size_t used_ = 0;
 };
@@ -175,11 +180,12 @@ MeshCounts count(const Elements& elements, const ShapeTable& shapes) {
 
 }  // namespace
 
-void write_placements_csv(const std::filesystem::path& path, const Elements& elements) {
+void write_placements_csv(const std::filesystem::path& path, const Elements& elements,
+                          const std::atomic<bool>* stop) {
   check_sizes(elements);
   write_file_atomically(path, [&](std::ostream& out) {
     constexpr int kDigits = 17;  // enough for every double to read back exactly
-    ChunkedWriter w(out);
+    ChunkedWriter w(out, stop);
     w.text("id,kind,x,y,z,nx,ny,nz,diameter,u,v\n");
     for (std::size_t i = 0; i < elements.size(); ++i) {
       w.integer(static_cast<long long>(i));
@@ -200,7 +206,30 @@ void write_placements_csv(const std::filesystem::path& path, const Elements& ele
 ElementMeshSize element_mesh_size(const Elements& elements, const ElementMeshOptions& options) {
   const ShapeTable shapes(elements, options, "elements");
   const MeshCounts counts = count(elements, shapes);
-  return {counts.vertices, counts.faces};
+  return {elements.size(), counts.vertices, counts.faces};
+}
+
+ElementMeshSize expected_element_mesh_size(const Pattern& pattern, const ElementsDesign& design,
+                                           const ElementMeshOptions& options) {
+  ElementMeshSize size;
+  const auto add = [&](ShapeKind kind, std::size_t count) {
+    if (count == 0) return;
+    if (kind == ShapeKind::Custom && !options.custom)
+      throw std::invalid_argument("expected_element_mesh_size: the design uses the custom shape but none was given");
+    const ShapeMesh builtin = kind == ShapeKind::Custom ? ShapeMesh{} : make_builtin_shape(kind);
+    const ShapeMesh& shape = kind == ShapeKind::Custom ? *options.custom : builtin;
+    size.elements += count;
+    size.vertices += count * shape.positions.size();
+    size.faces += count * shape.triangles.size();
+  };
+  if (design.vertex.enabled) add(design.vertex.shape, std::size_t(pattern.point_count()));
+  for (const EdgeElementDesign& spec : design.edge) {
+    std::size_t count = 0;
+    for (int e = 0; e < pattern.edge_count(); ++e)
+      count += !pattern.edge_virtual[e] && spec.sits_on(pattern.edge_cell_edge[e]);
+    add(spec.shape, count);
+  }
+  return size;
 }
 
 void write_elements_ply(const std::filesystem::path& path, const Elements& elements,
@@ -217,7 +246,7 @@ void write_elements_ply(const std::filesystem::path& path, const Elements& eleme
                      "lighter shape");
 
   write_file_atomically(path, [&](std::ostream& out) {
-    ChunkedWriter w(out);
+    ChunkedWriter w(out, options.stop);
     w.text("ply\nformat binary_little_endian 1.0\ncomment Paver elements: " +
            std::to_string(elements.size()) + "\nelement vertex " + std::to_string(counts.vertices) +
            "\nproperty float x\nproperty float y\nproperty float z\n"
@@ -263,7 +292,7 @@ void write_elements_obj(const std::filesystem::path& path, const Elements& eleme
   const MeshCounts counts = count(elements, shapes);
 
   write_file_atomically(path, [&](std::ostream& out) {
-    ChunkedWriter w(out);
+    ChunkedWriter w(out, options.stop);
     w.text("# Paver elements: " + std::to_string(elements.size()) + "\n# vertices: " +
            std::to_string(counts.vertices) + ", faces: " + std::to_string(counts.faces) + "\n");
 
@@ -307,7 +336,7 @@ void write_elements_stl(const std::filesystem::path& path, const Elements& eleme
                      " triangles are more than binary STL can count; use fewer elements or a lighter shape");
 
   write_file_atomically(path, [&](std::ostream& out) {
-    ChunkedWriter w(out);
+    ChunkedWriter w(out, options.stop);
     std::string header = "Paver elements: " + std::to_string(elements.size());
     header.resize(80, ' ');  // the 80-byte header must not start with "solid" (ASCII STL)
     w.text(header);

@@ -1,8 +1,11 @@
 #pragma once
 // Export of the elements for fabrication and for other tools.
+#include "design/design.h"
 #include "elements/elements.h"
+#include "pattern/pattern.h"
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -12,7 +15,9 @@ namespace paver {
 
 // placements.csv: header exactly `id,kind,x,y,z,nx,ny,nz,diameter,u,v`, one row per element,
 // kind V or E, full double precision (17 significant digits).
-void write_placements_csv(const std::filesystem::path& path, const Elements& elements);
+// `stop`: as ElementMeshOptions::stop below.
+void write_placements_csv(const std::filesystem::path& path, const Elements& elements,
+                          const std::atomic<bool>* stop = nullptr);
 
 // Every element as real geometry: its shape scaled to its diameter, +Z turned onto its normal,
 // moved to its centre. `custom` is the user's shape when any element uses ShapeKind::Custom.
@@ -21,11 +26,14 @@ void write_placements_csv(const std::filesystem::path& path, const Elements& ele
 struct ElementMeshOptions {
   const ShapeMesh* custom = nullptr;
   const std::vector<std::array<std::uint8_t, 3>>* colours = nullptr;
+  // When it becomes true the writer stops within a MiB and throws Interrupted (core/interrupted.h),
+  // leaving no file behind (io/atomic_file.h).
+  const std::atomic<bool>* stop = nullptr;
 };
 // Vertices and triangles of every element's mesh together (the size of the PLY/OBJ/STL), and
 // about how many bytes the PLY and OBJ (and the STL when asked) will take: checked before writing.
 struct ElementMeshSize {
-  std::size_t vertices = 0, faces = 0;
+  std::size_t elements = 0, vertices = 0, faces = 0;
   double bytes(bool stl) const {
     return 15.0 * double(vertices) + 13.0 * double(faces)          // binary PLY
            + 36.0 * double(vertices) + 26.0 * double(faces)        // OBJ text, about
@@ -33,6 +41,11 @@ struct ElementMeshSize {
   }
 };
 ElementMeshSize element_mesh_size(const Elements& elements, const ElementMeshOptions& options = {});
+// The same for a pattern whose elements are not placed yet: one V-element per point (when
+// enabled) and one E-element per designed edge element on each real edge, so that a run can be
+// refused before the solve. Boundary filling and refill add a few more later.
+ElementMeshSize expected_element_mesh_size(const Pattern& pattern, const ElementsDesign& design,
+                                           const ElementMeshOptions& options = {});
 
 void write_elements_ply(const std::filesystem::path& path, const Elements& elements,
                         const ElementMeshOptions& options = {});

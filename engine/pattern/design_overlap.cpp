@@ -53,9 +53,7 @@ void check_design_overlaps(const UnitCell& cell, const ElementsDesign& design, d
         for (int e = 0; e < int(cell.edges.size()); ++e) {
           const CellEdge& edge = cell.edges[e];
           if (edge.is_virtual) continue;
-          if (!spec.cell_edges.empty() &&
-              std::find(spec.cell_edges.begin(), spec.cell_edges.end(), e) == spec.cell_edges.end())
-            continue;
+          if (!spec.sits_on(e)) continue;
           const glm::dvec2 a = cell.position(edge.from, c), b = cell.position(edge.to, c + edge.offset);
           if (origin) own.push_back(all.size());
           all.push_back({a + spec.t * (b - a), 0.5 * spec.scale * spacing,

@@ -30,9 +30,10 @@ void write_run_files(const fs::path& folder, const Pavement& pavement, const Run
   make_output_folder(folder);
   ElementMeshOptions mesh_options;
   mesh_options.custom = options.custom;
+  mesh_options.stop = options.stop;
   const auto colours = contact_colours(pavement.elements, pavement.design.elements.gap);
   mesh_options.colours = &colours;
-  write_placements_csv(folder / "placements.csv", pavement.elements);
+  write_placements_csv(folder / "placements.csv", pavement.elements, options.stop);
   write_elements_ply(folder / "elements.ply", pavement.elements, mesh_options);
   write_elements_obj(folder / "elements.obj", pavement.elements, mesh_options);
   if (options.stl) write_elements_stl(folder / "elements.stl", pavement.elements, mesh_options);

@@ -15,6 +15,24 @@
 #include <utility>
 
 namespace paver {
+namespace {
+
+// The output bound, checked twice: from the pattern before the solve (so that a design whose
+// files would be too large is refused before the expensive work) and on the final elements
+// (boundary filling and refill add a few).
+void refuse_large_output(const ElementMeshSize& size, const PipelineRequest& request) {
+  const double bytes = size.bytes(request.stl);
+  if (bytes <= request.max_output_bytes) return;
+  char text[320];
+  std::snprintf(text, sizeof text,
+                "the element meshes would take about %.3g GB (%zu elements, %zu triangles); the limit is %.3g GB: "
+                "use a lighter element shape, a larger spacing or fewer elements, or raise the limit (--max-output-gb)",
+                bytes / 1e9, size.elements, size.faces, request.max_output_bytes / 1e9);
+  throw InputError(text);
+}
+
+}  // namespace
+
 PipelineResult run_pipeline(PipelineRequest request) {
   PipelineResult result;
   const Design& design = request.design;
@@ -51,6 +69,14 @@ PipelineResult run_pipeline(PipelineRequest request) {
   }
   check_stop();
 
+  if (request.out) {
+    std::function<void(const Pattern&, const Design&)> caller_hook = std::move(request.pavement.on_pattern);
+    request.pavement.on_pattern = [&, caller_hook](const Pattern& pattern, const Design& used) {
+      refuse_large_output(expected_element_mesh_size(pattern, used.elements, {.custom = result.custom_shape.get()}),
+                          request);
+      if (caller_hook) caller_hook(pattern, used);
+    };
+  }
   result.pavement = make_pavement(*result.map, design, request.pavement);
   check_stop();  // the solves ended early: a partial pavement is not a result
   if (result.pavement.elements.size() == 0) {
@@ -65,19 +91,11 @@ PipelineResult run_pipeline(PipelineRequest request) {
   result.counts = count_pavement(result.pavement);
 
   if (request.out) {
-    const ElementMeshSize size = element_mesh_size(result.pavement.elements, {.custom = result.custom_shape.get()});
-    const double bytes = size.bytes(request.stl);
-    if (bytes > request.max_output_bytes) {
-      char text[256];
-      std::snprintf(text, sizeof text,
-                    "the element meshes would take about %.3g GB (%zu elements, %zu triangles); the limit is %.3g GB: "
-                    "use a lighter element shape or fewer elements, or raise the limit (--max-output-gb)",
-                    bytes / 1e9, result.pavement.elements.size(), size.faces, request.max_output_bytes / 1e9);
-      throw InputError(text);
-    }
+    refuse_large_output(element_mesh_size(result.pavement.elements, {.custom = result.custom_shape.get()}), request);
     const auto extras = [&](const std::filesystem::path& folder, StageTimings& timings) {
       if (request.write_extras) request.write_extras(result, folder, timings);
     };
+    if (request.on_export) request.on_export();
     write_run_outputs(*request.out, result.info, *result.map, result.pavement, result.timings,
                       {.custom = result.custom_shape.get(), .stl = request.stl, .stop = stop}, extras);
   }

@@ -53,6 +53,11 @@ struct PipelineRequest {
   std::vector<std::filesystem::path> extra_outputs;
   std::function<void(const PipelineResult&, const std::filesystem::path& folder, StageTimings&)> write_extras;
 
+  // Called once, just before the first output file or folder is created: until then a stopped run
+  // has nothing to clean up (the CLI ends at once on Ctrl-C before it, since a factorization
+  // cannot poll `stop`).
+  std::function<void()> on_export;
+
   PipelineProgress progress;               // loading and mapping progress
   PipelineWarning on_warning;              // the loader's repairs, as soon as they are known
 };

@@ -159,8 +159,7 @@ QualityBasis quality_basis(const SurfaceMap& map, const UnitCell& cell, const El
   if (elements.vertex.enabled) per_cell += double(cell.vertices.size());
   for (const EdgeElementDesign& spec : elements.edge) {
     for (int e = 0; e < int(cell.edges.size()); ++e)
-      if (!cell.edges[e].is_virtual &&
-          (spec.cell_edges.empty() || std::find(spec.cell_edges.begin(), spec.cell_edges.end(), e) != spec.cell_edges.end()))
+      if (!cell.edges[e].is_virtual && spec.sits_on(e))
         ++per_cell;
     largest = std::max(largest, spec.scale * cell.spacing);
   }

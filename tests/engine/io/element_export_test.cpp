@@ -1,4 +1,5 @@
 #include "io/element_export.h"
+#include "core/interrupted.h"
 
 #include "core/input_error.h"
 
@@ -6,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -382,6 +384,28 @@ TEST_F(ElementExport, MissingFolderThrowsInputError) {
   EXPECT_THROW(write_placements_csv(folder_ / "no" / "placements.csv", e), InputError);
   EXPECT_THROW(write_elements_ply(folder_ / "no" / "elements.ply", e), InputError);
   EXPECT_TRUE(std::filesystem::is_empty(folder_));
+}
+
+// A stop request ends a large export within a chunk (Ctrl-C during export once left
+// `.NAME.tmp.PID.N` files): each writer throws Interrupted and leaves no file at all.
+TEST_F(ElementExport, AStopEndsEveryWriterAndLeavesNoFile) {
+  Elements many;
+  for (int i = 0; i < 20000; ++i)  // a few MiB in every format: past the first flush
+    many.push_back(ElementKind::Vertex, i, 0, {i, 0}, {i, 0, 0}, {0, 0, 1}, 1.0, ShapeKind::Sphere);
+  const std::atomic<bool> stop{true};
+  ElementMeshOptions options;
+  options.stop = &stop;
+  EXPECT_THROW(write_placements_csv(folder_ / "placements.csv", many, &stop), Interrupted);
+  EXPECT_THROW(write_elements_ply(folder_ / "elements.ply", many, options), Interrupted);
+  EXPECT_THROW(write_elements_obj(folder_ / "elements.obj", many, options), Interrupted);
+  EXPECT_THROW(write_elements_stl(folder_ / "elements.stl", many, options), Interrupted);
+  EXPECT_TRUE(std::filesystem::is_empty(folder_)) << "a stopped writer left a file";
+
+  // Without a request the same writers finish.
+  const std::atomic<bool> go{false};
+  options.stop = &go;
+  write_elements_ply(folder_ / "elements.ply", many, options);
+  EXPECT_GT(std::filesystem::file_size(folder_ / "elements.ply"), std::size_t(1) << 20);
 }
 
 }  // namespace

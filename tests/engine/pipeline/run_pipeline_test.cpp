@@ -4,6 +4,7 @@
 #include "core/input_error.h"
 #include "core/interrupted.h"
 #include "io/design_io.h"
+#include "io/element_export.h"
 #include "mesh/mesh_loader.h"
 #include "pipeline/run_pipeline.h"
 #include "surface_maps.h"
@@ -182,6 +183,42 @@ TEST_F(RunPipeline, TinyElementsPaveLikeAnyOther) {
   EXPECT_GT(result.pavement.elements.size(), 100u);
   EXPECT_EQ(result.pavement.after.contact_violations, 0);
   EXPECT_GT(result.pavement.after.neighbor_ratio.min, 1e8) << "elements a billionth of D apart by D";
+}
+
+// The output bound is checked from the pattern, before the solver runs: a design whose element
+// meshes would pass the limit costs no solve (issue 11: a 23 GB PLY was written after one).
+TEST_F(RunPipeline, RefusesTooLargeOutputBeforeTheSolve) {
+  PipelineRequest request = dome_request();
+  request.map = test::bundled_map("dome");
+  request.out = dir_ / "out";
+  int solver_iterations = 0;
+  request.pavement.observer = [&](int, const std::vector<glm::vec2>&) {
+    ++solver_iterations;
+    return true;
+  };
+  // The same run, unbounded, to know its size; then a limit 10% below it.
+  PipelineRequest unbounded = request;
+  unbounded.out.reset();
+  const PipelineResult full = run_pipeline(unbounded);
+  const double bytes = element_mesh_size(full.pavement.elements).bytes(false);
+  ASSERT_GT(solver_iterations, 0);
+  solver_iterations = 0;
+  request.max_output_bytes = 0.9 * bytes;
+  try {
+    run_pipeline(request);
+    FAIL() << "a run over the output limit was not refused";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("--max-output-gb"), std::string::npos) << error.what();
+  }
+  EXPECT_EQ(solver_iterations, 0) << "the limit must be checked before the solve";
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+
+  // The estimate from the pattern is the placed elements' size before boundary post-processing.
+  const ElementMeshSize expected = expected_element_mesh_size(full.pavement.pattern, full.pavement.design.elements);
+  const PlacedElements initial = place_all_elements(*request.map, full.pavement.pattern, full.pavement.pattern.points,
+                                                    full.pavement.design, false);
+  EXPECT_EQ(expected.elements, initial.elements.size());
+  EXPECT_EQ(expected.faces, element_mesh_size(initial.elements).faces);
 }
 
 // A stop (Ctrl-C) ends the run at the next stage with Interrupted, and nothing is written.
