@@ -8,8 +8,12 @@ namespace paver::cli {
 namespace {
 
 std::atomic<bool> requested{false};
+// kWorking: the flag is polled; kNothingWritten: a request ends the process at once; kEnding: it is.
+enum State : int { kWorking, kNothingWritten, kEnding };
+std::atomic<int> state{kWorking};
 std::atomic<long long> first_request_ns{0};
-static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<long long>::is_always_lock_free,
+static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<long long>::is_always_lock_free &&
+                  std::atomic<int>::is_always_lock_free,
               "both are touched from a signal handler");
 
 constexpr long long kForceAfterNs = 1'000'000'000;
@@ -21,6 +25,12 @@ long long monotonic_ns() {  // clock_gettime is async-signal-safe
 }
 
 extern "C" void on_interrupt(int) {
+  int expected = kNothingWritten;
+  if (state.compare_exchange_strong(expected, kEnding)) {
+    static const char message[] = "paver: interrupted; nothing was written\n";
+    [[maybe_unused]] const auto written = write(STDERR_FILENO, message, sizeof message - 1);
+    _exit(130);
+  }
   const long long now = monotonic_ns();
   if (!requested.exchange(true)) {
     first_request_ns.store(now);
@@ -50,5 +60,17 @@ void install_interrupt_handlers() {
 }
 
 const std::atomic<bool>& interrupt_requested() { return requested; }
+
+void nothing_written_yet() {
+  state = kNothingWritten;
+  // A request that came before this call is honoured now, the same way.
+  if (requested.load()) on_interrupt(SIGINT);
+}
+
+void writing_starts() {
+  int expected = kNothingWritten;
+  if (state.compare_exchange_strong(expected, kWorking) || expected == kWorking) return;
+  for (;;) pause();  // kEnding: the handler is ending the process on another thread
+}
 
 }  // namespace paver::cli

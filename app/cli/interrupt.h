@@ -9,6 +9,14 @@
 namespace paver::cli {
 
 void install_interrupt_handlers();
+
+// Until writing starts a request ends the process at once (exit 130, "interrupted; nothing was
+// written"): there is nothing to clean up, and the stages that cannot poll the flag (a sparse
+// factorization of a large mesh takes seconds) would otherwise hold the stop up. Commands call
+// nothing_written_yet() before their work and writing_starts() before they create any file; a
+// request that already began ending the process makes writing_starts() wait for the end.
+void nothing_written_yet();
+void writing_starts();
 const std::atomic<bool>& interrupt_requested();
 
 }  // namespace paver::cli

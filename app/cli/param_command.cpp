@@ -2,6 +2,7 @@
 #include "command_line.h"
 #include "commands.h"
 #include "interrupt.h"
+#include "progress.h"
 #include "io/output_guard.h"
 
 #include "map/arap_parameterization.h"
@@ -18,7 +19,7 @@
 #include <memory>
 #include <string>
 
-#include <unistd.h>
+#include <filesystem>
 
 namespace paver::cli {
 namespace {
@@ -28,13 +29,19 @@ struct ParamArgs {
   std::string out;
   std::string start = "auto";
   int iterations = ArapOptions{}.max_iterations;
+  bool quiet = false;
 };
 
 std::string_view start_name(ArapStart s) { return s == ArapStart::Lscm ? "LSCM" : "Tutte"; }
 
 int run_param(const ParamArgs& args) {
   using Clock = std::chrono::steady_clock;
-  if (!args.out.empty()) refuse_overwriting_inputs({args.surface}, {args.out});  // before any work
+  nothing_written_yet();
+  if (!args.out.empty()) {  // before any work
+    refuse_overwriting_inputs({args.surface}, {args.out});
+    const std::filesystem::path folder = std::filesystem::path(args.out).parent_path();
+    check_output_folder(folder.empty() ? "." : folder);
+  }
   const auto t0 = Clock::now();
   LoadedSurface loaded = load_surface(args.surface);
   for (const auto& w : loaded.warnings) std::cerr << "paver: warning: " << printable(w) << "\n";
@@ -48,18 +55,21 @@ int run_param(const ParamArgs& args) {
   ArapOptions options;
   options.max_iterations = args.iterations;
   options.start = args.start == "lscm" ? ArapStart::Lscm : args.start == "tutte" ? ArapStart::Tutte : ArapStart::Auto;
-  // Ctrl-C is honoured between ARAP chunks; a terminal sees the progress.
-  const bool show_progress = ::isatty(STDERR_FILENO) != 0;
+  // Ctrl-C ends the run at once until the map is written; progress on stderr.
+  Progress progress(args.quiet, stderr_is_terminal());
   const Parameterization param = [&] {
     try {
-      if (show_progress) std::fprintf(stderr, "mapping: start map and factorization...\r");
+      progress.stage("mapping");
+      progress.fraction(0, "start map and factorization");
       std::optional<Parameterization> done = parameterize_arap(
           loaded.mesh, options,
-          [&](int iterations, int max) {
-            if (show_progress) std::fprintf(stderr, "mapping: ARAP %d / %d        \r", iterations, max);
+          [&](int iterations, int max, double energy) {
+            char text[96];
+            std::snprintf(text, sizeof text, "ARAP %d / %d, energy %.6g", iterations, max, energy);
+            progress.fraction(double(iterations) / max, text);
           },
           [] { return interrupt_requested().load(); });
-      if (show_progress) std::fprintf(stderr, "%60s\r", "");
+      progress.finish();
       if (!done) throw Interrupted();
       return std::move(*done);
     } catch (const InputError& e) {
@@ -79,6 +89,7 @@ int run_param(const ParamArgs& args) {
   std::printf("  area ratio 2D/3D: min %.4f, max %.4f, mean |ratio - 1| %.4f\n", q.area_ratio_min,
               q.area_ratio_max, q.area_distortion_mean);
   if (!args.out.empty()) {
+    writing_starts();
     write_uv_map_obj(args.out, loaded.mesh, param.uv);
     std::printf("wrote %s\n", args.out.c_str());
   }
@@ -98,6 +109,7 @@ std::function<int()> add_param_command(CLI::App& app) {
   cmd->add_option("--iterations", args->iterations, "Most ARAP iterations")
       ->check(CLI::Range(0, 100000))
       ->capture_default_str();
+  cmd->add_flag("--quiet", args->quiet, "No progress on stderr (warnings and errors still)");
   return [args] { return run_param(*args); };
 }
 

@@ -4,7 +4,7 @@
 #include "commands.h"
 #include "preview_images.h"
 #include "interrupt.h"
-#include "progress_bar.h"
+#include "progress.h"
 
 #include "core/input_error.h"
 #include "core/printable.h"
@@ -50,6 +50,7 @@ struct RunArgs {
   std::string device;
   bool png = false;
   double max_output_gb = 4;
+  bool quiet = false;
 };
 
 // A solver flag's value over the design's; a bad one blames the flag, not the design file.
@@ -71,6 +72,7 @@ double ms_since(Clock::time_point t0) {
 }
 
 int run_run(const RunArgs& args) {
+  nothing_written_yet();
   PipelineRequest request;
   request.surface_path = args.surface;
   request.design_source = args.design.empty() ? "defaults" : args.design;
@@ -98,8 +100,11 @@ int run_run(const RunArgs& args) {
   // What the flags and the file give together (c + m >= 0), named after where it came from.
   validate_design(design, args.design.empty() ? "command line" : args.design);
 
+  Progress progress(args.quiet, stderr_is_terminal());
+  request.progress = progress.mapping();
   PavementOptions& options = request.pavement;
-  options.observer = terminal_progress_bar(design.solver.iterations);
+  options.on_stage = [&](const std::string& stage) { progress.stage(stage); };
+  options.observer = progress.solver(design.solver.iterations);
   options.optimize = !args.no_optimize;
   options.postprocess = !args.no_postprocess;
   options.threads = args.threads;
@@ -112,6 +117,10 @@ int run_run(const RunArgs& args) {
   const fs::path out = args.out;
   request.out = out;
   request.max_output_bytes = args.max_output_gb * 1e9;
+  request.on_export = [&] {
+    writing_starts();
+    progress.stage("export");
+  };
   std::optional<PreviewImages> previews;
   if (args.png) {
     previews = PreviewImages::open();  // no device: refused now, before any work
@@ -123,7 +132,7 @@ int run_run(const RunArgs& args) {
     };
   }
   const PipelineResult result = run_pipeline(std::move(request));
-  finish_progress_bar();
+  progress.finish();
   const SurfaceMap& map = *result.map;
   const Pavement& pavement = result.pavement;
   const PavementCounts& counts = result.counts;
@@ -209,6 +218,7 @@ std::function<int()> add_run_command(CLI::App& app) {
   cmd->add_option("--threads", args->threads, "Solver threads (0 = all cores)")->check(CLI::Range(0, 1024));
   app::add_backend_option(*cmd, args->backend);
   cmd->add_option("--device", args->device, "Vulkan device: a substring of its name (see `paver devices`)");
+  cmd->add_flag("--quiet", args->quiet, "No progress on stderr (warnings and errors still)");
   cmd->add_flag("--png", args->png, "Also render preview.png (3D) and param.png (2D) offscreen with Vulkan");
   cmd->add_option("--max-output-gb", args->max_output_gb,
                   "Refuse to write element meshes (PLY + OBJ) larger than this, in GB")

@@ -336,7 +336,7 @@ Parameterization parameterize_arap(const SurfaceMesh& mesh, const ArapOptions& o
 }
 
 std::optional<Parameterization> parameterize_arap(const SurfaceMesh& mesh, const ArapOptions& options,
-                                                  const std::function<void(int done, int max)>& progress,
+                                                  const std::function<void(int done, int max, double energy)>& progress,
                                                   const std::function<bool()>& stop) {
   constexpr int kIterationsPerChunk = 5;  // a few per second on a 1M-face mesh
   const auto stopped = [&] { return stop && stop(); };
@@ -345,7 +345,7 @@ std::optional<Parameterization> parameterize_arap(const SurfaceMesh& mesh, const
     if (stopped()) return std::nullopt;
     const int chunk = std::min(kIterationsPerChunk, options.max_iterations - solver.report().iterations);
     if (solver.iterate(chunk)) break;
-    if (progress) progress(solver.report().iterations, options.max_iterations);
+    if (progress) progress(solver.report().iterations, options.max_iterations, solver.energy());
   }
   if (stopped()) return std::nullopt;
   return finish_parameterization(mesh, solver);

@@ -79,11 +79,11 @@ Parameterization finish_parameterization(const SurfaceMesh& mesh, const ArapSolv
 // One call: start map, ARAP to convergence, then finish_parameterization.
 Parameterization parameterize_arap(const SurfaceMesh& mesh, const ArapOptions& options = {});
 
-// The same, iterated a few steps at a time for long maps: `progress(done, max)` after each chunk,
+// The same, iterated a few steps at a time for long maps: `progress(done, max, energy)` after each chunk,
 // and `stop()` polled between chunks (the start map's factorization cannot be interrupted).
 // Returns nothing when stopped. The map equals parameterize_arap's, bit for bit.
 std::optional<Parameterization> parameterize_arap(const SurfaceMesh& mesh, const ArapOptions& options,
-                                                  const std::function<void(int done, int max)>& progress,
+                                                  const std::function<void(int done, int max, double energy)>& progress,
                                                   const std::function<bool()>& stop);
 
 }  // namespace paver

@@ -49,9 +49,10 @@ MappedSurface map_surface_file(const std::filesystem::path& path, const Pipeline
     report(0.05f, "mapping: start map and factorization");
     std::optional<Parameterization> parameterization = parameterize_arap(
         loaded.mesh, ArapOptions{},
-        [&](int done, int max) {
-          report(0.15f + 0.75f * float(done) / float(max),
-                 "mapping: ARAP " + std::to_string(done) + " / " + std::to_string(max));
+        [&](int done, int max, double energy) {
+          char text[96];
+          std::snprintf(text, sizeof text, "mapping: ARAP %d / %d, energy %.6g", done, max, energy);
+          report(0.15f + 0.75f * float(done) / float(max), text);
         },
         stopped);
     if (!parameterization) return out;

@@ -73,7 +73,12 @@ UnitCell check_design_cell(const Design& design) {
 
 Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptions& options) {
   Pavement pavement;
-  auto t0 = Clock::now();
+  // Each stage's clock starts where the caller hears that it starts.
+  const auto start = [&](const char* stage) {
+    if (options.on_stage) options.on_stage(stage);
+    return Clock::now();
+  };
+  auto t0 = start("pattern");
   if (design.pattern.spacing <= 0)
     design.pattern.spacing = default_spacing(map.mesh, design.pattern.tessellation);
   pavement.cell = check_design_cell(design);
@@ -90,7 +95,7 @@ Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptio
   pavement.points = pavement.pattern.points;
   pavement.timings.emplace_back("pattern", ms_since(t0));
 
-  t0 = Clock::now();
+  t0 = start("measure_initial");
   const PlacedElements initial = place_all_elements(map, pavement.pattern, pavement.points, design, options.postprocess);
   pavement.before = measure_pavement(map, pavement.pattern, pavement.points, initial.elements, basis);
   pavement.timings.emplace_back("measure_initial", ms_since(t0));
@@ -108,20 +113,20 @@ Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptio
   if (options.optimize && adaptive && pavement.pattern.point_count() > 0) {
     // The adaptive pattern's own optimizer, on the surface, with contact in it; removal is the
     // last resort for what still collides.
-    t0 = Clock::now();
+    t0 = start("optimize");
     pavement.solve = relax_pattern_on_surface(map, pavement.pattern, pavement.points, design, {}, options.stop);
     pavement.timings.emplace_back("optimize", ms_since(t0));
-    t0 = Clock::now();
+    t0 = start("measure_paper");
     pavement.elements = place(pavement.points, {});
     pavement.paper = measure_pavement(map, pavement.pattern, pavement.points, pavement.elements, basis, &pavement.retired);
     pavement.timings.emplace_back("measure_paper", ms_since(t0));
     if (options.resolve_collisions && !design.elements.allow_overlap) {
-      t0 = Clock::now();
+      t0 = start("resolve_collisions");
       pavement.resolution.removed = remove_colliding(pavement.elements, design.elements.gap);
       pavement.timings.emplace_back("resolve_collisions", ms_since(t0));
     }
   } else if (options.optimize && pavement.pattern.point_count() > 0) {
-    t0 = Clock::now();
+    t0 = start("optimize");
     const SolverSurface surface = make_solver_surface(map);
     SpringSystem system = make_spring_system(pavement.pattern);
     const SolverFactory factory = options.solver ? options.solver : cpu_solver_factory(options.threads);
@@ -129,14 +134,14 @@ Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptio
     for (int i = 0; i < system.particle_count(); ++i) pavement.points[i] = glm::dvec2(system.position[i]);
     pavement.timings.emplace_back("optimize", ms_since(t0));
 
-    t0 = Clock::now();
+    t0 = start("measure_paper");
     pavement.elements = place(pavement.points, system.stray_count);
     pavement.paper =
         measure_pavement(map, pavement.pattern, pavement.points, pavement.elements, basis, &pavement.retired);
     pavement.timings.emplace_back("measure_paper", ms_since(t0));
     // Designs that overlap on purpose keep their overlaps.
     if (options.resolve_collisions && !design.elements.allow_overlap) {
-      t0 = Clock::now();
+      t0 = start("resolve_collisions");
       pavement.elements = resolve_collisions(map, surface, system, pavement.pattern, design, pavement.points, place,
                                              factory, options.resolution, pavement.resolution, options.stop);
       pavement.timings.emplace_back("resolve_collisions", ms_since(t0));
@@ -146,13 +151,13 @@ Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptio
     pavement.paper = pavement.before;
   }
   if (options.refill && !design.elements.allow_overlap) {
-    t0 = Clock::now();
+    t0 = start("refill");
     pavement.refill =
         refill_bare_regions(map, pavement.elements, design, basis.area_per_element, options.stop);
     pavement.timings.emplace_back("refill", ms_since(t0));
   }
 
-  t0 = Clock::now();
+  t0 = start("measure");
   pavement.after =
       measure_pavement(map, pavement.pattern, pavement.points, pavement.elements, basis, &pavement.retired);
   pavement.timings.emplace_back("measure", ms_since(t0));

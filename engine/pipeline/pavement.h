@@ -37,6 +37,8 @@ struct PavementOptions {
   // Called once the trimmed pattern is built, before the solver moves it (the studio's live view
   // starts from it), with the design as used (spacing resolved).
   std::function<void(const Pattern&, const Design&)> on_pattern;
+  // Called as each stage starts, with its name in `timings` ("pattern", "optimize", "refill", ...).
+  std::function<void(const std::string&)> on_stage;
 };
 
 struct Pavement {
