@@ -47,7 +47,7 @@ int run_param(const ParamArgs& args) {
   for (const auto& w : loaded.warnings) std::cerr << "paver: warning: " << printable(w) << "\n";
   const auto t1 = Clock::now();
   // Said before the mapping, which can take minutes on a big mesh.
-  std::printf("%s: %d vertices, %d faces, %zu boundary vertices (loaded in %.1f ms)\n", args.surface.c_str(),
+  std::printf("%s: %d vertices, %d faces, %zu boundary vertices (loaded in %.1f ms)\n", printable(args.surface).c_str(),
               loaded.mesh.vertex_count(), loaded.mesh.face_count(), loaded.mesh.boundary_loop.size(),
               std::chrono::duration<double, std::milli>(t1 - t0).count());
   std::fflush(stdout);
@@ -91,7 +91,7 @@ int run_param(const ParamArgs& args) {
   if (!args.out.empty()) {
     writing_starts();
     write_uv_map_obj(args.out, loaded.mesh, param.uv);
-    std::printf("wrote %s\n", args.out.c_str());
+    std::printf("wrote %s\n", printable(args.out).c_str());
   }
   return q.bijective() ? 0 : 1;
 }

@@ -7,6 +7,7 @@
 #include "progress.h"
 
 #include "core/input_error.h"
+#include "core/number_text.h"
 #include "core/printable.h"
 #include "io/design_io.h"
 #include "pipeline/run_pipeline.h"
@@ -62,9 +63,7 @@ void apply_solver_flag(SolverParams& solver, const SolverParameter& p, const std
 // A numeric flag that must be finite and >= 0: its value, or an InputError naming the flag.
 double finite_non_negative(const char* flag, double value, const char* meaning) {
   if (std::isfinite(value) && value >= 0) return value;
-  std::ostringstream given;
-  given << value;
-  throw InputError(std::string(flag) + " " + given.str() + ": must be finite and >= 0 (" + meaning + ")");
+  throw InputError(std::string(flag) + " " + number_text(value) + ": must be finite and >= 0 (" + meaning + ")");
 }
 
 double ms_since(Clock::time_point t0) {
@@ -154,7 +153,7 @@ int run_run(const RunArgs& args) {
                 pavement.design.pattern.spacing);
   const auto& q = map.parameterization.quality;
   const auto& pr = map.parameterization.report;
-  std::printf("surface  %s: %d vertices, %d faces, area %.6g\n", args.surface.c_str(), map.mesh.vertex_count(),
+  std::printf("surface  %s: %d vertices, %d faces, area %.6g\n", printable(args.surface).c_str(), map.mesh.vertex_count(),
               map.mesh.face_count(), surface_area(map.mesh));
   std::printf("map      ARAP from %s, %d iterations: %d flips, %d boundary overlaps, s1/s2 mean %.3f max %.3f\n",
               pr.start_used == ArapStart::Lscm ? "LSCM" : "Tutte", pr.iterations, q.flipped_triangles,
@@ -194,7 +193,7 @@ int run_run(const RunArgs& args) {
   for (const auto& [stage, ms] : result.timings) std::printf(" %s %.1f ms,", stage.c_str(), ms), total += ms;
   std::printf(" total %.1f ms\n", total);
   std::printf("wrote    %s/{placements.csv, elements.ply, elements.obj, design.json, report.json%s}\n",
-              out.string().c_str(), args.png ? ", preview.png, param.png" : "");
+              printable(out.string()).c_str(), args.png ? ", preview.png, param.png" : "");
   return 0;
 }
 

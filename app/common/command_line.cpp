@@ -1,5 +1,7 @@
 #include "command_line.h"
 
+#include "core/printable.h"
+
 #include <cstdio>
 
 namespace paver::app {
@@ -9,7 +11,8 @@ std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, cons
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
-    std::fprintf(stderr, "%s: %s (usage: %s; see --help)\n", app.get_name().c_str(), e.what(), usage.c_str());
+    std::fprintf(stderr, "%s: %s (usage: %s; see --help)\n", app.get_name().c_str(), paver::printable(e.what()).c_str(),
+                 usage.c_str());
     return 2;
   }
   return std::nullopt;

@@ -339,28 +339,56 @@ TEST_F(PaverRunErrors, ControlCharactersInMessagesAreEscaped) {
   expect_input_error(r, out, {"\\x1b[31mred\\x07.obj"});
   EXPECT_EQ(r.err.find('\x1b'), std::string::npos) << describe(r);
   EXPECT_EQ(r.err.find('\x07'), std::string::npos) << describe(r);
+
+  // The option parser's own messages, and the summary's paths, are escaped the same way.
+  const CliResult flag = paver({"run", "assets/surfaces/dome.obj", "--\x1b[2Jwipe", "--out", out.string()});
+  EXPECT_EQ(flag.exit_code, 2) << describe(flag);
+  EXPECT_NE(flag.err.find("\\x1b[2Jwipe"), std::string::npos) << describe(flag);
+  EXPECT_EQ(flag.err.find('\x1b'), std::string::npos) << describe(flag);
+  const fs::path odd = dir() / "out\x1b[31m";
+  const CliResult ok = paver({"run", "assets/surfaces/dome.obj", "--quiet", "--out", odd.string()});
+  EXPECT_EQ(ok.exit_code, 0) << describe(ok);
+  EXPECT_EQ(ok.out.find('\x1b'), std::string::npos) << describe(ok);
+  EXPECT_NE(ok.out.find("out\\x1b[31m/{placements.csv"), std::string::npos) << describe(ok);
+
+  // A NaN given to a numeric flag reads "NaN", never "-nan".
+  const CliResult nan = paver({"run", "assets/surfaces/dome.obj", "--spacing=-nan", "--out", out.string()});
+  EXPECT_EQ(nan.exit_code, 2) << describe(nan);
+  EXPECT_EQ(nan.err.find("-nan"), std::string::npos) << describe(nan);
+  EXPECT_NE(nan.err.find("--spacing"), std::string::npos) << describe(nan);
 }
 
 // Surfaces and designs that used to end in an internal error, a bad_alloc or an empty result exit 0:
 // each is refused with exit 2 and what to change, and nothing is written.
 TEST_F(PaverRunErrors, SurfacesThePatternCannotPave) {
   const fs::path out = dir() / "out";
-  // The dome scaled beyond what float32 arithmetic can pave.
-  std::ifstream dome(fs::path(PAVER_SOURCE_DIR) / "assets/surfaces/dome.obj");
-  std::ostringstream huge;
-  for (std::string line; std::getline(dome, line);) {
-    if (line.rfind("v ", 0) == 0) {
-      std::istringstream v(line.substr(2));
-      double x, y, z;
-      v >> x >> y >> z;
-      huge << "v " << x * 1e19 << ' ' << y * 1e19 << ' ' << z * 1e19 << '\n';
-    } else {
-      huge << line << '\n';
+  // The dome scaled beyond what float32 arithmetic can pave, either way (1e19 and 1e-24): each is
+  // refused before the map, naming the fix. At 1e-4 it is an ordinary small part and paves.
+  const auto scaled_dome = [&](double factor, const std::string& name) {
+    std::ifstream dome(fs::path(PAVER_SOURCE_DIR) / "assets/surfaces/dome.obj");
+    std::ostringstream text;
+    text.precision(17);
+    for (std::string line; std::getline(dome, line);) {
+      if (line.rfind("v ", 0) == 0) {
+        std::istringstream v(line.substr(2));
+        double x, y, z;
+        v >> x >> y >> z;
+        text << "v " << x * factor << ' ' << y * factor << ' ' << z * factor << '\n';
+      } else {
+        text << line << '\n';
+      }
     }
-  }
-  write_file_text(dir() / "huge.obj", huge.str());
-  expect_input_error(paver({"run", (dir() / "huge.obj").string(), "--out", out.string()}), out,
+    write_file_text(dir() / name, text.str());
+    return (dir() / name).string();
+  };
+  expect_input_error(paver({"run", scaled_dome(1e19, "huge.obj"), "--out", out.string()}), out,
                      {"huge.obj: the surface is", "rescale the model"});
+  expect_input_error(paver({"run", scaled_dome(1e-24, "tiny.obj"), "--out", out.string()}), out,
+                     {"tiny.obj: the surface is", "rescale the model"});
+  const CliResult small = paver({"run", scaled_dome(1e-4, "small.obj"), "--quiet", "--out", out.string()});
+  EXPECT_EQ(small.exit_code, 0) << describe(small);
+  EXPECT_NE(small.out.find("verdict  ok"), std::string::npos) << describe(small);
+  fs::remove_all(out);
 
   // A strip 1000 long and 0.01 wide, turned 37 degrees.
   std::ostringstream strip;

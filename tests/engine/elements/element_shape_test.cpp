@@ -264,7 +264,13 @@ TEST(ElementShape, BadCustomShapeIsRefusedWithTheSurfaceLoadersMessage) {
   write(bad_obj, "v 0 0 0\nv 1 x 0\nv 0 1 0\nf 1 2 3\n");
   const auto cut_stl = folder.file("cut.stl");
   write(cut_stl, std::string(80, ' ') + std::string("\x02\0\0\0", 4) + std::string(60, '\0'));
-  for (const auto& path : {bad_obj, cut_stl}) {
+  // A corrupt binary PLY whose counts claim 50 million vertices and faces in 10 bytes (such a
+  // shape once hung the run with growing memory): refused from the file's length, at once.
+  const auto absurd_ply = folder.file("absurd.ply");
+  write(absurd_ply, "ply\nformat binary_little_endian 1.0\nelement vertex 50000000\nproperty float x\n"
+                    "property float y\nproperty float z\nelement face 50000000\n"
+                    "property list uchar int vertex_indices\nend_header\n" + std::string(10, '\0'));
+  for (const auto& path : {bad_obj, cut_stl, absurd_ply}) {
     const std::string shape = test::error_of([&] { load_custom_shape(path); });
     const std::string surface = test::error_of([&] { load_surface(path); });
     EXPECT_EQ(shape, "custom shape " + surface);
