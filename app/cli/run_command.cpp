@@ -86,7 +86,7 @@ int run_run(const RunArgs& args) {
   }
   if (!args.topology.empty()) {
     const auto t = topology_from_name(args.topology);
-    if (!t) throw InputError("--topology " + args.topology + ": use lattice or adaptive");
+    if (!t) throw InputError("--topology " + args.topology + ": use auto, lattice or adaptive");
     design.pattern.topology = *t;
   }
   for (const auto& [parameter, value] : args.solver_values)
@@ -168,6 +168,7 @@ int run_run(const RunArgs& args) {
                 pavement.pattern.defects.size(), pavement.relaxation.iterations,
                 pavement.relaxation.packing_iterations, pavement.relaxation.jammed, pavement.relaxation.milliseconds);
   std::printf("\n");
+  if (!pavement.topology_choice.empty()) std::printf("topology %s\n", pavement.topology_choice.c_str());
   std::printf("optimize %s%s%s: %d iterations, %s (last max step %.3g); %d filled, %d eliminated at the boundary, "
               "%d removed still colliding\n",
               backend.name.c_str(), backend.device.empty() ? "" : " on ", backend.device.c_str(), pavement.solve.iterations, std::string(stop_reason_name(pavement.solve.reason)).c_str(),
@@ -206,8 +207,9 @@ std::function<int()> add_run_command(CLI::App& app) {
   cmd->add_option("--design", args->design, "design.json (flags below override it)");
   cmd->add_option("--pattern", args->pattern, "Tessellation: tri, grid or hex");
   cmd->add_option("--topology", args->topology,
-                  "lattice (the paper's, default) or adaptive: particles grown on the surface with point defects, "
-                  "for maps that distort a lattice (tri and hex; docs/topology.md)");
+                  "auto (default: the lattice, or the adaptive pattern where the lattice tears or leaves bare patches), "
+                  "lattice (the paper's) or adaptive: particles grown on the surface with point defects, for maps "
+                  "that distort a lattice (tri and hex; docs/topology.md)");
   cmd->add_option("--spacing", args->spacing, "Edge length D in surface units (default: from the surface size)");
   cmd->add_option("--gap", args->gap,
                   "Required free space between neighbouring elements, surface units (default 0: touching)");

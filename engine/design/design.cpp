@@ -14,12 +14,13 @@ std::string_view topology_name(Topology t) {
   switch (t) {
     case Topology::Lattice: return "lattice";
     case Topology::Adaptive: return "adaptive";
+    case Topology::Auto: return "auto";
   }
   return "lattice";
 }
 
 std::optional<Topology> topology_from_name(std::string_view name) {
-  for (Topology t : {Topology::Lattice, Topology::Adaptive})
+  for (Topology t : {Topology::Lattice, Topology::Adaptive, Topology::Auto})
     if (name == topology_name(t)) return t;
   return std::nullopt;
 }

@@ -15,9 +15,11 @@
 namespace paver {
 
 // How the pattern is laid out: the paper's lattice, or particles grown on the surface with point
-// defects where the map distorts it (pattern/adaptive_pattern.h, docs/topology.md).
-enum class Topology { Lattice, Adaptive };
-std::string_view topology_name(Topology t);  // "lattice", "adaptive"
+// defects where the map distorts it (pattern/adaptive_pattern.h, docs/topology.md), or (auto, the
+// default) the lattice unless it measurably tears or leaves bare patches and the adaptive pattern
+// does better (pipeline/pavement.h).
+enum class Topology { Lattice, Adaptive, Auto };
+std::string_view topology_name(Topology t);  // "lattice", "adaptive", "auto"
 std::optional<Topology> topology_from_name(std::string_view name);
 
 struct PatternDesign {
@@ -25,7 +27,7 @@ struct PatternDesign {
   double spacing = 0;                     // D in surface units; 0 = derive from the surface
   std::vector<EdgeOperator> operators;    // applied in order to the unit cell
   bool bracing = true;                    // add virtual edges across non-triangular faces
-  Topology topology = Topology::Lattice;
+  Topology topology = Topology::Auto;
 };
 
 struct VertexElementDesign {

@@ -7,8 +7,11 @@
 #include "pattern/design_overlap.h"
 #include "elements/element_placement.h"
 #include "core/input_error.h"
+#include "report/verdict.h"
 
 #include <chrono>
+#include <cstdio>
+#include <string>
 
 namespace paver {
 namespace {
@@ -71,7 +74,10 @@ UnitCell check_design_cell(const Design& design) {
   return cell;
 }
 
-Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptions& options) {
+namespace {
+
+// The pavement of one topology (lattice or adaptive).
+Pavement pave_with_topology(const SurfaceMap& map, Design design, const PavementOptions& options) {
   Pavement pavement;
   // Each stage's clock starts where the caller hears that it starts.
   const auto start = [&](const char* stage) {
@@ -163,6 +169,61 @@ Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptio
   pavement.timings.emplace_back("measure", ms_since(t0));
   pavement.design = std::move(design);
   return pavement;
+}
+
+std::string three_digits(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", value);
+  return text;
+}
+
+// Why a lattice pavement calls for the adaptive pattern: it tore or left bare patches (the
+// verdict's own bounds), which is what a map distorting the lattice does. Empty when it did not.
+std::string lattice_failure(const PavementQuality& q) {
+  std::string why;
+  if (q.spring_deviation_p95 > kTornSpringDeviation)
+    why = "the lattice tore (spring deviation p95 " + three_digits(q.spring_deviation_p95) + ")";
+  if (q.fill > 0 && q.fill < kBareFill)
+    why += (why.empty() ? "the lattice left bare patches (fill " : " and left bare patches (fill ") +
+           three_digits(q.fill) + ")";
+  return why;
+}
+
+}  // namespace
+
+Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptions& options) {
+  if (design.pattern.topology != Topology::Auto) return pave_with_topology(map, std::move(design), options);
+  Design lattice = design;
+  lattice.pattern.topology = Topology::Lattice;
+  Pavement first = pave_with_topology(map, std::move(lattice), options);
+  const std::string failure = lattice_failure(first.after);
+  const bool stopped = options.stop && options.stop->load();
+  if (failure.empty() || stopped || !adaptive_pattern_unsupported(first.design).empty()) {
+    first.topology_choice = failure.empty() ? "auto: lattice (it neither tore nor left bare patches)"
+                            : stopped       ? "auto: lattice (stopped)"
+                                            : "auto: lattice; " + failure + ", but the adaptive pattern cannot take this design (" +
+                                                  adaptive_pattern_unsupported(first.design) + ")";
+    return first;
+  }
+  // The same design, spacing as resolved, grown on the surface; kept when it judges better.
+  Design grown = first.design;
+  grown.pattern.topology = Topology::Adaptive;
+  Pavement second = pave_with_topology(map, std::move(grown), options);
+  const Verdict lattice_verdict = judge_pavement(first.after), adaptive_verdict = judge_pavement(second.after);
+  const bool adaptive_better =
+      adaptive_verdict.problems.size() < lattice_verdict.problems.size() ||
+      (adaptive_verdict.problems.size() == lattice_verdict.problems.size() && second.after.fill > first.after.fill);
+  Pavement& kept = adaptive_better ? second : first;
+  const Pavement& dropped = adaptive_better ? first : second;
+  kept.topology_choice = "auto: " + std::string(adaptive_better ? "adaptive" : "lattice") + "; " + failure +
+                         ", the adaptive pattern " +
+                         (adaptive_better ? "did better (fill " + three_digits(second.after.fill) + ", " +
+                                                std::to_string(adaptive_verdict.problems.size()) + " problems)"
+                                          : "did no better (fill " + three_digits(second.after.fill) + ")");
+  double tried = 0;
+  for (const auto& [stage, ms] : dropped.timings) tried += ms;
+  kept.timings.insert(kept.timings.begin(), {adaptive_better ? "lattice_tried" : "adaptive_tried", tried});
+  return std::move(kept);
 }
 
 }  // namespace paver

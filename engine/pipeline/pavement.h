@@ -54,6 +54,9 @@ struct Pavement {
   CollisionResolutionReport resolution;
   RefillReport refill;
   RelaxationReport relaxation;       // the adaptive pattern's particle relaxation
+  // For pattern.topology "auto": which topology was kept and why (design.pattern.topology says
+  // which); empty otherwise.
+  std::string topology_choice;
   PavementQuality before;            // the initial pavement, post-processed the same way
   PavementQuality paper;             // after the paper's optimizer and post-processing alone
   PavementQuality after;             // the final pavement
@@ -71,7 +74,10 @@ UnitCell make_design_cell(const PatternDesign& pattern);
 UnitCell check_design_cell(const Design& design);
 
 // Resolves spacing 0 to the surface's default and checks the design (check_design_cell), then
-// builds pattern and elements.
+// builds pattern and elements. Topology auto paves with the lattice and, when that tears or leaves
+// bare patches (the verdict's bounds) on a design the adaptive pattern can take, with the adaptive
+// pattern too, keeping the one with fewer verdict problems (then the higher fill); the kept
+// pavement's design says which, its topology_choice why, and the other's time is a timing.
 Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptions& options = {});
 
 // Elements on `points`: V and E elements, then (if asked) boundary filling and elimination.

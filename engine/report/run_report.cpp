@@ -81,6 +81,7 @@ nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const
                    {"virtual_edges", counts.virtual_edges},
                    {"boundary_crossing_edges", counts.boundary_crossing_edges},
                    {"topology", topology_name(pavement.design.pattern.topology)},
+                   {"topology_choice", pavement.topology_choice},
                    {"defects", pattern.defects.size()},
                    {"relaxation", {{"iterations", pavement.relaxation.iterations},
                                    {"seeds_kept", pavement.relaxation.seeds_kept},

@@ -152,7 +152,7 @@ TEST(DesignIo, WritesEveryKey) {
   const json j = design_to_json(Design{});
   EXPECT_EQ(j.at("version"), 1);
   EXPECT_EQ(j.at("pattern").size(), 5u);
-  EXPECT_EQ(j.at("pattern").at("topology"), "lattice");
+  EXPECT_EQ(j.at("pattern").at("topology"), "auto");
   EXPECT_EQ(j.at("elements").size(), 5u);
   EXPECT_EQ(j.at("elements").at("vertex").size(), 3u);
   EXPECT_EQ(j.at("placement").size(), 3u);
@@ -166,9 +166,11 @@ TEST(DesignIo, WritesEveryKey) {
   EXPECT_EQ(full.at("pattern").at("topology"), "adaptive");
 }
 
-TEST(DesignIo, TopologyIsLatticeOrAdaptive) {
-  const std::string message = json_error(R"({"version": 1, "pattern": {"topology": "auto"}})");
-  EXPECT_TRUE(contains(message, "'pattern.topology' must be one of \"lattice\", \"adaptive\"")) << message;
+TEST(DesignIo, TopologyIsLatticeAdaptiveOrAuto) {
+  const std::string message = json_error(R"({"version": 1, "pattern": {"topology": "grown"}})");
+  EXPECT_TRUE(contains(message, "'pattern.topology' must be one of \"lattice\", \"adaptive\", \"auto\"")) << message;
+  EXPECT_EQ(design_from_json(json::parse(R"({"version": 1, "pattern": {"topology": "auto"}})"), "d.json").pattern.topology,
+            Topology::Auto);
 }
 
 TEST(DesignIo, MissingKeysTakeDefaults) {

@@ -65,6 +65,7 @@ TEST_P(ContactAllPairs, NoPairCloserThanItsRadiiPlusTheGapAndTheReportAgrees) {
   const auto map = surface(name);
   Design design;
   design.pattern.tessellation = tessellation;
+  design.pattern.topology = Topology::Lattice;  // the paper's pattern; adaptive and auto have their own cases
   design.pattern.spacing = default_spacing(map->mesh, tessellation);
   if (with_gap) {
     design.elements.vertex.scale = 0.92;

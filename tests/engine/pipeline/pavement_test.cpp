@@ -13,6 +13,7 @@
 #include "input_error_assertions.h"
 
 #include "surface_maps.h"
+#include "test_meshes.h"
 
 #include <gtest/gtest.h>
 
@@ -328,6 +329,49 @@ TEST(PavementCell, OperatorsAndBracingReachThePattern) {
   EXPECT_GT(virtual_edges, 0);
   design.pattern.bracing = false;
   EXPECT_EQ(place_only(dome_map(), design).cell.edges.size(), 2u);
+}
+
+// Topology auto (the default) keeps the paper's lattice wherever it works, and grows the pattern
+// on the surface where the lattice measurably tears or leaves bare patches (issue 10): the user
+// gets the cover without knowing the flag.
+TEST(PavementTopologyAuto, KeepsTheLatticeWhereItWorks) {
+  Design lattice;
+  lattice.pattern.topology = Topology::Lattice;
+  Design automatic;
+  ASSERT_EQ(automatic.pattern.topology, Topology::Auto) << "auto is the default";
+  const Pavement a = make_pavement(dome_map(), lattice), b = make_pavement(dome_map(), automatic);
+  EXPECT_EQ(b.design.pattern.topology, Topology::Lattice);
+  EXPECT_NE(b.topology_choice.find("auto: lattice"), std::string::npos) << b.topology_choice;
+  EXPECT_EQ(a.elements.position, b.elements.position) << "auto on a surface the lattice paves is the lattice";
+  EXPECT_TRUE(a.topology_choice.empty());
+}
+
+TEST(PavementTopologyAuto, GrowsThePatternWhereTheLatticeTears) {
+  const auto head = test::cached_map(test::scanned_mesh("bunnyhead"));
+  for (const Tessellation tessellation : {Tessellation::Triangle, Tessellation::Hexagon}) {
+    Design design;
+    design.pattern.tessellation = tessellation;
+    Design lattice = design;
+    lattice.pattern.topology = Topology::Lattice;
+    const Pavement torn = make_pavement(*head, lattice);
+    ASSERT_LT(torn.after.fill, 0.85) << "the lattice leaves bare patches on the head";
+    const Pavement p = make_pavement(*head, design);
+    EXPECT_EQ(p.design.pattern.topology, Topology::Adaptive) << p.topology_choice;
+    EXPECT_NE(p.topology_choice.find("auto: adaptive; the lattice"), std::string::npos) << p.topology_choice;
+    EXPECT_GE(p.after.fill, 0.90);
+    EXPECT_EQ(p.after.contact_violations, 0);
+    EXPECT_EQ(p.after.boundary_crossings, 0);
+    EXPECT_EQ(p.timings.front().first, "lattice_tried") << "the lattice's time is part of the run's";
+  }
+}
+
+TEST(PavementTopologyAuto, KeepsTheLatticeForADesignTheAdaptivePatternCannotTake) {
+  const auto head = test::cached_map(test::scanned_mesh("bunnyhead"));
+  Design grid;
+  grid.pattern.tessellation = Tessellation::Grid;  // no adaptive grid: the lattice stays, and says why
+  const Pavement p = make_pavement(*head, grid);
+  EXPECT_EQ(p.design.pattern.topology, Topology::Lattice);
+  EXPECT_NE(p.topology_choice.find("cannot take this design"), std::string::npos) << p.topology_choice;
 }
 
 }  // namespace
