@@ -12,6 +12,7 @@
 #include "io/design_io.h"
 #include "pipeline/run_pipeline.h"
 #include "pattern/adaptive_pattern.h"
+#include "report/bill_of_stones.h"
 #include "report/verdict.h"
 
 #include <algorithm>
@@ -39,6 +40,8 @@ struct RunArgs {
   std::string topology;
   std::optional<double> spacing;
   std::optional<double> gap;
+  std::optional<double> stone;
+  std::string units;
   std::string out = "out";
   bool no_optimize = false;
   bool no_postprocess = false;
@@ -91,11 +94,27 @@ int run_run(const RunArgs& args) {
   }
   for (const auto& [parameter, value] : args.solver_values)
     if (value) apply_solver_flag(design.solver, *parameter, *value);
+  if (!args.units.empty()) {
+    const auto u = units_from_name(args.units);
+    if (!u) throw InputError("--units " + printable(args.units) + ": use mm, cm, m or in (the unit of the surface's coordinates)");
+    design.units = *u;
+  }
   // Checked here so that a bad flag is not reported as a fault of the design file.
   if (args.spacing)
     design.pattern.spacing = finite_non_negative("--spacing", *args.spacing, "0 = derive from the surface");
   if (args.gap)
     design.elements.gap = finite_non_negative("--gap", *args.gap, "free space between elements, surface units");
+  // A stone size sets the lattice: neighbouring stones touch across the gap, so D = stone + gap
+  // and the vertex elements are stone / D of it.
+  if (args.stone) {
+    if (args.spacing) throw InputError("--stone and --spacing both set the spacing (D = stone + gap): give one of them");
+    const double stone = finite_non_negative("--stone", *args.stone, "the stone's diameter, surface units");
+    if (!(stone > 0)) throw InputError("--stone 0: a stone needs a diameter above 0");
+    design.pattern.spacing = stone + design.elements.gap;
+    design.elements.vertex.enabled = true;
+    design.elements.vertex.scale = stone / design.pattern.spacing;
+    design.elements.vertex.shape = ShapeKind::Gem;
+  }
   // What the flags and the file give together (c + m >= 0), named after where it came from.
   validate_design(design, args.design.empty() ? "command line" : args.design);
 
@@ -175,6 +194,13 @@ int run_run(const RunArgs& args) {
               pavement.solve.last_max_step, pavement.filled, pavement.eliminated, pavement.resolution.removed);
   std::printf("elements %zu (%ld V, %ld E), %d of them added into bare regions\n", pavement.elements.size(),
               counts.vertex_elements, counts.edge_elements, pavement.refill.added);
+  const BillOfStones bill = bill_of_stones(pavement.elements, pavement.design.units);
+  for (const StoneRow& row : bill.rows) {
+    std::printf("stones   %ld %s of %.2f mm", row.count, std::string(shape_name(row.shape)).c_str(), row.diameter_mm);
+    if (row.carat_each) std::printf(", %.4f ct each, %.3f ct", *row.carat_each, row.carat_total);
+    std::printf("\n");
+  }
+  if (bill.carat_total > 0) std::printf("stones   total %ld, %.3f ct (stones.csv)\n", bill.count, bill.carat_total);
   std::printf("quality (gap %g)\n", pavement.design.elements.gap);
   std::printf("                  violations  min clearance  NN ratio min / p5 / median / p95   cv     crossings  fill\n");
   for (const auto& [label, q] : {std::pair{"  initial", &pavement.before}, std::pair{"  paper's method", &pavement.paper},
@@ -193,7 +219,7 @@ int run_run(const RunArgs& args) {
   double total = 0;
   for (const auto& [stage, ms] : result.timings) std::printf(" %s %.1f ms,", stage.c_str(), ms), total += ms;
   std::printf(" total %.1f ms\n", total);
-  std::printf("wrote    %s/{placements.csv, elements.ply, elements.obj, design.json, report.json%s}\n",
+  std::printf("wrote    %s/{placements.csv, stones.csv, elements.ply, elements.obj, design.json, report.json%s}\n",
               printable(out.string()).c_str(), args.png ? ", preview.png, param.png" : "");
   return 0;
 }
@@ -213,6 +239,11 @@ std::function<int()> add_run_command(CLI::App& app) {
   cmd->add_option("--spacing", args->spacing, "Edge length D in surface units (default: from the surface size)");
   cmd->add_option("--gap", args->gap,
                   "Required free space between neighbouring elements, surface units (default 0: touching)");
+  cmd->add_option("--stone", args->stone,
+                  "Stone diameter, surface units: the vertex elements become round brilliants of this size, with "
+                  "D = stone + gap so that neighbouring stones are exactly the gap apart (instead of --spacing)");
+  cmd->add_option("--units", args->units, "Unit of the surface's coordinates: mm (default), cm, m or in; stone sizes "
+                                          "and carats are reported in mm");
   cmd->add_option("--out", args->out, "Output folder")->capture_default_str();
   cmd->add_flag("--no-optimize", args->no_optimize, "Skip the section 5 optimizer (initial pavement only)");
   cmd->add_flag("--no-postprocess", args->no_postprocess, "Skip boundary filling and elimination (5.4)");

@@ -25,6 +25,32 @@ std::optional<Topology> topology_from_name(std::string_view name) {
   return std::nullopt;
 }
 
+std::string_view units_name(Units u) {
+  switch (u) {
+    case Units::Millimetre: return "mm";
+    case Units::Centimetre: return "cm";
+    case Units::Metre: return "m";
+    case Units::Inch: return "in";
+  }
+  return "mm";
+}
+
+std::optional<Units> units_from_name(std::string_view name) {
+  for (Units u : {Units::Millimetre, Units::Centimetre, Units::Metre, Units::Inch})
+    if (name == units_name(u)) return u;
+  return std::nullopt;
+}
+
+double millimetres_per_unit(Units u) {
+  switch (u) {
+    case Units::Millimetre: return 1;
+    case Units::Centimetre: return 10;
+    case Units::Metre: return 1000;
+    case Units::Inch: return 25.4;
+  }
+  return 1;
+}
+
 bool uses_custom_shape(const ElementsDesign& e) {
   if (e.vertex.enabled && e.vertex.shape == ShapeKind::Custom) return true;
   return std::any_of(e.edge.begin(), e.edge.end(), [](const auto& s) { return s.shape == ShapeKind::Custom; });

@@ -22,6 +22,13 @@ enum class Topology { Lattice, Adaptive, Auto };
 std::string_view topology_name(Topology t);  // "lattice", "adaptive", "auto"
 std::optional<Topology> topology_from_name(std::string_view name);
 
+// The unit of the surface's coordinates (and so of D, the gap and every length in a design).
+// Stone sizes and carats are reported in millimetres from it.
+enum class Units { Millimetre, Centimetre, Metre, Inch };
+std::string_view units_name(Units u);  // "mm", "cm", "m", "in"
+std::optional<Units> units_from_name(std::string_view name);
+double millimetres_per_unit(Units u);
+
 struct PatternDesign {
   Tessellation tessellation = Tessellation::Hexagon;
   double spacing = 0;                     // D in surface units; 0 = derive from the surface
@@ -57,6 +64,7 @@ struct ElementsDesign {
 
 struct Design {
   static constexpr int kVersion = 1;
+  Units units = Units::Millimetre;
   PatternDesign pattern;
   ElementsDesign elements;
   Placement placement;

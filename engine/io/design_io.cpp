@@ -26,6 +26,7 @@ using nlohmann::json;
 
 constexpr Tessellation kTessellations[] = {Tessellation::Triangle, Tessellation::Grid, Tessellation::Hexagon};
 constexpr Topology kTopologies[] = {Topology::Lattice, Topology::Adaptive, Topology::Auto};
+constexpr Units kUnits[] = {Units::Millimetre, Units::Centimetre, Units::Metre, Units::Inch};
 constexpr FilterBase kFilterBases[] = {FilterBase::Current, FilterBase::Initial};
 constexpr ShapeKind kShapes[] = {ShapeKind::Sphere, ShapeKind::Gem, ShapeKind::HexPrism, ShapeKind::Disc,
                                  ShapeKind::Custom};
@@ -145,6 +146,9 @@ public:
   }
   void read(const json& value, const std::string& path, Topology& out) const {
     read_name(value, path, out, kTopologies, topology_name);
+  }
+  void read(const json& value, const std::string& path, Units& out) const {
+    read_name(value, path, out, kUnits, units_name);
   }
   void read(const json& value, const std::string& path, FilterBase& out) const {
     read_name(value, path, out, kFilterBases, filter_base_name);
@@ -333,6 +337,7 @@ Json to_json(const Design& design) {
 
   Json root = Json::object();
   root["version"] = Design::kVersion;
+  root["units"] = std::string(units_name(design.units));
   root["pattern"] = std::move(pattern);
   root["elements"] = std::move(elements_json);
   root["placement"] = std::move(placement);
@@ -399,8 +404,9 @@ Design design_from_json(const nlohmann::json& json, const std::string& source) {
     reader.fail("'version' is " + std::to_string(number) + ", but this build reads only version " +
                 std::to_string(Design::kVersion));
 
-  reader.check_object(json, "", {"version", "pattern", "elements", "placement", "solver"});
+  reader.check_object(json, "", {"version", "units", "pattern", "elements", "placement", "solver"});
   Design design;
+  reader.field(json, "", "units", design.units);
   reader.field(json, "", "pattern", design.pattern);
   reader.field(json, "", "elements", design.elements);
   reader.field(json, "", "placement", design.placement);

@@ -1,5 +1,7 @@
 #include "pipeline/run_outputs.h"
 
+#include "report/bill_of_stones.h"
+
 #include "core/interrupted.h"
 #include "io/output_set.h"
 
@@ -20,8 +22,8 @@ namespace paver {
 namespace fs = std::filesystem;
 
 std::vector<fs::path> run_output_paths(const fs::path& folder, bool stl) {
-  std::vector<fs::path> paths = {folder / "placements.csv", folder / "elements.ply", folder / "elements.obj",
-                                 folder / "design.json", folder / "report.json"};
+  std::vector<fs::path> paths = {folder / "placements.csv", folder / "stones.csv", folder / "elements.ply",
+                                 folder / "elements.obj", folder / "design.json", folder / "report.json"};
   if (stl) paths.push_back(folder / "elements.stl");
   return paths;
 }
@@ -34,6 +36,7 @@ void write_run_files(const fs::path& folder, const Pavement& pavement, const Run
   const auto colours = contact_colours(pavement.elements, pavement.design.elements.gap);
   mesh_options.colours = &colours;
   write_placements_csv(folder / "placements.csv", pavement.elements, options.stop);
+  write_stones_csv(folder / "stones.csv", bill_of_stones(pavement.elements, pavement.design.units));
   write_elements_ply(folder / "elements.ply", pavement.elements, mesh_options);
   write_elements_obj(folder / "elements.obj", pavement.elements, mesh_options);
   if (options.stl) write_elements_stl(folder / "elements.stl", pavement.elements, mesh_options);
@@ -41,7 +44,7 @@ void write_run_files(const fs::path& folder, const Pavement& pavement, const Run
 }
 
 std::vector<std::string> run_output_names() {
-  return {"placements.csv", "elements.ply", "elements.obj", "elements.stl", "design.json",
+  return {"placements.csv", "stones.csv", "elements.ply", "elements.obj", "elements.stl", "design.json",
           "report.json",    "preview.png",  "param.png"};
 }
 

@@ -1,5 +1,7 @@
 #include "report/run_report.h"
 
+#include "report/bill_of_stones.h"
+
 #include "report/pavement_quality.h"
 #include "report/verdict.h"
 
@@ -71,6 +73,7 @@ nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const
                             {"area_ratio_max", q.area_ratio_max},
                             {"area_distortion_mean", q.area_distortion_mean}}},
       {"design", {{"source", info.design_source},
+                  {"units", units_name(pavement.design.units)},
                   {"tessellation", tessellation_name(pavement.design.pattern.tessellation)},
                   {"spacing", pavement.design.pattern.spacing},
                   {"gap", pavement.design.elements.gap},
@@ -113,6 +116,7 @@ nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const
                    {"crossing_the_boundary", pavement.eliminated},
                    {"still_colliding_after_resolution", pavement.resolution.removed}}},
       {"verdict", to_json(judge_pavement(pavement.after))},
+      {"stones", to_json(bill_of_stones(elements, pavement.design.units))},
       {"quality_before", to_json(pavement.before)},
       {"quality_paper_method", to_json(pavement.paper)},
       {"quality_after", to_json(pavement.after)},

@@ -837,6 +837,54 @@ fs::path write_large_grid(const fs::path& folder) {
   return path;
 }
 
+// A jeweller's design: 1.5 mm round brilliants 0.1 mm apart on the pendant. Every stone is exactly
+// 1.5 mm, no two are nearer than 1.5 mm + 0.1 mm centre to centre (all pairs, from the file), and
+// stones.csv counts what placements.csv holds, with the chart's carats.
+TEST_F(PaverRun, StonesAndGapInMillimetresGiveTheBillOfStones) {
+  const fs::path out = dir() / "out";
+  const CliResult r = paver({"run", "assets/surfaces/pendant.obj", "--stone", "1.5", "--gap", "0.1", "--quiet",
+                             "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const std::vector<Placement> stones = read_placements(out / "placements.csv");
+  ASSERT_GT(stones.size(), 100u);
+  for (const Placement& s : stones) ASSERT_NEAR(s.diameter, 1.5, 1e-12) << "stone " << s.id;
+  size_t closest_pair_violations = 0;
+  double closest = 1e300;
+  for (size_t i = 0; i < stones.size(); ++i)
+    for (size_t j = i + 1; j < stones.size(); ++j) {
+      const double dx = stones[i].p[0] - stones[j].p[0], dy = stones[i].p[1] - stones[j].p[1],
+                   dz = stones[i].p[2] - stones[j].p[2];
+      const double d = std::sqrt(dx * dx + dy * dy + dz * dz);
+      closest = std::min(closest, d);
+      closest_pair_violations += d < 1.5 + 0.1;
+    }
+  EXPECT_EQ(closest_pair_violations, 0u) << "closest centres " << closest;
+
+  const std::vector<std::string> csv = lines_of(read_file_text(out / "stones.csv"));
+  ASSERT_EQ(csv.size(), 3u) << read_file_text(out / "stones.csv");
+  EXPECT_EQ(csv[0], "shape,diameter_mm,count,carat_each,carat_total");
+  const std::vector<std::string> row = split(csv[1], ',');
+  ASSERT_EQ(row.size(), 5u);
+  EXPECT_EQ(row[0], "gem");
+  EXPECT_EQ(row[1], "1.5");
+  EXPECT_EQ(row[2], std::to_string(stones.size()));
+  // The melee sieve chart puts 1.5 mm between 0.013 ct (1.45-1.50 mm) and 0.014 ct (1.50-1.55 mm).
+  EXPECT_NEAR(std::stod(row[3]), 0.0135, 1e-9);
+  EXPECT_NEAR(std::stod(row[4]), 0.0135 * double(stones.size()), 1e-6);
+  EXPECT_EQ(split(csv[2], ',')[0], "total");
+  const json report = read_json(out / "report.json");
+  EXPECT_EQ(report["stones"]["count"], stones.size());
+  EXPECT_EQ(report["design"]["units"], "mm");
+  EXPECT_NE(r.out.find("gem of 1.50 mm, 0.0135 ct each"), std::string::npos) << describe(r);
+
+  // --stone and --spacing both set D: refused; so is an unknown unit.
+  const fs::path bad = dir() / "bad";
+  expect_input_error(paver({"run", "assets/surfaces/pendant.obj", "--stone", "1.5", "--spacing", "2", "--out", bad.string()}),
+                     bad, {"--stone and --spacing"});
+  expect_input_error(paver({"run", "assets/surfaces/pendant.obj", "--units", "furlong", "--out", bad.string()}), bad,
+                     {"--units furlong", "mm, cm, m or in"});
+}
+
 // Ctrl-C while the map is being made (loading, factorization, ARAP) ends `paver run` and `paver
 // param` at once: exit 130, "nothing was written", no output. Uninterrupted, the map alone takes
 // about 30 s here, and a stop polled between ARAP chunks came up to 10 s late; the watchdog kills

@@ -25,6 +25,7 @@ using nlohmann::json;
 // form so that the round trip has to keep every bit.
 Design non_default_design() {
   Design d;
+  d.units = Units::Inch;
   d.pattern.tessellation = Tessellation::Grid;
   d.pattern.spacing = 0.1 + 0.2;
   d.pattern.bracing = false;
@@ -63,6 +64,7 @@ Design non_default_design() {
 }
 
 void expect_same(const Design& a, const Design& b) {
+  EXPECT_EQ(a.units, b.units);
   EXPECT_EQ(a.pattern.tessellation, b.pattern.tessellation);
   EXPECT_EQ(a.pattern.spacing, b.pattern.spacing);
   EXPECT_EQ(a.pattern.bracing, b.pattern.bracing);
@@ -151,6 +153,7 @@ TEST(DesignIo, RoundTripKeepsEveryField) {
 TEST(DesignIo, WritesEveryKey) {
   const json j = design_to_json(Design{});
   EXPECT_EQ(j.at("version"), 1);
+  EXPECT_EQ(j.at("units"), "mm");
   EXPECT_EQ(j.at("pattern").size(), 5u);
   EXPECT_EQ(j.at("pattern").at("topology"), "auto");
   EXPECT_EQ(j.at("elements").size(), 5u);
@@ -164,6 +167,13 @@ TEST(DesignIo, WritesEveryKey) {
   EXPECT_EQ(full.at("elements").at("edge").at(0).at("shape"), "hex_prism");
   EXPECT_EQ(full.at("pattern").at("tessellation"), "grid");
   EXPECT_EQ(full.at("pattern").at("topology"), "adaptive");
+}
+
+TEST(DesignIo, UnitsAreNamed) {
+  const std::string message = json_error(R"({"version": 1, "units": "furlong"})");
+  EXPECT_TRUE(contains(message, "'units' must be one of \"mm\", \"cm\", \"m\", \"in\"")) << message;
+  EXPECT_EQ(design_from_json(json::parse(R"({"version": 1, "units": "cm"})"), "d.json").units, Units::Centimetre);
+  EXPECT_EQ(millimetres_per_unit(Units::Inch), 25.4);
 }
 
 TEST(DesignIo, TopologyIsLatticeAdaptiveOrAuto) {
@@ -462,7 +472,8 @@ TEST_F(DesignIoFile, SaveThenLoadGivesTheSameDesign) {
 
   // Pretty-printed, 2-space indent, version first, trailing newline.
   const std::string text = read(path);
-  EXPECT_EQ(text.rfind("{\n  \"version\": 1,\n  \"pattern\": {\n    \"tessellation\": \"grid\"", 0), 0u) << text;
+  EXPECT_EQ(text.rfind("{\n  \"version\": 1,\n  \"units\": \"in\",\n  \"pattern\": {\n    \"tessellation\": \"grid\"", 0), 0u)
+      << text;
   EXPECT_EQ(text.back(), '\n');
 
   save_design(path, Design{});

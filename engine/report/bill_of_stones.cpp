@@ -1,0 +1,97 @@
+#include "report/bill_of_stones.h"
+
+#include "io/atomic_file.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <utility>
+
+namespace paver {
+namespace {
+
+// Melee sieve chart for round brilliant diamonds (diamondconsultants.in, "Sieve Chart"): the
+// middle of each sieve's millimetre range and its weight per stone in carats.
+constexpr std::array<std::pair<double, double>, 34> kSieveChart = {{
+    {0.75, 0.0033}, {0.85, 0.004}, {1.00, 0.005}, {1.125, 0.006}, {1.175, 0.007}, {1.225, 0.008},
+    {1.275, 0.009}, {1.325, 0.010}, {1.375, 0.011}, {1.425, 0.012}, {1.475, 0.013}, {1.525, 0.014},
+    {1.575, 0.016}, {1.65, 0.018}, {1.75, 0.021}, {1.85, 0.025}, {1.95, 0.029}, {2.05, 0.035},
+    {2.15, 0.039}, {2.25, 0.044}, {2.35, 0.052}, {2.45, 0.058}, {2.55, 0.069}, {2.65, 0.074},
+    {2.75, 0.078}, {2.85, 0.086}, {2.95, 0.095}, {3.05, 0.108}, {3.15, 0.116}, {3.25, 0.125},
+    {3.35, 0.135}, {3.45, 0.146}, {3.55, 0.159}, {3.65, 0.175},
+}};
+
+std::string shortest(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.10g", value);
+  return text;
+}
+
+}  // namespace
+
+double round_brilliant_carat(double d) {
+  if (d >= kSieveChart.front().first && d <= kSieveChart.back().first) {
+    const auto upper = std::lower_bound(kSieveChart.begin(), kSieveChart.end(), d,
+                                        [](const auto& row, double size) { return row.first < size; });
+    if (upper->first == d || upper == kSieveChart.begin()) return upper->second;
+    const auto lower = upper - 1;
+    const double t = (d - lower->first) / (upper->first - lower->first);
+    return lower->second + t * (upper->second - lower->second);
+  }
+  return d * d * (kGemDepthRatio * d) * 0.0061;
+}
+
+BillOfStones bill_of_stones(const Elements& elements, Units units) {
+  BillOfStones bill;
+  bill.units = units;
+  const double mm = millimetres_per_unit(units);
+  // Hundredths of a millimetre as integers: equal sizes group exactly.
+  std::map<std::pair<ShapeKind, long long>, long> counts;
+  for (std::size_t i = 0; i < elements.size(); ++i)
+    ++counts[{elements.shape[i], std::llround(elements.diameter[i] * mm * 100)}];
+  for (const auto& [key, count] : counts) {
+    StoneRow row{key.first, double(key.second) / 100, count, std::nullopt, 0};
+    if (row.shape == ShapeKind::Gem) {
+      row.carat_each = round_brilliant_carat(row.diameter_mm);
+      row.carat_total = *row.carat_each * double(count);
+    }
+    bill.count += count;
+    bill.carat_total += row.carat_total;
+    bill.rows.push_back(row);
+  }
+  return bill;
+}
+
+void write_stones_csv(const std::filesystem::path& path, const BillOfStones& bill) {
+  std::string text = "shape,diameter_mm,count,carat_each,carat_total\n";
+  for (const StoneRow& row : bill.rows) {
+    text += std::string(shape_name(row.shape)) + "," + shortest(row.diameter_mm) + "," + std::to_string(row.count) + ",";
+    if (row.carat_each) text += shortest(*row.carat_each) + "," + shortest(row.carat_total);
+    else text += ",";
+    text += "\n";
+  }
+  text += "total,," + std::to_string(bill.count) + ",," + shortest(bill.carat_total) + "\n";
+  write_text_atomically(path, text);
+}
+
+nlohmann::json to_json(const BillOfStones& bill) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (const StoneRow& row : bill.rows) {
+    nlohmann::json item = {{"shape", shape_name(row.shape)}, {"diameter_mm", row.diameter_mm}, {"count", row.count}};
+    item["carat_each"] = row.carat_each ? nlohmann::json(*row.carat_each) : nlohmann::json(nullptr);
+    item["carat_total"] = row.carat_total;
+    rows.push_back(std::move(item));
+  }
+  return {{"units", units_name(bill.units)},
+          {"rows", std::move(rows)},
+          {"count", bill.count},
+          {"carat_total", bill.carat_total},
+          {"carat_rule", "round brilliants (gem): melee sieve chart 0.75-3.65 mm, d^2 x depth x 0.0061 outside it "
+                         "(docs/stones.md)"}};
+}
+
+}  // namespace paver

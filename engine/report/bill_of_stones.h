@@ -1,0 +1,48 @@
+#pragma once
+// The bill of stones: how many elements of each shape and size a pavement holds, in millimetres,
+// and for round brilliants (the gem shape) their weight in carats: what a jeweller orders from.
+// Written as stones.csv and into report.json (`stones`).
+#include "design/design.h"
+#include "elements/elements.h"
+
+#include <nlohmann/json_fwd.hpp>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace paver {
+
+struct StoneRow {
+  ShapeKind shape;
+  double diameter_mm;                 // rounded to 0.01 mm: a size a stone can be ordered in
+  long count = 0;
+  std::optional<double> carat_each;   // round brilliants only
+  double carat_total = 0;             // 0 for shapes without carats
+};
+
+struct BillOfStones {
+  Units units = Units::Millimetre;    // of the surface the sizes were converted from
+  std::vector<StoneRow> rows;         // by shape, then by diameter
+  long count = 0;
+  double carat_total = 0;
+};
+
+// Groups `elements` by shape and diameter (converted to mm from `units`, rounded to 0.01 mm).
+BillOfStones bill_of_stones(const Elements& elements, Units units);
+
+// Weight of a diamond round brilliant of this girdle diameter, in carats: the trade's melee sieve
+// chart from 0.75 to 3.65 mm (interpolated between its sizes), the round brilliant formula
+// d^2 x depth x 0.0061 outside it, with Paver's gem depth (0.61 d). Sources in docs/stones.md.
+double round_brilliant_carat(double diameter_mm);
+// Paver's gem: total depth (table to culet) over girdle diameter, as make_builtin_shape builds it.
+inline constexpr double kGemDepthRatio = 0.61;
+
+// stones.csv: `shape,diameter_mm,count,carat_each,carat_total`, one row per shape and size, then
+// `total,,COUNT,,CARATS`. Carat fields are empty for shapes that are not round brilliants.
+void write_stones_csv(const std::filesystem::path& path, const BillOfStones& bill);
+
+nlohmann::json to_json(const BillOfStones& bill);
+
+}  // namespace paver

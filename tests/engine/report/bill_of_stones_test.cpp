@@ -1,0 +1,83 @@
+// Tests for engine/report/bill_of_stones.cpp: stones grouped by shape and size in millimetres,
+// carats for round brilliants from the sieve chart inside it and the formula outside it, and the
+// file a jeweller orders from.
+#include "report/bill_of_stones.h"
+
+#include "temp_folder.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <sstream>
+
+namespace paver {
+namespace {
+
+Elements stones(const std::vector<std::pair<double, ShapeKind>>& sizes) {
+  Elements e;
+  int i = 0;
+  for (const auto& [diameter, shape] : sizes)
+    e.push_back(ElementKind::Vertex, i++, 0, {0, 0}, {double(i), 0, 0}, {0, 0, 1}, diameter, shape);
+  return e;
+}
+
+TEST(BillOfStones, GroupsByShapeAndSizeInMillimetres) {
+  // 0.15 cm gems (1.5 mm), one a hair off by rounding, a 1.2 mm gem and two spheres.
+  const Elements e = stones({{0.15, ShapeKind::Gem}, {0.1500000001, ShapeKind::Gem}, {0.12, ShapeKind::Gem},
+                             {0.15, ShapeKind::Sphere}, {0.15, ShapeKind::Sphere}});
+  const BillOfStones bill = bill_of_stones(e, Units::Centimetre);
+  ASSERT_EQ(bill.rows.size(), 3u);
+  EXPECT_EQ(bill.count, 5);
+  EXPECT_EQ(bill.rows[0].shape, ShapeKind::Sphere);  // shapes in their enum order, then by size
+  EXPECT_EQ(bill.rows[0].count, 2);
+  EXPECT_FALSE(bill.rows[0].carat_each) << "a sphere has no carats";
+  EXPECT_EQ(bill.rows[1].shape, ShapeKind::Gem);
+  EXPECT_DOUBLE_EQ(bill.rows[1].diameter_mm, 1.2);
+  EXPECT_DOUBLE_EQ(bill.rows[2].diameter_mm, 1.5);
+  EXPECT_EQ(bill.rows[2].count, 2);
+  EXPECT_DOUBLE_EQ(*bill.rows[2].carat_each, round_brilliant_carat(1.5));
+  EXPECT_DOUBLE_EQ(bill.carat_total, round_brilliant_carat(1.2) + 2 * round_brilliant_carat(1.5));
+  EXPECT_DOUBLE_EQ(bill_of_stones(e, Units::Inch).rows[2].diameter_mm, 3.81);
+}
+
+TEST(BillOfStones, CaratsFollowTheSieveChartThenTheFormula) {
+  EXPECT_DOUBLE_EQ(round_brilliant_carat(1.0), 0.005);    // chart sizes exactly
+  EXPECT_DOUBLE_EQ(round_brilliant_carat(1.325), 0.010);
+  EXPECT_NEAR(round_brilliant_carat(1.5), 0.0135, 1e-12);  // halfway between 1.475 and 1.525
+  // Outside the chart: d^2 x depth x 0.0061 with depth 0.61 d. A 6.5 mm stone is the trade's 1 ct.
+  EXPECT_NEAR(round_brilliant_carat(6.5), 6.5 * 6.5 * (0.61 * 6.5) * 0.0061, 1e-12);
+  EXPECT_NEAR(round_brilliant_carat(6.5), 1.0, 0.1);
+  EXPECT_NEAR(round_brilliant_carat(0.5), 0.5 * 0.5 * 0.305 * 0.0061, 1e-12);
+  // Melee: the chart weighs more than the formula, by the 10-35% the trade knows.
+  for (const double d : {1.0, 1.3, 1.5, 2.0, 3.0}) {
+    const double formula = d * d * (0.61 * d) * 0.0061;
+    EXPECT_GT(round_brilliant_carat(d) / formula, 1.0) << d;
+    EXPECT_LT(round_brilliant_carat(d) / formula, 1.45) << d;
+  }
+  // Monotone: a larger stone never weighs less.
+  for (double d = 0.5; d < 8; d += 0.01) EXPECT_LE(round_brilliant_carat(d), round_brilliant_carat(d + 0.01)) << d;
+}
+
+class BillOfStonesFile : public test::TempFolderTest {};
+
+TEST_F(BillOfStonesFile, CsvHasOneRowPerSizeAndATotal) {
+  const BillOfStones bill =
+      bill_of_stones(stones({{1.5, ShapeKind::Gem}, {1.5, ShapeKind::Gem}, {2.0, ShapeKind::Disc}}), Units::Millimetre);
+  write_stones_csv((dir_ / "stones.csv"), bill);
+  std::ifstream in((dir_ / "stones.csv"));
+  std::stringstream text;
+  text << in.rdbuf();
+  char expected[256];
+  std::snprintf(expected, sizeof expected,
+                "shape,diameter_mm,count,carat_each,carat_total\ngem,1.5,2,%.10g,%.10g\ndisc,2,1,,\ntotal,,3,,%.10g\n",
+                round_brilliant_carat(1.5), 2 * round_brilliant_carat(1.5), 2 * round_brilliant_carat(1.5));
+  EXPECT_EQ(text.str(), expected);
+  const nlohmann::json json = to_json(bill);
+  EXPECT_EQ(json["count"], 3);
+  EXPECT_EQ(json["rows"][1]["carat_each"], nullptr);
+  EXPECT_EQ(json["units"], "mm");
+}
+
+}  // namespace
+}  // namespace paver
