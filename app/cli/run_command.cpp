@@ -114,6 +114,8 @@ int run_run(const RunArgs& args) {
     design.elements.vertex.enabled = true;
     design.elements.vertex.scale = stone / design.pattern.spacing;
     design.elements.vertex.shape = ShapeKind::Gem;
+    // Pavé is a close packing: with no pattern asked for anywhere, stones go on a triangle lattice.
+    if (args.pattern.empty() && args.design.empty()) design.pattern.tessellation = Tessellation::Triangle;
   }
   // What the flags and the file give together (c + m >= 0), named after where it came from.
   validate_design(design, args.design.empty() ? "command line" : args.design);
