@@ -34,7 +34,10 @@ PreviewImages PreviewImages::open() {
   gpu::ContextOptions options;
   options.graphics = true;
   auto context = gpu::VulkanContext::create(options);
-  if (!context) throw InputError("--png needs a Vulkan device to render with: " + context.error().message);
+  if (!context)
+    throw InputError("--png needs a Vulkan device to render with: " + context.error().message +
+                     "; install a Vulkan driver (Mesa's lavapipe: mesa-vulkan-drivers), check VK_ICD_FILENAMES, or "
+                     "leave out --png");
   auto renderer = render::Renderer::create(context.value());
   if (!renderer) throw InputError("--png: " + renderer.error().message);
   return PreviewImages(std::make_unique<Impl>(Impl{std::move(renderer.value())}));

@@ -38,8 +38,11 @@ double largest_diameter(const Elements& e) {
 
 }  // namespace
 
-std::vector<Collision> find_collisions(const Elements& elements, double gap) {
-  std::vector<Collision> out;
+namespace {
+
+// Calls found(collision) for every colliding pair, each once (i < j), in no particular order.
+template <class Found>
+void for_each_collision(const Elements& elements, double gap, Found&& found) {
   const ElementHash hash = hash_over(elements, bounding_box(elements), largest_diameter(elements) + gap);
   for (int i = 0; i < int(elements.size()); ++i) {
     hash.for_each_near(elements.position[i], [&](int j) {
@@ -47,9 +50,25 @@ std::vector<Collision> find_collisions(const Elements& elements, double gap) {
       const double need = contact_distance(elements.diameter[i], elements.diameter[j], gap);
       const double d = glm::length(elements.position[i] - elements.position[j]);
       if (elements_collide(d, elements.diameter[i], elements.diameter[j], gap))
-        out.push_back({i, j, d, 1 - d / need, clearance_between(d, elements.diameter[i], elements.diameter[j])});
+        found(Collision{i, j, d, 1 - d / need, clearance_between(d, elements.diameter[i], elements.diameter[j])});
     });
   }
+}
+
+}  // namespace
+
+CollisionTally count_collisions(const Elements& elements, double gap) {
+  CollisionTally tally;
+  for_each_collision(elements, gap, [&](const Collision& c) {
+    ++tally.pairs;
+    tally.worst_overlap = std::max(tally.worst_overlap, c.overlap);
+  });
+  return tally;
+}
+
+std::vector<Collision> find_collisions(const Elements& elements, double gap) {
+  std::vector<Collision> out;
+  for_each_collision(elements, gap, [&](const Collision& c) { out.push_back(c); });
   std::sort(out.begin(), out.end(), [](const Collision& a, const Collision& b) {
     return a.i != b.i ? a.i < b.i : a.j < b.j;
   });

@@ -17,6 +17,14 @@ struct Collision {
 // Pairs that collide by the contact rule with `gap` (elements/contact_rule.h), sorted by (i, j).
 std::vector<Collision> find_collisions(const Elements& elements, double gap);
 
+// The same pairs counted, with the worst overlap, in constant memory: what the report needs, also
+// for a pile-up whose pairs would not fit in memory.
+struct CollisionTally {
+  long pairs = 0;
+  double worst_overlap = 0;
+};
+CollisionTally count_collisions(const Elements& elements, double gap);
+
 // Per element: distance to its nearest other element over (r_i + r_j) — 1 means touching;
 // for equal elements it is the nearest-neighbour distance over the diameter. +inf when alone.
 // With a gap, the ratio is over (r_i + r_j + gap): below 1 means the pair violates the contact rule.

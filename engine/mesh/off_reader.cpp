@@ -136,17 +136,29 @@ PolygonSoup read_off_text(LineReader reader, const OffLayout& layout, const std:
 
 // After the header line: 4-byte counts (vertices, faces, edges), then per vertex x y z as floats
 // [normal: 3 floats] [colour: 3 four-byte integers] [texture coordinates: 2 floats], then per face
-// its size and indices as 4-byte integers; little-endian. Face colours are not read.
-PolygonSoup read_off_binary(std::string_view bytes, const OffLayout& layout, size_t start,
+// its size and indices as 4-byte integers, in `big_endian` order or little-endian. Face colours
+// are not read.
+std::uint64_t binary_vertex_size(const OffLayout& layout) {
+  return 12 + (layout.normals ? 12 : 0) + (layout.colours ? 12 : 0) + (layout.texcoords ? 8 : 0);
+}
+
+// Whether the counts read in this byte order leave room for their vertices and faces in the file.
+bool binary_counts_fit(std::string_view bytes, const OffLayout& layout, size_t start, bool big_endian) {
+  if (bytes.size() < start + 12) return false;
+  const std::uint64_t vertices = load_unsigned(bytes, start, 4, big_endian);
+  const std::uint64_t faces = load_unsigned(bytes, start + 4, 4, big_endian);
+  return faces > 0 && vertices * binary_vertex_size(layout) + faces * 16 <= bytes.size() - start - 12;
+}
+
+PolygonSoup read_off_binary(std::string_view bytes, const OffLayout& layout, size_t start, bool big_endian,
                             const std::string& source) {
   const std::uint64_t size = bytes.size();
   if (size < start + 12)
     fail(source, at_byte(start) + "the binary OFF file ends before its counts (vertices, faces, edges: three "
                                   "4-byte integers); truncated file?");
-  const std::uint64_t vertex_count = load_unsigned(bytes, start, 4, false);
-  const std::uint64_t face_count = load_unsigned(bytes, start + 4, 4, false);
-  const std::uint64_t vertex_size = 12 + (layout.normals ? 12 : 0) + (layout.colours ? 12 : 0) +
-                                    (layout.texcoords ? 8 : 0);
+  const std::uint64_t vertex_count = load_unsigned(bytes, start, 4, big_endian);
+  const std::uint64_t face_count = load_unsigned(bytes, start + 4, 4, big_endian);
+  const std::uint64_t vertex_size = binary_vertex_size(layout);
   const std::uint64_t base = start + 12;
   // Before allocating anything: the smallest file these counts allow (faces of 3 corners).
   const std::uint64_t needed = vertex_count * vertex_size + face_count * 16;
@@ -168,7 +180,7 @@ PolygonSoup read_off_binary(std::string_view bytes, const OffLayout& layout, siz
     const std::uint64_t at = base + v * vertex_size;
     glm::dvec3 p;
     for (int i = 0; i < 3; ++i)
-      p[i] = coordinates.binary(load_float(bytes, at + 4 * i, false), at + 4 * i, static_cast<long long>(v));
+      p[i] = coordinates.binary(load_float(bytes, at + 4 * i, big_endian), at + 4 * i, static_cast<long long>(v));
     soup.positions.push_back(p);
   }
   std::uint64_t at = base + vertex_count * vertex_size;
@@ -178,7 +190,7 @@ PolygonSoup read_off_binary(std::string_view bytes, const OffLayout& layout, siz
     if (size - at < 4)
       fail(source, at_byte(at) + "the file ends before " + face() + "; the counts declare " + declared +
                        " (truncated file?)");
-    const std::uint64_t corners = load_unsigned(bytes, at, 4, false);
+    const std::uint64_t corners = load_unsigned(bytes, at, 4, big_endian);
     if (corners < 3)
       fail(source, at_byte(at) + face() + " has " + std::to_string(corners) +
                        " vertices; a face needs at least 3" + counts_hint);
@@ -189,7 +201,7 @@ PolygonSoup read_off_binary(std::string_view bytes, const OffLayout& layout, siz
     std::vector<int>& polygon = soup.polygons.emplace_back();
     polygon.reserve(corners);
     for (std::uint64_t i = 0; i < corners; ++i, at += 4) {
-      const std::uint64_t index = load_unsigned(bytes, at, 4, false);
+      const std::uint64_t index = load_unsigned(bytes, at, 4, big_endian);
       if (index >= vertex_count)
         fail(source, at_byte(at) + face() + ": vertex index " + std::to_string(index) + " is out of range: " +
                          vertex_count_hint(static_cast<long long>(vertex_count)));
@@ -219,8 +231,14 @@ PolygonSoup read_off(std::string_view bytes, const std::string& source) {
   if (keyword == OffKeyword::HigherDimension)
     fail(source, "line 1: '" + std::string(tokens[0]) + "' (vertices of other than 3 dimensions) is not supported; "
                      "export a plain 3D OFF file");
-  if (tokens.size() == 2 && tokens[1] == "BINARY")
-    return read_off_binary(bytes, layout, std::min(reader.offset(), bytes.size()), source);
+  if (tokens.size() == 2 && tokens[1] == "BINARY") {
+    // Geomview's binary OFF is big-endian, OpenMesh writes the host's order (little-endian on
+    // every machine we run on): the order is the one whose counts fit the file; little-endian
+    // when neither does, so that the message shows the counts as OpenMesh would read them.
+    const size_t start = std::min(reader.offset(), bytes.size());
+    const bool big_endian = !binary_counts_fit(bytes, layout, start, false) && binary_counts_fit(bytes, layout, start, true);
+    return read_off_binary(bytes, layout, start, big_endian, source);
+  }
   if (tokens.size() >= 2)
     fail(source, "line 1: the OFF keyword must be alone on the first line; move " +
                      quoted(trim(line.substr(size_t(tokens[1].data() - line.data())))) +

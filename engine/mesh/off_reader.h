@@ -1,8 +1,9 @@
 #pragma once
 // OFF, as text ('[ST][C][N]OFF' alone on line 1, then '<vertices> <faces> <edges>', the vertex
-// lines and the face lines '<n> <i1> ... <in>', indices from 0) and in OpenMesh's binary variant
-// ('[ST][C][N]OFF BINARY' on line 1, then little-endian 4-byte counts, float coordinates and
-// 4-byte face sizes and indices).
+// lines and the face lines '<n> <i1> ... <in>', indices from 0) and binary ('[ST][C][N]OFF BINARY'
+// on line 1, then 4-byte counts, float coordinates and 4-byte face sizes and indices), in either
+// byte order: Geomview's big-endian or OpenMesh's little-endian, whichever order's counts fit the
+// file.
 #include "mesh/polygon_soup.h"
 
 #include <string>

@@ -20,6 +20,9 @@ std::string read_bytes(const std::filesystem::path& path, const std::string& sou
   const std::filesystem::file_status status = std::filesystem::status(path, error);
   if (!std::filesystem::exists(status)) fail(source, "file not found; check the path");
   if (std::filesystem::is_directory(status)) fail(source, "is a directory, not a mesh file");
+  // A device or a pipe has no length to check a file's counts against before reading it.
+  if (!std::filesystem::is_regular_file(status))
+    fail(source, "is not a regular file (a device, pipe or socket); save the mesh to a file and give its path");
   const std::uintmax_t size = std::filesystem::file_size(path, error);
   if (error) fail(source, "cannot be read (" + error.message() + ")");
   if (size > kMaxMeshFileBytes)

@@ -25,6 +25,9 @@ using PipelineWarning = std::function<void(const std::string&)>;
 inline constexpr double kMinSurfaceSize = 1e-6, kMaxSurfaceSize = 1e9;
 // Throws InputError naming `path` when the mesh's size is outside [kMinSurfaceSize, kMaxSurfaceSize].
 void check_surface_size(const std::filesystem::path& path, const SurfaceMesh& mesh);
+// Refuses a surface with an edge 1e5 times longer than its median edge (a stray vertex), naming
+// the vertex's position: its slivers would take most of the map and millions of pattern points.
+void check_surface_proportions(const std::filesystem::path& path, const SurfaceMesh& mesh);
 
 struct MappedSurface {
   std::shared_ptr<const SurfaceMap> map;  // null when stopped

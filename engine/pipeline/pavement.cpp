@@ -100,12 +100,14 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
   }
   pavement.points = pavement.pattern.points;
   pavement.timings.emplace_back("pattern", ms_since(t0));
+  // Before any element is placed or measured: the caller's bounds (run_pipeline's output size)
+  // refuse a design here at the cost of its pattern alone.
+  if (options.on_pattern) options.on_pattern(pavement.pattern, design);
 
   t0 = start("measure_initial");
   const PlacedElements initial = place_all_elements(map, pavement.pattern, pavement.points, design, options.postprocess);
   pavement.before = measure_pavement(map, pavement.pattern, pavement.points, initial.elements, basis);
   pavement.timings.emplace_back("measure_initial", ms_since(t0));
-  if (options.on_pattern) options.on_pattern(pavement.pattern, design);
 
   pavement.retired.assign(pavement.points.size(), 0);
   const auto place = [&](const std::vector<glm::dvec2>& points, const std::vector<std::uint32_t>& stray_count) {

@@ -34,8 +34,8 @@ struct PavementOptions {
   SolverFactory solver;              // the backend; empty = the CPU reference with `threads`
   SolverObserver observer;           // called after every solver iteration of the main solve
   const std::atomic<bool>* stop = nullptr;  // when it becomes true, every solve of the run ends
-  // Called once the trimmed pattern is built, before the solver moves it (the studio's live view
-  // starts from it), with the design as used (spacing resolved).
+  // Called once the trimmed pattern is built, before any element is placed and before the solver
+  // moves it (the studio's live view starts from it), with the design as used (spacing resolved).
   std::function<void(const Pattern&, const Design&)> on_pattern;
   // Called as each stage starts, with its name in `timings` ("pattern", "optimize", "refill", ...).
   std::function<void(const std::string&)> on_stage;

@@ -185,9 +185,9 @@ PavementQuality measure_pavement(const SurfaceMap& map, const Pattern& pattern,
   q.vertex_elements = std::count(elements.kind.begin(), elements.kind.end(), ElementKind::Vertex);
   q.edge_elements = q.elements - q.vertex_elements;
   q.gap = basis.gap;
-  const std::vector<Collision> collisions = find_collisions(elements, basis.gap);
-  q.contact_violations = long(collisions.size());
-  for (const Collision& c : collisions) q.worst_overlap = std::max(q.worst_overlap, c.overlap);
+  const CollisionTally collisions = count_collisions(elements, basis.gap);
+  q.contact_violations = collisions.pairs;
+  q.worst_overlap = collisions.worst_overlap;
   const Distribution clearance = distribution_of(nearest_clearances(elements));
   q.min_clearance = clearance.min;
   q.fill = basis.ideal_count > 0 ? double(q.elements) / basis.ideal_count : 0;

@@ -22,8 +22,9 @@ using test::error_of;
 
 // A binary OFF with the counts given (whatever the data) and the vertices and faces given.
 std::string binary_off(std::uint32_t vertex_count, std::uint32_t face_count, const std::vector<glm::vec3>& vertices,
-                       const std::vector<std::vector<std::uint32_t>>& faces, const char* header = "OFF BINARY\n") {
-  ByteWriter out;
+                       const std::vector<std::vector<std::uint32_t>>& faces, const char* header = "OFF BINARY\n",
+                       bool big_endian = false) {
+  ByteWriter out(big_endian);
   out.text(header).put(vertex_count).put(face_count).put(std::uint32_t(0));
   for (const glm::vec3& v : vertices) out.put(v.x).put(v.y).put(v.z);
   for (const auto& face : faces) {
@@ -40,6 +41,19 @@ TEST(OffReader, ReadsBinary) {
   ASSERT_EQ(soup.positions.size(), 4u);
   EXPECT_EQ(soup.positions[2], glm::dvec3(1, 1, 0));
   EXPECT_EQ(soup.polygons, (std::vector<std::vector<int>>{{0, 1, 2}, {0, 2, 3}}));
+}
+
+// Geomview's binary OFF is big-endian, OpenMesh's little-endian: both read the same.
+TEST(OffReader, ReadsBinaryInEitherByteOrder) {
+  const auto faces = std::vector<std::vector<std::uint32_t>>{{0, 1, 2}, {0, 2, 3}};
+  const PolygonSoup little = read_off(binary_off(4, 2, kSquare, faces), "le.off");
+  const PolygonSoup big = read_off(binary_off(4, 2, kSquare, faces, "OFF BINARY\n", true), "be.off");
+  EXPECT_EQ(big.positions, little.positions);
+  EXPECT_EQ(big.polygons, little.polygons);
+  // A truncated big-endian file is still refused, with its counts as little-endian would read them.
+  std::string cut = binary_off(4, 2, kSquare, faces, "OFF BINARY\n", true);
+  cut.resize(cut.size() - 6);
+  EXPECT_THROW(read_off(cut, "cut.off"), InputError);
 }
 
 TEST(OffReader, ReadsBinaryWithNormals) {

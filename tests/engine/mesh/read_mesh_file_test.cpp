@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -43,6 +45,14 @@ TEST_F(ReadMeshFileTest, TooLargeFileIsRefusedBeforeReading) {
 TEST_F(ReadMeshFileTest, DirectoryIsRefused) {
   fs::create_directories(dir_ / "mesh.obj");
   EXPECT_TRUE(Contains(error_of([&] { read_mesh_file(dir_ / "mesh.obj", "mesh.obj"); }), "is a directory"));
+}
+
+// A pipe or a device has no length to check counts against (and /dev/zero never ends): refused by kind.
+TEST_F(ReadMeshFileTest, PipesAndDevicesAreRefused) {
+  ASSERT_EQ(::mkfifo((dir_ / "pipe.obj").c_str(), 0600), 0);
+  EXPECT_TRUE(Contains(error_of([&] { read_mesh_file(dir_ / "pipe.obj", "pipe.obj"); }), "pipe.obj: is not a regular file"));
+  fs::create_symlink("/dev/zero", dir_ / "zero.obj");
+  EXPECT_TRUE(Contains(error_of([&] { read_mesh_file(dir_ / "zero.obj", "zero.obj"); }), "zero.obj: is not a regular file"));
 }
 
 }  // namespace

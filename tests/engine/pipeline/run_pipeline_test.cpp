@@ -204,6 +204,8 @@ TEST_F(RunPipeline, RefusesTooLargeOutputBeforeTheSolve) {
   ASSERT_GT(solver_iterations, 0);
   solver_iterations = 0;
   request.max_output_bytes = 0.9 * bytes;
+  std::vector<std::string> stages;
+  request.pavement.on_stage = [&](const std::string& stage) { stages.push_back(stage); };
   try {
     run_pipeline(request);
     FAIL() << "a run over the output limit was not refused";
@@ -211,6 +213,7 @@ TEST_F(RunPipeline, RefusesTooLargeOutputBeforeTheSolve) {
     EXPECT_NE(std::string(error.what()).find("--max-output-gb"), std::string::npos) << error.what();
   }
   EXPECT_EQ(solver_iterations, 0) << "the limit must be checked before the solve";
+  EXPECT_EQ(stages, std::vector<std::string>{"pattern"}) << "and before any element is placed or measured";
   EXPECT_FALSE(fs::exists(dir_ / "out"));
 
   // The estimate from the pattern is the placed elements' size before boundary post-processing.
