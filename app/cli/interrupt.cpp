@@ -8,13 +8,14 @@ namespace paver::cli {
 namespace {
 
 std::atomic<bool> requested{false};
+std::atomic<int> first_signal{SIGINT};  // the exit code says which: 128 + signal (130 SIGINT, 143 SIGTERM)
 // kWorking: the flag is polled; kNothingWritten: a request ends the process at once; kEnding: it is.
 enum State : int { kWorking, kNothingWritten, kEnding };
 std::atomic<int> state{kWorking};
 std::atomic<long long> first_request_ns{0};
 static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<long long>::is_always_lock_free &&
                   std::atomic<int>::is_always_lock_free,
-              "both are touched from a signal handler");
+              "all are touched from a signal handler");
 
 constexpr long long kForceAfterNs = 1'000'000'000;
 
@@ -24,12 +25,13 @@ long long monotonic_ns() {  // clock_gettime is async-signal-safe
   return static_cast<long long>(now.tv_sec) * 1'000'000'000 + now.tv_nsec;
 }
 
-extern "C" void on_interrupt(int) {
+extern "C" void on_interrupt(int signal_number) {
+  if (!requested.load()) first_signal.store(signal_number);
   int expected = kNothingWritten;
   if (state.compare_exchange_strong(expected, kEnding)) {
     static const char message[] = "paver: interrupted; nothing was written\n";
     [[maybe_unused]] const auto written = write(STDERR_FILENO, message, sizeof message - 1);
-    _exit(130);
+    _exit(128 + first_signal.load());
   }
   const long long now = monotonic_ns();
   if (!requested.exchange(true)) {
@@ -39,7 +41,7 @@ extern "C" void on_interrupt(int) {
   if (now - first_request_ns.load() < kForceAfterNs) return;
   static const char message[] = "paver: interrupted again; stopped at once\n";
   [[maybe_unused]] const auto written = write(STDERR_FILENO, message, sizeof message - 1);
-  _exit(130);
+  _exit(128 + first_signal.load());
 }
 
 }  // namespace
@@ -61,10 +63,12 @@ void install_interrupt_handlers() {
 
 const std::atomic<bool>& interrupt_requested() { return requested; }
 
+int interrupted_exit_code() { return 128 + first_signal.load(); }
+
 void nothing_written_yet() {
   state = kNothingWritten;
   // A request that came before this call is honoured now, the same way.
-  if (requested.load()) on_interrupt(SIGINT);
+  if (requested.load()) on_interrupt(first_signal.load());
 }
 
 void writing_starts() {

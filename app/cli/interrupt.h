@@ -18,5 +18,7 @@ void install_interrupt_handlers();
 void nothing_written_yet();
 void writing_starts();
 const std::atomic<bool>& interrupt_requested();
+// 128 + the signal that asked to stop: 130 for Ctrl-C, 143 for SIGTERM, as shells expect.
+int interrupted_exit_code();
 
 }  // namespace paver::cli

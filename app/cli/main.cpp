@@ -29,7 +29,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("parameters")) return run_parameters();
   } catch (const paver::Interrupted&) {
     std::cerr << "paver: interrupted; nothing was written, the output folder is as it was\n";
-    return 130;
+    return paver::cli::interrupted_exit_code();
   } catch (const paver::InputError& e) {
     std::cerr << "paver: error: " << paver::printable(e.what()) << "\n";
     return 2;
