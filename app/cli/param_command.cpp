@@ -64,9 +64,7 @@ int run_param(const ParamArgs& args) {
       std::optional<Parameterization> done = parameterize_arap(
           loaded.mesh, options,
           [&](int iterations, int max, double energy) {
-            char text[96];
-            std::snprintf(text, sizeof text, "ARAP %d / %d, energy %.6g", iterations, max, energy);
-            progress.fraction(double(iterations) / max, text);
+            progress.fraction(double(iterations) / max, arap_progress_text(iterations, max, energy));
           },
           [] { return interrupt_requested().load(); });
       progress.finish();

@@ -22,7 +22,6 @@
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -104,16 +103,11 @@ int run_run(const RunArgs& args) {
     design.pattern.spacing = finite_non_negative("--spacing", *args.spacing, "0 = derive from the surface");
   if (args.gap)
     design.elements.gap = finite_non_negative("--gap", *args.gap, "free space between elements, surface units");
-  // A stone size sets the lattice: neighbouring stones touch across the gap, so D = stone + gap
-  // and the vertex elements are stone / D of it.
   if (args.stone) {
     if (args.spacing) throw InputError("--stone and --spacing both set the spacing (D = stone + gap): give one of them");
     const double stone = finite_non_negative("--stone", *args.stone, "the stone's diameter, surface units");
     if (!(stone > 0)) throw InputError("--stone 0: a stone needs a diameter above 0");
-    design.pattern.spacing = stone + design.elements.gap;
-    design.elements.vertex.enabled = true;
-    design.elements.vertex.scale = stone / design.pattern.spacing;
-    design.elements.vertex.shape = ShapeKind::Gem;
+    set_stone_size(design, stone);
     // Pavé is a close packing: with no pattern asked for anywhere, stones go on a triangle lattice.
     if (args.pattern.empty() && args.design.empty()) design.pattern.tessellation = Tessellation::Triangle;
   }
@@ -162,9 +156,7 @@ int run_run(const RunArgs& args) {
                                           : "NOT OK:");
   for (const std::string& problem : verdict.problems) std::printf("         - %s\n", problem.c_str());
   // A lattice that tore or left bare patches is what the adaptive topology is for.
-  const bool lattice_failed = std::any_of(verdict.problems.begin(), verdict.problems.end(), [](const std::string& p) {
-    return p.starts_with("bare patches") || p.starts_with("the pattern is torn");
-  });
+  const bool lattice_failed = pattern_is_torn(pavement.after) || has_bare_patches(pavement.after);
   if (lattice_failed && pavement.design.pattern.topology == Topology::Lattice &&
       adaptive_pattern_unsupported(pavement.design).empty())
     std::printf("         hint: the map distorts the lattice here; --topology adaptive grows the pattern on the "

@@ -51,6 +51,13 @@ double millimetres_per_unit(Units u) {
   return 1;
 }
 
+void set_stone_size(Design& design, double stone) {
+  design.pattern.spacing = stone + design.elements.gap;
+  design.elements.vertex.enabled = true;
+  design.elements.vertex.scale = stone / design.pattern.spacing;
+  design.elements.vertex.shape = ShapeKind::Gem;
+}
+
 bool uses_custom_shape(const ElementsDesign& e) {
   if (e.vertex.enabled && e.vertex.shape == ShapeKind::Custom) return true;
   return std::any_of(e.edge.begin(), e.edge.end(), [](const auto& s) { return s.shape == ShapeKind::Custom; });

@@ -71,6 +71,11 @@ struct Design {
   SolverParams solver;
 };
 
+// Paves stones of diameter `stone` (surface units, > 0) with the design's gap between neighbours:
+// the vertex elements become round brilliants (gem) of that size and D = stone + gap, so that
+// stones on neighbouring lattice vertices are exactly the gap apart (docs/stones.md).
+void set_stone_size(Design& design, double stone);
+
 // Throws InputError naming the key when a value is out of range.
 void validate_design(const Design& design, const std::string& source);
 

@@ -1,5 +1,7 @@
 #include "map/arap_parameterization.h"
 
+#include <cstdio>
+
 #include "core/input_error.h"
 #include "map/lscm.h"
 #include "map/tutte_embedding.h"
@@ -333,6 +335,12 @@ Parameterization parameterize_arap(const SurfaceMesh& mesh, const ArapOptions& o
   ArapSolver solver(mesh, options);
   solver.iterate(options.max_iterations);
   return finish_parameterization(mesh, solver);
+}
+
+std::string arap_progress_text(int done, int max, double energy) {
+  char text[96];
+  std::snprintf(text, sizeof text, "ARAP %d / %d, energy %.6g", done, max, energy);
+  return text;
 }
 
 std::optional<Parameterization> parameterize_arap(const SurfaceMesh& mesh, const ArapOptions& options,

@@ -17,6 +17,7 @@
 #include <glm/vec2.hpp>
 
 #include <functional>
+#include <string>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -75,6 +76,9 @@ private:
 // The result of a solver that has iterated: its map scaled to the surface's area and centred,
 // and measured. For callers that iterate in chunks (the editor shows progress).
 Parameterization finish_parameterization(const SurfaceMesh& mesh, const ArapSolver& solver);
+
+// What a chunk's progress says: "ARAP 20 / 300, energy 0.00217768".
+std::string arap_progress_text(int done, int max, double energy);
 
 // One call: start map, ARAP to convergence, then finish_parameterization.
 Parameterization parameterize_arap(const SurfaceMesh& mesh, const ArapOptions& options = {});

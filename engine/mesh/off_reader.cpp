@@ -142,12 +142,17 @@ std::uint64_t binary_vertex_size(const OffLayout& layout) {
   return 12 + (layout.normals ? 12 : 0) + (layout.colours ? 12 : 0) + (layout.texcoords ? 8 : 0);
 }
 
+// The smallest body these counts allow (faces of 3 corners), checked before anything is allocated.
+std::uint64_t least_binary_bytes(std::uint64_t vertices, std::uint64_t faces, const OffLayout& layout) {
+  return vertices * binary_vertex_size(layout) + faces * 16;
+}
+
 // Whether the counts read in this byte order leave room for their vertices and faces in the file.
 bool binary_counts_fit(std::string_view bytes, const OffLayout& layout, size_t start, bool big_endian) {
   if (bytes.size() < start + 12) return false;
   const std::uint64_t vertices = load_unsigned(bytes, start, 4, big_endian);
   const std::uint64_t faces = load_unsigned(bytes, start + 4, 4, big_endian);
-  return faces > 0 && vertices * binary_vertex_size(layout) + faces * 16 <= bytes.size() - start - 12;
+  return faces > 0 && least_binary_bytes(vertices, faces, layout) <= bytes.size() - start - 12;
 }
 
 PolygonSoup read_off_binary(std::string_view bytes, const OffLayout& layout, size_t start, bool big_endian,
@@ -160,8 +165,7 @@ PolygonSoup read_off_binary(std::string_view bytes, const OffLayout& layout, siz
   const std::uint64_t face_count = load_unsigned(bytes, start + 4, 4, big_endian);
   const std::uint64_t vertex_size = binary_vertex_size(layout);
   const std::uint64_t base = start + 12;
-  // Before allocating anything: the smallest file these counts allow (faces of 3 corners).
-  const std::uint64_t needed = vertex_count * vertex_size + face_count * 16;
+  const std::uint64_t needed = least_binary_bytes(vertex_count, face_count, layout);
   const std::string declared =
       count_of(static_cast<long long>(vertex_count), "vertex", "vertices") + " and " +
       count_of(static_cast<long long>(face_count), "face", "faces");

@@ -4,6 +4,7 @@
 #include "mesh/mesh_loader.h"
 
 #include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 
 #include <algorithm>
 #include <cstdio>
@@ -42,42 +43,31 @@ void check_surface_proportions(const std::filesystem::path& path, const SurfaceM
   std::vector<double> lengths;
   lengths.reserve(mesh.triangles.size() * 3);
   double longest = 0;
-  int far_vertex = -1;
+  glm::ivec2 longest_ends(0);
   for (const glm::ivec3& t : mesh.triangles)
     for (int k = 0; k < 3; ++k) {
-      const int a = t[k], b = t[(k + 1) % 3];
-      const double l = glm::length(mesh.positions[a] - mesh.positions[b]);
-      lengths.push_back(l);
-      if (l > longest) longest = l, far_vertex = a;
+      const glm::ivec2 ends(t[k], t[(k + 1) % 3]);
+      lengths.push_back(glm::length(mesh.positions[ends.x] - mesh.positions[ends.y]));
+      if (lengths.back() > longest) longest = lengths.back(), longest_ends = ends;
     }
   if (lengths.empty()) return;
-  std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
-  const double median = lengths[lengths.size() / 2];
-  if (!(longest > kMaxEdgeOverMedian * median)) return;
-  // Of the longest edge's two ends, the stray one is the farther from the median vertex position.
-  const glm::ivec3* face = nullptr;
-  for (const glm::ivec3& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k)
-      if (t[k] == far_vertex && glm::length(mesh.positions[t[k]] - mesh.positions[t[(k + 1) % 3]]) == longest) face = &t;
-  int stray = far_vertex;
-  if (face) {
-    std::vector<double> xs, ys, zs;
-    for (const glm::dvec3& p : mesh.positions) xs.push_back(p.x), ys.push_back(p.y), zs.push_back(p.z);
-    const auto middle = [](std::vector<double>& v) {
-      std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-      return v[v.size() / 2];
-    };
-    const glm::dvec3 centre(middle(xs), middle(ys), middle(zs));
-    for (int k = 0; k < 3; ++k)
-      if (glm::length(mesh.positions[(*face)[k]] - centre) > glm::length(mesh.positions[stray] - centre))
-        stray = (*face)[k];
-  }
-  const glm::dvec3 p = mesh.positions[stray];
+  const auto median = [](std::vector<double>& v) {
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    return v[v.size() / 2];
+  };
+  const double typical = median(lengths);
+  if (!(longest > kMaxEdgeOverMedian * typical)) return;
+  // Of the longest edge's two ends, the stray one lies farther from the vertices' median position.
+  std::vector<double> xs, ys, zs;
+  for (const glm::dvec3& p : mesh.positions) xs.push_back(p.x), ys.push_back(p.y), zs.push_back(p.z);
+  const glm::dvec3 centre(median(xs), median(ys), median(zs));
+  const glm::dvec3 a = mesh.positions[longest_ends.x], b = mesh.positions[longest_ends.y];
+  const glm::dvec3 p = glm::length(a - centre) > glm::length(b - centre) ? a : b;
   char text[320];
   std::snprintf(text, sizeof text,
                 ": an edge is %.3g times longer than the surface's median edge (%.3g): the vertex at "
                 "(%.6g, %.6g, %.6g) looks stray; remove it or remesh the surface",
-                longest / median, median, p.x, p.y, p.z);
+                longest / typical, typical, p.x, p.y, p.z);
   throw InputError(path.string() + text);
 }
 
@@ -105,9 +95,7 @@ MappedSurface map_surface_file(const std::filesystem::path& path, const Pipeline
     std::optional<Parameterization> parameterization = parameterize_arap(
         loaded.mesh, ArapOptions{},
         [&](int done, int max, double energy) {
-          char text[96];
-          std::snprintf(text, sizeof text, "mapping: ARAP %d / %d, energy %.6g", done, max, energy);
-          report(0.15f + 0.75f * float(done) / float(max), text);
+          report(0.15f + 0.75f * float(done) / float(max), "mapping: " + arap_progress_text(done, max, energy));
         },
         stopped);
     if (!parameterization) return out;

@@ -183,9 +183,9 @@ std::string three_digits(double value) {
 // verdict's own bounds), which is what a map distorting the lattice does. Empty when it did not.
 std::string lattice_failure(const PavementQuality& q) {
   std::string why;
-  if (q.spring_deviation_p95 > kTornSpringDeviation)
+  if (pattern_is_torn(q))
     why = "the lattice tore (spring deviation p95 " + three_digits(q.spring_deviation_p95) + ")";
-  if (q.fill > 0 && q.fill < kBareFill)
+  if (has_bare_patches(q))
     why += (why.empty() ? "the lattice left bare patches (fill " : " and left bare patches (fill ") +
            three_digits(q.fill) + ")";
   return why;
@@ -200,11 +200,12 @@ Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptio
   Pavement first = pave_with_topology(map, std::move(lattice), options);
   const std::string failure = lattice_failure(first.after);
   const bool stopped = options.stop && options.stop->load();
-  if (failure.empty() || stopped || !adaptive_pattern_unsupported(first.design).empty()) {
+  const std::string unsupported = failure.empty() ? "" : adaptive_pattern_unsupported(first.design);
+  if (failure.empty() || stopped || !unsupported.empty()) {
     first.topology_choice = failure.empty() ? "auto: lattice (it neither tore nor left bare patches)"
                             : stopped       ? "auto: lattice (stopped)"
-                                            : "auto: lattice; " + failure + ", but the adaptive pattern cannot take this design (" +
-                                                  adaptive_pattern_unsupported(first.design) + ")";
+                                            : "auto: lattice; " + failure +
+                                                  ", but the adaptive pattern cannot take this design (" + unsupported + ")";
     return first;
   }
   // The same design, spacing as resolved, grown on the surface; kept when it judges better.

@@ -23,11 +23,11 @@ Verdict judge_pavement(const PavementQuality& q) {
                                 double(q.contact_violations), q.min_clearance));
   if (q.boundary_crossings > 0)
     v.problems.push_back(format("%.0f elements cross the surface boundary", double(q.boundary_crossings)));
-  if (q.spring_deviation_p95 > kTornSpringDeviation)
+  if (pattern_is_torn(q))
     v.problems.push_back(format("the pattern is torn: 5%% of its springs are more than %.0f%% off their "
                                 "target (p95 deviation %.3g)",
                                 100 * kTornSpringDeviation, q.spring_deviation_p95));
-  if (q.fill > 0 && q.fill < kBareFill)
+  if (has_bare_patches(q))
     v.problems.push_back(format("bare patches: %.0f%% of the elements that the pattern's density puts on this "
                                 "surface (below %.0f%%)",
                                 100 * q.fill, 100 * kBareFill));

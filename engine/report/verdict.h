@@ -18,6 +18,11 @@ inline constexpr double kTornSpringDeviation = 0.5;
 // Fewer elements than this share of the ideal count (quality `fill`) leaves bare patches.
 inline constexpr double kBareFill = 0.85;
 
+// The two problems a map that distorts the lattice causes; judge_pavement names them, and
+// topology auto (pipeline/pavement.h) and the CLI's hint act on them.
+inline bool pattern_is_torn(const PavementQuality& q) { return q.spring_deviation_p95 > kTornSpringDeviation; }
+inline bool has_bare_patches(const PavementQuality& q) { return q.fill > 0 && q.fill < kBareFill; }
+
 struct Verdict {
   bool ok = true;
   std::vector<std::string> problems;  // each a sentence with its figures; empty when ok

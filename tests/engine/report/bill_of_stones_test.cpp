@@ -16,9 +16,10 @@ namespace {
 
 Elements stones(const std::vector<std::pair<double, ShapeKind>>& sizes) {
   Elements e;
-  int i = 0;
-  for (const auto& [diameter, shape] : sizes)
-    e.push_back(ElementKind::Vertex, i++, 0, {0, 0}, {double(i), 0, 0}, {0, 0, 1}, diameter, shape);
+  for (const auto& [diameter, shape] : sizes) {
+    const int i = int(e.size());
+    e.push_back(ElementKind::Vertex, i, 0, {0, 0}, {double(i), 0, 0}, {0, 0, 1}, diameter, shape);
+  }
   return e;
 }
 
