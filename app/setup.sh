@@ -47,7 +47,7 @@ case "$mode" in
     out=out/demo
     build/bin/paver run assets/surfaces/dome.obj --design assets/designs/dome_hex_d6.json --out "$out" --png
     echo
-    echo "setup: results are in $(pwd)/$out (placements.csv, elements.ply/.obj, design.json, report.json,"
+    echo "setup: results are in $(pwd)/$out (placements.csv, stones.csv, elements.ply/.obj, design.json, report.json,"
     echo "       preview.png: the paved surface, param.png: the pattern on the 2D map)"
     ;;
   test)
