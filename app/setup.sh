@@ -17,7 +17,7 @@ fuzz_seconds=${PAVER_FUZZ_SECONDS:-60}
 packages=(
   cmake ninja-build g++ pkg-config
   libeigen3-dev libtbb-dev libglm-dev nlohmann-json3-dev libcli11-dev libstb-dev
-  libgtest-dev libbenchmark-dev
+  libgtest-dev libbenchmark-dev libtinygltf-dev lib3mf-dev
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools glslang-tools spirv-tools
   libglfw3-dev libimgui-dev xvfb xauth
 )

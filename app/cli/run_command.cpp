@@ -53,6 +53,7 @@ struct RunArgs {
   std::string device;
   bool png = false;
   double max_output_gb = 4;
+  std::string formats = "ply,obj,glb,3mf";
   bool quiet = false;
 };
 
@@ -131,6 +132,11 @@ int run_run(const RunArgs& args) {
   const fs::path out = args.out;
   request.out = out;
   request.max_output_bytes = args.max_output_gb * 1e9;
+  try {
+    request.formats = parse_mesh_formats(args.formats);
+  } catch (const InputError& e) {
+    throw InputError("--formats " + printable(args.formats) + ": " + e.what());
+  }
   request.on_export = [&] {
     writing_starts();
     progress.stage("export");
@@ -145,6 +151,7 @@ int run_run(const RunArgs& args) {
       timings.emplace_back("png", ms_since(t0));
     };
   }
+  const MeshFormats request_formats = request.formats;
   const PipelineResult result = run_pipeline(std::move(request));
   progress.finish();
   const SurfaceMap& map = *result.map;
@@ -213,8 +220,11 @@ int run_run(const RunArgs& args) {
   double total = 0;
   for (const auto& [stage, ms] : result.timings) std::printf(" %s %.1f ms,", stage.c_str(), ms), total += ms;
   std::printf(" total %.1f ms\n", total);
-  std::printf("wrote    %s/{placements.csv, stones.csv, elements.ply, elements.obj, design.json, report.json%s}\n",
-              printable(out.string()).c_str(), args.png ? ", preview.png, param.png" : "");
+  std::string written = "placements.csv, stones.csv";
+  for (const std::string& name : mesh_file_names(request_formats)) written += ", " + name;
+  written += ", design.json, report.json";
+  if (args.png) written += ", preview.png, param.png";
+  std::printf("wrote    %s/{%s}\n", printable(out.string()).c_str(), written.c_str());
   return 0;
 }
 
@@ -245,6 +255,9 @@ std::function<int()> add_run_command(CLI::App& app) {
   app::add_backend_option(*cmd, args->backend);
   cmd->add_option("--device", args->device, "Vulkan device: a substring of its name (see `paver devices`)");
   cmd->add_flag("--quiet", args->quiet, "No progress on stderr (warnings and errors still)");
+  cmd->add_option("--formats", args->formats,
+                  "Mesh files to write, comma-separated: ply, obj, stl, glb (glTF 2.0 binary), 3mf")
+      ->capture_default_str();
   cmd->add_flag("--png", args->png, "Also render preview.png (3D) and param.png (2D) offscreen with Vulkan");
   cmd->add_option("--max-output-gb", args->max_output_gb,
                   "Refuse to write element meshes (PLY + OBJ) larger than this, in GB")

@@ -102,17 +102,21 @@ bool result_is_final(const Studio& s) {
   return s.doc.result.pavement && s.doc.result.revision == s.doc.revision && !s.loader.busy();
 }
 
+// The studio exports every format: a designer hands the set on and should not have to choose.
+constexpr MeshFormats kStudioExportFormats{.ply = true, .obj = true, .stl = true, .glb = true, .threemf = true};
+
 void export_outputs(Studio& s, const fs::path& folder) {
   if (!result_is_final(s))
     throw InputError("nothing to export yet: the pavement for this design is not finished (run it, or wait)");
   const Pavement& pavement = *s.doc.result.pavement;
   const std::vector<fs::path> inputs = {s.doc.surface.path, s.doc.design_path, s.doc.design.elements.custom_shape};
-  refuse_overwriting_inputs(inputs, run_output_paths(folder, true));
+  refuse_overwriting_inputs(inputs, run_output_paths(folder, kStudioExportFormats));
   StageTimings timings = s.doc.surface.timings;
   timings.insert(timings.end(), pavement.timings.begin(), pavement.timings.end());
   const RunInfo info{s.doc.surface.path.string(), s.doc.design_path.empty() ? "studio" : s.doc.design_path.string(),
                      s.doc.design.pattern.spacing <= 0};
-  write_run_outputs(folder, info, *s.doc.surface.map, pavement, timings, {.custom = custom_shape(s.doc), .stl = true});
+  write_run_outputs(folder, info, *s.doc.surface.map, pavement, timings,
+                    {.custom = custom_shape(s.doc), .formats = kStudioExportFormats});
   report_status(s.doc, "exported to " + folder.string());
 }
 

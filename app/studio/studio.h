@@ -72,7 +72,8 @@ void open_surface(Studio& s, const std::filesystem::path& path);
 void open_any(Studio& s, const std::filesystem::path& path);
 // Chooses the solver backend (cpu, vulkan, auto); reports when it cannot.
 void set_backend(Studio& s, const std::string& name);
-// Writes placements.csv, elements.ply/.obj/.stl, design.json and report.json into `folder`,
+// Writes placements.csv, stones.csv, elements.ply/.obj/.stl/.glb, paved.3mf, design.json and
+// report.json into `folder`,
 // as `paver run` does. Throws InputError (nothing to export yet, a bad folder).
 void export_outputs(Studio& s, const std::filesystem::path& folder);
 // The 3D view as a PNG, at its current size. Throws InputError.

@@ -94,6 +94,31 @@ void write_file_atomically(const std::filesystem::path& path,
   }
 }
 
+void write_file_atomically_by_name(const std::filesystem::path& path,
+                                   const std::function<void(const std::filesystem::path& temporary)>& write) {
+  if (path.filename().empty()) fail(path, "the path names a folder, not a file");
+  const std::filesystem::path folder = folder_of(path);
+  std::error_code ec;
+  if (!std::filesystem::is_directory(folder, ec))
+    fail(path, "the folder " + folder.string() + " does not exist (create it first)");
+  const std::filesystem::path temporary = temporary_path_beside(path);
+  try {
+    write(temporary);
+  } catch (...) {
+    remove_quietly(temporary);
+    throw;
+  }
+  if (!std::filesystem::is_regular_file(temporary, ec)) {
+    remove_quietly(temporary);
+    fail(path, "the writer left no file (is the folder writable?)");
+  }
+  std::filesystem::rename(temporary, path, ec);
+  if (ec) {
+    remove_quietly(temporary);
+    fail(path, "cannot replace the file: " + ec.message());
+  }
+}
+
 void write_text_atomically(const std::filesystem::path& path, std::string_view text) {
   write_file_atomically(path, [text](std::ostream& out) {
     out.write(text.data(), static_cast<std::streamsize>(text.size()));

@@ -13,6 +13,11 @@ namespace paver {
 void write_file_atomically(const std::filesystem::path& path,
                            const std::function<void(std::ostream&)>& write);
 
+// The same for a library that writes only to a file name of its own: `write` is given the
+// temporary path to create, which is renamed to `path` once it returns.
+void write_file_atomically_by_name(const std::filesystem::path& path,
+                                   const std::function<void(const std::filesystem::path& temporary)>& write);
+
 void write_text_atomically(const std::filesystem::path& path, std::string_view text);
 
 }  // namespace paver

@@ -1,6 +1,7 @@
 #include "io/element_export.h"
 
 #include "elements/element_frame.h"
+#include "io/shape_table.h"
 
 #include "io/atomic_file.h"
 #include "core/input_error.h"
@@ -107,47 +108,6 @@ char* put_u8(char* p, std::uint8_t v) {
   return p + 1;
 }
 
-// The shapes the elements use, built once per export.
-class ShapeTable {
-public:
-  ShapeTable(const Elements& elements, const ElementMeshOptions& options,
-             const std::filesystem::path& path) {
-    for (std::size_t i = 0; i < elements.size(); ++i) {
-      const ShapeKind kind = elements.shape[i];
-      const auto slot = static_cast<std::size_t>(kind);
-      if (mesh_[slot]) continue;
-      if (kind == ShapeKind::Custom) {
-        if (!options.custom)
-          throw InputError("cannot write " + path.string() + ": element " + std::to_string(i) +
-                           " uses the custom shape but none was loaded; set "
-                           "'elements.custom_shape' to a mesh file");
-        mesh_[slot] = options.custom;
-      } else {
-        builtin_[slot] = make_builtin_shape(kind);
-        mesh_[slot] = &builtin_[slot];
-      }
-      check_indices(*mesh_[slot]);
-    }
-  }
-
-  ShapeTable(const ShapeTable&) = delete;  // mesh_ points into builtin_
-  ShapeTable& operator=(const ShapeTable&) = delete;
-
-  const ShapeMesh& operator[](ShapeKind kind) const { return *mesh_[static_cast<std::size_t>(kind)]; }
-
-private:
-  static void check_indices(const ShapeMesh& mesh) {
-    const int n = static_cast<int>(mesh.positions.size());
-    for (const glm::ivec3& t : mesh.triangles)
-      if (t.x < 0 || t.y < 0 || t.z < 0 || t.x >= n || t.y >= n || t.z >= n)
-        throw std::invalid_argument("ShapeMesh: a triangle refers to a vertex that does not exist");
-  }
-
-  static constexpr std::size_t kKinds = static_cast<std::size_t>(ShapeKind::Custom) + 1;
-  std::array<ShapeMesh, kKinds> builtin_;
-  std::array<const ShapeMesh*, kKinds> mesh_{};
-};
-
 // The one per-element transform every mesh writer uses: calls emit(i, shape, placed) for each
 // element in order, with `placed` its shape's vertices as they sit on the surface.
 template <class Emit>
@@ -204,7 +164,7 @@ void write_placements_csv(const std::filesystem::path& path, const Elements& ele
 }
 
 ElementMeshSize element_mesh_size(const Elements& elements, const ElementMeshOptions& options) {
-  const ShapeTable shapes(elements, options, "elements");
+  const ShapeTable shapes(elements, options.custom, "elements");
   const MeshCounts counts = count(elements, shapes);
   return {elements.size(), counts.vertices, counts.faces};
 }
@@ -237,7 +197,7 @@ void write_elements_ply(const std::filesystem::path& path, const Elements& eleme
   check_sizes(elements);
   if (options.colours && options.colours->size() != elements.size())
     throw std::invalid_argument("write_elements_ply: colours must have one entry per element");
-  const ShapeTable shapes(elements, options, path);
+  const ShapeTable shapes(elements, options.custom, path);
   const MeshCounts counts = count(elements, shapes);
   // PLY vertex indices are 32-bit signed.
   if (counts.vertices > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
@@ -288,7 +248,7 @@ void write_elements_ply(const std::filesystem::path& path, const Elements& eleme
 void write_elements_obj(const std::filesystem::path& path, const Elements& elements,
                         const ElementMeshOptions& options) {
   check_sizes(elements);
-  const ShapeTable shapes(elements, options, path);
+  const ShapeTable shapes(elements, options.custom, path);
   const MeshCounts counts = count(elements, shapes);
 
   write_file_atomically(path, [&](std::ostream& out) {
@@ -329,7 +289,7 @@ void write_elements_obj(const std::filesystem::path& path, const Elements& eleme
 void write_elements_stl(const std::filesystem::path& path, const Elements& elements,
                         const ElementMeshOptions& options) {
   check_sizes(elements);
-  const ShapeTable shapes(elements, options, path);
+  const ShapeTable shapes(elements, options.custom, path);
   const MeshCounts counts = count(elements, shapes);
   if (counts.faces > std::numeric_limits<std::uint32_t>::max())
     throw InputError("cannot write " + path.string() + ": its " + std::to_string(counts.faces) +

@@ -30,15 +30,10 @@ struct ElementMeshOptions {
   // leaving no file behind (io/atomic_file.h).
   const std::atomic<bool>* stop = nullptr;
 };
-// Vertices and triangles of every element's mesh together (the size of the PLY/OBJ/STL), and
-// about how many bytes the PLY and OBJ (and the STL when asked) will take: checked before writing.
+// Vertices and triangles of every element's mesh together (the size of the PLY/OBJ/STL): the
+// output bound (io/mesh_formats.h) is checked on it before writing.
 struct ElementMeshSize {
   std::size_t elements = 0, vertices = 0, faces = 0;
-  double bytes(bool stl) const {
-    return 15.0 * double(vertices) + 13.0 * double(faces)          // binary PLY
-           + 36.0 * double(vertices) + 26.0 * double(faces)        // OBJ text, about
-           + (stl ? 50.0 * double(faces) : 0.0);                   // binary STL
-  }
 };
 ElementMeshSize element_mesh_size(const Elements& elements, const ElementMeshOptions& options = {});
 // The same for a pattern whose elements are not placed yet: one V-element per point (when

@@ -10,6 +10,8 @@
 #include "io/atomic_file.h"
 #include "io/design_io.h"
 #include "io/element_export.h"
+#include "io/gltf_export.h"
+#include "io/threemf_export.h"
 #include "elements/element_proximity.h"
 #include "report/pavement_quality.h"
 
@@ -21,14 +23,15 @@ namespace paver {
 
 namespace fs = std::filesystem;
 
-std::vector<fs::path> run_output_paths(const fs::path& folder, bool stl) {
-  std::vector<fs::path> paths = {folder / "placements.csv", folder / "stones.csv", folder / "elements.ply",
-                                 folder / "elements.obj", folder / "design.json", folder / "report.json"};
-  if (stl) paths.push_back(folder / "elements.stl");
+std::vector<fs::path> run_output_paths(const fs::path& folder, const MeshFormats& formats) {
+  std::vector<fs::path> paths = {folder / "placements.csv", folder / "stones.csv", folder / "design.json",
+                                 folder / "report.json"};
+  for (const std::string& name : mesh_file_names(formats)) paths.push_back(folder / name);
   return paths;
 }
 
-void write_run_files(const fs::path& folder, const Pavement& pavement, const RunOutputOptions& options) {
+void write_run_files(const fs::path& folder, const SurfaceMap& map, const Pavement& pavement,
+                     const RunOutputOptions& options) {
   make_output_folder(folder);
   ElementMeshOptions mesh_options;
   mesh_options.custom = options.custom;
@@ -37,15 +40,23 @@ void write_run_files(const fs::path& folder, const Pavement& pavement, const Run
   mesh_options.colours = &colours;
   write_placements_csv(folder / "placements.csv", pavement.elements, options.stop);
   write_stones_csv(folder / "stones.csv", bill_of_stones(pavement.elements, pavement.design.units));
-  write_elements_ply(folder / "elements.ply", pavement.elements, mesh_options);
-  write_elements_obj(folder / "elements.obj", pavement.elements, mesh_options);
-  if (options.stl) write_elements_stl(folder / "elements.stl", pavement.elements, mesh_options);
+  const MeshFormats& formats = options.formats;
+  if (formats.ply) write_elements_ply(folder / "elements.ply", pavement.elements, mesh_options);
+  if (formats.obj) write_elements_obj(folder / "elements.obj", pavement.elements, mesh_options);
+  if (formats.stl) write_elements_stl(folder / "elements.stl", pavement.elements, mesh_options);
+  if (formats.glb)
+    write_pavement_glb(folder / "elements.glb", {.mesh = &map.mesh, .normals = &map.normals}, pavement.elements,
+                       pavement.design.units, mesh_options);
+  if (formats.threemf)
+    write_pavement_3mf(folder / "paved.3mf", &map.mesh, pavement.elements, pavement.design.units, mesh_options);
   save_design(folder / "design.json", pavement.design);
 }
 
 std::vector<std::string> run_output_names() {
-  return {"placements.csv", "stones.csv", "elements.ply", "elements.obj", "elements.stl", "design.json",
-          "report.json",    "preview.png",  "param.png"};
+  std::vector<std::string> names = {"placements.csv", "stones.csv", "design.json", "report.json", "preview.png",
+                                    "param.png"};
+  for (std::string& name : all_mesh_file_names()) names.push_back(std::move(name));
+  return names;
 }
 
 void write_run_outputs(const fs::path& folder, const RunInfo& info, const SurfaceMap& map, const Pavement& pavement,
@@ -57,7 +68,7 @@ void write_run_outputs(const fs::path& folder, const RunInfo& info, const Surfac
   OutputSet::remove_stale_staging(folder);  // left by runs that were killed
   OutputSet set(folder, run_output_names());
   const auto t0 = std::chrono::steady_clock::now();
-  write_run_files(set.staging(), pavement, options);
+  write_run_files(set.staging(), map, pavement, options);
   timings.emplace_back("export",
                        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
   check_stop();

@@ -1,8 +1,10 @@
 #pragma once
 // The files a pavement run leaves behind, written the same way by `paver run` and by the
-// studio's export: placements.csv, elements.ply, elements.obj (and elements.stl when asked) and
-// design.json, then report.json last so that it can carry the time the others took.
+// studio's export: placements.csv, stones.csv, the mesh files of the chosen formats
+// (io/mesh_formats.h: elements.ply/.obj/.stl/.glb, paved.3mf) and design.json, then report.json
+// last so that it can carry the time the others took.
 #include "elements/element_shape.h"
+#include "io/mesh_formats.h"
 #include "pipeline/pavement.h"
 #include "report/run_report.h"
 #include "map/surface_map.h"
@@ -19,7 +21,7 @@ namespace paver {
 
 struct RunOutputOptions {
   const ShapeMesh* custom = nullptr;  // the design's custom shape, when an element uses it
-  bool stl = false;                   // also elements.stl (binary STL)
+  MeshFormats formats;                // which mesh files
   const std::atomic<bool>* stop = nullptr;  // when it becomes true, nothing more is written: Interrupted
 };
 
@@ -27,11 +29,12 @@ struct RunOutputOptions {
 std::vector<std::string> run_output_names();
 
 // Every path the two functions below write in `folder`, for refuse_overwriting_inputs.
-std::vector<std::filesystem::path> run_output_paths(const std::filesystem::path& folder, bool stl);
+std::vector<std::filesystem::path> run_output_paths(const std::filesystem::path& folder, const MeshFormats& formats);
 
 // Creates `folder` if needed and writes the elements (the PLY coloured like the paper's figures:
-// red = too close, through yellow, to green = loose) and the resolved design.
-void write_run_files(const std::filesystem::path& folder, const Pavement& pavement,
+// red = too close, through yellow, to green = loose; the glTF and 3MF with the surface `map`'s
+// mesh) and the resolved design.
+void write_run_files(const std::filesystem::path& folder, const SurfaceMap& map, const Pavement& pavement,
                      const RunOutputOptions& options = {});
 
 // The export stage as run_pipeline and the studio's export run it, as one set (io/output_set.h):

@@ -20,12 +20,12 @@ namespace {
 // The output bound, checked twice: from the pattern before the solve (so that a design whose
 // files would be too large is refused before the expensive work) and on the final elements
 // (boundary filling and refill add a few).
-void refuse_large_output(const ElementMeshSize& size, const PipelineRequest& request) {
-  const double bytes = size.bytes(request.stl);
+void refuse_large_output(const ElementMeshSize& size, const PipelineRequest& request, const SurfaceMesh& surface) {
+  const double bytes = expected_mesh_bytes(size, request.formats, surface);
   if (bytes <= request.max_output_bytes) return;
   char text[320];
   std::snprintf(text, sizeof text,
-                "the element meshes would take about %.3g GB (%zu elements, %zu triangles); the limit is %.3g GB: "
+                "the mesh files would take about %.3g GB (%zu elements, %zu triangles); the limit is %.3g GB: "
                 "use a lighter element shape, a larger spacing or fewer elements, or raise the limit (--max-output-gb)",
                 bytes / 1e9, size.elements, size.faces, request.max_output_bytes / 1e9);
   throw InputError(text);
@@ -47,7 +47,7 @@ PipelineResult run_pipeline(PipelineRequest request) {
   // Refuse before any work if an output would replace an input.
   std::vector<std::filesystem::path> outputs;
   if (request.out) {
-    outputs = run_output_paths(*request.out, request.stl);
+    outputs = run_output_paths(*request.out, request.formats);
     outputs.insert(outputs.end(), request.extra_outputs.begin(), request.extra_outputs.end());
     refuse_overwriting_inputs({request.surface_path, request.design_path, design.elements.custom_shape}, outputs);
     check_output_folder(*request.out);
@@ -73,7 +73,7 @@ PipelineResult run_pipeline(PipelineRequest request) {
     std::function<void(const Pattern&, const Design&)> caller_hook = std::move(request.pavement.on_pattern);
     request.pavement.on_pattern = [&, caller_hook](const Pattern& pattern, const Design& used) {
       refuse_large_output(expected_element_mesh_size(pattern, used.elements, {.custom = result.custom_shape.get()}),
-                          request);
+                          request, result.map->mesh);
       if (caller_hook) caller_hook(pattern, used);
     };
   }
@@ -91,13 +91,14 @@ PipelineResult run_pipeline(PipelineRequest request) {
   result.counts = count_pavement(result.pavement);
 
   if (request.out) {
-    refuse_large_output(element_mesh_size(result.pavement.elements, {.custom = result.custom_shape.get()}), request);
+    refuse_large_output(element_mesh_size(result.pavement.elements, {.custom = result.custom_shape.get()}), request,
+                        result.map->mesh);
     const auto extras = [&](const std::filesystem::path& folder, StageTimings& timings) {
       if (request.write_extras) request.write_extras(result, folder, timings);
     };
     if (request.on_export) request.on_export();
     write_run_outputs(*request.out, result.info, *result.map, result.pavement, result.timings,
-                      {.custom = result.custom_shape.get(), .stl = request.stl, .stop = stop}, extras);
+                      {.custom = result.custom_shape.get(), .formats = request.formats, .stop = stop}, extras);
   }
   return result;
 }

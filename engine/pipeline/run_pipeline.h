@@ -9,6 +9,7 @@
 // would overwrite an input. Nothing is written unless `out` is given.
 #include "design/design.h"
 #include "elements/element_shape.h"
+#include "io/mesh_formats.h"
 #include "map/surface_map.h"
 #include "pipeline/map_surface.h"
 #include "pipeline/pavement.h"
@@ -42,14 +43,14 @@ struct PipelineRequest {
 
   PavementOptions pavement;                // stages on/off, solver backend, observer, stop, on_pattern
 
-  // Export: the run's files into `out` (placements.csv, elements.ply/.obj[/.stl], design.json,
-  // report.json), published as one set (write_run_outputs). `extra_outputs` are files the caller
+  // Export: the run's files into `out` (placements.csv, stones.csv, the mesh files of `formats`,
+  // design.json, report.json), published as one set (write_run_outputs). `extra_outputs` are files the caller
   // writes itself through `write_extras`, into the folder it is given (the set's staging folder),
   // with the names they will have in `out` (the CLI's PNG previews): they are checked against the
   // inputs too, and written before report.json so that its timings include them.
   std::optional<std::filesystem::path> out;
-  bool stl = false;
-  double max_output_bytes = 4e9;           // the element meshes are refused above this, before writing
+  MeshFormats formats;
+  double max_output_bytes = 4e9;           // the mesh files are refused above this, before writing
   std::vector<std::filesystem::path> extra_outputs;
   std::function<void(const PipelineResult&, const std::filesystem::path& folder, StageTimings&)> write_extras;
 

@@ -106,7 +106,8 @@ std::vector<fs::path> leftover_temporaries(const fs::path& folder) {
   return found;
 }
 
-constexpr const char* kOutputs[] = {"placements.csv", "elements.ply", "elements.obj", "design.json", "report.json"};
+constexpr const char* kOutputs[] = {"placements.csv", "stones.csv", "elements.ply", "elements.obj", "elements.glb",
+                                    "paved.3mf", "design.json", "report.json"};
 
 // ---------------------------------------------------------------------------------------------
 // paver --version
@@ -443,7 +444,7 @@ TEST_F(PaverRunErrors, SurfacesThePatternCannotPave) {
 TEST_F(PaverRunErrors, OutputLargerThanTheLimitIsRefused) {
   const fs::path out = dir() / "out";
   const CliResult r = paver({"run", "assets/surfaces/dome.obj", "--max-output-gb", "0.001", "--out", out.string()});
-  expect_input_error(r, out, {"the element meshes would take about", "--max-output-gb"});
+  expect_input_error(r, out, {"the mesh files would take about", "--max-output-gb"});
 }
 
 TEST_F(PaverRunErrors, MissingSurface) {
@@ -898,6 +899,26 @@ TEST_F(PaverRun, StonesAndGapInMillimetresGiveTheBillOfStones) {
                      bad, {"--stone and --spacing"});
   expect_input_error(paver({"run", "assets/surfaces/pendant.obj", "--units", "furlong", "--out", bad.string()}), bad,
                      {"--units furlong", "mm, cm, m or in"});
+}
+
+// --formats narrows the mesh files to those named; the records are always written; a name that
+// is not a format is refused before anything is written.
+TEST_F(PaverRun, FormatsNarrowTheMeshFiles) {
+  const fs::path out = dir() / "out";
+  const CliResult r = paver({"run", "assets/surfaces/pendant.obj", "--quiet", "--formats", "stl,glb", "--out",
+                             out.string()});
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  for (const char* name : {"placements.csv", "stones.csv", "elements.stl", "elements.glb", "design.json", "report.json"})
+    EXPECT_TRUE(fs::is_regular_file(out / name)) << name << " missing\n" << describe(r);
+  for (const char* name : {"elements.ply", "elements.obj", "paved.3mf"})
+    EXPECT_FALSE(fs::exists(out / name)) << name << " was not asked for";
+  EXPECT_NE(r.out.find("elements.stl, elements.glb, design.json"), std::string::npos) << describe(r);
+
+  const fs::path bad = dir() / "bad";
+  expect_input_error(paver({"run", "assets/surfaces/pendant.obj", "--formats", "ply,dwg", "--out", bad.string()}), bad,
+                     {"--formats ply,dwg: unknown mesh format 'dwg'", "ply, obj, stl, glb, 3mf"});
+  expect_input_error(paver({"run", "assets/surfaces/pendant.obj", "--formats", ",", "--out", bad.string()}), bad,
+                     {"--formats ,: no mesh format named"});
 }
 
 // Ctrl-C while the map is being made (loading, factorization, ARAP) ends `paver run` and `paver

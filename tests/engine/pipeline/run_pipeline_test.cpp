@@ -200,7 +200,7 @@ TEST_F(RunPipeline, RefusesTooLargeOutputBeforeTheSolve) {
   PipelineRequest unbounded = request;
   unbounded.out.reset();
   const PipelineResult full = run_pipeline(unbounded);
-  const double bytes = element_mesh_size(full.pavement.elements).bytes(false);
+  const double bytes = expected_mesh_bytes(element_mesh_size(full.pavement.elements), request.formats, full.map->mesh);
   ASSERT_GT(solver_iterations, 0);
   solver_iterations = 0;
   request.max_output_bytes = 0.9 * bytes;

@@ -1,0 +1,103 @@
+#include "io/threemf_export.h"
+
+#include "core/input_error.h"
+#include "elements/element_frame.h"
+#include "export_samples.h"
+#include "io/shape_table.h"
+#include "temp_folder.h"
+#include "threemf_read_back.h"
+
+#include <gtest/gtest.h>
+#include <Model/COM/NMR_DLLInterfaces.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace paver {
+namespace {
+
+class ThreeMfExport : public test::TempFolderTest {};
+
+TEST_F(ThreeMfExport, HoldsTheSurfaceOneObjectPerShapeAndAComponentPerElementInOrder) {
+  const Elements elements = test::every_shape_elements();
+  const SurfaceMesh surface = test::unit_square_surface();
+  const std::filesystem::path path = dir_ / "paved.3mf";
+  write_pavement_3mf(path, &surface, elements, Units::Millimetre);
+  const test::ReadBack3mf r = test::read_3mf(path);
+
+  EXPECT_EQ(r.unit, DWORD(NMR::MODELUNIT_MILLIMETER));
+  ASSERT_EQ(r.meshes.size(), 5u) << "the surface and the four built-in shapes";
+  ASSERT_EQ(r.build_items.size(), 2u) << "the surface and the stones";
+  // Both items move their object by the same offset (the piece's middle).
+  EXPECT_EQ(test::apply_3mf(r.build_items[0], {0, 0, 0}), test::apply_3mf(r.build_items[1], {0, 0, 0}));
+  const ShapeTable shapes(elements, nullptr, path);
+  std::map<std::string, DWORD> id_by_name;
+  for (const auto& [id, m] : r.meshes) {
+    id_by_name[m.name] = id;
+    if (m.name == "surface") {
+      EXPECT_EQ(m.type, DWORD(NMR::MODELOBJECTTYPE_SURFACE)) << "an open surface is not a printable solid";
+      EXPECT_EQ(m.triangles, 2u);
+      for (std::size_t v = 0; v < surface.positions.size(); ++v)
+        EXPECT_LT(glm::length(test::apply_3mf(r.build_items[0], m.positions[v]) - surface.positions[v]), 1e-6);
+    } else {
+      EXPECT_EQ(m.type, DWORD(NMR::MODELOBJECTTYPE_MODEL)) << m.name << ": built-in stones are closed solids";
+    }
+  }
+  ASSERT_EQ(r.components.size(), elements.size());
+  for (std::size_t i = 0; i < elements.size(); ++i) {
+    const std::string name = std::string(shape_name(elements.shape[i])) + " (unit diameter)";
+    ASSERT_TRUE(id_by_name.count(name)) << name;
+    EXPECT_EQ(r.components[i].object, id_by_name[name]) << i;
+    // Each of the shared object's vertices lands where the PLY/OBJ writers put it (float32 file).
+    const test::ReadBack3mf::Mesh& m = r.meshes.at(id_by_name[name]);
+    const ElementFrame frame = element_frame(elements.normal[i]);
+    for (const glm::dvec3& v : m.positions) {
+      const glm::dvec3 expected = place_shape_vertex(frame, elements.position[i], elements.diameter[i], v);
+      const glm::dvec3 placed = test::apply_3mf(r.build_items[1], test::apply_3mf(r.components[i].transform, v));
+      EXPECT_LT(glm::length(placed - expected), 1e-5 * 10) << i << ": 6 digits of a piece 10 units wide";
+    }
+  }
+}
+
+// A piece far from the origin keeps its stones where they are on it: lib3mf writes 6
+// significant digits, so coordinates are written about the piece's middle, and only the middle
+// itself (the same for surface and stones) is rounded that coarsely.
+TEST_F(ThreeMfExport, APieceFarFromTheOriginKeepsItsStonesInPlaceOnIt) {
+  Elements elements = test::every_shape_elements();
+  SurfaceMesh surface = test::unit_square_surface();
+  const glm::dvec3 far(1e5, -2e5, 3e4);
+  for (glm::dvec3& p : elements.position) p += far;
+  for (glm::dvec3& p : surface.positions) p += far;
+  write_pavement_3mf(dir_ / "far.3mf", &surface, elements, Units::Millimetre);
+  const test::ReadBack3mf r = test::read_3mf(dir_ / "far.3mf");
+  ASSERT_EQ(r.components.size(), elements.size());
+  ASSERT_EQ(r.build_items.size(), 2u);
+  const test::ReadBack3mf::Mesh* written_surface = nullptr;
+  for (const auto& [id, m] : r.meshes)
+    if (m.name == "surface") written_surface = &m;
+  ASSERT_NE(written_surface, nullptr);
+  const glm::dvec3 corner = written_surface->positions[0];  // surface vertex 0, about the middle
+  for (std::size_t i = 0; i < elements.size(); ++i) {
+    const glm::dvec3 local = test::apply_3mf(r.components[i].transform, {0, 0, 0});
+    EXPECT_LT(glm::length((local - corner) - (elements.position[i] - surface.positions[0])), 1e-5) << i;
+  }
+}
+
+TEST_F(ThreeMfExport, TheModelUnitIsTheDesigns) {
+  const Elements elements = test::every_shape_elements();
+  for (const auto& [units, unit] : {std::pair{Units::Inch, NMR::MODELUNIT_INCH}, std::pair{Units::Metre, NMR::MODELUNIT_METER},
+                                    std::pair{Units::Centimetre, NMR::MODELUNIT_CENTIMETER}}) {
+    write_pavement_3mf(dir_ / "units.3mf", nullptr, elements, units);
+    EXPECT_EQ(test::read_3mf(dir_ / "units.3mf").unit, DWORD(unit));
+  }
+}
+
+TEST_F(ThreeMfExport, AnUnwritableFolderIsAnInputErrorAndLeavesNoFile) {
+  EXPECT_THROW(write_pavement_3mf(dir_ / "missing" / "paved.3mf", nullptr, test::every_shape_elements(), Units::Millimetre),
+               InputError);
+  EXPECT_TRUE(std::filesystem::is_empty(dir_));
+}
+
+}  // namespace
+}  // namespace paver
