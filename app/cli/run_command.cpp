@@ -13,6 +13,12 @@
 #include "pipeline/run_pipeline.h"
 #include "pattern/adaptive_pattern.h"
 #include "report/bill_of_stones.h"
+#include "report/metal_weight.h"
+#include "io/element_export.h"
+#include "io/threemf_export.h"
+#ifdef PAVER_WITH_CGAL
+#include "cut/solid_cut.h"
+#endif
 #include "report/verdict.h"
 
 #include <algorithm>
@@ -54,6 +60,9 @@ struct RunArgs {
   bool png = false;
   double max_output_gb = 4;
   std::string formats = "ply,obj,glb,3mf";
+  bool subtract = false;
+  std::optional<double> thickness;
+  std::string cutter = "seat";
   bool quiet = false;
 };
 
@@ -141,16 +150,62 @@ int run_run(const RunArgs& args) {
     writing_starts();
     progress.stage("export");
   };
+  // The subtractive solid: its flags are checked now, the cut made with the other files.
+  nlohmann::json cut_summary;
+  std::function<void(const PipelineResult&, const fs::path&, StageTimings&, nlohmann::json&)> write_cut;
+  if (args.cutter != "seat" && args.cutter != "element")
+    throw InputError("--cutter " + printable(args.cutter) + ": use seat (girdle, seat cone, hole through) or element");
+  if (!args.subtract && args.thickness) throw InputError("--thickness is the metal's for --subtract: add --subtract");
+  if (args.subtract) {
+    if (!args.thickness) throw InputError("--subtract needs --thickness T: how thick the metal is, surface units");
+    const double thickness = finite_non_negative("--thickness", *args.thickness, "the metal's thickness, surface units");
+    if (!(thickness > 0)) throw InputError("--thickness 0: the metal needs a thickness above 0");
+#ifdef PAVER_WITH_CGAL
+    request.extra_outputs.insert(request.extra_outputs.end(), {out / "cut.stl", out / "cut.3mf"});
+    const CutterKind cutter = args.cutter == "seat" ? CutterKind::Seat : CutterKind::Element;
+    write_cut = [&, thickness, cutter](const PipelineResult& r, const fs::path& folder, StageTimings& timings,
+                                       nlohmann::json& sections) {
+      progress.stage("cut");
+      const auto t0 = Clock::now();
+      const CutSolid cut = cut_pavement(*r.map, r.pavement.elements,
+                                        {.cutter = cutter, .thickness = thickness, .custom = r.custom_shape.get(),
+                                         .stop = &interrupt_requested()});
+      write_mesh_stl(folder / "cut.stl", cut.mesh, "cut solid", &interrupt_requested());
+      write_pavement_3mf(folder / "cut.3mf", &cut.mesh, r.pavement.elements, r.pavement.design.units,
+                         {.custom = r.custom_shape.get(), .stop = &interrupt_requested()}, "metal");
+      timings.emplace_back("cut", ms_since(t0));
+      const double mm = millimetres_per_unit(r.pavement.design.units), mm3 = mm * mm * mm;
+      sections["cut"] = {{"cutter", args.cutter},
+                         {"thickness", thickness},
+                         {"cutters", cut.cutters},
+                         {"united_cutters", cut.united_cutters},
+                         {"shell_volume_mm3", cut.shell_volume * mm3},
+                         {"volume_mm3", cut.volume * mm3},
+                         {"removed_mm3", (cut.shell_volume - cut.volume) * mm3},
+                         {"triangles", cut.mesh.triangles.size()},
+                         {"closed_manifold_oriented", true},
+                         {"metal", metal_weights_json(cut.volume, r.pavement.design.units)},
+                         {"files", {"cut.stl", "cut.3mf"}}};
+      cut_summary = sections["cut"];
+    };
+#else
+    throw InputError("--subtract: this paver was built without CGAL (-DPAVER_WITH_CGAL=OFF); rebuild with it");
+#endif
+  }
   std::optional<PreviewImages> previews;
   if (args.png) {
     previews = PreviewImages::open();  // no device: refused now, before any work
-    request.extra_outputs = {out / "preview.png", out / "param.png"};
-    request.write_extras = [&](const PipelineResult& r, const fs::path& folder, StageTimings& timings) {
+    request.extra_outputs.insert(request.extra_outputs.end(), {out / "preview.png", out / "param.png"});
+  }
+  request.write_extras = [&](const PipelineResult& r, const fs::path& folder, StageTimings& timings,
+                             nlohmann::json& sections) {
+    if (write_cut) write_cut(r, folder, timings, sections);
+    if (previews) {
       const auto t0 = Clock::now();
       previews->write(folder, *r.map, r.pavement, r.custom_shape.get());
       timings.emplace_back("png", ms_since(t0));
-    };
-  }
+    }
+  };
   const MeshFormats request_formats = request.formats;
   const PipelineResult result = run_pipeline(std::move(request));
   progress.finish();
@@ -202,6 +257,17 @@ int run_run(const RunArgs& args) {
     std::printf("\n");
   }
   if (bill.carat_total > 0) std::printf("stones   total %ld, %.3f ct (stones.csv)\n", bill.count, bill.carat_total);
+  if (!cut_summary.is_null()) {
+    std::printf("cut      %s cutters, metal %g thick: %.4g mm3 of %.4g mm3 left (%.4g removed), closed and manifold; "
+                "%s triangles\n",
+                cut_summary["cutter"].get<std::string>().c_str(), cut_summary["thickness"].get<double>(),
+                cut_summary["volume_mm3"].get<double>(), cut_summary["shell_volume_mm3"].get<double>(),
+                cut_summary["removed_mm3"].get<double>(), std::to_string(cut_summary["triangles"].get<std::size_t>()).c_str());
+    std::printf("metal   ");
+    for (const auto& row : cut_summary["metal"])
+      std::printf(" %s %.2f g;", row["alloy"].get<std::string>().c_str(), row["grams"].get<double>());
+    std::printf("\n");
+  }
   std::printf("quality (gap %g)\n", pavement.design.elements.gap);
   std::printf("                  violations  min clearance  NN ratio min / p5 / median / p95   cv     crossings  fill\n");
   for (const auto& [label, q] : {std::pair{"  initial", &pavement.before}, std::pair{"  paper's method", &pavement.paper},
@@ -223,6 +289,7 @@ int run_run(const RunArgs& args) {
   std::string written = "placements.csv, stones.csv";
   for (const std::string& name : mesh_file_names(request_formats)) written += ", " + name;
   written += ", design.json, report.json";
+  if (!cut_summary.is_null()) written += ", cut.stl, cut.3mf";
   if (args.png) written += ", preview.png, param.png";
   std::printf("wrote    %s/{%s}\n", printable(out.string()).c_str(), written.c_str());
   return 0;
@@ -257,6 +324,11 @@ std::function<int()> add_run_command(CLI::App& app) {
   cmd->add_flag("--quiet", args->quiet, "No progress on stderr (warnings and errors still)");
   cmd->add_option("--formats", args->formats,
                   "Mesh files to write, comma-separated: ply, obj, stl, glb (glTF 2.0 binary), 3mf")
+      ->capture_default_str();
+  cmd->add_flag("--subtract", args->subtract,
+                "Also write the metal with the stones' seats cut out (cut.stl, cut.3mf) and its weight; needs --thickness");
+  cmd->add_option("--thickness", args->thickness, "Metal thickness for --subtract, surface units (against the normals)");
+  cmd->add_option("--cutter", args->cutter, "What --subtract cuts: seat (girdle, seat cone, hole through) or element")
       ->capture_default_str();
   cmd->add_flag("--png", args->png, "Also render preview.png (3D) and param.png (2D) offscreen with Vulkan");
   cmd->add_option("--max-output-gb", args->max_output_gb,

@@ -138,6 +138,30 @@ MeshCounts count(const Elements& elements, const ShapeTable& shapes) {
   return c;
 }
 
+// One binary STL triangle: its unit normal and three corners as float32, and a zero attribute word.
+void put_stl_triangle(ChunkedWriter& w, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& d) {
+  const glm::dvec3 cross = glm::cross(b - a, d - a);
+  const double length = glm::length(cross);
+  // A sliver gets a zero normal, which STL readers take as "compute it from the vertices".
+  const glm::dvec3 n = length > 0 && std::isfinite(length) ? cross / length : glm::dvec3(0);
+  char* p = w.room(50);
+  for (const glm::dvec3& v : {n, a, b, d}) {
+    p = put_f32_le(p, static_cast<float>(v.x));
+    p = put_f32_le(p, static_cast<float>(v.y));
+    p = put_f32_le(p, static_cast<float>(v.z));
+  }
+  p = put_u8(p, 0);  // attribute byte count: unused
+  p = put_u8(p, 0);
+  w.advance(p);
+}
+
+void put_stl_header(ChunkedWriter& w, std::string header, std::size_t faces) {
+  header.resize(80, ' ');  // the 80-byte header must not start with "solid" (ASCII STL)
+  w.text(header);
+  char* c = w.room(4);
+  w.advance(put_u32_le(c, static_cast<std::uint32_t>(faces)));
+}
+
 }  // namespace
 
 void write_placements_csv(const std::filesystem::path& path, const Elements& elements,
@@ -297,30 +321,26 @@ void write_elements_stl(const std::filesystem::path& path, const Elements& eleme
 
   write_file_atomically(path, [&](std::ostream& out) {
     ChunkedWriter w(out, options.stop);
-    std::string header = "Paver elements: " + std::to_string(elements.size());
-    header.resize(80, ' ');  // the 80-byte header must not start with "solid" (ASCII STL)
-    w.text(header);
-    char* c = w.room(4);
-    w.advance(put_u32_le(c, static_cast<std::uint32_t>(counts.faces)));
+    put_stl_header(w, "Paver elements: " + std::to_string(elements.size()), counts.faces);
 
     for_each_placed_element(elements, shapes, [&](std::size_t, const ShapeMesh& shape, const std::vector<glm::dvec3>& placed) {
-      for (const glm::ivec3& t : shape.triangles) {
-        const glm::dvec3 a = placed[t.x], b = placed[t.y], d = placed[t.z];
-        const glm::dvec3 cross = glm::cross(b - a, d - a);
-        const double length = glm::length(cross);
-        // A sliver gets a zero normal, which STL readers take as "compute it from the vertices".
-        const glm::dvec3 n = length > 0 && std::isfinite(length) ? cross / length : glm::dvec3(0);
-        char* p = w.room(50);
-        for (const glm::dvec3& v : {n, a, b, d}) {
-          p = put_f32_le(p, static_cast<float>(v.x));
-          p = put_f32_le(p, static_cast<float>(v.y));
-          p = put_f32_le(p, static_cast<float>(v.z));
-        }
-        p = put_u8(p, 0);  // attribute byte count: unused
-        p = put_u8(p, 0);
-        w.advance(p);
-      }
+      for (const glm::ivec3& t : shape.triangles) put_stl_triangle(w, placed[t.x], placed[t.y], placed[t.z]);
     });
+    w.flush();
+  });
+}
+
+void write_mesh_stl(const std::filesystem::path& path, const SurfaceMesh& mesh, const std::string& title,
+                    const std::atomic<bool>* stop) {
+  if (mesh.triangles.size() > std::numeric_limits<std::uint32_t>::max())
+    throw InputError("cannot write " + path.string() + ": its " + std::to_string(mesh.triangles.size()) +
+                     " triangles are more than binary STL can count");
+  write_file_atomically(path, [&](std::ostream& out) {
+    ChunkedWriter w(out, stop);
+    put_stl_header(w, "Paver " + title, mesh.triangles.size());
+    for (const glm::ivec3& t : mesh.triangles)
+      put_stl_triangle(w, mesh.positions[std::size_t(t.x)], mesh.positions[std::size_t(t.y)],
+                       mesh.positions[std::size_t(t.z)]);
     w.flush();
   });
 }

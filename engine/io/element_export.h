@@ -3,12 +3,14 @@
 #include "design/design.h"
 #include "elements/elements.h"
 #include "pattern/pattern.h"
+#include "mesh/surface_mesh.h"
 
 #include <array>
 #include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace paver {
@@ -51,5 +53,10 @@ void write_elements_obj(const std::filesystem::path& path, const Elements& eleme
 // is 84 + 50 * triangles bytes. STL has no colours: options.colours is ignored.
 void write_elements_stl(const std::filesystem::path& path, const Elements& elements,
                         const ElementMeshOptions& options = {});
+
+// Any closed or open triangle mesh (the cut solid) as binary STL, the same way; `title` goes into
+// the header after "Paver ".
+void write_mesh_stl(const std::filesystem::path& path, const SurfaceMesh& mesh, const std::string& title,
+                    const std::atomic<bool>* stop = nullptr);
 
 }  // namespace paver

@@ -101,7 +101,7 @@ double expected_3mf_bytes(std::size_t elements, std::size_t surface_vertices, st
 }
 
 void write_pavement_3mf(const std::filesystem::path& path, const SurfaceMesh* surface, const Elements& elements,
-                        Units units, const ElementMeshOptions& options) {
+                        Units units, const ElementMeshOptions& options, const char* surface_name) {
   const ShapeTable shapes(elements, options.custom, path);
   const Writer3mf w(path);
   Handle model;
@@ -134,7 +134,7 @@ void write_pavement_3mf(const std::filesystem::path& path, const SurfaceMesh* su
     }
     triangles_of(surface->triangles);
     Handle object, item;
-    add_mesh_object(w, model, object, "surface", vertices, triangles);
+    add_mesh_object(w, model, object, surface_name, vertices, triangles);
     w.check(NMR::lib3mf_model_addbuilditem(model.get(), object.get(), &to_middle, item.out()), model,
             "adding the surface");
   }

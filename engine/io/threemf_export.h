@@ -19,9 +19,10 @@ namespace paver {
 // About how many bytes paved.3mf will take before compression (the writer holds its XML).
 double expected_3mf_bytes(std::size_t elements, std::size_t surface_vertices, std::size_t surface_faces);
 
-// `surface` may be null (elements only). Throws InputError naming `path` when it cannot be
-// written; options.stop is checked before the file is written.
+// `surface` may be null (elements only); `surface_name` names its object ("metal" for the cut
+// solid). Throws InputError naming `path` when it cannot be written; options.stop is checked
+// before the file is written.
 void write_pavement_3mf(const std::filesystem::path& path, const SurfaceMesh* surface, const Elements& elements,
-                        Units units, const ElementMeshOptions& options = {});
+                        Units units, const ElementMeshOptions& options = {}, const char* surface_name = "surface");
 
 }  // namespace paver

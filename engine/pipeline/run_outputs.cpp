@@ -54,7 +54,7 @@ void write_run_files(const fs::path& folder, const SurfaceMap& map, const Paveme
 
 std::vector<std::string> run_output_names() {
   std::vector<std::string> names = {"placements.csv", "stones.csv", "design.json", "report.json", "preview.png",
-                                    "param.png"};
+                                    "param.png",      "cut.stl",     "cut.3mf"};
   for (std::string& name : all_mesh_file_names()) names.push_back(std::move(name));
   return names;
 }
@@ -72,16 +72,19 @@ void write_run_outputs(const fs::path& folder, const RunInfo& info, const Surfac
   timings.emplace_back("export",
                        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
   check_stop();
-  if (extras) extras(set.staging(), timings);
+  nlohmann::json sections = nlohmann::json::object();
+  if (extras) extras(set.staging(), timings, sections);
   check_stop();
-  write_run_report(set.staging(), info, map, pavement, timings);
+  write_run_report(set.staging(), info, map, pavement, timings, &sections);
   check_stop();
   set.publish("report.json");
 }
 
 nlohmann::json write_run_report(const fs::path& folder, const RunInfo& info, const SurfaceMap& map,
-                                const Pavement& pavement, const StageTimings& timings) {
+                                const Pavement& pavement, const StageTimings& timings, const nlohmann::json* sections) {
   nlohmann::json report = make_run_report(info, map, pavement, timings);
+  if (sections)
+    for (const auto& [key, value] : sections->items()) report[key] = value;
   write_text_atomically(folder / "report.json", report.dump(2) + "\n");
   return report;
 }

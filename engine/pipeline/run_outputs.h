@@ -39,16 +39,19 @@ void write_run_files(const std::filesystem::path& folder, const SurfaceMap& map,
 
 // The export stage as run_pipeline and the studio's export run it, as one set (io/output_set.h):
 // into a staging folder, write_run_files (timed as "export" in `timings`), then `extras` (the
-// caller's own files, written into the folder it is given, adding their timings), then
-// write_run_report with every timing; then the set is published into `folder` at once. Throws
+// caller's own files, written into the folder it is given, adding their timings and any
+// sections of their own to report.json), then write_run_report with every timing; then the set is published into `folder` at once. Throws
 // Interrupted, leaving `folder` as it was, when options.stop becomes true before publishing.
-using ExtraOutputs = std::function<void(const std::filesystem::path& staging, StageTimings& timings)>;
+using ExtraOutputs =
+    std::function<void(const std::filesystem::path& staging, StageTimings& timings, nlohmann::json& report_sections)>;
 void write_run_outputs(const std::filesystem::path& folder, const RunInfo& info, const SurfaceMap& map,
                        const Pavement& pavement, StageTimings& timings, const RunOutputOptions& options = {},
                        const ExtraOutputs& extras = {});
 
-// Writes report.json and returns its content.
+// Writes report.json (with `sections`, an object whose keys are added at its top level) and
+// returns its content.
 nlohmann::json write_run_report(const std::filesystem::path& folder, const RunInfo& info, const SurfaceMap& map,
-                                const Pavement& pavement, const StageTimings& timings);
+                                const Pavement& pavement, const StageTimings& timings,
+                                const nlohmann::json* sections = nullptr);
 
 }  // namespace paver

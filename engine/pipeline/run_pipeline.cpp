@@ -93,8 +93,8 @@ PipelineResult run_pipeline(PipelineRequest request) {
   if (request.out) {
     refuse_large_output(element_mesh_size(result.pavement.elements, {.custom = result.custom_shape.get()}), request,
                         result.map->mesh);
-    const auto extras = [&](const std::filesystem::path& folder, StageTimings& timings) {
-      if (request.write_extras) request.write_extras(result, folder, timings);
+    const auto extras = [&](const std::filesystem::path& folder, StageTimings& timings, nlohmann::json& sections) {
+      if (request.write_extras) request.write_extras(result, folder, timings, sections);
     };
     if (request.on_export) request.on_export();
     write_run_outputs(*request.out, result.info, *result.map, result.pavement, result.timings,

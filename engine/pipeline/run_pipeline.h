@@ -15,6 +15,8 @@
 #include "pipeline/pavement.h"
 #include "report/run_report.h"
 
+#include <nlohmann/json.hpp>
+
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -52,7 +54,10 @@ struct PipelineRequest {
   MeshFormats formats;
   double max_output_bytes = 4e9;           // the mesh files are refused above this, before writing
   std::vector<std::filesystem::path> extra_outputs;
-  std::function<void(const PipelineResult&, const std::filesystem::path& folder, StageTimings&)> write_extras;
+  // It may add sections of its own to report.json (keys of `report_sections`).
+  std::function<void(const PipelineResult&, const std::filesystem::path& folder, StageTimings&,
+                     nlohmann::json& report_sections)>
+      write_extras;
 
   // Called once, just before the first output file or folder is created: until then a stopped run
   // has nothing to clean up (the CLI ends at once on Ctrl-C before it, since a factorization

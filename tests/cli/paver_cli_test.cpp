@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -920,6 +922,84 @@ TEST_F(PaverRun, FormatsNarrowTheMeshFiles) {
   expect_input_error(paver({"run", "assets/surfaces/pendant.obj", "--formats", ",", "--out", bad.string()}), bad,
                      {"--formats ,: no mesh format named"});
 }
+
+#ifdef PAVER_WITH_CGAL
+// Reads a binary STL back, welding corners that are the same float triple, and counts the
+// directed edges that do not pair up with one reverse edge (0: closed, edge-manifold, oriented);
+// also sums the volume.
+struct StlCheck {
+  std::size_t triangles = 0, unpaired_edges = 0;
+  double volume = 0;
+};
+StlCheck check_stl(const fs::path& path) {
+  const std::string bytes = read_file_text(path);
+  StlCheck c;
+  if (bytes.size() < 84) return c;
+  std::uint32_t count = 0;
+  std::memcpy(&count, bytes.data() + 80, 4);
+  c.triangles = count;
+  EXPECT_EQ(bytes.size(), 84 + 50 * std::size_t(count));
+  std::map<std::array<float, 3>, int> ids;
+  std::map<std::pair<int, int>, int> directed;
+  for (std::uint32_t t = 0; t < count && 84 + 50 * std::size_t(t + 1) <= bytes.size(); ++t) {
+    std::array<int, 3> corner{};
+    std::array<std::array<double, 3>, 3> p{};
+    for (int k = 0; k < 3; ++k) {
+      std::array<float, 3> xyz;
+      std::memcpy(xyz.data(), bytes.data() + 84 + 50 * std::size_t(t) + 12 + 12 * k, 12);
+      corner[k] = ids.emplace(xyz, int(ids.size())).first->second;
+      p[k] = {xyz[0], xyz[1], xyz[2]};
+    }
+    for (int k = 0; k < 3; ++k) ++directed[{corner[k], corner[(k + 1) % 3]}];
+    c.volume += (p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) - p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
+                 p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0])) / 6;
+  }
+  for (const auto& [edge, n] : directed) {
+    const auto reverse = directed.find({edge.second, edge.first});
+    if (n != 1 || reverse == directed.end() || reverse->second != 1) ++c.unpaired_edges;
+  }
+  return c;
+}
+
+// `--subtract --thickness 1` on the pendant (issue 14): the metal with its seats cut, a closed
+// solid in cut.stl whose volume the report gives, with the metal's weight; bad flags are refused
+// before any work.
+TEST_F(PaverRun, SubtractWritesTheMetalWithItsSeatsAsOneClosedSolid) {
+  const fs::path out = dir() / "out";
+  const CliResult r = paver({"run", "assets/surfaces/pendant.obj", "--stone", "1.5", "--gap", "0.1", "--subtract",
+                             "--thickness", "1", "--quiet", "--formats", "ply", "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const json report = read_json(out / "report.json");
+  const json& cut = report["cut"];
+  ASSERT_TRUE(cut.is_object()) << report.dump(1);
+  EXPECT_EQ(cut["cutter"], "seat");
+  EXPECT_EQ(cut["cutters"].get<std::size_t>(), read_placements(out / "placements.csv").size());
+  const double volume = cut["volume_mm3"].get<double>(), shell = cut["shell_volume_mm3"].get<double>();
+  EXPECT_GT(volume, 0.5 * shell);
+  EXPECT_LT(volume, shell);
+  const StlCheck stl = check_stl(out / "cut.stl");
+  EXPECT_EQ(stl.triangles, cut["triangles"].get<std::size_t>());
+  EXPECT_EQ(stl.unpaired_edges, 0u) << "cut.stl must be closed, edge-manifold and consistently oriented";
+  EXPECT_NEAR(stl.volume, volume, 1e-4 * volume) << "the file holds the solid the report measures (float32)";
+  ASSERT_TRUE(cut["metal"].is_array());
+  for (const json& row : cut["metal"])
+    EXPECT_NEAR(row["grams"].get<double>(), volume / 1000 * row["density_g_cm3"].get<double>(), 1e-9);
+  EXPECT_TRUE(fs::is_regular_file(out / "cut.3mf"));
+  EXPECT_NE(r.out.find("cut      seat cutters, metal 1 thick"), std::string::npos) << describe(r);
+  EXPECT_NE(r.out.find("18k yellow gold (750)"), std::string::npos) << describe(r);
+
+  const fs::path bad = dir() / "bad";
+  expect_input_error(paver({"run", "assets/surfaces/pendant.obj", "--subtract", "--out", bad.string()}), bad,
+                     {"--subtract needs --thickness"});
+  expect_input_error(paver({"run", "assets/surfaces/pendant.obj", "--thickness", "1", "--out", bad.string()}), bad,
+                     {"--thickness is the metal's for --subtract"});
+  expect_input_error(paver({"run", "assets/surfaces/pendant.obj", "--subtract", "--thickness", "-1", "--out", bad.string()}),
+                     bad, {"--thickness"});
+  expect_input_error(paver({"run", "assets/surfaces/pendant.obj", "--subtract", "--thickness", "1", "--cutter", "drill",
+                            "--out", bad.string()}),
+                     bad, {"--cutter drill: use seat"});
+}
+#endif
 
 // Ctrl-C while the map is being made (loading, factorization, ARAP) ends `paver run` and `paver
 // param` at once: exit 130, "nothing was written", no output. Uninterrupted, the map alone takes

@@ -70,7 +70,9 @@ TEST_F(RunPipeline, WritesOnlyWhenAskedAndTheReportLast) {
   request.out = dir_ / "out";
   request.extra_outputs = {dir_ / "out" / "extra.txt"};
   bool report_existed = true, out_existed = true;
-  request.write_extras = [&](const PipelineResult& r, const fs::path& folder, StageTimings& timings) {
+  request.write_extras = [&](const PipelineResult& r, const fs::path& folder, StageTimings& timings,
+                             nlohmann::json& sections) {
+    sections["extra"] = {{"written", true}};
     report_existed = fs::exists(folder / "report.json");
     out_existed = fs::exists(dir_ / "out");
     std::ofstream(folder / "extra.txt") << r.pavement.elements.size();
@@ -86,6 +88,7 @@ TEST_F(RunPipeline, WritesOnlyWhenAskedAndTheReportLast) {
   EXPECT_EQ(report["timings_ms"]["extra"].get<double>(), 1.0);
   EXPECT_EQ(report["elements"]["total"].get<long>(), long(result.pavement.elements.size()));
   EXPECT_EQ(report["design"]["source"], "dome_hex_d6.json");
+  EXPECT_EQ(report["extra"]["written"], true) << "the extras' own report section";
 }
 
 TEST_F(RunPipeline, RefusesBadInputBeforeAnyWork) {

@@ -1,0 +1,238 @@
+#include "cut/solid_cut.h"
+
+#include "core/input_error.h"
+#include "core/interrupted.h"
+#include "core/number_text.h"
+#include "cut/thick_shell.h"
+#include "elements/element_frame.h"
+#include "io/shape_table.h"
+
+#include <glm/geometric.hpp>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/corefinement.h>
+#include <CGAL/Polygon_mesh_processing/intersection.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace paver {
+namespace {
+
+// The boolean constructs new points: exactly (Epeck). The checks run on the result rounded to
+// doubles, with exact predicates (Epick): that is the solid the files hold, and exact numbers
+// would make them a hundred times slower.
+using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+using RoundedMesh = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+template <class MeshType = Mesh>
+MeshType to_cgal(const SurfaceMesh& m) {
+  using P = typename MeshType::Point;
+  MeshType out;
+  std::vector<typename MeshType::Vertex_index> vertices;
+  vertices.reserve(m.positions.size());
+  for (const glm::dvec3& p : m.positions) vertices.push_back(out.add_vertex(P(p.x, p.y, p.z)));
+  for (const glm::ivec3& t : m.triangles)
+    if (out.add_face(vertices[std::size_t(t.x)], vertices[std::size_t(t.y)], vertices[std::size_t(t.z)]) ==
+        MeshType::null_face())
+      throw std::runtime_error("cut: a mesh is not a manifold surface (a face could not be added)");
+  return out;
+}
+
+// The boolean's exact points as the files hold them (float32, as STL and 3MF store them):
+// corners that round to the same point become one vertex, a triangle left with two equal corners
+// goes, and so do two triangles left on the same three corners facing apart. The checks then run
+// on this, the solid that is written.
+SurfaceMesh from_cgal(const Mesh& m) {
+  const auto snap = [](const auto& c) { return float(CGAL::to_double(c)); };
+  SurfaceMesh out;
+  std::map<std::array<float, 3>, int> welded;
+  std::unordered_map<std::size_t, int> index;
+  for (const Mesh::Vertex_index v : m.vertices()) {
+    const Point& p = m.point(v);
+    const std::array<float, 3> rounded = {snap(p.x()), snap(p.y()), snap(p.z())};
+    const auto [it, added] = welded.emplace(rounded, static_cast<int>(out.positions.size()));
+    if (added) out.positions.emplace_back(rounded[0], rounded[1], rounded[2]);
+    index[std::size_t(v)] = it->second;
+  }
+  std::map<std::array<int, 3>, std::vector<std::size_t>> by_corners;  // sorted corners -> triangles
+  for (const Mesh::Face_index f : m.faces()) {
+    glm::ivec3 t;
+    int k = 0;
+    for (const Mesh::Vertex_index v : CGAL::vertices_around_face(m.halfedge(f), m)) {
+      if (k < 3) t[k] = index.at(std::size_t(v));
+      ++k;
+    }
+    if (k != 3) throw std::runtime_error("cut: the boolean returned a face that is not a triangle");
+    if (t.x == t.y || t.y == t.z || t.z == t.x) continue;
+    std::array<int, 3> key = {t.x, t.y, t.z};
+    std::sort(key.begin(), key.end());
+    by_corners[key].push_back(out.triangles.size());
+    out.triangles.push_back(t);
+  }
+  std::vector<bool> drop(out.triangles.size(), false);
+  for (const auto& [corners, triangles] : by_corners)
+    if (triangles.size() == 2) drop[triangles[0]] = drop[triangles[1]] = true;
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < out.triangles.size(); ++i)
+    if (!drop[i]) out.triangles[kept++] = out.triangles[i];
+  out.triangles.resize(kept);
+  return out;
+}
+
+SurfaceMesh from_rounded(const RoundedMesh& m) {
+  SurfaceMesh out;
+  std::unordered_map<std::size_t, int> index;
+  for (const RoundedMesh::Vertex_index v : m.vertices()) {
+    index[std::size_t(v)] = static_cast<int>(out.positions.size());
+    out.positions.emplace_back(m.point(v).x(), m.point(v).y(), m.point(v).z());
+  }
+  for (const RoundedMesh::Face_index f : m.faces()) {
+    glm::ivec3 t;
+    int k = 0;
+    for (const RoundedMesh::Vertex_index v : CGAL::vertices_around_face(m.halfedge(f), m))
+      if (k < 3) t[k++] = index.at(std::size_t(v));
+    out.triangles.push_back(t);
+  }
+  return out;
+}
+
+// By the divergence theorem, in doubles.
+double volume_of(const SurfaceMesh& m) {
+  double six_v = 0;
+  for (const glm::ivec3& t : m.triangles)
+    six_v += glm::dot(m.positions[std::size_t(t.x)],
+                      glm::cross(m.positions[std::size_t(t.y)], m.positions[std::size_t(t.z)]));
+  return six_v / 6;
+}
+
+struct DisjointSets {
+  explicit DisjointSets(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), std::size_t{0}); }
+  std::size_t find(std::size_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  }
+  void unite(std::size_t a, std::size_t b) { parent[find(a)] = find(b); }
+  std::vector<std::size_t> parent;
+};
+
+}  // namespace
+
+double cutter_reach_above() { return 0.6; }
+
+double cutter_reach_below(double thickness, double diameter) { return 1.5 * thickness / diameter + 0.5; }
+
+SurfaceMesh placed_cutter(const SurfaceMesh& unit, const glm::dvec3& centre, const glm::dvec3& normal, double diameter) {
+  const ElementFrame frame = element_frame(normal);
+  SurfaceMesh m = unit;
+  for (glm::dvec3& p : m.positions) p = place_shape_vertex(frame, centre, diameter, p);
+  return m;
+}
+
+CutSolid cut_pavement(const SurfaceMap& map, const Elements& elements, const CutOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto check_stop = [&] {
+    if (options.stop && options.stop->load()) throw Interrupted();
+  };
+  CutSolid result;
+  const SurfaceMesh shell_mesh = thick_shell(map.mesh, map.normals, options.thickness);
+  if (PMP::does_self_intersect(to_cgal<RoundedMesh>(shell_mesh)))
+    throw InputError("--thickness " + number_text(options.thickness) +
+                     ": the metal folds into itself (the surface curves more tightly than that somewhere); use a "
+                     "thinner metal");
+  result.shell_volume = volume_of(shell_mesh);
+  Mesh shell = to_cgal(shell_mesh);
+
+  // Each element's cutter, placed; those that touch are found among near neighbours only.
+  const ShapeTable shapes(elements, options.custom, "cut");
+  const std::size_t n = elements.size();
+  std::vector<Mesh> cutters;
+  cutters.reserve(n);
+  double widest = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double d = elements.diameter[i];
+    const SurfaceMesh unit = unit_cutter(options.cutter, shapes[elements.shape[i]], cutter_reach_above(),
+                                         cutter_reach_below(options.thickness, d));
+    cutters.push_back(to_cgal(placed_cutter(unit, elements.position[i], elements.normal[i], d)));
+    widest = std::max(widest, d * std::max(1.0, cutter_reach_below(options.thickness, d)));
+  }
+  check_stop();
+  // A grid of cells `widest` wide: any two cutters that can touch are in neighbouring cells.
+  DisjointSets sets(n);
+  std::map<std::array<long, 3>, std::vector<std::size_t>> cells;
+  const auto cell_of = [&](const glm::dvec3& p) {
+    return std::array<long, 3>{long(std::floor(p.x / widest)), long(std::floor(p.y / widest)),
+                               long(std::floor(p.z / widest))};
+  };
+  for (std::size_t i = 0; i < n; ++i) cells[cell_of(elements.position[i])].push_back(i);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto c = cell_of(elements.position[i]);
+    for (long dx = -1; dx <= 1; ++dx)
+      for (long dy = -1; dy <= 1; ++dy)
+        for (long dz = -1; dz <= 1; ++dz) {
+          const auto it = cells.find({c[0] + dx, c[1] + dy, c[2] + dz});
+          if (it == cells.end()) continue;
+          for (const std::size_t j : it->second)
+            if (j > i && sets.find(i) != sets.find(j) && PMP::do_intersect(cutters[i], cutters[j])) sets.unite(i, j);
+        }
+    if ((i & 63) == 0) check_stop();
+  }
+  // Clusters of touching cutters are united; then every cluster goes into one mesh of disjoint
+  // closed parts.
+  std::map<std::size_t, std::vector<std::size_t>> clusters;
+  for (std::size_t i = 0; i < n; ++i) clusters[sets.find(i)].push_back(i);
+  Mesh all_cutters;
+  for (auto& [root, members] : clusters) {
+    Mesh united = cutters[members[0]];
+    for (std::size_t k = 1; k < members.size(); ++k) {
+      Mesh next;
+      if (!PMP::corefine_and_compute_union(united, cutters[members[k]], next))
+        throw std::runtime_error("cut: uniting two touching cutters failed (element " + std::to_string(members[k]) + ")");
+      united = std::move(next);
+      check_stop();
+    }
+    if (members.size() > 1) result.united_cutters += static_cast<int>(members.size());
+    all_cutters += united;
+  }
+  result.cutters = static_cast<int>(n);
+  check_stop();
+
+  Mesh cut;
+  if (n == 0) {
+    cut = shell;
+  } else if (!PMP::corefine_and_compute_difference(shell, all_cutters, cut)) {
+    throw std::runtime_error("cut: the difference of the metal and the cutters is not a manifold solid");
+  }
+  // Where a face meets a cutter's vertex exactly on its edge (a sphere's equator on a flat top),
+  // the boolean can leave needle triangles of zero area; they are collapsed away.
+  RoundedMesh rounded = to_cgal<RoundedMesh>(from_cgal(cut));
+  PMP::remove_degenerate_faces(rounded);
+  rounded.collect_garbage();
+  result.mesh = from_rounded(rounded);
+  if (!CGAL::is_closed(rounded)) throw std::runtime_error("cut: the result is not closed");
+  if (!PMP::is_outward_oriented(rounded)) throw std::runtime_error("cut: the result is not outward-oriented");
+  if (PMP::does_self_intersect(rounded)) throw std::runtime_error("cut: the result intersects itself");
+  result.volume = volume_of(result.mesh);
+  result.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return result;
+}
+
+}  // namespace paver

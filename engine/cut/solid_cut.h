@@ -1,0 +1,46 @@
+#pragma once
+// The subtractive result (paper Fig. 14): the surface thickened into metal (cut/thick_shell.h)
+// minus one cutter per element (cut/seat_cutter.h), as one closed solid, for a printer or caster.
+//
+// The boolean is CGAL's corefinement with exact constructions (Epeck): cutters that touch are
+// united first, cluster by cluster; the disjoint clusters then form one mesh that is subtracted
+// in a single difference. CGAL is GPL-3.0-or-later: this part is its own library (engine_cut),
+// and a binary that links it is GPL-3.0-or-later (README, "Licence").
+#include "cut/seat_cutter.h"
+#include "elements/elements.h"
+#include "map/surface_map.h"
+
+#include <atomic>
+
+namespace paver {
+
+struct CutOptions {
+  CutterKind cutter = CutterKind::Seat;
+  double thickness = 0;                    // of the metal, surface units
+  const ShapeMesh* custom = nullptr;       // the design's custom shape, for CutterKind::Element
+  const std::atomic<bool>* stop = nullptr; // checked between cutters and before the difference
+};
+
+struct CutSolid {
+  SurfaceMesh mesh;             // closed, outward-oriented, not self-intersecting (checked)
+  double shell_volume = 0;      // the metal before the cut, surface units^3
+  double volume = 0;            // after
+  int cutters = 0;
+  int united_cutters = 0;       // cutters that touched another and were united with it first
+  double milliseconds = 0;
+};
+
+// Throws InputError when the thickness is not positive or the shell folds into itself (the
+// surface curves tighter than the thickness), std::runtime_error when the boolean fails (which
+// CGAL reports rather than returning a broken solid), Interrupted when options.stop is set.
+CutSolid cut_pavement(const SurfaceMap& map, const Elements& elements, const CutOptions& options);
+
+// The cutters alone, placed (for the report's check and the tests): one closed mesh per element.
+SurfaceMesh placed_cutter(const SurfaceMesh& unit, const glm::dvec3& centre, const glm::dvec3& normal, double diameter);
+
+// How far cutters reach above and below an element, in units of its diameter, so that they pass
+// both faces of metal `thickness` thick.
+double cutter_reach_above();
+double cutter_reach_below(double thickness, double diameter);
+
+}  // namespace paver

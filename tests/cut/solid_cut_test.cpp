@@ -1,0 +1,136 @@
+// The subtractive solid (engine/cut): the shell, the seat cutter and the boolean, checked against
+// volumes worked out by hand and by an independent edge and volume count.
+#include "cut/seat_cutter.h"
+#include "cut/solid_cut.h"
+#include "cut/thick_shell.h"
+
+#include "closed_mesh_checks.h"
+#include "core/input_error.h"
+#include "map/surface_map.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace paver {
+namespace {
+
+// A flat plate's top: a size x size square in z = 0 as a grid of cells, normals +Z.
+SurfaceMap flat_plate(double size, int cells) {
+  SurfaceMesh m;
+  for (int j = 0; j <= cells; ++j)
+    for (int i = 0; i <= cells; ++i) m.positions.emplace_back(size * i / cells, size * j / cells, 0.0);
+  const auto at = [&](int i, int j) { return j * (cells + 1) + i; };
+  for (int j = 0; j < cells; ++j)
+    for (int i = 0; i < cells; ++i) {
+      m.triangles.emplace_back(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+      m.triangles.emplace_back(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+    }
+  for (int i = 0; i < cells; ++i) m.boundary_loop.push_back(at(i, 0));
+  for (int j = 0; j < cells; ++j) m.boundary_loop.push_back(at(cells, j));
+  for (int i = cells; i > 0; --i) m.boundary_loop.push_back(at(i, cells));
+  for (int j = cells; j > 0; --j) m.boundary_loop.push_back(at(0, j));
+  SurfaceMap map;
+  map.normals.assign(m.positions.size(), glm::dvec3(0, 0, 1));
+  map.mesh = std::move(m);
+  return map;
+}
+
+Elements stones_on_plate(const std::vector<glm::dvec2>& centres, double diameter, ShapeKind shape) {
+  Elements e;
+  for (const glm::dvec2& c : centres)
+    e.push_back(ElementKind::Vertex, 0, 0, c, {c.x, c.y, 0.0}, {0, 0, 1}, diameter, shape);
+  return e;
+}
+
+TEST(SeatCutter, IsAClosedSolidWhoseVolumeIsTheFrustumsSum) {
+  const std::vector<glm::dvec2> profile = seat_profile(0.6, 2.0);
+  const SurfaceMesh seat = solid_of_revolution(profile, kSeatSegments);
+  EXPECT_EQ(test::unpaired_edges(seat), 0u);
+  const double by_formula = solid_of_revolution_volume(profile, kSeatSegments, -10, 10);
+  EXPECT_NEAR(test::signed_volume(seat), by_formula, 1e-12) << "outward-oriented, and the formula is right";
+  // The handle is the girdle's radius plus 1% and the hole 40% of the stone.
+  EXPECT_DOUBLE_EQ(profile.front().x, 0.51);
+  EXPECT_DOUBLE_EQ(profile.back().x, kSeatHoleRadius);
+  EXPECT_DOUBLE_EQ(profile.front().y, 0.6);
+  EXPECT_DOUBLE_EQ(profile.back().y, -2.0);
+}
+
+TEST(ThickShell, IsClosedOrientedAndAreaTimesThicknessOnAPlate) {
+  const SurfaceMap plate = flat_plate(10, 5);
+  const SurfaceMesh shell = thick_shell(plate.mesh, plate.normals, 0.8);
+  EXPECT_EQ(test::unpaired_edges(shell), 0u);
+  EXPECT_NEAR(test::signed_volume(shell), 80.0, 1e-9);
+  EXPECT_THROW(thick_shell(plate.mesh, plate.normals, 0.0), InputError);
+  EXPECT_THROW(thick_shell(plate.mesh, plate.normals, std::nan("")), InputError);
+}
+
+// The volume the seats take out of a flat plate is worked out by hand: each seat is a stack of
+// regular-polygon frustums, of which the part between the plate's faces goes.
+TEST(SolidCut, SeatsInAFlatPlateRemoveExactlyTheirVolumeWithinIt) {
+  const double size = 10, thickness = 1, d = 1.5;
+  const SurfaceMap plate = flat_plate(size, 8);
+  const Elements stones = stones_on_plate({{2.5, 2.5}, {5, 2.5}, {7.5, 2.5}, {2.5, 5}, {5, 5}, {7.5, 7.5}}, d,
+                                          ShapeKind::Gem);
+  const CutSolid cut = cut_pavement(plate, stones, {.cutter = CutterKind::Seat, .thickness = thickness});
+
+  const std::vector<glm::dvec2> profile = seat_profile(cutter_reach_above(), cutter_reach_below(thickness, d));
+  const double seat_in_plate = d * d * d * solid_of_revolution_volume(profile, kSeatSegments, -thickness / d, 0);
+  EXPECT_NEAR(cut.shell_volume, size * size * thickness, 1e-9);
+  // Within the snapping of the written points to a millionth of the piece's size.
+  EXPECT_NEAR(cut.volume, size * size * thickness - 6 * seat_in_plate, 1e-6 * size * size * thickness);
+  EXPECT_EQ(cut.cutters, 6);
+  EXPECT_EQ(cut.united_cutters, 0);
+  EXPECT_EQ(test::unpaired_edges(cut.mesh), 0u) << "closed, edge-manifold and consistently oriented";
+  EXPECT_NEAR(test::signed_volume(cut.mesh), cut.volume, 1e-6) << "the written mesh has the volume reported";
+}
+
+// The paper's way (Fig. 14): the element itself is the cutter. A sphere centred on the top face
+// takes out its lower half (the UV sphere has a ring on its equator, so exactly half its volume).
+TEST(SolidCut, SpheresAsCuttersTakeOutTheirLowerHalf) {
+  const double d = 2;
+  const SurfaceMap plate = flat_plate(10, 4);
+  const Elements spheres = stones_on_plate({{3, 3}, {7, 6}}, d, ShapeKind::Sphere);
+  const CutSolid cut = cut_pavement(plate, spheres, {.cutter = CutterKind::Element, .thickness = 1.5});
+  SurfaceMesh sphere;
+  for (const glm::vec3& p : make_builtin_shape(ShapeKind::Sphere).positions) sphere.positions.emplace_back(p);
+  sphere.triangles = make_builtin_shape(ShapeKind::Sphere).triangles;
+  const double half_sphere = 0.5 * d * d * d * test::signed_volume(sphere);
+  EXPECT_NEAR(cut.volume, 150.0 - 2 * half_sphere, 1e-6 * 150.0);
+  EXPECT_EQ(test::unpaired_edges(cut.mesh), 0u);
+}
+
+// Stones set closer than their seats' clearance: the touching seats are united before the cut, and
+// the result is still one closed solid that lost less than two separate seats would take.
+TEST(SolidCut, TouchingSeatsAreUnitedFirst) {
+  const double d = 1.5, thickness = 1;
+  const SurfaceMap plate = flat_plate(10, 4);
+  const Elements stones = stones_on_plate({{4, 5}, {4 + 1.01 * d, 5}, {8, 8}}, d, ShapeKind::Gem);
+  const CutSolid cut = cut_pavement(plate, stones, {.cutter = CutterKind::Seat, .thickness = thickness});
+  EXPECT_EQ(cut.united_cutters, 2);
+  EXPECT_EQ(test::unpaired_edges(cut.mesh), 0u);
+  const std::vector<glm::dvec2> profile = seat_profile(cutter_reach_above(), cutter_reach_below(thickness, d));
+  const double seat_in_plate = d * d * d * solid_of_revolution_volume(profile, kSeatSegments, -thickness / d, 0);
+  EXPECT_LT(cut.volume, 100.0 - 2 * seat_in_plate);
+  EXPECT_GT(cut.volume, 100.0 - 3 * seat_in_plate);
+}
+
+TEST(SolidCut, AShellThatFoldsIntoItselfIsRefusedWithTheThickness) {
+  // A plate bent into a sharp ridge: offset downwards by 3, its two sides cross under the ridge.
+  SurfaceMap plate = flat_plate(4, 4);
+  for (std::size_t v = 0; v < plate.mesh.positions.size(); ++v) {
+    glm::dvec3& p = plate.mesh.positions[v];
+    p.z = -3 * std::abs(p.x - 2);
+    plate.normals[v] = glm::normalize(glm::dvec3(p.x < 2 ? -3 : (p.x > 2 ? 3 : 0), 0, 1));
+  }
+  try {
+    cut_pavement(plate, {}, {.cutter = CutterKind::Seat, .thickness = 3});
+    FAIL() << "a folded shell was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--thickness 3: the metal folds into itself"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace paver
