@@ -45,6 +45,8 @@ struct RunArgs {
   std::string topology;
   std::optional<double> spacing;
   std::optional<double> gap;
+  std::optional<double> margin;
+  bool beads = false;
   std::optional<double> stone;
   std::string units;
   std::string out = "out";
@@ -113,6 +115,10 @@ int run_run(const RunArgs& args) {
     design.pattern.spacing = finite_non_negative("--spacing", *args.spacing, "0 = derive from the surface");
   if (args.gap)
     design.elements.gap = finite_non_negative("--gap", *args.gap, "free space between elements, surface units");
+  if (args.margin)
+    design.elements.margin =
+        finite_non_negative("--margin", *args.margin, "free band along the surface's boundary, surface units");
+  if (args.beads) design.elements.beads.enabled = true;
   if (args.stone) {
     if (args.spacing) throw InputError("--stone and --spacing both set the spacing (D = stone + gap): give one of them");
     const double stone = finite_non_negative("--stone", *args.stone, "the stone's diameter, surface units");
@@ -169,7 +175,7 @@ int run_run(const RunArgs& args) {
       const auto t0 = Clock::now();
       const CutSolid cut = cut_pavement(*r.map, r.pavement.elements,
                                         {.cutter = cutter, .thickness = thickness, .custom = r.custom_shape.get(),
-                                         .stop = &interrupt_requested()});
+                                         .stop = &interrupt_requested(), .beads = &r.pavement.beads});
       write_mesh_stl(folder / "cut.stl", cut.mesh, "cut solid", &interrupt_requested());
       write_pavement_3mf(folder / "cut.3mf", &cut.mesh, r.pavement.elements, r.pavement.design.units,
                          {.custom = r.custom_shape.get(), .stop = &interrupt_requested()}, "metal");
@@ -179,6 +185,7 @@ int run_run(const RunArgs& args) {
                          {"thickness", thickness},
                          {"cutters", cut.cutters},
                          {"united_cutters", cut.united_cutters},
+                         {"beads_joined", cut.beads},
                          {"shell_volume_mm3", cut.shell_volume * mm3},
                          {"volume_mm3", cut.volume * mm3},
                          {"removed_mm3", (cut.shell_volume - cut.volume) * mm3},
@@ -257,6 +264,18 @@ int run_run(const RunArgs& args) {
     std::printf("\n");
   }
   if (bill.carat_total > 0) std::printf("stones   total %ld, %.3f ct (stones.csv)\n", bill.count, bill.carat_total);
+  if (pavement.design.elements.beads.enabled) {
+    const Elements& beads = pavement.beads;
+    const double mm = millimetres_per_unit(pavement.design.units);
+    double smallest = 0, largest = 0;
+    if (beads.size() > 0) {
+      smallest = *std::min_element(beads.diameter.begin(), beads.diameter.end()) * mm;
+      largest = *std::max_element(beads.diameter.begin(), beads.diameter.end()) * mm;
+    }
+    std::printf("beads    %zu shared prongs of %.2f to %.2f mm, between every three stones in contact%s\n",
+                beads.size(), smallest, largest,
+                beads.size() == 0 ? " (none: no three stones touch; beads need a tri pattern)" : "");
+  }
   if (!cut_summary.is_null()) {
     std::printf("cut      %s cutters, metal %g thick: %.4g mm3 of %.4g mm3 left (%.4g removed), closed and manifold; "
                 "%s triangles\n",
@@ -310,6 +329,11 @@ std::function<int()> add_run_command(CLI::App& app) {
   cmd->add_option("--spacing", args->spacing, "Edge length D in surface units (default: from the surface size)");
   cmd->add_option("--gap", args->gap,
                   "Required free space between neighbouring elements, surface units (default 0: touching)");
+  cmd->add_option("--margin", args->margin,
+                  "Free band along the surface's boundary that no element may enter, surface units (default 0)");
+  cmd->add_flag("--beads", args->beads,
+                "Add a bead (shared prong) in the gap between every three stones in contact; scale in the design "
+                "file (elements.beads.scale)");
   cmd->add_option("--stone", args->stone,
                   "Stone diameter, surface units: the vertex elements become round brilliants of this size, with "
                   "D = stone + gap so that neighbouring stones are exactly the gap apart (instead of --spacing)");

@@ -266,8 +266,7 @@ std::vector<std::array<std::uint8_t, 3>> element_colours(const Elements& element
   if (mode == ColourMode::NeighbourRatio) return contact_colours(elements, gap);
   std::vector<std::array<std::uint8_t, 3>> out(elements.size());
   for (size_t i = 0; i < elements.size(); ++i)
-    out[i] = elements.kind[i] == ElementKind::Vertex ? std::array<std::uint8_t, 3>{52, 101, 164}
-                                                     : std::array<std::uint8_t, 3>{237, 125, 49};
+    out[i] = kind_colour(elements.kind[i]);
   return out;
 }
 

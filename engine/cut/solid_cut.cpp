@@ -16,6 +16,7 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
+#include <CGAL/Polygon_mesh_processing/repair_self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -134,6 +135,51 @@ struct DisjointSets {
   std::vector<std::size_t> parent;
 };
 
+// One mesh of the `parts` (closed solids, part i near `centres[i]`, none wider than `widest`):
+// those that touch are found among near neighbours and united cluster by cluster, and the
+// clusters, disjoint, are joined as one mesh of separate closed parts. `united` counts the parts
+// that touched another.
+template <class CheckStop>
+Mesh merge_solids(std::vector<Mesh>& parts, const std::vector<glm::dvec3>& centres, double widest,
+                  const CheckStop& check_stop, int& united) {
+  const std::size_t n = parts.size();
+  DisjointSets sets(n);
+  std::map<std::array<long, 3>, std::vector<std::size_t>> cells;
+  const auto cell_of = [&](const glm::dvec3& p) {
+    return std::array<long, 3>{long(std::floor(p.x / widest)), long(std::floor(p.y / widest)),
+                               long(std::floor(p.z / widest))};
+  };
+  for (std::size_t i = 0; i < n; ++i) cells[cell_of(centres[i])].push_back(i);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto c = cell_of(centres[i]);
+    for (long dx = -1; dx <= 1; ++dx)
+      for (long dy = -1; dy <= 1; ++dy)
+        for (long dz = -1; dz <= 1; ++dz) {
+          const auto it = cells.find({c[0] + dx, c[1] + dy, c[2] + dz});
+          if (it == cells.end()) continue;
+          for (const std::size_t j : it->second)
+            if (j > i && sets.find(i) != sets.find(j) && PMP::do_intersect(parts[i], parts[j])) sets.unite(i, j);
+        }
+    if ((i & 63) == 0) check_stop();
+  }
+  std::map<std::size_t, std::vector<std::size_t>> clusters;
+  for (std::size_t i = 0; i < n; ++i) clusters[sets.find(i)].push_back(i);
+  Mesh all;
+  for (auto& [root, members] : clusters) {
+    Mesh cluster = parts[members[0]];
+    for (std::size_t k = 1; k < members.size(); ++k) {
+      Mesh next;
+      if (!PMP::corefine_and_compute_union(cluster, parts[members[k]], next))
+        throw std::runtime_error("cut: uniting two touching solids failed (number " + std::to_string(members[k]) + ")");
+      cluster = std::move(next);
+      check_stop();
+    }
+    if (members.size() > 1) united += static_cast<int>(members.size());
+    all += cluster;
+  }
+  return all;
+}
+
 }  // namespace
 
 double cutter_reach_above() { return 0.6; }
@@ -175,43 +221,7 @@ CutSolid cut_pavement(const SurfaceMap& map, const Elements& elements, const Cut
     widest = std::max(widest, d * std::max(1.0, cutter_reach_below(options.thickness, d)));
   }
   check_stop();
-  // A grid of cells `widest` wide: any two cutters that can touch are in neighbouring cells.
-  DisjointSets sets(n);
-  std::map<std::array<long, 3>, std::vector<std::size_t>> cells;
-  const auto cell_of = [&](const glm::dvec3& p) {
-    return std::array<long, 3>{long(std::floor(p.x / widest)), long(std::floor(p.y / widest)),
-                               long(std::floor(p.z / widest))};
-  };
-  for (std::size_t i = 0; i < n; ++i) cells[cell_of(elements.position[i])].push_back(i);
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto c = cell_of(elements.position[i]);
-    for (long dx = -1; dx <= 1; ++dx)
-      for (long dy = -1; dy <= 1; ++dy)
-        for (long dz = -1; dz <= 1; ++dz) {
-          const auto it = cells.find({c[0] + dx, c[1] + dy, c[2] + dz});
-          if (it == cells.end()) continue;
-          for (const std::size_t j : it->second)
-            if (j > i && sets.find(i) != sets.find(j) && PMP::do_intersect(cutters[i], cutters[j])) sets.unite(i, j);
-        }
-    if ((i & 63) == 0) check_stop();
-  }
-  // Clusters of touching cutters are united; then every cluster goes into one mesh of disjoint
-  // closed parts.
-  std::map<std::size_t, std::vector<std::size_t>> clusters;
-  for (std::size_t i = 0; i < n; ++i) clusters[sets.find(i)].push_back(i);
-  Mesh all_cutters;
-  for (auto& [root, members] : clusters) {
-    Mesh united = cutters[members[0]];
-    for (std::size_t k = 1; k < members.size(); ++k) {
-      Mesh next;
-      if (!PMP::corefine_and_compute_union(united, cutters[members[k]], next))
-        throw std::runtime_error("cut: uniting two touching cutters failed (element " + std::to_string(members[k]) + ")");
-      united = std::move(next);
-      check_stop();
-    }
-    if (members.size() > 1) result.united_cutters += static_cast<int>(members.size());
-    all_cutters += united;
-  }
+  Mesh all_cutters = merge_solids(cutters, elements.position, widest, check_stop, result.united_cutters);
   result.cutters = static_cast<int>(n);
   check_stop();
 
@@ -221,10 +231,31 @@ CutSolid cut_pavement(const SurfaceMap& map, const Elements& elements, const Cut
   } else if (!PMP::corefine_and_compute_difference(shell, all_cutters, cut)) {
     throw std::runtime_error("cut: the difference of the metal and the cutters is not a manifold solid");
   }
+  // Beads are metal: they join the cut solid, their lower halves inside it.
+  if (options.beads && options.beads->size() > 0) {
+    const Elements& beads = *options.beads;
+    const SurfaceMesh unit = unit_cutter(CutterKind::Element, make_builtin_shape(ShapeKind::Sphere), 0, 0);
+    std::vector<Mesh> spheres;
+    double widest_bead = 0;
+    for (std::size_t b = 0; b < beads.size(); ++b) {
+      spheres.push_back(to_cgal(placed_cutter(unit, beads.position[b], beads.normal[b], beads.diameter[b])));
+      widest_bead = std::max(widest_bead, beads.diameter[b]);
+    }
+    int united_beads = 0;
+    Mesh all_beads = merge_solids(spheres, beads.position, widest_bead, check_stop, united_beads);
+    Mesh joined;
+    if (!PMP::corefine_and_compute_union(cut, all_beads, joined))
+      throw std::runtime_error("cut: joining the beads to the metal did not give a manifold solid");
+    cut = std::move(joined);
+    result.beads = static_cast<int>(beads.size());
+  }
   // Where a face meets a cutter's vertex exactly on its edge (a sphere's equator on a flat top),
   // the boolean can leave needle triangles of zero area; they are collapsed away.
   RoundedMesh rounded = to_cgal<RoundedMesh>(from_cgal(cut));
   PMP::remove_degenerate_faces(rounded);
+  // Rounding can fold slivers where the boolean made points a few nanometres apart (a bead's
+  // sphere meeting a seat): CGAL removes such faces and fills the holes again, locally.
+  if (PMP::does_self_intersect(rounded)) PMP::experimental::remove_self_intersections(rounded);
   rounded.collect_garbage();
   result.mesh = from_rounded(rounded);
   if (!CGAL::is_closed(rounded)) throw std::runtime_error("cut: the result is not closed");

@@ -1,6 +1,7 @@
 #pragma once
 // The subtractive result (paper Fig. 14): the surface thickened into metal (cut/thick_shell.h)
-// minus one cutter per element (cut/seat_cutter.h), as one closed solid, for a printer or caster.
+// minus one cutter per element (cut/seat_cutter.h), plus the beads if any, as one closed solid,
+// for a printer or caster.
 //
 // The boolean is CGAL's corefinement with exact constructions (Epeck): cutters that touch are
 // united first, cluster by cluster; the disjoint clusters then form one mesh that is subtracted
@@ -19,6 +20,7 @@ struct CutOptions {
   double thickness = 0;                    // of the metal, surface units
   const ShapeMesh* custom = nullptr;       // the design's custom shape, for CutterKind::Element
   const std::atomic<bool>* stop = nullptr; // checked between cutters and before the difference
+  const Elements* beads = nullptr;         // beads (elements/beads.h): metal, joined to the solid
 };
 
 struct CutSolid {
@@ -27,6 +29,7 @@ struct CutSolid {
   double volume = 0;            // after
   int cutters = 0;
   int united_cutters = 0;       // cutters that touched another and were united with it first
+  int beads = 0;                // beads joined to the metal
   double milliseconds = 0;
 };
 

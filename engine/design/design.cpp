@@ -112,6 +112,10 @@ void validate_elements(const Validator& v, const ElementsDesign& elements) {
   v.unit_scale(elements.vertex.scale, "elements.vertex.scale");
   v.require(std::isfinite(elements.gap) && elements.gap >= 0, "elements.gap", "finite and >= 0 (surface units)",
             elements.gap);
+  v.require(std::isfinite(elements.margin) && elements.margin >= 0, "elements.margin",
+            "finite and >= 0 (surface units)", elements.margin);
+  v.require(std::isfinite(elements.beads.scale) && elements.beads.scale > 0 && elements.beads.scale <= 2,
+            "elements.beads.scale", "in (0, 2]", elements.beads.scale);
   std::string custom_user;  // first key that asks for the custom shape
   if (elements.vertex.enabled && elements.vertex.shape == ShapeKind::Custom) custom_user = "elements.vertex.shape";
   for (size_t i = 0; i < elements.edge.size(); ++i) {

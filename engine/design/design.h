@@ -54,12 +54,21 @@ struct EdgeElementDesign {
   }
 };
 
+// Beads (shared prongs): a small sphere in the gap between every three stones in contact
+// (elements/beads.h). `scale` times the largest sphere that fits there between their footprints.
+struct BeadDesign {
+  bool enabled = false;
+  double scale = 1;                       // in (0, 2]: above 1 the bead reaches over the stones' girdles
+};
+
 struct ElementsDesign {
   VertexElementDesign vertex;
   std::vector<EdgeElementDesign> edge;
   std::string custom_shape;               // OBJ/OFF/PLY/STL path for ShapeKind::Custom
   bool allow_overlap = false;             // allow elements that intersect by design (paper Fig. 15)
   double gap = 0;                         // required free space between footprints, surface units
+  double margin = 0;                      // free band along the boundary: no footprint nearer, surface units
+  BeadDesign beads;
 };
 
 struct Design {

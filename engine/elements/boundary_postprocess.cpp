@@ -92,12 +92,14 @@ std::vector<double> distances_to_boundary(const SurfaceMap& map, const Elements&
   return distance;
 }
 
-int eliminate_boundary_elements(const SurfaceMap& map, Elements& elements) {
-  const std::vector<double> distance = distances_to_boundary(map, elements);
+int eliminate_boundary_elements(const SurfaceMap& map, Elements& elements, double margin) {
+  double largest = 0;
+  for (const double d : elements.diameter) largest = std::max(largest, d);
+  const std::vector<double> distance = distances_to_boundary(map, elements, margin + largest);
   std::vector<std::uint8_t> remove(elements.size(), 0);
   int removed = 0;
   for (size_t i = 0; i < elements.size(); ++i)
-    if (distance[i] < 0.5 * elements.diameter[i]) remove[i] = 1, ++removed;
+    if (!keeps_margin(distance[i], elements.diameter[i], margin)) remove[i] = 1, ++removed;
   elements.erase_flagged(remove);
   return removed;
 }

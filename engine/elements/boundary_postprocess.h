@@ -1,7 +1,8 @@
 #pragma once
 // Post-processing (section 5.4). Filling: lattice edges that cross the map's boundary are split at
 // the crossing and E-elements are placed on the inside part at their t. Eliminating: every
-// element whose centre is nearer the surface boundary (in 3D) than its radius is removed.
+// element whose centre is nearer the surface boundary (in 3D) than its radius plus the design's
+// margin (elements.margin, a jeweller's edge distance; 0 in the paper) is removed.
 #include "design/design.h"
 #include "elements/elements.h"
 #include "pattern/pattern.h"
@@ -23,7 +24,11 @@ int fill_boundary_edges(const SurfaceMap& map, const Pattern& pattern, const std
 // interior of the valence share; farther ones get the cap).
 std::vector<double> distances_to_boundary(const SurfaceMap& map, const Elements& elements, double reach = 0);
 
-// Removes the elements that cross the boundary; returns how many.
-int eliminate_boundary_elements(const SurfaceMap& map, Elements& elements);
+// Whether an element `distance` from the boundary keeps the margin: its footprint (radius) and the
+// margin both fit. The one rule for elimination, refill and the report.
+inline bool keeps_margin(double distance, double diameter, double margin) { return distance >= 0.5 * diameter + margin; }
+
+// Removes the elements that cross the boundary or its margin; returns how many.
+int eliminate_boundary_elements(const SurfaceMap& map, Elements& elements, double margin = 0);
 
 }  // namespace paver

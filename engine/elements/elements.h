@@ -5,13 +5,27 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
 namespace paver {
 
-enum class ElementKind : std::uint8_t { Vertex, Edge };
+// Vertex and Edge elements are the pattern's (stones); a Bead is a small metal prong between three
+// stones (elements/beads.h), kept apart from them and added only to the exported meshes.
+enum class ElementKind : std::uint8_t { Vertex, Edge, Bead };
+
+// The colour each kind is drawn and exported in (the paper's figure 4: V blue, E orange; beads
+// gold, the metal's), the same in the PLY, the glTF, the studio and the PNGs.
+inline std::array<std::uint8_t, 3> kind_colour(ElementKind kind) {
+  switch (kind) {
+    case ElementKind::Vertex: return {52, 101, 164};
+    case ElementKind::Edge: return {237, 125, 49};
+    case ElementKind::Bead: return {212, 175, 55};
+  }
+  return {128, 128, 128};
+}
 
 struct Elements {
   std::vector<ElementKind> kind;

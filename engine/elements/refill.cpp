@@ -109,10 +109,11 @@ RefillReport refill_bare_regions(const SurfaceMap& map, Elements& elements, cons
       trial.push_back(ElementKind::Vertex, -1, 0, candidates[c],
                       lifted.triangle[c] < 0 ? glm::dvec3(0) : lifted.position[c],
                       lifted.triangle[c] < 0 ? glm::dvec3(0, 0, 1) : lifted.normal[c], diameter, spec.vertex.shape);
-    const std::vector<double> to_boundary = distances_to_boundary(map, trial);
+    const double margin = design.elements.margin;
+    const std::vector<double> to_boundary = distances_to_boundary(map, trial, margin + diameter);
     std::vector<int> next;
     for (size_t c = 0; c < candidates.size(); ++c) {
-      if (lifted.triangle[c] < 0 || to_boundary[c] < 0.5 * diameter) continue;
+      if (lifted.triangle[c] < 0 || !keeps_margin(to_boundary[c], diameter, margin)) continue;
       if (!clears_all(hash, elements, lifted.position[c], diameter, gap, local_spacing(lifted.curvature[c]))) continue;
       elements.push_back(ElementKind::Vertex, -1, 0, candidates[c], lifted.position[c], lifted.normal[c], diameter,
                          spec.vertex.shape);

@@ -201,12 +201,20 @@ public:
   }
 
   void read(const json& value, const std::string& path, ElementsDesign& out) const {
-    check_object(value, path, {"vertex", "edge", "custom_shape", "allow_overlap", "gap"});
+    check_object(value, path, {"vertex", "edge", "custom_shape", "allow_overlap", "gap", "margin", "beads"});
     field(value, path, "vertex", out.vertex);
     field(value, path, "edge", out.edge);
     field(value, path, "custom_shape", out.custom_shape);
     field(value, path, "allow_overlap", out.allow_overlap);
     field(value, path, "gap", out.gap);
+    field(value, path, "margin", out.margin);
+    field(value, path, "beads", out.beads);
+  }
+
+  void read(const json& value, const std::string& path, BeadDesign& out) const {
+    check_object(value, path, {"enabled", "scale"});
+    field(value, path, "enabled", out.enabled);
+    field(value, path, "scale", out.scale);
   }
 
   void read(const json& value, const std::string& path, Placement& out) const {
@@ -316,6 +324,8 @@ Json to_json(const Design& design) {
   elements_json["custom_shape"] = elements.custom_shape;
   elements_json["allow_overlap"] = elements.allow_overlap;
   elements_json["gap"] = elements.gap;
+  elements_json["margin"] = elements.margin;
+  elements_json["beads"] = Json{{"enabled", elements.beads.enabled}, {"scale", elements.beads.scale}};
 
   Json placement = Json::object();
   placement["offset"] = Json::array({design.placement.offset.x, design.placement.offset.y});

@@ -23,8 +23,6 @@ namespace paver {
 namespace {
 
 using Colour = std::array<std::uint8_t, 3>;
-constexpr Colour kVertexColour = {52, 101, 164};  // blue, as in the paper's figure 4
-constexpr Colour kEdgeColour = {237, 125, 49};    // orange
 
 // Elements is a struct of arrays; a short array would be read past its end.
 void check_sizes(const Elements& e) {
@@ -173,7 +171,7 @@ void write_placements_csv(const std::filesystem::path& path, const Elements& ele
     w.text("id,kind,x,y,z,nx,ny,nz,diameter,u,v\n");
     for (std::size_t i = 0; i < elements.size(); ++i) {
       w.integer(static_cast<long long>(i));
-      w.text(elements.kind[i] == ElementKind::Vertex ? ",V" : ",E");
+      w.text(elements.kind[i] == ElementKind::Vertex ? ",V" : elements.kind[i] == ElementKind::Edge ? ",E" : ",B");
       for (const double value :
            {elements.position[i].x, elements.position[i].y, elements.position[i].z,
             elements.normal[i].x, elements.normal[i].y, elements.normal[i].z, elements.diameter[i],
@@ -239,9 +237,7 @@ void write_elements_ply(const std::filesystem::path& path, const Elements& eleme
            "\nproperty list uchar int vertex_indices\nend_header\n");
 
     for_each_placed_element(elements, shapes, [&](std::size_t i, const ShapeMesh&, const std::vector<glm::dvec3>& placed) {
-      const Colour colour = options.colours ? (*options.colours)[i]
-                            : elements.kind[i] == ElementKind::Vertex ? kVertexColour
-                                                                      : kEdgeColour;
+      const Colour colour = options.colours ? (*options.colours)[i] : kind_colour(elements.kind[i]);
       for (const glm::dvec3& p : placed) {
         char* c = w.room(15);
         c = put_f32_le(c, static_cast<float>(p.x));

@@ -16,7 +16,7 @@
 namespace paver {
 
 // placements.csv: header exactly `id,kind,x,y,z,nx,ny,nz,diameter,u,v`, one row per element,
-// kind V or E, full double precision (17 significant digits).
+// kind V or E (beads, written after the stones, B), full double precision (17 significant digits).
 // `stop`: as ElementMeshOptions::stop below.
 void write_placements_csv(const std::filesystem::path& path, const Elements& elements,
                           const std::atomic<bool>* stop = nullptr);

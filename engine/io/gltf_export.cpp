@@ -127,8 +127,17 @@ ElementPose pose_of(const Elements& elements, std::size_t i) {
   return {elements.position[i], glm::normalize(glm::quat_cast(glm::dmat3(f.t, f.b, f.n))), elements.diameter[i]};
 }
 
+const char* kind_label(ElementKind kind) {
+  switch (kind) {
+    case ElementKind::Vertex: return "vertex stones";
+    case ElementKind::Edge: return "edge stones";
+    case ElementKind::Bead: return "beads";
+  }
+  return "elements";
+}
+
 std::string mesh_name(ShapeKind shape, ElementKind kind) {
-  return std::string(shape_name(shape)) + (kind == ElementKind::Vertex ? " (vertex elements)" : " (edge elements)");
+  return std::string(shape_name(shape)) + " (" + kind_label(kind) + ")";
 }
 
 }  // namespace
@@ -178,22 +187,25 @@ void write_pavement_glb(const std::filesystem::path& path, const GltfSurface& su
   // viewers shade their facets flat, as cut stones look.
   std::map<std::pair<ShapeKind, ElementKind>, std::vector<std::size_t>> groups;
   for (std::size_t i = 0; i < elements.size(); ++i) groups[{elements.shape[i], elements.kind[i]}].push_back(i);
-  std::array<int, 2> stone_material = {-1, -1};
+  // One material per kind in its colour (elements.h): stones glossy, beads metal.
+  std::map<ElementKind, int> kind_material;
   bool instancing = false;
   for (const auto& [key, members] : groups) {
     const auto [shape_kind, kind] = key;
-    const int k = kind == ElementKind::Vertex ? 0 : 1;
-    if (stone_material[k] < 0)
-      stone_material[k] = kind == ElementKind::Vertex
-                              ? add_material(model, "vertex stones", {0.20, 0.40, 0.64, 1.0}, 0.0, 0.05)
-                              : add_material(model, "edge stones", {0.93, 0.49, 0.19, 1.0}, 0.0, 0.05);
+    if (!kind_material.count(kind)) {
+      const auto c = kind_colour(kind);
+      const bool metal = kind == ElementKind::Bead;
+      kind_material[kind] = add_material(model, kind_label(kind), {c[0] / 255.0, c[1] / 255.0, c[2] / 255.0, 1.0},
+                                         metal ? 1.0 : 0.0, metal ? 0.3 : 0.05);
+    }
+    const int material = kind_material[kind];
     const ShapeMesh& shape = shapes[shape_kind];
     std::vector<float> xyz;
     for (const glm::vec3& p : shape.positions) xyz.insert(xyz.end(), {p.x, p.y, p.z});
     std::vector<std::uint32_t> indices;
     for (const glm::ivec3& t : shape.triangles)
       indices.insert(indices.end(), {std::uint32_t(t.x), std::uint32_t(t.y), std::uint32_t(t.z)});
-    const int mesh = add_mesh(model, binary, mesh_name(shape_kind, kind), xyz, nullptr, indices, stone_material[k]);
+    const int mesh = add_mesh(model, binary, mesh_name(shape_kind, kind), xyz, nullptr, indices, material);
 
     if (members.size() <= kGltfInstancingThreshold) {
       for (const std::size_t i : members) {

@@ -1,5 +1,6 @@
 #include "pipeline/pavement.h"
 
+#include "elements/beads.h"
 #include "elements/boundary_postprocess.h"
 #include "pattern/adaptive_pattern.h"
 #include "solver/surface_spring_relaxation.h"
@@ -45,7 +46,7 @@ PlacedElements place_all_elements(const SurfaceMap& map, const Pattern& pattern,
   if (postprocess) {
     placed.filled = fill_boundary_edges(map, pattern, points, design.elements, design.pattern.spacing, placed.elements,
                                         retired);
-    placed.eliminated = eliminate_boundary_elements(map, placed.elements);
+    placed.eliminated = eliminate_boundary_elements(map, placed.elements, design.elements.margin);
   }
   return placed;
 }
@@ -169,6 +170,11 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
   pavement.after =
       measure_pavement(map, pavement.pattern, pavement.points, pavement.elements, basis, &pavement.retired);
   pavement.timings.emplace_back("measure", ms_since(t0));
+  if (design.elements.beads.enabled) {
+    t0 = start("beads");
+    pavement.beads = place_beads(map, pavement.elements, design.elements);
+    pavement.timings.emplace_back("beads", ms_since(t0));
+  }
   pavement.design = std::move(design);
   return pavement;
 }

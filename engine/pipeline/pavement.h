@@ -48,6 +48,7 @@ struct Pavement {
   std::vector<glm::dvec2> points;    // particle positions: optimised (or the pattern's)
   std::vector<std::uint8_t> retired; // #P 1 for particles the optimizer retired (pushed out for good)
   Elements elements;                 // final elements
+  Elements beads;                    // shared prongs between stones, when the design asks (elements/beads.h)
   int filled = 0;                    // E-elements added by boundary filling
   int eliminated = 0;                // elements removed for crossing the boundary
   SolveReport solve;                 // iterations, stop reason, time

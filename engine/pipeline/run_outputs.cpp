@@ -36,19 +36,27 @@ void write_run_files(const fs::path& folder, const SurfaceMap& map, const Paveme
   ElementMeshOptions mesh_options;
   mesh_options.custom = options.custom;
   mesh_options.stop = options.stop;
-  const auto colours = contact_colours(pavement.elements, pavement.design.elements.gap);
+  auto colours = contact_colours(pavement.elements, pavement.design.elements.gap);
+  // The stones, then the beads (if any): the beads are exported with them, in their metal's colour.
+  Elements with_beads;
+  if (pavement.beads.size() > 0) {
+    with_beads = pavement.elements;
+    with_beads.append(pavement.beads);
+    colours.resize(with_beads.size(), kind_colour(ElementKind::Bead));
+  }
+  const Elements& exported = pavement.beads.size() > 0 ? with_beads : pavement.elements;
   mesh_options.colours = &colours;
-  write_placements_csv(folder / "placements.csv", pavement.elements, options.stop);
+  write_placements_csv(folder / "placements.csv", exported, options.stop);
   write_stones_csv(folder / "stones.csv", bill_of_stones(pavement.elements, pavement.design.units));
   const MeshFormats& formats = options.formats;
-  if (formats.ply) write_elements_ply(folder / "elements.ply", pavement.elements, mesh_options);
-  if (formats.obj) write_elements_obj(folder / "elements.obj", pavement.elements, mesh_options);
-  if (formats.stl) write_elements_stl(folder / "elements.stl", pavement.elements, mesh_options);
+  if (formats.ply) write_elements_ply(folder / "elements.ply", exported, mesh_options);
+  if (formats.obj) write_elements_obj(folder / "elements.obj", exported, mesh_options);
+  if (formats.stl) write_elements_stl(folder / "elements.stl", exported, mesh_options);
   if (formats.glb)
-    write_pavement_glb(folder / "elements.glb", {.mesh = &map.mesh, .normals = &map.normals}, pavement.elements,
+    write_pavement_glb(folder / "elements.glb", {.mesh = &map.mesh, .normals = &map.normals}, exported,
                        pavement.design.units, mesh_options);
   if (formats.threemf)
-    write_pavement_3mf(folder / "paved.3mf", &map.mesh, pavement.elements, pavement.design.units, mesh_options);
+    write_pavement_3mf(folder / "paved.3mf", &map.mesh, exported, pavement.design.units, mesh_options);
   save_design(folder / "design.json", pavement.design);
 }
 

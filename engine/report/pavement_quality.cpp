@@ -155,6 +155,7 @@ QualityBasis quality_basis(const SurfaceMap& map, const UnitCell& cell, const El
   QualityBasis basis;
   basis.solver = solver;
   basis.gap = elements.gap;
+  basis.margin = elements.margin;
   double per_cell = 0, largest = 0;
   if (elements.vertex.enabled) per_cell += double(cell.vertices.size());
   for (const EdgeElementDesign& spec : elements.edge) {
@@ -172,7 +173,8 @@ QualityBasis quality_basis(const SurfaceMap& map, const UnitCell& cell, const El
     basis.regular_valence = int(std::lround(2 * real_edges / vertices));
   }
   basis.spacing = cell.spacing;
-  basis.boundary_strip = 0.5 * (elements.vertex.enabled ? elements.vertex.scale * cell.spacing : largest);
+  basis.boundary_strip =
+      0.5 * (elements.vertex.enabled ? elements.vertex.scale * cell.spacing : largest) + elements.margin;
   basis.ideal_count = ideal_element_count(map, basis);
   return basis;
 }
@@ -185,6 +187,7 @@ PavementQuality measure_pavement(const SurfaceMap& map, const Pattern& pattern,
   q.vertex_elements = std::count(elements.kind.begin(), elements.kind.end(), ElementKind::Vertex);
   q.edge_elements = q.elements - q.vertex_elements;
   q.gap = basis.gap;
+  q.margin = basis.margin;
   const CollisionTally collisions = count_collisions(elements, basis.gap);
   q.contact_violations = collisions.pairs;
   q.worst_overlap = collisions.worst_overlap;
@@ -201,10 +204,11 @@ PavementQuality measure_pavement(const SurfaceMap& map, const Pattern& pattern,
   const Distribution dev = distribution_of(deviation);
   q.spring_deviation_median = dev.median;
   q.spring_deviation_p95 = dev.p95;
-  const std::vector<double> to_boundary = distances_to_boundary(map, elements, kInteriorDepth * basis.spacing);
+  const std::vector<double> to_boundary =
+      distances_to_boundary(map, elements, kInteriorDepth * basis.spacing + basis.margin);
   double disc_area = 0;
   for (size_t i = 0; i < elements.size(); ++i) {
-    if (to_boundary[i] < 0.5 * elements.diameter[i]) ++q.boundary_crossings;
+    if (!keeps_margin(to_boundary[i], elements.diameter[i], basis.margin)) ++q.boundary_crossings;
     disc_area += std::numbers::pi * 0.25 * elements.diameter[i] * elements.diameter[i];
   }
   q.coverage = disc_area / surface_area(map.mesh);
@@ -235,6 +239,7 @@ nlohmann::json to_json(const PavementQuality& q) {
       {"worst_overlap", q.worst_overlap},
       {"min_clearance", q.min_clearance},
       {"gap", q.gap},
+      {"margin", q.margin},
       {"fill", q.fill},
       {"vertex_fill", q.vertex_fill},
       {"edge_fill", q.edge_fill},

@@ -29,8 +29,9 @@ Distribution distribution_of(std::vector<double> values);
 struct QualityBasis {
   SolverParams solver;
   double gap = 0;                   // elements.gap: the contact rule's required free space
+  double margin = 0;                // elements.margin: the free band along the boundary
   double area_per_element = 0;      // the regular pattern's area per element; 0 = fill not measured
-  double boundary_strip = 0;        // half an element diameter: the strip along the boundary left bare
+  double boundary_strip = 0;        // half an element diameter plus the margin: the strip along the boundary left bare
   double ideal_count = 0;           // ideal_element_count of the surface: what fill is measured against
   double vertex_share = 0;          // V-elements' share of the ideal count (1 per cell vertex)
   int regular_valence = 0;          // V-neighbours of a lattice vertex: 6 tri, 4 grid, 3 hex; 0 = no V
@@ -47,6 +48,7 @@ struct PavementQuality {
   double worst_overlap = 0;         // max of 1 - d / (r_i + r_j + gap) over violating pairs
   double min_clearance = 0;         // smallest d - r_i - r_j over all pairs, surface units (negative = overlap)
   double gap = 0;                   // the gap it was measured with
+  double margin = 0;                // and the boundary margin (boundary_crossings count footprints inside it)
   double fill = 0;                  // elements / the ideal count (QualityBasis), 0 when not measured
   double vertex_fill = 0, edge_fill = 0;  // each kind over its own ideal count; 0 when not placed
   long interior_vertex_elements = 0;  // V-elements kInteriorDepth D or more from the boundary

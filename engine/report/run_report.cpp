@@ -22,6 +22,25 @@ std::string_view start_name(ArapStart s) {
   return "?";
 }
 
+// The beads (shared prongs): how many and how large, in mm; {"enabled": false} without them.
+nlohmann::json beads_json(const Pavement& pavement) {
+  const BeadDesign& design = pavement.design.elements.beads;
+  nlohmann::json j = {{"enabled", design.enabled}};
+  if (!design.enabled) return j;
+  const Elements& beads = pavement.beads;
+  const double mm = millimetres_per_unit(pavement.design.units);
+  double smallest = 0, largest = 0;
+  if (beads.size() > 0) {
+    smallest = *std::min_element(beads.diameter.begin(), beads.diameter.end()) * mm;
+    largest = *std::max_element(beads.diameter.begin(), beads.diameter.end()) * mm;
+  }
+  j["scale"] = design.scale;
+  j["count"] = beads.size();
+  j["diameter_mm_min"] = smallest;
+  j["diameter_mm_max"] = largest;
+  return j;
+}
+
 }  // namespace
 
 PavementCounts count_pavement(const Pavement& pavement) {
@@ -77,6 +96,7 @@ nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const
                   {"tessellation", tessellation_name(pavement.design.pattern.tessellation)},
                   {"spacing", pavement.design.pattern.spacing},
                   {"gap", pavement.design.elements.gap},
+                  {"margin", pavement.design.elements.margin},
                   {"spacing_derived", info.spacing_derived}}},
       {"pattern", {{"cell_edges", pavement.cell.edges.size()},
                    {"points", pattern.point_count()},
@@ -117,6 +137,7 @@ nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const
                    {"still_colliding_after_resolution", pavement.resolution.removed}}},
       {"verdict", to_json(judge_pavement(pavement.after))},
       {"stones", to_json(bill_of_stones(elements, pavement.design.units))},
+      {"beads", beads_json(pavement)},
       {"quality_before", to_json(pavement.before)},
       {"quality_paper_method", to_json(pavement.paper)},
       {"quality_after", to_json(pavement.after)},

@@ -22,7 +22,9 @@ Verdict judge_pavement(const PavementQuality& q) {
     v.problems.push_back(format("%.0f pairs are closer than their radii plus the gap (smallest clearance %.4g)",
                                 double(q.contact_violations), q.min_clearance));
   if (q.boundary_crossings > 0)
-    v.problems.push_back(format("%.0f elements cross the surface boundary", double(q.boundary_crossings)));
+    v.problems.push_back(q.margin > 0 ? format("%.0f elements cross the surface boundary or its margin of %.4g",
+                                               double(q.boundary_crossings), q.margin)
+                                      : format("%.0f elements cross the surface boundary", double(q.boundary_crossings)));
   if (pattern_is_torn(q))
     v.problems.push_back(format("the pattern is torn: 5%% of its springs are more than %.0f%% off their "
                                 "target (p95 deviation %.3g)",

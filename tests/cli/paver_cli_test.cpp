@@ -83,7 +83,7 @@ std::vector<Placement> read_placements(const fs::path& path) {
     const auto id = parse_double(fields[0]);
     EXPECT_TRUE(id && *id == std::floor(*id)) << where;
     row.id = id ? long(*id) : -1;
-    EXPECT_TRUE(fields[1] == "V" || fields[1] == "E") << where;
+    EXPECT_TRUE(fields[1] == "V" || fields[1] == "E" || fields[1] == "B") << where;
     row.kind = fields[1].empty() ? '?' : fields[1][0];
     std::array<double, 9> numbers{};
     for (size_t k = 0; k < numbers.size(); ++k) {
@@ -901,6 +901,86 @@ TEST_F(PaverRun, StonesAndGapInMillimetresGiveTheBillOfStones) {
                      bad, {"--stone and --spacing"});
   expect_input_error(paver({"run", "assets/surfaces/pendant.obj", "--units", "furlong", "--out", bad.string()}), bad,
                      {"--units furlong", "mm, cm, m or in"});
+}
+
+// The boundary of an OBJ surface as segments (edges of one face only), read here from the file,
+// independently of the engine.
+std::vector<std::array<std::array<double, 3>, 2>> obj_boundary(const fs::path& path) {
+  std::vector<std::array<double, 3>> v;
+  std::map<std::pair<int, int>, int> edges;
+  for (const std::string& line : lines_of(read_file_text(path))) {
+    std::istringstream in(line);
+    std::string tag;
+    in >> tag;
+    if (tag == "v") {
+      std::array<double, 3> p{};
+      in >> p[0] >> p[1] >> p[2];
+      v.push_back(p);
+    } else if (tag == "f") {
+      std::vector<int> corners;
+      std::string corner;
+      while (in >> corner) corners.push_back(std::stoi(corner.substr(0, corner.find('/'))) - 1);
+      for (size_t k = 0; k < corners.size(); ++k) {
+        const int a = corners[k], b = corners[(k + 1) % corners.size()];
+        ++edges[{std::min(a, b), std::max(a, b)}];
+      }
+    }
+  }
+  std::vector<std::array<std::array<double, 3>, 2>> segments;
+  for (const auto& [e, n] : edges)
+    if (n == 1) segments.push_back({v[size_t(e.first)], v[size_t(e.second)]});
+  return segments;
+}
+
+double distance_to_segments(const std::array<double, 3>& p, const std::vector<std::array<std::array<double, 3>, 2>>& segments) {
+  double best = 1e300;
+  for (const auto& [a, b] : segments) {
+    std::array<double, 3> ab{}, ap{};
+    double ab2 = 0, t = 0;
+    for (int k = 0; k < 3; ++k) ab[k] = b[k] - a[k], ap[k] = p[k] - a[k], ab2 += ab[k] * ab[k], t += ab[k] * ap[k];
+    t = ab2 > 0 ? std::clamp(t / ab2, 0.0, 1.0) : 0.0;
+    double d2 = 0;
+    for (int k = 0; k < 3; ++k) d2 += (ap[k] - t * ab[k]) * (ap[k] - t * ab[k]);
+    best = std::min(best, std::sqrt(d2));
+  }
+  return best;
+}
+
+// --margin 0.5 keeps every stone's edge half a millimetre from the pendant's rim (a jeweller's
+// edge distance), checked against the rim read from the OBJ here; the report says so.
+TEST_F(PaverRun, MarginKeepsEveryStoneThatFarFromTheRim) {
+  const fs::path out = dir() / "out";
+  const CliResult r = paver({"run", "assets/surfaces/pendant.obj", "--stone", "1.5", "--gap", "0.1", "--margin", "0.5",
+                             "--beads", "--quiet", "--formats", "ply", "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  EXPECT_NE(r.out.find("verdict  ok"), std::string::npos) << describe(r);
+  const auto rim = obj_boundary(fs::path(PAVER_SOURCE_DIR) / "assets/surfaces/pendant.obj");
+  ASSERT_GT(rim.size(), 20u);
+  const std::vector<Placement> stones = read_placements(out / "placements.csv");
+  ASSERT_GT(stones.size(), 100u);
+  double closest = 1e300;
+  for (const Placement& s : stones)
+    if (s.kind != 'B') closest = std::min(closest, distance_to_segments(s.p, rim) - 0.5 * s.diameter);
+  EXPECT_GE(closest, 0.5) << "a stone's edge is " << closest << " from the rim";
+  EXPECT_LT(closest, 0.5 + 1.6) << "the margin should be kept, not a whole row more";
+  const json report = read_json(out / "report.json");
+  EXPECT_EQ(report["design"]["margin"].get<double>(), 0.5);
+  EXPECT_EQ(report["quality_after"]["boundary_crossings"].get<long>(), 0);
+  EXPECT_EQ(read_json(out / "design.json")["elements"]["margin"].get<double>(), 0.5);
+  // The beads come after the stones in placements.csv (kind B), keep the margin too, and are
+  // counted in the report but not in the bill of stones.
+  size_t beads = 0;
+  for (const Placement& s : stones)
+    if (s.kind == 'B') {
+      ++beads;
+      EXPECT_GE(distance_to_segments(s.p, rim) - 0.5 * s.diameter, 0.5) << "bead " << s.id;
+    }
+  EXPECT_GT(beads, 100u);
+  EXPECT_EQ(report["beads"]["count"].get<size_t>(), beads);
+  EXPECT_EQ(report["stones"]["count"].get<size_t>(), stones.size() - beads);
+  EXPECT_NE(r.out.find("shared prongs"), std::string::npos) << describe(r);
+  expect_input_error(paver({"run", "assets/surfaces/pendant.obj", "--margin", "-1", "--out", (dir() / "bad").string()}),
+                     dir() / "bad", {"--margin"});
 }
 
 // --formats narrows the mesh files to those named; the records are always written; a name that

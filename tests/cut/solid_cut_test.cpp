@@ -116,6 +116,27 @@ TEST(SolidCut, TouchingSeatsAreUnitedFirst) {
   EXPECT_GT(cut.volume, 100.0 - 3 * seat_in_plate);
 }
 
+// Beads are metal: joined to the cut solid, each adds its upper half (the UV sphere's equator lies
+// on the flat top).
+TEST(SolidCut, BeadsJoinTheMetalWithTheirUpperHalves) {
+  const double d = 1.5, thickness = 1, bead = 0.4;
+  const SurfaceMap plate = flat_plate(10, 4);
+  const Elements stones = stones_on_plate({{3, 3}}, d, ShapeKind::Gem);
+  Elements beads;
+  for (const glm::dvec2 c : {glm::dvec2(7, 7), glm::dvec2(7, 3)})
+    beads.push_back(ElementKind::Bead, 0, 0, c, {c.x, c.y, 0.0}, {0, 0, 1}, bead, ShapeKind::Sphere);
+  const CutSolid cut = cut_pavement(plate, stones, {.cutter = CutterKind::Seat, .thickness = thickness, .beads = &beads});
+  EXPECT_EQ(cut.beads, 2);
+  const std::vector<glm::dvec2> profile = seat_profile(cutter_reach_above(), cutter_reach_below(thickness, d));
+  const double seat_in_plate = d * d * d * solid_of_revolution_volume(profile, kSeatSegments, -thickness / d, 0);
+  SurfaceMesh sphere;
+  for (const glm::vec3& p : make_builtin_shape(ShapeKind::Sphere).positions) sphere.positions.emplace_back(p);
+  sphere.triangles = make_builtin_shape(ShapeKind::Sphere).triangles;
+  const double half_bead = 0.5 * bead * bead * bead * test::signed_volume(sphere);
+  EXPECT_NEAR(cut.volume, 100.0 - seat_in_plate + 2 * half_bead, 1e-6 * 100);
+  EXPECT_EQ(test::unpaired_edges(cut.mesh), 0u);
+}
+
 TEST(SolidCut, AShellThatFoldsIntoItselfIsRefusedWithTheThickness) {
   // A plate bent into a sharp ridge: offset downwards by 3, its two sides cross under the ridge.
   SurfaceMap plate = flat_plate(4, 4);

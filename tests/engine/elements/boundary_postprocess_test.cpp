@@ -285,6 +285,28 @@ TEST(BoundaryElimination, RemovesExactlyTheElementsNearerTheBoundaryThanTheirRad
   EXPECT_EQ(eliminate_boundary_elements(map, elements), 0);
 }
 
+// A jeweller's edge margin (elements.margin): every footprint keeps that much more from the
+// boundary, wider than the largest element, so the search must reach past a diameter.
+TEST(BoundaryElimination, AMarginKeepsEveryFootprintThatFarFromTheBoundary) {
+  const SurfaceMap& map = dome_map();
+  Elements elements = elements_to_eliminate();
+  const Elements before = elements;
+  const double margin = 15;  // above the largest diameter (12)
+  std::size_t keep = 0;
+  for (std::size_t i = 0; i < before.size(); ++i) {
+    const double d = distance_to_boundary_3d(map, before.position[i]), need = 0.5 * before.diameter[i] + margin;
+    ASSERT_GT(std::abs(d - need), 1e-9) << "element " << i << " is too close to the threshold to decide";
+    keep += d >= need;
+  }
+  ASSERT_GT(keep, 100u);
+  EXPECT_EQ(eliminate_boundary_elements(map, elements, margin), int(before.size() - keep));
+  ASSERT_EQ(elements.size(), keep);
+  for (std::size_t k = 0; k < elements.size(); ++k)
+    EXPECT_GE(distance_to_boundary_3d(map, elements.position[k]), 0.5 * elements.diameter[k] + margin) << k;
+  EXPECT_TRUE(keeps_margin(10.5, 1, 10));
+  EXPECT_FALSE(keeps_margin(10.4999, 1, 10));
+}
+
 TEST(BoundaryElimination, DistancesAreExactWithinTheLargestDiameter) {
   // distances_to_boundary only searches one largest diameter around each element: nearer than
   // that it is the exact 3D distance, farther it reports at least that diameter.

@@ -41,6 +41,9 @@ Design non_default_design() {
   d.elements.edge.push_back({0, 0.125, ShapeKind::Disc, {1}});
   d.elements.custom_shape = "/shapes/star.obj";
   d.elements.allow_overlap = true;
+  d.elements.gap = 0.1 / 3;
+  d.elements.margin = 0.35;
+  d.elements.beads = {true, 1.25};
   d.placement.offset = {-1.5, 2.0 / 3.0};
   d.placement.rotation_deg = -37.5;
   d.placement.scale = 1.7;
@@ -95,6 +98,10 @@ void expect_same(const Design& a, const Design& b) {
   }
   EXPECT_EQ(a.elements.custom_shape, b.elements.custom_shape);
   EXPECT_EQ(a.elements.allow_overlap, b.elements.allow_overlap);
+  EXPECT_EQ(a.elements.gap, b.elements.gap);
+  EXPECT_EQ(a.elements.margin, b.elements.margin);
+  EXPECT_EQ(a.elements.beads.enabled, b.elements.beads.enabled);
+  EXPECT_EQ(a.elements.beads.scale, b.elements.beads.scale);
   EXPECT_EQ(a.placement.offset, b.placement.offset);
   EXPECT_EQ(a.placement.rotation_deg, b.placement.rotation_deg);
   EXPECT_EQ(a.placement.scale, b.placement.scale);
@@ -156,7 +163,8 @@ TEST(DesignIo, WritesEveryKey) {
   EXPECT_EQ(j.at("units"), "mm");
   EXPECT_EQ(j.at("pattern").size(), 5u);
   EXPECT_EQ(j.at("pattern").at("topology"), "auto");
-  EXPECT_EQ(j.at("elements").size(), 5u);
+  EXPECT_EQ(j.at("elements").size(), 7u);
+  EXPECT_EQ(j.at("elements").at("beads").size(), 2u);
   EXPECT_EQ(j.at("elements").at("vertex").size(), 3u);
   EXPECT_EQ(j.at("placement").size(), 3u);
   EXPECT_EQ(j.at("solver").size(), 16u);
