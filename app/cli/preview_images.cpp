@@ -47,9 +47,18 @@ void PreviewImages::write(const std::filesystem::path& folder, const SurfaceMap&
                           const ShapeMesh* custom, PreviewSize size) {
   render::Renderer& r = *impl_->renderer;
   r.set_surface(map);
-  const auto colours =
+  const auto stone_colours =
       render::element_colours(pavement.elements, render::ColourMode::NeighbourRatio, pavement.design.elements.gap);
-  r.set_elements(pavement.elements, colours, custom);
+  auto colours = stone_colours;
+  // The beads are drawn with the stones, in their metal's colour (they are exported with them).
+  Elements with_beads;
+  if (pavement.beads.size() > 0) {
+    with_beads = pavement.elements;
+    with_beads.append(pavement.beads);
+    colours.resize(with_beads.size(), kind_colour(ElementKind::Bead));
+  }
+  const Elements& drawn = pavement.beads.size() > 0 ? with_beads : pavement.elements;
+  r.set_elements(drawn, colours, custom);
   r.set_pattern(map, pavement.pattern, pavement.points);
   render::SceneStyle style;
   r.render_3d(size.width, size.height, render::frame_surface(map.mesh), style);
@@ -60,7 +69,7 @@ void PreviewImages::write(const std::filesystem::path& folder, const SurfaceMap&
   // The map view marks an adaptive pattern's point defects on the V-elements around them.
   const bool marks_defects = !pavement.pattern.defects.empty();
   if (marks_defects)
-    r.set_elements(pavement.elements, defect_marked_colours(pavement, colours), custom);
+    r.set_elements(pavement.elements, defect_marked_colours(pavement, stone_colours), custom);
   r.render_2d(size.width, size.height, render::frame_map(map), style);
   render::Image param = r.read_back(1);
   if (marks_defects) render::draw_defect_legend(param, kFewer, kMore);

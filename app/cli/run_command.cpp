@@ -307,7 +307,7 @@ int run_run(const RunArgs& args) {
   std::printf(" total %.1f ms\n", total);
   std::string written = "placements.csv, stones.csv";
   for (const std::string& name : mesh_file_names(request_formats)) written += ", " + name;
-  written += ", design.json, report.json";
+  written += ", design.json, report.json, report.html";
   if (!cut_summary.is_null()) written += ", cut.stl, cut.3mf";
   if (args.png) written += ", preview.png, param.png";
   std::printf("wrote    %s/{%s}\n", printable(out.string()).c_str(), written.c_str());

@@ -1,6 +1,7 @@
 #include "pipeline/run_outputs.h"
 
 #include "report/bill_of_stones.h"
+#include "report/report_html.h"
 
 #include "core/interrupted.h"
 #include "io/output_set.h"
@@ -25,7 +26,7 @@ namespace fs = std::filesystem;
 
 std::vector<fs::path> run_output_paths(const fs::path& folder, const MeshFormats& formats) {
   std::vector<fs::path> paths = {folder / "placements.csv", folder / "stones.csv", folder / "design.json",
-                                 folder / "report.json"};
+                                 folder / "report.json", folder / "report.html"};
   for (const std::string& name : mesh_file_names(formats)) paths.push_back(folder / name);
   return paths;
 }
@@ -61,7 +62,7 @@ void write_run_files(const fs::path& folder, const SurfaceMap& map, const Paveme
 }
 
 std::vector<std::string> run_output_names() {
-  std::vector<std::string> names = {"placements.csv", "stones.csv", "design.json", "report.json", "preview.png",
+  std::vector<std::string> names = {"placements.csv", "stones.csv", "design.json", "report.json", "report.html", "preview.png",
                                     "param.png",      "cut.stl",     "cut.3mf"};
   for (std::string& name : all_mesh_file_names()) names.push_back(std::move(name));
   return names;
@@ -83,7 +84,8 @@ void write_run_outputs(const fs::path& folder, const RunInfo& info, const Surfac
   nlohmann::json sections = nlohmann::json::object();
   if (extras) extras(set.staging(), timings, sections);
   check_stop();
-  write_run_report(set.staging(), info, map, pavement, timings, &sections);
+  const nlohmann::json report = write_run_report(set.staging(), info, map, pavement, timings, &sections);
+  write_report_html(set.staging(), report);
   check_stop();
   set.publish("report.json");
 }

@@ -40,7 +40,8 @@ void write_run_files(const std::filesystem::path& folder, const SurfaceMap& map,
 // The export stage as run_pipeline and the studio's export run it, as one set (io/output_set.h):
 // into a staging folder, write_run_files (timed as "export" in `timings`), then `extras` (the
 // caller's own files, written into the folder it is given, adding their timings and any
-// sections of their own to report.json), then write_run_report with every timing; then the set is published into `folder` at once. Throws
+// sections of their own to report.json), then write_run_report with every timing and
+// report.html from it (with the extras' preview.png, if any); then the set is published into `folder` at once. Throws
 // Interrupted, leaving `folder` as it was, when options.stop becomes true before publishing.
 using ExtraOutputs =
     std::function<void(const std::filesystem::path& staging, StageTimings& timings, nlohmann::json& report_sections)>;

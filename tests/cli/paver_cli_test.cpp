@@ -109,7 +109,7 @@ std::vector<fs::path> leftover_temporaries(const fs::path& folder) {
 }
 
 constexpr const char* kOutputs[] = {"placements.csv", "stones.csv", "elements.ply", "elements.obj", "elements.glb",
-                                    "paved.3mf", "design.json", "report.json"};
+                                    "paved.3mf", "design.json", "report.json", "report.html"};
 
 // ---------------------------------------------------------------------------------------------
 // paver --version
@@ -1159,6 +1159,10 @@ TEST_F(PaverRun, PngPreviewsAreWritten) {
     ASSERT_GT(bytes.size(), 10000u) << name;
     EXPECT_EQ(bytes.substr(1, 3), "PNG") << name;
   }
+  // report.html carries the preview inside it (base64 of a PNG starts "iVBORw0KGgo").
+  const std::string html = read_file_text(out / "report.html");
+  EXPECT_NE(html.find("src=\"data:image/png;base64,iVBORw0KGgo"), std::string::npos);
+  EXPECT_GT(html.size(), read_file_text(out / "preview.png").size());
   EXPECT_TRUE(leftover_temporaries(out).empty());
 }
 

@@ -1,0 +1,58 @@
+// report.html (report/report_html.cpp): what it shows comes from report.json's content.
+#include "report/report_html.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace paver {
+namespace {
+
+bool has(const std::string& html, const std::string& part) { return html.find(part) != std::string::npos; }
+
+nlohmann::json sample_report() {
+  return nlohmann::json::parse(R"json({
+    "design": {"units": "mm", "source": "<pendant & co>", "tessellation": "tri", "spacing": 1.6, "gap": 0.1, "margin": 0.3},
+    "surface": {"path": "pendant.obj", "faces": 1963, "area": 908.76},
+    "verdict": {"ok": false, "problems": ["2 pairs are closer than their radii plus the gap"]},
+    "stones": {"count": 367, "carat_total": 4.9545, "carat_rule": "sieve chart",
+               "rows": [{"shape": "gem", "diameter_mm": 1.5, "count": 367, "carat_each": 0.0135, "carat_total": 4.9545}]},
+    "beads": {"enabled": true, "count": 614, "diameter_mm_min": 0.256, "diameter_mm_max": 0.362},
+    "cut": {"cutter": "seat", "thickness": 1, "volume_mm3": 649.8, "shell_volume_mm3": 857.6, "files": ["cut.stl"],
+            "metal": [{"alloy": "18k yellow gold (750)", "density_g_cm3": 15.5, "grams": 10.07}]},
+    "quality_after": {"elements": 367, "contact_violations": 2, "min_clearance": -0.001, "boundary_crossings": 0,
+                      "fill": 0.98, "neighbor_ratio": {"p95": 1.07}, "regular_valence_share": 1.0}
+  })json");
+}
+
+TEST(ReportHtml, ShowsTheVerdictTheStonesTheBeadsAndTheMetalFromTheReport) {
+  const std::string html = report_html(sample_report(), "");
+  EXPECT_TRUE(has(html, "NOT OK")) << html;
+  EXPECT_TRUE(has(html, "<li>2 pairs are closer than their radii plus the gap</li>"));
+  EXPECT_TRUE(has(html, "<td>gem</td><td>1.50</td><td>367</td><td>0.0135</td><td>4.955</td>")) << html;
+  EXPECT_TRUE(has(html, "<b>4.955</b>"));
+  EXPECT_TRUE(has(html, "<b>614</b>, 0.26 to 0.36 mm"));
+  EXPECT_TRUE(has(html, "<td>18k yellow gold (750)</td><td>15.50</td><td>10.07</td>"));
+  EXPECT_TRUE(has(html, "&lt;pendant &amp; co&gt;")) << "text from files is escaped";
+  EXPECT_FALSE(has(html, "<pendant"));
+  EXPECT_TRUE(has(html, "No picture: run with --png"));
+}
+
+TEST(ReportHtml, EmbedsThePreviewSoTheFileStandsAlone) {
+  const std::string html = report_html(sample_report(), std::string("\x89PNG\r\n", 6));
+  EXPECT_TRUE(has(html, "src=\"data:image/png;base64,iVBORw0K\"")) << html.substr(0, 2000);
+  EXPECT_FALSE(has(html, "No picture"));
+}
+
+TEST(ReportHtml, Base64IsRfc4648) {
+  EXPECT_EQ(base64(""), "");
+  EXPECT_EQ(base64("f"), "Zg==");
+  EXPECT_EQ(base64("fo"), "Zm8=");
+  EXPECT_EQ(base64("foo"), "Zm9v");
+  EXPECT_EQ(base64("foobar"), "Zm9vYmFy");
+  EXPECT_EQ(base64(std::string("\xff\x00\x80", 3)), "/wCA");
+}
+
+}  // namespace
+}  // namespace paver
