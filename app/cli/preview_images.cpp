@@ -75,6 +75,28 @@ void PreviewImages::write(const std::filesystem::path& folder, const SurfaceMap&
   if (marks_defects) render::draw_defect_legend(param, kFewer, kMore);
   render::write_png(folder / "param.png", param);
 }
+void PreviewImages::write_solid(const std::filesystem::path& path, const SurfaceMesh& solid, const SurfaceMesh& surface,
+                                PreviewSize size) {
+  render::Renderer& r = *impl_->renderer;
+  // The renderer draws a map's surface: the solid with area-weighted vertex normals (its seats'
+  // edges shade softly, which reads better at this size than flat facets) and no map.
+  SurfaceMap view;
+  view.mesh = solid;
+  view.uv.assign(solid.positions.size(), glm::dvec2(0));
+  view.normals.assign(solid.positions.size(), glm::dvec3(0));
+  for (const glm::ivec3& t : solid.triangles) {
+    const glm::dvec3 n = glm::cross(solid.positions[std::size_t(t.y)] - solid.positions[std::size_t(t.x)],
+                                    solid.positions[std::size_t(t.z)] - solid.positions[std::size_t(t.x)]);
+    for (const int c : {t.x, t.y, t.z}) view.normals[std::size_t(c)] += n;
+  }
+  for (glm::dvec3& n : view.normals) n = glm::length(n) > 0 ? glm::normalize(n) : glm::dvec3(0, 0, 1);
+  r.set_surface(view);
+  r.set_elements(Elements{}, {}, nullptr);
+  render::SceneStyle style;
+  style.show_elements = false;
+  r.render_3d(size.width, size.height, render::frame_surface(surface), style);
+  render::write_png(path, r.read_back(0));
+}
 #else
 struct PreviewImages::Impl {};
 
@@ -82,6 +104,7 @@ PreviewImages PreviewImages::open() { throw InputError("--png: this paver was bu
 
 void PreviewImages::write(const std::filesystem::path&, const SurfaceMap&, const Pavement&, const ShapeMesh*,
                           PreviewSize) {}
+void PreviewImages::write_solid(const std::filesystem::path&, const SurfaceMesh&, const SurfaceMesh&, PreviewSize) {}
 #endif
 
 PreviewImages::PreviewImages(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}

@@ -1,6 +1,7 @@
 #pragma once
 // `paver run --png`: preview.png (the 3D view, framed on the surface, with the colour legend)
-// and param.png (the 2D parameter view), rendered offscreen by the shared Vulkan renderer.
+// and param.png (the 2D parameter view), and with --subtract cut.png (the metal with its seats),
+// rendered offscreen by the shared Vulkan renderer.
 #include "map/surface_map.h"
 #include "pipeline/pavement.h"
 
@@ -24,6 +25,11 @@ public:
 
   void write(const std::filesystem::path& folder, const SurfaceMap& map, const Pavement& pavement,
              const ShapeMesh* custom, PreviewSize size = {});
+
+  // cut.png: the metal with its seats (`solid`, closed), seen as preview.png sees the surface
+  // (`surface` frames the camera), without the stones so that the seats show.
+  void write_solid(const std::filesystem::path& path, const SurfaceMesh& solid, const SurfaceMesh& surface,
+                   PreviewSize size = {});
 
 private:
   struct Impl;

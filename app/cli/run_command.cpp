@@ -156,6 +156,7 @@ int run_run(const RunArgs& args) {
     writing_starts();
     progress.stage("export");
   };
+  std::optional<PreviewImages> previews;
   // The subtractive solid: its flags are checked now, the cut made with the other files.
   nlohmann::json cut_summary;
   std::function<void(const PipelineResult&, const fs::path&, StageTimings&, nlohmann::json&)> write_cut;
@@ -168,6 +169,7 @@ int run_run(const RunArgs& args) {
     if (!(thickness > 0)) throw InputError("--thickness 0: the metal needs a thickness above 0");
 #ifdef PAVER_WITH_CGAL
     request.extra_outputs.insert(request.extra_outputs.end(), {out / "cut.stl", out / "cut.3mf"});
+    if (args.png) request.extra_outputs.push_back(out / "cut.png");
     const CutterKind cutter = args.cutter == "seat" ? CutterKind::Seat : CutterKind::Element;
     write_cut = [&, thickness, cutter](const PipelineResult& r, const fs::path& folder, StageTimings& timings,
                                        nlohmann::json& sections) {
@@ -179,6 +181,7 @@ int run_run(const RunArgs& args) {
       write_mesh_stl(folder / "cut.stl", cut.mesh, "cut solid", &interrupt_requested());
       write_pavement_3mf(folder / "cut.3mf", &cut.mesh, r.pavement.elements, r.pavement.design.units,
                          {.custom = r.custom_shape.get(), .stop = &interrupt_requested()}, "metal");
+      if (previews) previews->write_solid(folder / "cut.png", cut.mesh, r.map->mesh);
       timings.emplace_back("cut", ms_since(t0));
       const double mm = millimetres_per_unit(r.pavement.design.units), mm3 = mm * mm * mm;
       sections["cut"] = {{"cutter", args.cutter},
@@ -199,7 +202,6 @@ int run_run(const RunArgs& args) {
     throw InputError("--subtract: this paver was built without CGAL (-DPAVER_WITH_CGAL=OFF); rebuild with it");
 #endif
   }
-  std::optional<PreviewImages> previews;
   if (args.png) {
     previews = PreviewImages::open();  // no device: refused now, before any work
     request.extra_outputs.insert(request.extra_outputs.end(), {out / "preview.png", out / "param.png"});
@@ -308,7 +310,7 @@ int run_run(const RunArgs& args) {
   std::string written = "placements.csv, stones.csv";
   for (const std::string& name : mesh_file_names(request_formats)) written += ", " + name;
   written += ", design.json, report.json, report.html";
-  if (!cut_summary.is_null()) written += ", cut.stl, cut.3mf";
+  if (!cut_summary.is_null()) written += args.png ? ", cut.stl, cut.3mf, cut.png" : ", cut.stl, cut.3mf";
   if (args.png) written += ", preview.png, param.png";
   std::printf("wrote    %s/{%s}\n", printable(out.string()).c_str(), written.c_str());
   return 0;

@@ -63,7 +63,7 @@ void write_run_files(const fs::path& folder, const SurfaceMap& map, const Paveme
 
 std::vector<std::string> run_output_names() {
   std::vector<std::string> names = {"placements.csv", "stones.csv", "design.json", "report.json", "report.html", "preview.png",
-                                    "param.png",      "cut.stl",     "cut.3mf"};
+                                    "param.png",      "cut.stl",     "cut.3mf",     "cut.png"};
   for (std::string& name : all_mesh_file_names()) names.push_back(std::move(name));
   return names;
 }
