@@ -50,14 +50,8 @@ void PreviewImages::write(const std::filesystem::path& folder, const SurfaceMap&
   const auto stone_colours =
       render::element_colours(pavement.elements, render::ColourMode::NeighbourRatio, pavement.design.elements.gap);
   auto colours = stone_colours;
-  // The beads are drawn with the stones, in their metal's colour (they are exported with them).
-  Elements with_beads;
-  if (pavement.beads.size() > 0) {
-    with_beads = pavement.elements;
-    with_beads.append(pavement.beads);
-    colours.resize(with_beads.size(), kind_colour(ElementKind::Bead));
-  }
-  const Elements& drawn = pavement.beads.size() > 0 ? with_beads : pavement.elements;
+  Elements with_beads;  // the beads are drawn with the stones, as they are exported
+  const Elements& drawn = stones_and_beads(pavement, with_beads, &colours);
   r.set_elements(drawn, colours, custom);
   r.set_pattern(map, pavement.pattern, pavement.points);
   render::SceneStyle style;

@@ -40,7 +40,9 @@ bool sync_scene(Scene& scene, render::Renderer& renderer, Document& doc, const L
   if (!result.pavement || result.revision != doc.revision) return false;
   const Pavement& p = *result.pavement;
   if (scene.pavement == &p && !recolour) return false;
-  renderer.set_elements(p.elements, render::element_colours(p.elements, views.colour_mode, p.design.elements.gap), custom_shape(doc));
+  auto colours = render::element_colours(p.elements, views.colour_mode, p.design.elements.gap);
+  Elements with_beads;  // drawn with the stones, as they are exported; stone i stays element i
+  renderer.set_elements(stones_and_beads(p, with_beads, &colours), colours, custom_shape(doc));
   renderer.set_pattern(*map, p.pattern, p.points);
   const bool first_upload = scene.pavement != &p;
   scene.pavement = &p;

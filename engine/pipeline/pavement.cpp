@@ -199,6 +199,15 @@ std::string lattice_failure(const PavementQuality& q) {
 
 }  // namespace
 
+const Elements& stones_and_beads(const Pavement& pavement, Elements& storage,
+                                 std::vector<std::array<std::uint8_t, 3>>* colours) {
+  if (pavement.beads.size() == 0) return pavement.elements;
+  storage = pavement.elements;
+  storage.append(pavement.beads);
+  if (colours) colours->resize(storage.size(), kind_colour(ElementKind::Bead));
+  return storage;
+}
+
 Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptions& options) {
   if (design.pattern.topology != Topology::Auto) return pave_with_topology(map, std::move(design), options);
   Design lattice = design;

@@ -15,6 +15,7 @@
 #include "pattern/unit_cell.h"
 
 #include <functional>
+#include <array>
 #include <string>
 #include <utility>
 #include <vector>
@@ -63,6 +64,12 @@ struct Pavement {
   PavementQuality after;             // the final pavement
   StageTimings timings;
 };
+
+// What the exports and the views show: the stones, then the beads (stone i keeps index i). The
+// pavement's own elements when it has no beads; otherwise a copy made in `storage`. `colours`
+// (one per stone, if given) gets the beads' metal colour appended.
+const Elements& stones_and_beads(const Pavement& pavement, Elements& storage,
+                                 std::vector<std::array<std::uint8_t, 3>>* colours = nullptr);
 
 // Unit cell of the design: tessellation at D, operators in order, bracing edges if asked.
 // Throws InputError naming the operator ("pattern.operators[1]: ...") when one fails.

@@ -40,12 +40,7 @@ void write_run_files(const fs::path& folder, const SurfaceMap& map, const Paveme
   auto colours = contact_colours(pavement.elements, pavement.design.elements.gap);
   // The stones, then the beads (if any): the beads are exported with them, in their metal's colour.
   Elements with_beads;
-  if (pavement.beads.size() > 0) {
-    with_beads = pavement.elements;
-    with_beads.append(pavement.beads);
-    colours.resize(with_beads.size(), kind_colour(ElementKind::Bead));
-  }
-  const Elements& exported = pavement.beads.size() > 0 ? with_beads : pavement.elements;
+  const Elements& exported = stones_and_beads(pavement, with_beads, &colours);
   mesh_options.colours = &colours;
   write_placements_csv(folder / "placements.csv", exported, options.stop);
   write_stones_csv(folder / "stones.csv", bill_of_stones(pavement.elements, pavement.design.units));

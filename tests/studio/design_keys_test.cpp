@@ -42,6 +42,11 @@ TEST(DesignKeys, EveryKindOfValue) {
   EXPECT_EQ(set_design_key(d, "placement.offset[1]", "3").placement.offset, glm::dvec2(0, 3));
   EXPECT_EQ(set_design_key(d, "elements.edge[0].t", "0.25").elements.edge[0].t, 0.25);
   EXPECT_EQ(set_design_key(d, "solver.filter_base", "initial").solver.filter_base, FilterBase::Initial);
+  // The jeweller's keys, as the studio's Stones fields and scripts set them.
+  EXPECT_EQ(set_design_key(d, "elements.margin", "0.5").elements.margin, 0.5);
+  EXPECT_TRUE(set_design_key(d, "elements.beads.enabled", "true").elements.beads.enabled);
+  EXPECT_EQ(set_design_key(d, "elements.beads.scale", "1.25").elements.beads.scale, 1.25);
+  EXPECT_EQ(set_design_key(d, "units", "in").units, Units::Inch);
   EXPECT_EQ(d.solver.dt, SolverParams{}.dt) << "the given design is untouched";
 }
 
@@ -53,6 +58,8 @@ TEST(DesignKeys, UnknownKeysAndBadValuesAreNamed) {
   EXPECT_NE(error_of(d, "solver.iterations", "2.5").find("solver.iterations"), std::string::npos);
   EXPECT_NE(error_of(d, "elements.vertex.shape", "cube").find("elements.vertex.shape"), std::string::npos);
   EXPECT_NE(error_of(d, "elements.vertex.scale", "2").find("elements.vertex.scale"), std::string::npos);
+  EXPECT_NE(error_of(d, "elements.margin", "-1").find("elements.margin"), std::string::npos);
+  EXPECT_NE(error_of(d, "elements.beads.scale", "3").find("elements.beads.scale"), std::string::npos);
 }
 
 }  // namespace

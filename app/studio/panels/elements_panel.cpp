@@ -39,10 +39,69 @@ bool fraction_slider(Document& doc, Design& d, const char* label, double& value,
   return change_design(doc, d, ImGui::IsItemActive());
 }
 
+// A length typed in the surface's unit that applies on Enter or when the field loses focus
+// (never on every keystroke: typing 1.5 must not pave at 1 first).
+bool length_field(const char* label, double& value, const char* unit) {
+  double typed = value;
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8);
+  const bool entered = ImGui::InputDouble(label, &typed, 0, 0, "%.4g", ImGuiInputTextFlags_EnterReturnsTrue);
+  const bool left = ImGui::IsItemDeactivatedAfterEdit();
+  ImGui::SameLine();
+  ImGui::TextUnformatted(unit);
+  if ((entered || left) && std::isfinite(typed) && typed >= 0 && typed != value) {
+    value = typed;
+    return true;
+  }
+  return false;
+}
+
+void jewellery_section(Document& doc, Design& d) {
+  section("Stones (jewellery)");
+  const std::string unit(units_name(d.units));
+  if (ImGui::BeginCombo("units", unit.c_str())) {
+    for (const Units u : {Units::Millimetre, Units::Centimetre, Units::Metre, Units::Inch})
+      if (ImGui::Selectable(std::string(units_name(u)).c_str(), u == d.units) && u != d.units) {
+        d.units = u;
+        change_design(doc, d);
+      }
+    ImGui::EndCombo();
+  }
+  help_marker("The unit of the surface's coordinates, and so of D, the gap, the margin and the stone "
+              "size; the bill of stones and carats are given in millimetres from it.");
+  // D as the last run resolved it when the design derives it from the surface (spacing 0).
+  const double spacing = d.pattern.spacing > 0 ? d.pattern.spacing
+                         : doc.result.pavement ? doc.result.pavement->design.pattern.spacing
+                                               : 0;
+  double stone = d.elements.vertex.enabled ? d.elements.vertex.scale * spacing : 0;
+  if (length_field("stone diameter", stone, unit.c_str()) && stone > 0) {
+    set_stone_size(d, stone);
+    change_design(doc, d);
+  }
+  help_marker("Round brilliants (gems) of this girdle diameter on the vertices: D becomes stone + gap. "
+              "Type a size and press Enter.");
+  if (length_field("gap##stones", d.elements.gap, unit.c_str())) {
+    if (stone > 0) {  // the stones keep their size: D = stone + gap (their shape stays)
+      d.pattern.spacing = stone + d.elements.gap;
+      d.elements.vertex.scale = stone / d.pattern.spacing;
+    }
+    change_design(doc, d);
+  }
+  help_marker("Required free space between neighbouring elements (0 = touching): two collide when their "
+              "centres are closer than the sum of their radii plus the gap. JewelCraft's default is 0.2 mm. "
+              "With a stone size, D grows with it so the stones keep their size.");
+  if (length_field("edge margin", d.elements.margin, unit.c_str())) change_design(doc, d);
+  help_marker("No stone comes nearer the surface's edge than this (0 = its edge may touch the rim).");
+  if (ImGui::Checkbox("beads between stones", &d.elements.beads.enabled)) change_design(doc, d);
+  help_marker("A small bead of metal (a shared prong) in the gap between every three stones in contact; "
+              "triangle patterns have them, grid and hex do not.");
+  if (d.elements.beads.enabled) fraction_slider(doc, d, "bead size", d.elements.beads.scale, 0.5, 2.0);
+}
+
 }  // namespace
 
 void elements_panel(Document& doc, UiState& ui) {
   Design d = doc.design;
+  jewellery_section(doc, d);
   section("V-elements (on the pattern's vertices)");
   if (ImGui::Checkbox("enabled", &d.elements.vertex.enabled)) change_design(doc, d);
   fraction_slider(doc, d, "s##vertex", d.elements.vertex.scale, 0.05, 1.0);
@@ -107,14 +166,6 @@ void elements_panel(Document& doc, UiState& ui) {
     }
   }
   help_marker("Elements whose shape is 'custom' use this mesh, normalised to unit width.");
-  double gap = d.elements.gap;
-  if (ImGui::InputDouble("gap", &gap, 0.01, 0.1, "%.4g") && std::isfinite(gap) && gap >= 0) {
-    d.elements.gap = gap;
-    change_design(doc, d, ImGui::IsItemActive());
-  }
-  help_marker("Required free space between neighbouring elements, in surface units (0 = touching). "
-              "Two elements collide when their centres are closer than the sum of their radii plus "
-              "the gap.");
   if (ImGui::Checkbox("allow overlapping elements", &d.elements.allow_overlap)) change_design(doc, d);
   help_marker("Designs whose elements intersect on purpose (paper Fig. 15): no overlap check, no "
               "collision resolution.");

@@ -4,6 +4,7 @@
 #include "panels.h"
 
 #include "elements/contact_rule.h"
+#include "report/bill_of_stones.h"
 
 #include "../studio.h"
 
@@ -50,6 +51,42 @@ void quality_table(const Pavement& p) {
   ImGui::EndTable();
 }
 
+// What a jeweller orders from: stones by shape and size in mm, carats for round brilliants, and the
+// beads (report/bill_of_stones.h, the same figures as stones.csv).
+void bill_table(const Pavement& p) {
+  const BillOfStones bill = bill_of_stones(p.elements, p.design.units);
+  if (ImGui::BeginTable("stones", 5, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
+    for (const char* name : {"shape", "size (mm)", "count", "ct each", "ct"}) ImGui::TableSetupColumn(name);
+    ImGui::TableHeadersRow();
+    for (const StoneRow& row : bill.rows) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(std::string(shape_name(row.shape)).c_str());
+      ImGui::TableNextColumn();
+      ImGui::Text("%.2f", row.diameter_mm);
+      ImGui::TableNextColumn();
+      ImGui::Text("%ld", row.count);
+      ImGui::TableNextColumn();
+      if (row.carat_each) ImGui::Text("%.4f", *row.carat_each); else ImGui::TextUnformatted("-");
+      ImGui::TableNextColumn();
+      if (row.carat_each) ImGui::Text("%.3f", row.carat_total); else ImGui::TextUnformatted("-");
+    }
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted("total");
+    ImGui::TableNextColumn();
+    ImGui::TableNextColumn();
+    ImGui::Text("%ld", bill.count);
+    ImGui::TableNextColumn();
+    ImGui::TableNextColumn();
+    ImGui::Text("%.3f", bill.carat_total);
+    ImGui::EndTable();
+  }
+  if (p.design.elements.beads.enabled) ImGui::Text("beads (shared prongs): %zu", p.beads.size());
+  help_marker("Carats for round brilliants (gem): the melee sieve chart from 0.75 to 3.65 mm, the d^2 x depth "
+              "x 0.0061 rule outside it (docs/stones.md). Other shapes are counted, not weighed.");
+}
+
 }  // namespace
 
 void report_panel(const Studio& s) {
@@ -74,6 +111,9 @@ void report_panel(const Studio& s) {
     ImGui::Text("edit to result on screen: %.0f ms", r.latency_ms);
   help_marker("From the last design change to the frame that showed its final, optimized pavement; it "
               "includes the wait for a dragged slider to rest.");
+
+  section("Bill of stones");
+  bill_table(p);
 
   section("Quality");
   quality_table(p);
