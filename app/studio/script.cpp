@@ -19,7 +19,7 @@ using Kind = ScriptCommand::Kind;
 constexpr std::pair<std::string_view, Kind> kCommands[] = {
     {"open", Kind::Open},       {"design", Kind::Design}, {"pattern", Kind::Pattern},
     {"spacing", Kind::Spacing}, {"set", Kind::Set},       {"optimize", Kind::Optimize},
-    {"undo", Kind::Undo},       {"redo", Kind::Redo},     {"export", Kind::Export},
+    {"undo", Kind::Undo},       {"redo", Kind::Redo},     {"export", Kind::Export}, {"cut", Kind::Cut},
     {"screenshot", Kind::Screenshot}, {"view3d", Kind::View3d}, {"view2d", Kind::View2d},
     {"panel", Kind::Panel},     {"wait", Kind::Wait},     {"quit", Kind::Quit}};
 
@@ -111,6 +111,17 @@ bool parse_script_line(std::string_view line, int line_number, const std::string
       if (value.empty()) throw InputError(where + "set " + std::string(key) + " needs a value");
       out.text = std::string(key);
       out.value = std::string(value);
+      break;
+    }
+    case Kind::Cut: {
+      need_argument("the metal's thickness and a folder, e.g. cut 1 out/metal");
+      const auto [thickness, folder] = first_word(rest);
+      const auto [ptr, ec] = std::from_chars(thickness.data(), thickness.data() + thickness.size(), out.number);
+      if (ec != std::errc() || ptr != thickness.data() + thickness.size() || !std::isfinite(out.number) ||
+          !(out.number > 0))
+        throw InputError(where + "cut '" + std::string(thickness) + "': the thickness must be a number above 0");
+      if (folder.empty()) throw InputError(where + "cut " + std::string(thickness) + " needs a folder");
+      out.text = std::string(folder);
       break;
     }
     case Kind::Wait: {

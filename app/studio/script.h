@@ -11,12 +11,12 @@
 namespace paver::studio {
 
 struct ScriptCommand {
-  enum class Kind { Open, Design, Pattern, Spacing, Set, Optimize, Undo, Redo, Export, Screenshot, View3d, View2d,
-                    Panel, Wait, Quit };
+  enum class Kind { Open, Design, Pattern, Spacing, Set, Optimize, Undo, Redo, Export, Cut, Screenshot, View3d,
+                    View2d, Panel, Wait, Quit };
   Kind kind = Kind::Quit;
-  std::string text;    // open/design/export/screenshot: the path; pattern, panel: the name; set: the key
+  std::string text;    // open/design/export/cut/screenshot: the path; pattern, panel: the name; set: the key
   std::string value;   // set: the value as written
-  double number = 0;   // spacing: D
+  double number = 0;   // spacing: D; cut: the metal's thickness
   int frames = 0;      // wait: N
   int line = 0;        // 1-based line in the script, for messages
 };

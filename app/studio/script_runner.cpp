@@ -15,7 +15,7 @@ using Kind = ScriptCommand::Kind;
 // Long enough for a dense surface's map on a slow machine; a hang still ends the session.
 constexpr auto kTimeout = std::chrono::minutes(10);
 
-bool needs_final_pavement(Kind kind) { return kind == Kind::Optimize || kind == Kind::Export; }
+bool needs_final_pavement(Kind kind) { return kind == Kind::Optimize || kind == Kind::Export || kind == Kind::Cut; }
 
 std::string describe(const ScriptCommand& c) {
   std::string text(command_name(c.kind));
@@ -25,6 +25,11 @@ std::string describe(const ScriptCommand& c) {
     return text + number;
   }
   if (c.kind == Kind::Wait) return text + " " + std::to_string(c.frames);
+  if (c.kind == Kind::Cut) {
+    char number[32];
+    std::snprintf(number, sizeof number, " %g ", c.number);
+    return text + number + c.text;
+  }
   if (!c.text.empty()) text += " " + c.text;
   if (!c.value.empty()) text += " " + c.value;
   return text;
@@ -64,6 +69,7 @@ void ScriptRunner::act(Studio& s, const ScriptCommand& c) {
       if (!redo(doc)) throw InputError("redo: there is nothing to redo");
       break;
     case Kind::Export: export_outputs(s, c.text); break;
+    case Kind::Cut: cut_metal(s, c.text, c.number); break;
     case Kind::Screenshot: s.ui.screenshot = c.text; break;
     case Kind::View3d: s.views.large_3d = true; break;
     case Kind::View2d: s.views.large_3d = false; break;
@@ -78,6 +84,7 @@ bool ScriptRunner::settled(const Studio& s, const ScriptCommand& c) {
     case Kind::Open: return !s.loader.busy() && s.doc.surface.path == std::filesystem::path(c.text);
     case Kind::Screenshot: return !s.ui.screenshot;  // after_present wrote it
     case Kind::Wait: return frames_left_-- <= 0;
+    case Kind::Cut: return !s.cutter.busy() && !s.cutter.has_outcome();  // and its outcome reported
     default: return true;
   }
 }

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cctype>
 #include <chrono>
 #include <cstdio>
@@ -49,6 +50,15 @@ void take_loaded_surface(Studio& s) {
   for (const auto& warning : opened.warnings) status += "; warning: " + warning;
   set_surface(s.doc, Surface{opened.path, opened.map, std::move(opened.warnings), std::move(opened.timings)});
   report_status(s.doc, status);
+}
+
+void take_cut_outcome(Studio& s) {
+  std::optional<CutOutcome> outcome = s.cutter.take_outcome();
+  if (!outcome) return;
+  if (outcome->ok)
+    report_status(s.doc, outcome->message);
+  else
+    report_error(s.doc, outcome->message);
 }
 
 void take_run_outcome(Studio& s) {
@@ -120,6 +130,18 @@ void export_outputs(Studio& s, const fs::path& folder) {
   report_status(s.doc, "exported to " + folder.string());
 }
 
+void cut_metal(Studio& s, const fs::path& folder, double thickness) {
+  if (!result_is_final(s))
+    throw InputError("nothing to cut yet: the pavement for this design is not finished (run it, or wait)");
+  if (!(thickness > 0) || !std::isfinite(thickness))
+    throw InputError("metal thickness " + std::to_string(thickness) + ": it needs to be above 0 (surface units)");
+  const std::vector<fs::path> inputs = {s.doc.surface.path, s.doc.design_path, s.doc.design.elements.custom_shape};
+  refuse_overwriting_inputs(inputs, {folder / "cut.stl", folder / "cut.3mf"});
+  check_output_folder(folder);
+  s.cutter.start(s.doc.surface.map, s.doc.result.pavement, thickness, folder);
+  report_status(s.doc, "cutting the seats into the metal...");
+}
+
 void save_view_png(Studio& s, const fs::path& path) {
   if (!s.doc.surface.map) throw InputError("nothing to save yet: open a surface first");
   render::Image image = s.renderer.read_back(0);
@@ -172,6 +194,7 @@ void update_studio(Studio& s) {
   for (const std::string& path : s.window.take_dropped_paths()) open_any(s, path);
   take_loaded_surface(s);
   take_run_outcome(s);
+  take_cut_outcome(s);
   if (!ImGui::IsAnyItemActive()) end_gesture(s.doc);
   if (s.run.auto_run && s.doc.surface.map && !s.loader.busy() && s.live.revision() != s.doc.revision &&
       Clock::now() >= s.doc.run_due)

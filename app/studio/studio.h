@@ -8,6 +8,7 @@
 #include "live_pavement.h"
 #include "scene.h"
 #include "surface_loader.h"
+#include "metal_cutter.h"
 #include "view_settings.h"
 
 #include "renderer.h"
@@ -46,6 +47,7 @@ struct UiState {
   bool quit_dialog = false;            // asking Save / Discard / Cancel
   std::optional<std::filesystem::path> screenshot;  // write the next presented frame here
   std::string select_panel;            // a script's `panel NAME`: selected on the next frame
+  double cut_thickness = 1;            // Cut metal: the metal's thickness, surface units
 };
 
 struct Studio {
@@ -55,6 +57,7 @@ struct Studio {
   render::Renderer& renderer;
   Document doc;
   SurfaceLoader loader;
+  MetalCutter cutter;
   LivePavement live;
   RunSettings run;
   ViewSettings views;
@@ -76,6 +79,10 @@ void set_backend(Studio& s, const std::string& name);
 // report.json into `folder`,
 // as `paver run` does. Throws InputError (nothing to export yet, a bad folder).
 void export_outputs(Studio& s, const std::filesystem::path& folder);
+// Starts cutting the final pavement's seats into metal `thickness` thick (MetalCutter); cut.stl
+// and cut.3mf go into `folder` when it is done. Throws InputError (nothing to cut yet, a bad
+// thickness or folder, an input in the way).
+void cut_metal(Studio& s, const std::filesystem::path& folder, double thickness);
 // The 3D view as a PNG, at its current size. Throws InputError.
 void save_view_png(Studio& s, const std::filesystem::path& path);
 

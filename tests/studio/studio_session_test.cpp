@@ -110,7 +110,8 @@ TEST_F(StudioSession, ScriptedEditExportsWhatTheCliWritesAndScreenshotShowsThePa
   EXPECT_NE(r.out.find("latency_ms "), std::string::npos) << describe(r);
 
   // Redo brought dt 0.25 back, and the export carries it.
-  for (const char* name : {"placements.csv", "elements.ply", "elements.obj", "elements.stl", "design.json", "report.json"})
+  for (const char* name : {"placements.csv", "stones.csv", "elements.ply", "elements.obj", "elements.stl",
+                           "elements.glb", "paved.3mf", "design.json", "report.json", "report.html"})
     EXPECT_TRUE(fs::is_regular_file(exported / name)) << name;
   const nlohmann::json design = nlohmann::json::parse(read_text(exported / "design.json"));
   EXPECT_EQ(design["solver"]["dt"].get<double>(), 0.25);
@@ -164,6 +165,38 @@ TEST_F(StudioSession, ScriptedEditExportsWhatTheCliWritesAndScreenshotShowsThePa
   // The surface went into the recent files, kept in the config folder.
   EXPECT_NE(read_text(dir_ / "config/paver/recent.txt").find("dome.obj"), std::string::npos);
 }
+
+#ifdef PAVER_WITH_CGAL
+// The studio's Cut metal (in the background) writes the metal `paver run --subtract` writes for
+// the same design, byte for byte.
+TEST_F(StudioSession, CutMetalWritesWhatTheCliSubtractWrites) {
+  const fs::path cut = dir_ / "cut", exported = dir_ / "export", script = dir_ / "cut.txt";
+  std::ofstream(script) << "open assets/surfaces/pendant.obj\n"
+                           "pattern tri\n"
+                           "set elements.vertex.shape gem\n"
+                           "set elements.vertex.scale 0.9375\n"
+                           "set elements.gap 0.1\n"
+                           "spacing 1.6\n"
+                           "optimize\n"
+                           "export " << exported.string() << "\n"
+                        << "cut 1 " << cut.string() << "\n"
+                        << "quit\n";
+  const Outcome r = studio("--script " + quote(script.string()) + " --backend cpu --width 1280 --height 800", dir_);
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  ASSERT_TRUE(fs::is_regular_file(cut / "cut.stl")) << describe(r);
+  ASSERT_TRUE(fs::is_regular_file(cut / "cut.3mf"));
+
+  const fs::path cli_out = dir_ / "cli";
+  const Outcome cli = run_in_source(quote(PAVER_CLI) + " run assets/surfaces/pendant.obj --design " +
+                                    quote((exported / "design.json").string()) +
+                                    " --backend cpu --subtract --thickness 1 --formats ply --out " + quote(cli_out.string()),
+                                dir_);
+  ASSERT_EQ(cli.exit_code, 0) << describe(cli);
+  const std::string studio_stl = read_text(cut / "cut.stl");
+  EXPECT_GT(studio_stl.size(), 100000u);
+  EXPECT_TRUE(studio_stl == read_text(cli_out / "cut.stl")) << "cut.stl differs from paver run --subtract's";
+}
+#endif
 
 TEST_F(StudioSession, AFailingCommandStopsTheSessionWithItsError) {
   const fs::path script = dir_ / "bad.txt";

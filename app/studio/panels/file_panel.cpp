@@ -85,8 +85,8 @@ void file_panel(Studio& s) {
   ImGui::InputText("folder", &s.ui.export_dir);
   ImGui::BeginDisabled(!result_is_final(s));
   if (ImGui::Button("Export all")) guarded(doc, [&] { export_outputs(s, s.ui.export_dir); });
-  help_marker("placements.csv, elements.ply, elements.obj, elements.stl, design.json and report.json, as "
-              "`paver run` writes them.");
+  help_marker("placements.csv, stones.csv, elements.ply/.obj/.stl/.glb, paved.3mf, design.json, report.json "
+              "and report.html, as `paver run` writes them.");
   if (ImGui::Button("placements.csv"))
     export_one(s, "placements.csv", [](const fs::path& p, const Elements& e, const ElementMeshOptions&) {
       write_placements_csv(p, e);
@@ -98,6 +98,18 @@ void file_panel(Studio& s) {
   ImGui::SameLine();
   if (ImGui::Button("STL")) export_one(s, "elements.stl", write_elements_stl);
   ImGui::EndDisabled();
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6);
+  ImGui::InputDouble("metal thickness", &s.ui.cut_thickness, 0, 0, "%.3g");
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!result_is_final(s) || s.cutter.busy() || !MetalCutter::available());
+  if (ImGui::Button(s.cutter.busy() ? "cutting..." : "Cut metal"))
+    guarded(doc, [&] { cut_metal(s, s.ui.export_dir, s.ui.cut_thickness); });
+  ImGui::EndDisabled();
+  help_marker(MetalCutter::available()
+                  ? "The surface thickened into metal this thick (surface units, against the normals) with a seat "
+                    "cut for each stone and the beads joined: cut.stl and cut.3mf in the folder above, as `paver "
+                    "run --subtract` writes them. It runs in the background."
+                  : "This studio was built without CGAL (-DPAVER_WITH_CGAL=OFF): no cut.");
   ImGui::InputText("##png", &s.ui.png_path);
   ImGui::SameLine();
   if (ImGui::Button("3D view PNG")) guarded(doc, [&] { save_view_png(s, s.ui.png_path); });

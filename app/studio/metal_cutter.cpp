@@ -1,0 +1,90 @@
+#include "metal_cutter.h"
+
+#include "io/element_export.h"
+#include "io/threemf_export.h"
+#include "io/output_guard.h"
+#include "report/metal_weight.h"
+#ifdef PAVER_WITH_CGAL
+#include "cut/solid_cut.h"
+#endif
+
+#include <cstdio>
+#include <mutex>
+
+namespace paver::studio {
+
+struct MetalCutter::Shared {
+  std::mutex mutex;
+  bool busy = false;
+  std::optional<CutOutcome> outcome;
+};
+
+bool MetalCutter::available() {
+#ifdef PAVER_WITH_CGAL
+  return true;
+#else
+  return false;
+#endif
+}
+
+void MetalCutter::start(std::shared_ptr<const SurfaceMap> map, std::shared_ptr<const Pavement> pavement,
+                        double thickness, const std::filesystem::path& folder) {
+  auto shared = std::make_shared<Shared>();
+  shared->busy = true;
+  shared_ = shared;
+  jobs_.start([shared, map = std::move(map), pavement = std::move(pavement), thickness,
+               folder](std::stop_token stop) {
+    CutOutcome outcome;
+#ifdef PAVER_WITH_CGAL
+    try {
+      std::atomic<bool> stopped{false};
+      std::stop_callback on_stop(stop, [&] { stopped = true; });
+      const CutSolid cut = cut_pavement(*map, pavement->elements,
+                                        {.cutter = CutterKind::Seat, .thickness = thickness, .stop = &stopped,
+                                         .beads = &pavement->beads});
+      make_output_folder(folder);
+      write_mesh_stl(folder / "cut.stl", cut.mesh, "cut solid", &stopped);
+      write_pavement_3mf(folder / "cut.3mf", &cut.mesh, pavement->elements, pavement->design.units, {.stop = &stopped},
+                         "metal");
+      const double mm = millimetres_per_unit(pavement->design.units);
+      const double mm3 = cut.volume * mm * mm * mm;
+      char text[256];
+      std::snprintf(text, sizeof text, "wrote %s/cut.stl and cut.3mf: %d seats, metal %.4g mm3, %.2f g of 18k gold, "
+                    "%.0f ms", folder.string().c_str(), cut.cutters, mm3,
+                    metal_grams(cut.volume, pavement->design.units, jewellery_alloys()[1]), cut.milliseconds);
+      outcome = {true, text};
+    } catch (const std::exception& e) {
+      outcome = {false, std::string("cut metal: ") + e.what()};
+    }
+#else
+    (void)map, (void)pavement, (void)thickness, (void)folder, (void)stop;
+    outcome = {false, "cut metal: this studio was built without CGAL (-DPAVER_WITH_CGAL=OFF)"};
+#endif
+    std::lock_guard lock(shared->mutex);
+    shared->busy = false;
+    shared->outcome = std::move(outcome);
+  });
+}
+
+bool MetalCutter::busy() const {
+  if (!shared_) return false;
+  std::lock_guard lock(shared_->mutex);
+  return shared_->busy;
+}
+
+bool MetalCutter::has_outcome() const {
+  if (!shared_) return false;
+  std::lock_guard lock(shared_->mutex);
+  return shared_->outcome.has_value();
+}
+
+std::optional<CutOutcome> MetalCutter::take_outcome() {
+  jobs_.reap();
+  if (!shared_) return std::nullopt;
+  std::lock_guard lock(shared_->mutex);
+  std::optional<CutOutcome> outcome = std::move(shared_->outcome);
+  shared_->outcome.reset();
+  return outcome;
+}
+
+}  // namespace paver::studio

@@ -1,0 +1,39 @@
+#pragma once
+// The studio's "Cut metal": the pavement's metal with its seats (engine/cut, as `paver run
+// --subtract` makes it) computed on a thread of its own, so the window keeps drawing for the
+// seconds a thousand seats take, then cut.stl and cut.3mf written into the export folder. A new
+// cut abandons one in progress.
+#include "background_jobs.h"
+#include "map/surface_map.h"
+#include "pipeline/pavement.h"
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace paver::studio {
+
+struct CutOutcome {
+  bool ok = false;
+  std::string message;  // what was written and the metal's weight, or what went wrong
+};
+
+class MetalCutter {
+public:
+  // Whether this studio was built with the cut (CGAL); without it start() reports why not.
+  static bool available();
+  void start(std::shared_ptr<const SurfaceMap> map, std::shared_ptr<const Pavement> pavement, double thickness,
+             const std::filesystem::path& folder);
+  bool busy() const;
+  bool has_outcome() const;                  // finished and not yet taken
+  std::optional<CutOutcome> take_outcome();  // once per finished cut
+
+  struct Shared;
+
+private:
+  std::shared_ptr<Shared> shared_;
+  BackgroundJobs jobs_;
+};
+
+}  // namespace paver::studio
