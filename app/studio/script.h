@@ -1,7 +1,7 @@
 #pragma once
 // The studio's scripted session (--script FILE): one command per line, `#` starts a comment.
 //   open PATH | design PATH | pattern tri|grid|hex | spacing D | set KEY VALUE | optimize |
-//   undo | redo | export DIR | screenshot FILE.png | view3d | view2d | panel NAME | wait N | quit
+//   undo | redo | export DIR | cut THICKNESS DIR | screenshot FILE.png | view3d | view2d | panel NAME | wait N | quit
 // (panel shows a side panel: file, pattern, elements, optimize, report or help)
 // Parsing is separate from running so that a typo fails before anything is done.
 #include <string>
