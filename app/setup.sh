@@ -47,8 +47,9 @@ case "$mode" in
     out=out/demo
     build/bin/paver run assets/surfaces/dome.obj --design assets/designs/dome_hex_d6.json --out "$out" --png
     echo
-    echo "setup: results are in $(pwd)/$out (placements.csv, stones.csv, elements.ply/.obj, design.json, report.json,"
-    echo "       preview.png: the paved surface, param.png: the pattern on the 2D map)"
+    echo "setup: results are in $(pwd)/$out (placements.csv, stones.csv, elements.ply/.obj/.glb, paved.3mf,"
+    echo "       design.json, report.json, report.html to print, preview.png: the paved surface, param.png: the"
+    echo "       pattern on the 2D map)"
     ;;
   test)
     if ! ctest --test-dir build --output-on-failure -j"$jobs"; then
@@ -71,7 +72,9 @@ case "$mode" in
       -DCMAKE_CXX_COMPILER=clang++ \
       -DPAVER_FUZZ=ON -DPAVER_WITH_VULKAN=OFF -DPAVER_WITH_CGAL=OFF -DPAVER_BUILD_BENCH=OFF
     cmake --build build-sanitize -j"$jobs"
-    export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 UBSAN_OPTIONS=print_stacktrace=1
+    # The leak suppressions are third-party only, each with its reason (tests/sanitize/lsan.supp).
+    export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 UBSAN_OPTIONS=print_stacktrace=1 \
+      LSAN_OPTIONS=suppressions="$PWD/tests/sanitize/lsan.supp"
     if ! ctest --test-dir build-sanitize --output-on-failure -j"$jobs"; then
       echo
       echo "setup: tests failed under the sanitizers; running the failed ones again, one at a time:"
