@@ -135,14 +135,17 @@ struct DisjointSets {
   std::vector<std::size_t> parent;
 };
 
-// One mesh of the `parts` (closed solids, part i near `centres[i]`, none wider than `widest`):
-// those that touch are found among near neighbours and united cluster by cluster, and the
-// clusters, disjoint, are joined as one mesh of separate closed parts. `united` counts the parts
-// that touched another.
+// One mesh of the `parts` (closed solids, part i within `reach` of `centres[i]`): those that
+// touch are found among near neighbours and united cluster by cluster, and the clusters,
+// disjoint, are joined as one mesh of separate closed parts. `united` counts the parts that
+// touched another.
 template <class CheckStop>
-Mesh merge_solids(std::vector<Mesh>& parts, const std::vector<glm::dvec3>& centres, double widest,
+Mesh merge_solids(std::vector<Mesh>& parts, const std::vector<glm::dvec3>& centres, double reach,
                   const CheckStop& check_stop, int& united) {
   const std::size_t n = parts.size();
+  // Two parts can touch only when their centres are within 2 reach: cells that wide put them in
+  // neighbouring cells.
+  const double widest = 2 * reach > 0 ? 2 * reach : 1.0;
   DisjointSets sets(n);
   std::map<std::array<long, 3>, std::vector<std::size_t>> cells;
   const auto cell_of = [&](const glm::dvec3& p) {
@@ -212,16 +215,16 @@ CutSolid cut_pavement(const SurfaceMap& map, const Elements& elements, const Cut
   const std::size_t n = elements.size();
   std::vector<Mesh> cutters;
   cutters.reserve(n);
-  double widest = 0;
+  double reach = 0;  // the farthest any cutter's point lies from its element's centre
   for (std::size_t i = 0; i < n; ++i) {
     const double d = elements.diameter[i];
     const SurfaceMesh unit = unit_cutter(options.cutter, shapes[elements.shape[i]], cutter_reach_above(),
                                          cutter_reach_below(options.thickness, d));
+    for (const glm::dvec3& v : unit.positions) reach = std::max(reach, d * glm::length(v));
     cutters.push_back(to_cgal(placed_cutter(unit, elements.position[i], elements.normal[i], d)));
-    widest = std::max(widest, d * std::max(1.0, cutter_reach_below(options.thickness, d)));
   }
   check_stop();
-  Mesh all_cutters = merge_solids(cutters, elements.position, widest, check_stop, result.united_cutters);
+  Mesh all_cutters = merge_solids(cutters, elements.position, reach, check_stop, result.united_cutters);
   result.cutters = static_cast<int>(n);
   check_stop();
 
@@ -236,13 +239,13 @@ CutSolid cut_pavement(const SurfaceMap& map, const Elements& elements, const Cut
     const Elements& beads = *options.beads;
     const SurfaceMesh unit = unit_cutter(CutterKind::Element, make_builtin_shape(ShapeKind::Sphere), 0, 0);
     std::vector<Mesh> spheres;
-    double widest_bead = 0;
+    double bead_reach = 0;
     for (std::size_t b = 0; b < beads.size(); ++b) {
       spheres.push_back(to_cgal(placed_cutter(unit, beads.position[b], beads.normal[b], beads.diameter[b])));
-      widest_bead = std::max(widest_bead, beads.diameter[b]);
+      bead_reach = std::max(bead_reach, 0.5 * beads.diameter[b]);
     }
     int united_beads = 0;
-    Mesh all_beads = merge_solids(spheres, beads.position, widest_bead, check_stop, united_beads);
+    Mesh all_beads = merge_solids(spheres, beads.position, bead_reach, check_stop, united_beads);
     Mesh joined;
     if (!PMP::corefine_and_compute_union(cut, all_beads, joined))
       throw std::runtime_error("cut: joining the beads to the metal did not give a manifold solid");
