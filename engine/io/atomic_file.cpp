@@ -55,45 +55,6 @@ void remove_quietly(const std::filesystem::path& path) {
 
 }  // namespace
 
-void write_file_atomically(const std::filesystem::path& path,
-                           const std::function<void(std::ostream&)>& write) {
-  if (path.filename().empty()) fail(path, "the path names a folder, not a file");
-  const std::filesystem::path folder = folder_of(path);
-  std::error_code ec;
-  if (!std::filesystem::is_directory(folder, ec))
-    fail(path, "the folder " + folder.string() + " does not exist (create it first)");
-
-  const std::filesystem::path temporary = temporary_path_beside(path);
-  std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-  if (!out.is_open()) {
-    remove_quietly(temporary);
-    fail(path, "the folder " + folder.string() + " is not writable");
-  }
-
-  try {
-    write(out);
-  } catch (...) {
-    out.close();
-    remove_quietly(temporary);
-    throw;
-  }
-
-  // A full disk or an I/O error only shows in the stream state, often not before flush or close.
-  out.flush();
-  const bool written = static_cast<bool>(out);
-  out.close();
-  if (!written || out.fail()) {
-    remove_quietly(temporary);
-    fail(path, "writing failed (is the disk full?)");
-  }
-
-  std::filesystem::rename(temporary, path, ec);
-  if (ec) {
-    remove_quietly(temporary);
-    fail(path, "cannot replace the file: " + ec.message());
-  }
-}
-
 void write_file_atomically_by_name(const std::filesystem::path& path,
                                    const std::function<void(const std::filesystem::path& temporary)>& write) {
   if (path.filename().empty()) fail(path, "the path names a folder, not a file");
@@ -117,6 +78,20 @@ void write_file_atomically_by_name(const std::filesystem::path& path,
     remove_quietly(temporary);
     fail(path, "cannot replace the file: " + ec.message());
   }
+}
+
+void write_file_atomically(const std::filesystem::path& path,
+                           const std::function<void(std::ostream&)>& write) {
+  write_file_atomically_by_name(path, [&](const std::filesystem::path& temporary) {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    if (!out.is_open()) fail(path, "the folder " + folder_of(path).string() + " is not writable");
+    write(out);
+    // A full disk or an I/O error only shows in the stream state, often not before flush or close.
+    out.flush();
+    const bool written = static_cast<bool>(out);
+    out.close();
+    if (!written || out.fail()) fail(path, "writing failed (is the disk full?)");
+  });
 }
 
 void write_text_atomically(const std::filesystem::path& path, std::string_view text) {
