@@ -5,21 +5,14 @@
 #include <numbers>
 
 namespace paver {
-namespace {
-
-// The gem's proportions (elements/element_shape.cpp): girdle half-thickness and pavilion depth.
-constexpr double kGirdleHalf = 0.01;
-constexpr double kPavilionDepth = 0.43;
-
-}  // namespace
 
 std::vector<glm::dvec2> seat_profile(double above, double below) {
   const double girdle_radius = 0.5 + kSeatClearance;
-  const double girdle_bottom = -kGirdleHalf - kSeatClearance;
+  const double girdle_bottom = -kGemGirdleHalf - kSeatClearance;
   // The pavilion's radius falls from 0.5 at the girdle to 0 at the culet; the seat cone keeps
   // kSeatClearance outside it, down to the hole's radius.
-  const double culet = -kGirdleHalf - kPavilionDepth;
-  const double cone_end = culet + kPavilionDepth * (kSeatHoleRadius - kSeatClearance) / 0.5;
+  const double culet = -kGemGirdleHalf - kGemPavilionDepth;
+  const double cone_end = culet + kGemPavilionDepth * (kSeatHoleRadius - kSeatClearance) / 0.5;
   return {{girdle_radius, above},
           {girdle_radius, girdle_bottom},
           {kSeatHoleRadius, cone_end},

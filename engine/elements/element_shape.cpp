@@ -89,10 +89,10 @@ ShapeMesh make_prism(int segments, double height) {
 // girdle diameter. Bezel and pavilion main facets are kept planar: their side vertices are put on
 // the plane through the facet's top and bottom vertices and the girdle tangent there.
 ShapeMesh make_gem() {
-  constexpr double kTableRadius = 0.28;      // table diameter 0.56
-  constexpr double kCrownHeight = 0.16;      // girdle top to table
-  constexpr double kPavilionDepth = 0.43;    // girdle bottom to culet
-  constexpr double kGirdleHalf = 0.01;       // girdle thickness 0.02
+  constexpr double kTableRadius = kGemTableRadius;
+  constexpr double kCrownHeight = kGemCrownHeight;
+  constexpr double kPavilionDepth = kGemPavilionDepth;
+  constexpr double kGirdleHalf = kGemGirdleHalf;
   constexpr double kStarLength = 0.5;        // star tips halfway from the table edge to the girdle
   constexpr double kLowerGirdleLength = 0.77;  // lower girdle facets reach 77% towards the culet
   constexpr int kMains = 8;

@@ -22,6 +22,14 @@ struct ShapeMesh {
   std::vector<glm::ivec3> triangles;  // #F, counter-clockwise seen from outside
 };
 
+// Paver's round brilliant (ShapeKind::Gem) in units of its girdle diameter, written once for the
+// shape, the seats cut for it (cut/seat_cutter.h) and its carat weight (report/bill_of_stones.h).
+inline constexpr double kGemTableRadius = 0.28;     // table diameter 0.56
+inline constexpr double kGemCrownHeight = 0.16;     // girdle top to table
+inline constexpr double kGemPavilionDepth = 0.43;   // girdle bottom to culet
+inline constexpr double kGemGirdleHalf = 0.01;      // girdle thickness 0.02
+inline constexpr double kGemDepth = kGemCrownHeight + 2 * kGemGirdleHalf + kGemPavilionDepth;  // table to culet
+
 // How finely round shapes are tessellated: Full for export, Coarse for drawing many thousands of
 // elements (a sphere of 80 triangles instead of 288; same unit width).
 enum class ShapeDetail { Full, Coarse };

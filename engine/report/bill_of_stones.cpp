@@ -42,7 +42,7 @@ double round_brilliant_carat(double d) {
     const double t = (d - lower->first) / (upper->first - lower->first);
     return lower->second + t * (upper->second - lower->second);
   }
-  return d * d * (kGemDepthRatio * d) * 0.0061;
+  return d * d * (kGemDepth * d) * 0.0061;
 }
 
 BillOfStones bill_of_stones(const Elements& elements, Units units) {

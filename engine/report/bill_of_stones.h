@@ -34,10 +34,8 @@ BillOfStones bill_of_stones(const Elements& elements, Units units);
 
 // Weight of a diamond round brilliant of this girdle diameter, in carats: the trade's melee sieve
 // chart from 0.75 to 3.65 mm (interpolated between its sizes), the round brilliant formula
-// d^2 x depth x 0.0061 outside it, with Paver's gem depth (0.61 d). Sources in docs/stones.md.
+// d^2 x depth x 0.0061 outside it, with Paver's gem depth (kGemDepth, 0.61 d). Sources in docs/stones.md.
 double round_brilliant_carat(double diameter_mm);
-// Paver's gem: total depth (table to culet) over girdle diameter, as make_builtin_shape builds it.
-inline constexpr double kGemDepthRatio = 0.61;
 
 // stones.csv: `shape,diameter_mm,count,carat_each,carat_total`, one row per shape and size, then
 // `total,,COUNT,,CARATS`. Carat fields are empty for shapes that are not round brilliants.
