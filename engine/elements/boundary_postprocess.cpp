@@ -81,8 +81,9 @@ int fill_boundary_edges(const SurfaceMap& map, const Pattern& pattern, const std
 }
 
 std::vector<double> distances_to_boundary(const SurfaceMap& map, const Elements& elements, double reach) {
-  double cap = reach;
+  double cap = 0;
   for (double d : elements.diameter) cap = std::max(cap, d);
+  cap += std::max(reach, 0.0);
   // Only near elements matter: farther ones than the cap report it.
   const BoundaryIndex boundary(map.mesh, cap > 0 ? cap : 1);
   std::vector<double> distance(elements.size());
@@ -93,9 +94,7 @@ std::vector<double> distances_to_boundary(const SurfaceMap& map, const Elements&
 }
 
 int eliminate_boundary_elements(const SurfaceMap& map, Elements& elements, double margin) {
-  double largest = 0;
-  for (const double d : elements.diameter) largest = std::max(largest, d);
-  const std::vector<double> distance = distances_to_boundary(map, elements, margin + largest);
+  const std::vector<double> distance = distances_to_boundary(map, elements, margin);
   std::vector<std::uint8_t> remove(elements.size(), 0);
   int removed = 0;
   for (size_t i = 0; i < elements.size(); ++i)

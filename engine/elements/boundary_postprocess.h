@@ -19,9 +19,9 @@ int fill_boundary_edges(const SurfaceMap& map, const Pattern& pattern, const std
                         const ElementsDesign& design, double spacing, Elements& elements,
                         const std::vector<std::uint8_t>* retired = nullptr);
 
-// 3D distance from each element centre to the surface's boundary polyline, capped at the larger of
-// the largest element diameter and `reach` (only near elements matter: crossing tests, the
-// interior of the valence share; farther ones get the cap).
+// 3D distance from each element centre to the surface's boundary polyline, capped at the largest
+// element diameter plus `reach` (only near elements matter: crossing tests with a margin of up to
+// `reach`, the interior of the valence share; farther ones get the cap).
 std::vector<double> distances_to_boundary(const SurfaceMap& map, const Elements& elements, double reach = 0);
 
 // Whether an element `distance` from the boundary keeps the margin: its footprint (radius) and the

@@ -110,7 +110,7 @@ RefillReport refill_bare_regions(const SurfaceMap& map, Elements& elements, cons
                       lifted.triangle[c] < 0 ? glm::dvec3(0) : lifted.position[c],
                       lifted.triangle[c] < 0 ? glm::dvec3(0, 0, 1) : lifted.normal[c], diameter, spec.vertex.shape);
     const double margin = design.elements.margin;
-    const std::vector<double> to_boundary = distances_to_boundary(map, trial, margin + diameter);
+    const std::vector<double> to_boundary = distances_to_boundary(map, trial, margin);
     std::vector<int> next;
     for (size_t c = 0; c < candidates.size(); ++c) {
       if (lifted.triangle[c] < 0 || !keeps_margin(to_boundary[c], diameter, margin)) continue;
