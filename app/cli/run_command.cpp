@@ -13,11 +13,9 @@
 #include "pipeline/run_pipeline.h"
 #include "pattern/adaptive_pattern.h"
 #include "report/bill_of_stones.h"
-#include "report/metal_weight.h"
 #include "io/element_export.h"
-#include "io/threemf_export.h"
 #ifdef PAVER_WITH_CGAL
-#include "cut/solid_cut.h"
+#include "cut/cut_outputs.h"
 #endif
 #include "report/verdict.h"
 
@@ -178,25 +176,11 @@ int run_run(const RunArgs& args) {
       const CutSolid cut = cut_pavement(*r.map, r.pavement.elements,
                                         {.cutter = cutter, .thickness = thickness, .custom = r.custom_shape.get(),
                                          .stop = &interrupt_requested(), .beads = &r.pavement.beads});
-      write_mesh_stl(folder / "cut.stl", cut.mesh, "cut solid", &interrupt_requested());
-      write_pavement_3mf(folder / "cut.3mf", &cut.mesh, r.pavement.elements, r.pavement.design.units,
-                         {.custom = r.custom_shape.get(), .stop = &interrupt_requested()}, "metal");
+      write_cut_files(folder, cut, r.pavement.elements, r.pavement.design.units, r.custom_shape.get(),
+                      &interrupt_requested());
       if (previews) previews->write_solid(folder / "cut.png", cut.mesh, r.map->mesh);
       timings.emplace_back("cut", ms_since(t0));
-      const double mm = millimetres_per_unit(r.pavement.design.units), mm3 = mm * mm * mm;
-      sections["cut"] = {{"cutter", args.cutter},
-                         {"thickness", thickness},
-                         {"cutters", cut.cutters},
-                         {"united_cutters", cut.united_cutters},
-                         {"beads_joined", cut.beads},
-                         {"shell_volume_mm3", cut.shell_volume * mm3},
-                         {"volume_mm3", cut.volume * mm3},
-                         {"removed_mm3", (cut.shell_volume - cut.volume) * mm3},
-                         {"triangles", cut.mesh.triangles.size()},
-                         {"closed_manifold_oriented", true},
-                         {"metal", metal_weights_json(cut.volume, r.pavement.design.units)},
-                         {"files", {"cut.stl", "cut.3mf"}}};
-      cut_summary = sections["cut"];
+      cut_summary = sections["cut"] = cut_json(cut, cutter, thickness, r.pavement.design.units);
     };
 #else
     throw InputError("--subtract: this paver was built without CGAL (-DPAVER_WITH_CGAL=OFF); rebuild with it");
@@ -267,16 +251,11 @@ int run_run(const RunArgs& args) {
   }
   if (bill.carat_total > 0) std::printf("stones   total %ld, %.3f ct (stones.csv)\n", bill.count, bill.carat_total);
   if (pavement.design.elements.beads.enabled) {
-    const Elements& beads = pavement.beads;
-    const double mm = millimetres_per_unit(pavement.design.units);
-    double smallest = 0, largest = 0;
-    if (beads.size() > 0) {
-      smallest = *std::min_element(beads.diameter.begin(), beads.diameter.end()) * mm;
-      largest = *std::max_element(beads.diameter.begin(), beads.diameter.end()) * mm;
-    }
+    const nlohmann::json beads = beads_json(pavement);
     std::printf("beads    %zu shared prongs of %.2f to %.2f mm, between every three stones in contact%s\n",
-                beads.size(), smallest, largest,
-                beads.size() == 0 ? " (none: no three stones touch; beads need a tri pattern)" : "");
+                beads["count"].get<std::size_t>(), beads["diameter_mm_min"].get<double>(),
+                beads["diameter_mm_max"].get<double>(),
+                pavement.beads.size() == 0 ? " (none: no three stones touch; beads need a tri pattern)" : "");
   }
   if (!cut_summary.is_null()) {
     std::printf("cut      %s cutters, metal %g thick: %.4g mm3 of %.4g mm3 left (%.4g removed), closed and manifold; "

@@ -1,11 +1,9 @@
 #include "metal_cutter.h"
 
-#include "io/element_export.h"
-#include "io/threemf_export.h"
 #include "io/output_guard.h"
 #include "report/metal_weight.h"
 #ifdef PAVER_WITH_CGAL
-#include "cut/solid_cut.h"
+#include "cut/cut_outputs.h"
 #endif
 
 #include <cstdio>
@@ -28,11 +26,11 @@ bool MetalCutter::available() {
 }
 
 void MetalCutter::start(std::shared_ptr<const SurfaceMap> map, std::shared_ptr<const Pavement> pavement,
-                        double thickness, const std::filesystem::path& folder) {
+                        std::shared_ptr<const ShapeMesh> custom, double thickness, const std::filesystem::path& folder) {
   auto shared = std::make_shared<Shared>();
   shared->busy = true;
   shared_ = shared;
-  jobs_.start([shared, map = std::move(map), pavement = std::move(pavement), thickness,
+  jobs_.start([shared, map = std::move(map), pavement = std::move(pavement), custom = std::move(custom), thickness,
                folder](std::stop_token stop) {
     CutOutcome outcome;
 #ifdef PAVER_WITH_CGAL
@@ -40,12 +38,10 @@ void MetalCutter::start(std::shared_ptr<const SurfaceMap> map, std::shared_ptr<c
       std::atomic<bool> stopped{false};
       std::stop_callback on_stop(stop, [&] { stopped = true; });
       const CutSolid cut = cut_pavement(*map, pavement->elements,
-                                        {.cutter = CutterKind::Seat, .thickness = thickness, .stop = &stopped,
-                                         .beads = &pavement->beads});
+                                        {.cutter = CutterKind::Seat, .thickness = thickness, .custom = custom.get(),
+                                         .stop = &stopped, .beads = &pavement->beads});
       make_output_folder(folder);
-      write_mesh_stl(folder / "cut.stl", cut.mesh, "cut solid", &stopped);
-      write_pavement_3mf(folder / "cut.3mf", &cut.mesh, pavement->elements, pavement->design.units, {.stop = &stopped},
-                         "metal");
+      write_cut_files(folder, cut, pavement->elements, pavement->design.units, custom.get(), &stopped);
       const double mm = millimetres_per_unit(pavement->design.units);
       const double mm3 = cut.volume * mm * mm * mm;
       char text[256];
@@ -57,7 +53,7 @@ void MetalCutter::start(std::shared_ptr<const SurfaceMap> map, std::shared_ptr<c
       outcome = {false, std::string("cut metal: ") + e.what()};
     }
 #else
-    (void)map, (void)pavement, (void)thickness, (void)folder, (void)stop;
+    (void)map, (void)pavement, (void)custom, (void)thickness, (void)folder, (void)stop;
     outcome = {false, "cut metal: this studio was built without CGAL (-DPAVER_WITH_CGAL=OFF)"};
 #endif
     std::lock_guard lock(shared->mutex);

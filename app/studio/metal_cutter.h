@@ -23,8 +23,9 @@ class MetalCutter {
 public:
   // Whether this studio was built with the cut (CGAL); without it start() reports why not.
   static bool available();
-  void start(std::shared_ptr<const SurfaceMap> map, std::shared_ptr<const Pavement> pavement, double thickness,
-             const std::filesystem::path& folder);
+  // `custom`: the design's custom shape, when a stone uses it (kept alive by the job).
+  void start(std::shared_ptr<const SurfaceMap> map, std::shared_ptr<const Pavement> pavement,
+             std::shared_ptr<const ShapeMesh> custom, double thickness, const std::filesystem::path& folder);
   bool busy() const;
   bool has_outcome() const;                  // finished and not yet taken
   std::optional<CutOutcome> take_outcome();  // once per finished cut

@@ -138,7 +138,7 @@ void cut_metal(Studio& s, const fs::path& folder, double thickness) {
   const std::vector<fs::path> inputs = {s.doc.surface.path, s.doc.design_path, s.doc.design.elements.custom_shape};
   refuse_overwriting_inputs(inputs, {folder / "cut.stl", folder / "cut.3mf"});
   check_output_folder(folder);
-  s.cutter.start(s.doc.surface.map, s.doc.result.pavement, thickness, folder);
+  s.cutter.start(s.doc.surface.map, s.doc.result.pavement, shared_custom_shape(s.doc), thickness, folder);
   report_status(s.doc, "cutting the seats into the metal...");
 }
 

@@ -183,18 +183,19 @@ Mesh merge_solids(std::vector<Mesh>& parts, const std::vector<glm::dvec3>& centr
   return all;
 }
 
-}  // namespace
-
-double cutter_reach_above() { return 0.6; }
-
-double cutter_reach_below(double thickness, double diameter) { return 1.5 * thickness / diameter + 0.5; }
-
+// A unit-diameter cutter placed on an element, as the element's own shape sits (elements/element_frame.h).
 SurfaceMesh placed_cutter(const SurfaceMesh& unit, const glm::dvec3& centre, const glm::dvec3& normal, double diameter) {
   const ElementFrame frame = element_frame(normal);
   SurfaceMesh m = unit;
   for (glm::dvec3& p : m.positions) p = place_shape_vertex(frame, centre, diameter, p);
   return m;
 }
+
+}  // namespace
+
+double cutter_reach_above() { return 0.6; }
+
+double cutter_reach_below(double thickness, double diameter) { return 1.5 * thickness / diameter + 0.5; }
 
 CutSolid cut_pavement(const SurfaceMap& map, const Elements& elements, const CutOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();

@@ -38,9 +38,6 @@ struct CutSolid {
 // CGAL reports rather than returning a broken solid), Interrupted when options.stop is set.
 CutSolid cut_pavement(const SurfaceMap& map, const Elements& elements, const CutOptions& options);
 
-// The cutters alone, placed (for the report's check and the tests): one closed mesh per element.
-SurfaceMesh placed_cutter(const SurfaceMesh& unit, const glm::dvec3& centre, const glm::dvec3& normal, double diameter);
-
 // How far cutters reach above and below an element, in units of its diameter, so that they pass
 // both faces of metal `thickness` thick.
 double cutter_reach_above();

@@ -22,6 +22,8 @@ std::string_view start_name(ArapStart s) {
   return "?";
 }
 
+}  // namespace
+
 // The beads (shared prongs): how many and how large, in mm; {"enabled": false} without them.
 nlohmann::json beads_json(const Pavement& pavement) {
   const BeadDesign& design = pavement.design.elements.beads;
@@ -40,8 +42,6 @@ nlohmann::json beads_json(const Pavement& pavement) {
   j["diameter_mm_max"] = largest;
   return j;
 }
-
-}  // namespace
 
 PavementCounts count_pavement(const Pavement& pavement) {
   const Pattern& pattern = pavement.pattern;

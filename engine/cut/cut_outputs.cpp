@@ -1,0 +1,35 @@
+#include "cut/cut_outputs.h"
+
+#include "io/element_export.h"
+#include "io/threemf_export.h"
+#include "report/metal_weight.h"
+
+#include <nlohmann/json.hpp>
+
+namespace paver {
+
+std::string_view cutter_name(CutterKind kind) { return kind == CutterKind::Seat ? "seat" : "element"; }
+
+void write_cut_files(const std::filesystem::path& folder, const CutSolid& cut, const Elements& stones, Units units,
+                     const ShapeMesh* custom, const std::atomic<bool>* stop) {
+  write_mesh_stl(folder / "cut.stl", cut.mesh, "cut solid", stop);
+  write_pavement_3mf(folder / "cut.3mf", &cut.mesh, stones, units, {.custom = custom, .stop = stop}, "metal");
+}
+
+nlohmann::json cut_json(const CutSolid& cut, CutterKind cutter, double thickness, Units units) {
+  const double mm = millimetres_per_unit(units), mm3 = mm * mm * mm;
+  return {{"cutter", cutter_name(cutter)},
+          {"thickness", thickness},
+          {"cutters", cut.cutters},
+          {"united_cutters", cut.united_cutters},
+          {"beads_joined", cut.beads},
+          {"shell_volume_mm3", cut.shell_volume * mm3},
+          {"volume_mm3", cut.volume * mm3},
+          {"removed_mm3", (cut.shell_volume - cut.volume) * mm3},
+          {"triangles", cut.mesh.triangles.size()},
+          {"closed_manifold_oriented", true},
+          {"metal", metal_weights_json(cut.volume, units)},
+          {"files", {"cut.stl", "cut.3mf"}}};
+}
+
+}  // namespace paver

@@ -1,0 +1,26 @@
+#pragma once
+// What a cut leaves behind, written the same way by `paver run --subtract` and the studio's Cut
+// metal: cut.stl (the metal) and cut.3mf (the metal as a printable model, with the stones), and
+// report.json's `cut` section.
+#include "cut/solid_cut.h"
+#include "design/design.h"
+
+#include <nlohmann/json_fwd.hpp>
+
+#include <atomic>
+#include <filesystem>
+
+namespace paver {
+
+std::string_view cutter_name(CutterKind kind);  // "seat", "element"
+
+// Writes `folder`/cut.stl and `folder`/cut.3mf; `custom` is the design's custom shape when a
+// stone uses it. Throws InputError naming the file; Interrupted when `stop` becomes true.
+void write_cut_files(const std::filesystem::path& folder, const CutSolid& cut, const Elements& stones, Units units,
+                     const ShapeMesh* custom = nullptr, const std::atomic<bool>* stop = nullptr);
+
+// report.json's `cut`: the cutter and thickness, counts, volumes in mm^3 and the metal's weight in
+// every alloy of report/metal_weight.h.
+nlohmann::json cut_json(const CutSolid& cut, CutterKind cutter, double thickness, Units units);
+
+}  // namespace paver
