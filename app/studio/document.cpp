@@ -82,6 +82,7 @@ void set_result(Document& doc, std::shared_ptr<const Pavement> pavement, std::ui
     const double t = (ratio - kHistogramMin) / (kHistogramMax - kHistogramMin);
     r.ratio_histogram[std::clamp(int(t * kHistogramBins), 0, kHistogramBins - 1)] += 1;
   }
+  r.bill = bill_of_stones(pavement->elements, pavement->design.units);
   r.pavement = std::move(pavement);
 }
 

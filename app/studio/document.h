@@ -8,6 +8,7 @@
 #include "design/design.h"
 #include "elements/element_shape.h"
 #include "pipeline/pavement.h"
+#include "report/bill_of_stones.h"
 #include "map/surface_map.h"
 
 #include <chrono>
@@ -35,6 +36,7 @@ struct PavementResult {
   std::uint64_t revision = 0;             // the document revision it was made for
   std::vector<double> neighbour_ratios;   // per element: nearest-neighbour distance / (r_i + r_j)
   std::vector<float> ratio_histogram;     // element counts per bin over [kHistogramMin, kHistogramMax]
+  BillOfStones bill;                      // the report panel's bill of stones, made once per result
   double run_ms = 0;                      // the background run, wall time
   double latency_ms = -1;                 // design change to this result on screen; -1 until shown
 };

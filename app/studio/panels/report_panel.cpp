@@ -53,8 +53,7 @@ void quality_table(const Pavement& p) {
 
 // What a jeweller orders from: stones by shape and size in mm, carats for round brilliants, and the
 // beads (report/bill_of_stones.h, the same figures as stones.csv).
-void bill_table(const Pavement& p) {
-  const BillOfStones bill = bill_of_stones(p.elements, p.design.units);
+void bill_table(const Pavement& p, const BillOfStones& bill) {
   if (ImGui::BeginTable("stones", 5, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
     for (const char* name : {"shape", "size (mm)", "count", "ct each", "ct"}) ImGui::TableSetupColumn(name);
     ImGui::TableHeadersRow();
@@ -113,7 +112,7 @@ void report_panel(const Studio& s) {
               "includes the wait for a dragged slider to rest.");
 
   section("Bill of stones");
-  bill_table(p);
+  bill_table(p, r.bill);
 
   section("Quality");
   quality_table(p);
