@@ -17,7 +17,7 @@ layout(std430, set = 0, binding = kBindingSurfaceCurvature) readonly buffer Surf
 layout(std430, set = 0, binding = kBindingTriangles) readonly buffer Triangles { int triangles[]; };
 layout(std430, set = 0, binding = kBindingGridStart) readonly buffer GridStart { int grid_start[]; };
 layout(std430, set = 0, binding = kBindingGridTriangles) readonly buffer GridTriangles { int grid_triangles[]; };
-layout(std430, set = 0, binding = kBindingBoundaryUv) readonly buffer BoundaryUv { vec2 boundary_uv[]; };
+layout(std430, set = 0, binding = kBindingBoundarySegments) readonly buffer BoundarySegments { vec4 boundary_segments[]; };
 layout(std430, set = 0, binding = kBindingBoundaryInward) readonly buffer BoundaryInward { vec2 boundary_inward[]; };
 layout(std430, set = 0, binding = kBindingPositionIn) buffer PositionIn { vec2 position_in[]; };
 layout(std430, set = 0, binding = kBindingPositionOut) buffer PositionOut { vec2 position_out[]; };

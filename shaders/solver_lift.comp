@@ -45,8 +45,8 @@ vec2 pull_back(vec2 p, out int segment) {
   vec2 result = p;
   int n = P.boundary_count;
   for (int i = 0; i < n; ++i) {
-    BoundaryCandidate candidate = boundary_candidate(p, boundary_uv[i], boundary_uv[i + 1 == n ? 0 : i + 1],
-                                                     boundary_inward[i]);
+    BoundaryCandidate candidate =
+        boundary_candidate(p, boundary_segments[i].xy, boundary_segments[i].zw, boundary_inward[i]);
     if (candidate.dist2 < best) {
       best = candidate.dist2;
       segment = i;

@@ -50,7 +50,7 @@ int main(int argc, char** argv) {
   try {
     for (const Surface& surface : dense ? dense_set() : small_set()) {
       const Mesh m = surface.build();
-      const Stats s = check(surface.name, m, surface.outward);
+      const Stats s = check(surface.name, m, surface.outward, surface.boundary_loops);
       write_obj(outdir, surface.name, m);
       std::printf("%-16s %7d vertices %7d faces  bbox [%.1f, %.1f] x [%.1f, %.1f] x [%.1f, %.1f]"
                   "  min angle %.1f deg  edge %.2f +- %.0f%%\n",

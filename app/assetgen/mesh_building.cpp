@@ -87,6 +87,19 @@ void orient(Mesh& m, const Outward& outward) {
     for (auto& t : m.f) std::swap(t[1], t[2]);
 }
 
+Mesh drop_unused_vertices(const Mesh& m) {
+  std::vector<int> index(m.v.size(), -1);
+  Mesh out;
+  for (const auto& t : m.f)
+    for (int v : t)
+      if (index[v] < 0) index[v] = -2;
+  for (std::size_t v = 0; v < m.v.size(); ++v)
+    if (index[v] == -2) index[v] = out.add(m.v[v]);
+  out.f.reserve(m.f.size());
+  for (const auto& t : m.f) out.f.push_back({index[t[0]], index[t[1]], index[t[2]]});
+  return out;
+}
+
 Mesh fit_faces(const std::function<Mesh(double)>& build, double h, int target) {
   Mesh m = build(h);
   for (int round = 0; round < 4; ++round) {

@@ -50,6 +50,9 @@ glm::dvec3 centroid(const Mesh& m, const std::array<int, 3>& t);
 // Flips every face when most of them point against `outward`.
 void orient(Mesh& m, const Outward& outward);
 
+// The mesh without the vertices no face uses (left behind where faces were cut away), renumbered.
+Mesh drop_unused_vertices(const Mesh& m);
+
 // Repeats build(h) with the spacing h rescaled so the face count approaches `target`
 // (faces scale with 1 / h^2). Deterministic: a fixed number of rounds.
 Mesh fit_faces(const std::function<Mesh(double)>& build, double h, int target);

@@ -54,8 +54,11 @@ SurfaceMesh checked_topology(std::string_view name, const Mesh& m) {
 
 }  // namespace
 
-Stats check(std::string_view name, const Mesh& m, const Outward& outward) {
+Stats check(std::string_view name, const Mesh& m, const Outward& outward, int boundary_loops) {
   const SurfaceMesh mesh = checked_topology(name, m);
+  if (int(mesh.boundary_loops.size()) != boundary_loops)
+    fail(name, "has " + std::to_string(mesh.boundary_loops.size()) + " boundary loops, not " +
+                   std::to_string(boundary_loops));
   Stats s;
   s.vertices = mesh.vertex_count();
   s.faces = mesh.face_count();
@@ -85,12 +88,12 @@ Stats check(std::string_view name, const Mesh& m, const Outward& outward) {
       s.min_angle_deg = std::min(s.min_angle_deg, angle);
     }
   }
-  const std::vector<int>& loop = mesh.boundary_loop;
-  for (std::size_t i = 0; i < loop.size(); ++i) add_edge(loop[i], loop[(i + 1) % loop.size()]);
+  const std::vector<glm::ivec2> boundary = boundary_segments(mesh);
+  for (const glm::ivec2& segment : boundary) add_edge(segment.x, segment.y);
   if (!(s.min_angle_deg >= kMinAngleDeg))
     fail(name, "minimum angle " + std::to_string(s.min_angle_deg) + " degrees is below the floor of " +
                    std::to_string(kMinAngleDeg));
-  const double edges = 0.5 * static_cast<double>(3 * m.f.size() + loop.size());
+  const double edges = 0.5 * static_cast<double>(3 * m.f.size() + boundary.size());
   s.edge_mean = 0.5 * sum / edges;
   s.edge_cv = std::sqrt(std::max(0.0, 0.5 * sum2 / edges - s.edge_mean * s.edge_mean)) / s.edge_mean;
   return s;

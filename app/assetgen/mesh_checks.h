@@ -18,9 +18,9 @@ struct Stats {
 };
 
 // Topology through the engine's make_surface (finite, non-degenerate, manifold, connected,
-// consistently oriented, a disk with one boundary loop), with any repair it makes counted as a
-// failure; then what is particular to the assets: normals on the `outward` side and the
-// minimum angle. Throws std::runtime_error ("name: what is wrong") on failure.
-Stats check(std::string_view name, const Mesh& m, const Outward& outward);
+// consistently oriented, no handles), with any repair it makes counted as a failure; then what is
+// particular to the assets: `boundary_loops` loops, normals on the `outward` side and the minimum
+// angle. Throws std::runtime_error ("name: what is wrong") on failure.
+Stats check(std::string_view name, const Mesh& m, const Outward& outward, int boundary_loops = 1);
 
 }  // namespace paver::assetgen

@@ -220,10 +220,10 @@ Polyline teardrop_outline() {
   return Polyline(std::move(pts));
 }
 
-// Domed pendant over the teardrop: rings are copies of the outline scaled about the middle of
+// Domed pendant over the teardrop, rings about h apart: rings are copies of the outline scaled about the middle of
 // its length (0, 6), at scale rho in [0, 1]; height 6 at the centre, falling to 0 at the outline
 // like an elliptic lens cap (finite slope at the rim so the rim is not vertical).
-Mesh pendant(int target) {
+Mesh pendant_mesh(double h) {
   const Polyline outline = teardrop_outline();
   const dvec2 c(0.0, 6.0);
   constexpr double kHeight = 6.0;
@@ -249,26 +249,124 @@ Mesh pendant(int target) {
     }
     return sum / kAround;
   });
+  const int n = std::max(1, rounded(radial.length() / h));
+  const double step = radial.length() / n;
+  Mesh m;
+  const int centre = m.add(point(0.0, 0.0));
+  std::vector<Row> rs;
+  for (int k = 1; k <= n; ++k) {
+    const double rho = radial.at(static_cast<double>(k) / n);
+    // Ring perimeter; z is constant on a ring, so the planar one is the 3D one.
+    const double perimeter = rho * outline.length();
+    // Same rule as revolve(): tangential spacing ~1.05 step.
+    const int count = std::max(6, rounded(perimeter * 3.0 / (kPi * step)));
+    rs.push_back(make_ring(m, count, [&](double t) { return point(rho, t); }));
+  }
+  stitch_rings(m, centre, rs);
+  orient(m, [](dvec3) { return dvec3(0.0, 0.0, 1.0); });
+  return m;
+}
+
+Mesh pendant(int target) { return fit_faces(pendant_mesh, 1.0, target); }
+
+// A band of revolution about z: rows of constant height on the profile (r(z), z), z0..z1, each a
+// closed ring with as many vertices as its length needs. Both rims are open: two boundary loops.
+Mesh band_of_revolution(const std::function<double(double)>& radius, double z0, double z1, double h) {
+  std::vector<dvec2> pts;
+  const int samples = 400;
+  for (int i = 0; i <= samples; ++i) {
+    const double z = z0 + (z1 - z0) * i / samples;
+    pts.emplace_back(radius(z), z);
+  }
+  const Polyline profile(std::move(pts));
+  const int rows = std::max(1, rounded(profile.length() / (h * std::sqrt(3.0) / 2.0)));
+  Mesh m;
+  std::vector<Row> rs;
+  for (int i = 0; i <= rows; ++i) {
+    const dvec2 p = profile.at(static_cast<double>(i) / rows);
+    // Alternate rows turned by half a step: near-equilateral triangles between them.
+    const double turn = (i % 2) * 0.5;
+    const int count = std::max(6, rounded(2.0 * kPi * p.x / h));
+    rs.push_back(make_ring(m, count, [&](double t) {
+      const double th = 2.0 * kPi * (t + turn / count);
+      return dvec3(p.x * std::cos(th), p.x * std::sin(th), p.y);
+    }));
+  }
+  for (std::size_t i = 1; i < rs.size(); ++i) stitch(m, rs[i - 1], rs[i], true);
+  orient(m, [](dvec3 q) { return dvec3(q.x, q.y, 0.0); });
+  return m;
+}
+
+// A bangle's outer face: 64 mm inside diameter plus 1.5 mm of metal (radius 33.5), 12 mm wide,
+// crowned 1.2 mm at the middle (a comfort profile). Normals outward.
+Mesh bangle(int target) {
+  const auto radius = [](double z) { return 33.5 + 1.2 * std::cos(kPi * z / 12.0); };
+  return fit_faces([&](double h) { return band_of_revolution(radius, -6.0, 6.0, h); }, 1.0, target);
+}
+
+// A finger ring's outer face: size 57 (18.1 mm inside diameter) plus 1.6 mm of metal, 6 mm
+// wide, crowned 0.6 mm. Normals outward.
+Mesh ring_band(int target) {
+  const auto radius = [](double z) { return 10.65 + 0.6 * std::cos(kPi * z / 6.0); };
+  return fit_faces([&](double h) { return band_of_revolution(radius, -3.0, 3.0, h); }, 0.5, target);
+}
+
+// The facade panel with 4 x 3 windows: the grid's cells whose centres fall in a window are left
+// out, so each window is a clean rectangle of cells with the panel's own triangles around it.
+Mesh facade_windows(int target) {
+  const HeightField hf{[](double x, double y) {
+                         const double v = y / 200.0;
+                         return 25.0 * std::sin(kPi * x / 400.0) * (1.0 - 0.3 * v * v);
+                       },
+                       {0.0, 0.0}, {400.0, 200.0}};
+  const auto in_window = [](dvec3 c) {
+    // Windows 50 wide and 34 high, on a 100 x 60 raster starting 25 in from the left and 20 up.
+    const double fx = std::fmod(c.x - 25.0, 100.0), fy = std::fmod(c.y - 20.0, 60.0);
+    return c.x > 25.0 && c.x < 375.0 && c.y > 20.0 && c.y < 180.0 && fx < 50.0 && fy < 34.0;
+  };
   return fit_faces(
       [&](double h) {
-        const int n = std::max(1, rounded(radial.length() / h));
-        const double step = radial.length() / n;
+        Mesh full = height_field(hf, h);
+        // Whole cells go: a cell's two triangles have the same centre (the quad's), so both stay
+        // or both go, and each window is a rectangle of cells.
         Mesh m;
-        const int centre = m.add(point(0.0, 0.0));
-        std::vector<Row> rs;
-        for (int k = 1; k <= n; ++k) {
-          const double rho = radial.at(static_cast<double>(k) / n);
-          // Ring perimeter; z is constant on a ring, so the planar one is the 3D one.
-          const double perimeter = rho * outline.length();
-          // Same rule as revolve(): tangential spacing ~1.05 step.
-          const int count = std::max(6, rounded(perimeter * 3.0 / (kPi * step)));
-          rs.push_back(make_ring(m, count, [&](double t) { return point(rho, t); }));
+        m.v = full.v;
+        for (std::size_t f = 0; f < full.f.size(); f += 2) {
+          const auto& a = full.f[f];
+          const auto& b = full.f[f + 1];
+          dvec3 centre(0.0);
+          for (int k = 0; k < 3; ++k) centre += full.v[a[k]] + full.v[b[k]];
+          if (in_window(centre / 6.0)) continue;
+          m.f.push_back(a);
+          m.f.push_back(b);
         }
-        stitch_rings(m, centre, rs);
-        orient(m, [](dvec3) { return dvec3(0.0, 0.0, 1.0); });
-        return m;
+        return drop_unused_vertices(m);
       },
-      1.0, target);
+      10.0, target);
+}
+
+// The pendant pierced three times: a bail hole 2.4 mm across near the tip and two 5 mm holes
+// side by side in the round end. The faces whose centres fall in a hole are left out, so the
+// holes' rims follow the pendant's rings (a scan-like, stepped rim).
+Mesh pendant_pierced(int target) {
+  struct Hole {
+    dvec2 centre;
+    double radius;
+  };
+  const Hole holes[] = {{{0.0, 20.5}, 1.2}, {{-5.5, -3.0}, 2.5}, {{5.5, -3.0}, 2.5}};
+  const auto pierced = [&](double h) {
+    const Mesh full = pendant_mesh(h);
+    Mesh m;
+    m.v = full.v;
+    for (const auto& t : full.f) {
+      const dvec3 c = centroid(full, t);
+      bool inside = false;
+      for (const Hole& hole : holes) inside = inside || glm::distance(dvec2(c), hole.centre) < hole.radius;
+      if (!inside) m.f.push_back(t);
+    }
+    return drop_unused_vertices(m);
+  };
+  return fit_faces(pierced, 1.0, target);
 }
 
 dvec3 up(dvec3) { return {0.0, 0.0, 1.0}; }
@@ -288,6 +386,10 @@ std::vector<Surface> small_set() {
        }},
       {"pendant", [] { return pendant(2000); }, up},
       {"facade", [] { return facade(1200); }, up},
+      {"bangle", [] { return bangle(2400); }, [](dvec3 p) { return dvec3(p.x, p.y, 0.0); }, 2},
+      {"ring_band", [] { return ring_band(1200); }, [](dvec3 p) { return dvec3(p.x, p.y, 0.0); }, 2},
+      {"facade_windows", [] { return facade_windows(2400); }, up, 13},
+      {"pendant_pierced", [] { return pendant_pierced(3000); }, up, 4},
   };
 }
 

@@ -47,8 +47,9 @@ int run_param(const ParamArgs& args) {
   for (const auto& w : loaded.warnings) std::cerr << "paver: warning: " << printable(w) << "\n";
   const auto t1 = Clock::now();
   // Said before the mapping, which can take minutes on a big mesh.
-  std::printf("%s: %d vertices, %d faces, %zu boundary vertices (loaded in %.1f ms)\n", printable(args.surface).c_str(),
-              loaded.mesh.vertex_count(), loaded.mesh.face_count(), loaded.mesh.boundary_loop.size(),
+  std::printf("%s: %d vertices, %d faces, %d boundary vertices in %zu loops (loaded in %.1f ms)\n",
+              printable(args.surface).c_str(), loaded.mesh.vertex_count(), loaded.mesh.face_count(),
+              boundary_vertex_count(loaded.mesh), loaded.mesh.boundary_loops.size(),
               std::chrono::duration<double, std::milli>(t1 - t0).count());
   std::fflush(stdout);
 

@@ -312,10 +312,9 @@ void Renderer::set_surface(const SurfaceMap& map) {
       }
     }
   }
-  const auto& loop = map.mesh.boundary_loop;
-  for (size_t i = 0; i < loop.size(); ++i) {
-    lines.push_back({glm::vec3(glm::vec2(map.uv[loop[i]]), 0), edge});
-    lines.push_back({glm::vec3(glm::vec2(map.uv[loop[(i + 1) % loop.size()]]), 0), edge});
+  for (const glm::ivec2& segment : boundary_segments(map.mesh)) {
+    lines.push_back({glm::vec3(glm::vec2(map.uv[segment.x]), 0), edge});
+    lines.push_back({glm::vec3(glm::vec2(map.uv[segment.y]), 0), edge});
   }
   d.map_triangles = d.host_buffer(tris, vk::BufferUsageFlagBits::eVertexBuffer);
   d.map_lines = d.host_buffer(lines, vk::BufferUsageFlagBits::eVertexBuffer);

@@ -164,7 +164,7 @@ private:
     const Array surface_arrays[] = {
         array(kBindingUv, s.uv), array(kBindingSurfacePosition, s.position), array(kBindingSurfaceCurvature, s.curvature),
         array(kBindingTriangles, s.triangles), array(kBindingGridStart, s.grid_start), array(kBindingGridTriangles, s.grid_triangles),
-        array(kBindingBoundaryUv, s.boundary_uv), array(kBindingBoundaryInward, s.boundary_inward)};
+        array(kBindingBoundarySegments, s.boundary_segments), array(kBindingBoundaryInward, s.boundary_inward)};
     // The system changes between solves (a new design, contact springs): always uploaded.
     const Array system_arrays[] = {
         array(kBindingPositionIn, y.position), array(kBindingStrayCount, y.stray_count), array(kBindingTriangleHint, y.triangle_hint),
@@ -193,7 +193,7 @@ private:
     p.threshold = threshold_;
     p.grid_cell_size = s.grid_cell_size;
     p.grid_origin = s.grid_origin;
-    p.grid_nx = s.grid_nx, p.grid_ny = s.grid_ny, p.boundary_count = int(s.boundary_uv.size());
+    p.grid_nx = s.grid_nx, p.grid_ny = s.grid_ny, p.boundary_count = int(s.boundary_segments.size());
     p.particle_count = y.particle_count(), p.spring_count = y.spring_count();
     std::memcpy(d.params.mapped(), &p, sizeof p);
     d.write_descriptors();

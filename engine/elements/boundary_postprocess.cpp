@@ -21,13 +21,12 @@ namespace {
 double cross2(glm::dvec2 a, glm::dvec2 b) { return a.x * b.y - a.y * b.x; }
 
 // Parameter s in (0, 1] where segment p->q first meets the boundary of M^, or +inf.
-double first_boundary_hit(const SurfaceMap& map, glm::dvec2 p, glm::dvec2 q) {
-  const auto& loop = map.mesh.boundary_loop;
-  const int n = int(loop.size());
+double first_boundary_hit(const SurfaceMap& map, const std::vector<glm::ivec2>& segments, glm::dvec2 p,
+                          glm::dvec2 q) {
   const glm::dvec2 d = q - p;
   double best = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < n; ++i) {
-    const glm::dvec2 a = map.uv[loop[i]], b = map.uv[loop[(i + 1) % n]];
+  for (const glm::ivec2& segment : segments) {
+    const glm::dvec2 a = map.uv[segment.x], b = map.uv[segment.y];
     const glm::dvec2 e = b - a;
     const double denom = cross2(d, e);
     if (denom == 0) continue;
@@ -46,6 +45,7 @@ int fill_boundary_edges(const SurfaceMap& map, const Pattern& pattern, const std
                         const std::vector<std::uint8_t>* retired) {
   // The pattern continues up to the boundary: an E-element keeps its t along the whole lattice
   // edge and is placed when it falls on the part inside the map.
+  const std::vector<glm::ivec2> segments = boundary_segments(map.mesh);
   std::vector<glm::dvec2> centres;
   std::vector<std::pair<int, int>> origin;  // (crossing edge, spec)
   for (int c = 0; c < int(pattern.crossing_edges.size()); ++c) {
@@ -53,7 +53,7 @@ int fill_boundary_edges(const SurfaceMap& map, const Pattern& pattern, const std
     if (retired && (*retired)[edge.inside_point]) continue;
     const glm::dvec2 inside = points[edge.inside_point];
     const glm::dvec2 outside = inside + (edge.outside - pattern.points[edge.inside_point]);
-    const double hit = std::min(1.0, first_boundary_hit(map, inside, outside));
+    const double hit = std::min(1.0, first_boundary_hit(map, segments, inside, outside));
     const glm::dvec2 from = edge.inside_is_from ? inside : outside;
     const glm::dvec2 to = edge.inside_is_from ? outside : inside;
     for (int s = 0; s < int(design.edge.size()); ++s) {

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "core/input_error.h"
+#include "map/hole_patches.h"
 #include "map/lscm.h"
 #include "map/tutte_embedding.h"
 #include "mesh/surface_scaling.h"
@@ -43,10 +44,26 @@ double first_collapse(glm::dvec2 e1, glm::dvec2 e2, glm::dvec2 f1, glm::dvec2 f2
   return best;
 }
 
+// A patch triangle's rest shape: its hole edge as base, its two other sides the larger of the
+// hole's mean radius and 0.6 of the base (an isosceles triangle that is never a sliver, whatever
+// the hole's shape).
+std::array<glm::dvec2, 3> patch_rest_shape(const SurfaceMesh& mesh, const glm::ivec3& t, double radius) {
+  const double base = glm::length(mesh.positions[t.y] - mesh.positions[t.x]);
+  const double side = std::max(radius, 0.6 * base);
+  const double height = std::sqrt(std::max(side * side - 0.25 * base * base, 1e-12 * base * base));
+  return {glm::dvec2(0, 0), glm::dvec2(base, 0), glm::dvec2(0.5 * base, height)};
+}
+
+double cotangent_2d(glm::dvec2 apex, glm::dvec2 q, glm::dvec2 r) {
+  const glm::dvec2 u = q - apex, v = r - apex;
+  return glm::dot(u, v) / std::max(std::abs(detail::cross2(u, v)), 1e-300);
+}
+
 }  // namespace
 
 struct ArapSolver::Impl {
-  const SurfaceMesh& mesh;
+  PatchedSurface patched;  // holes closed; the map of the real vertices is its first part
+  const SurfaceMesh& mesh = patched.mesh;
   ArapOptions options;
   ArapReport report;
   std::vector<std::array<glm::dvec2, 3>> flat;  // #F isometric 2D frames
@@ -60,7 +77,9 @@ struct ArapSolver::Impl {
   double energy = std::numeric_limits<double>::infinity();
   int pinned_vertex = 0;
 
-  Impl(const SurfaceMesh& m, const ArapOptions& o) : mesh(m), options(o) {}
+  std::vector<double> face_weight;  // #F 1, or kHolePatchWeight on a patch
+
+  Impl(const SurfaceMesh& m, const ArapOptions& o) : patched(close_holes(m)), options(o) {}
 
   void precompute() {
     const auto t0 = Clock::now();
@@ -69,8 +88,17 @@ struct ArapSolver::Impl {
     cot.resize(nf);
     rotation.assign(nf, 0);
     area3.resize(nf);
+    face_weight.assign(nf, 1.0);
     for (int f = 0; f < nf; ++f) {
       const auto& t = mesh.triangles[f];
+      if (patched.is_patch(f)) {
+        flat[f] = patch_rest_shape(mesh, t, patched.hole_radius(f));
+        for (int k = 0; k < 3; ++k)
+          cot[f][k] = kHolePatchWeight * cotangent_2d(flat[f][k], flat[f][(k + 1) % 3], flat[f][(k + 2) % 3]);
+        area3[f] = 0.5 * flat[f][1].x * flat[f][2].y;
+        face_weight[f] = kHolePatchWeight;
+        continue;
+      }
       const glm::dvec3 p[3] = {mesh.positions[t.x], mesh.positions[t.y], mesh.positions[t.z]};
       flat[f] = detail::flatten_triangle(p[0], p[1], p[2]);
       for (int k = 0; k < 3; ++k) cot[f][k] = detail::cotangent(p[k], p[(k + 1) % 3], p[(k + 2) % 3]);
@@ -79,7 +107,7 @@ struct ArapSolver::Impl {
 
     // Global step: L u = b with L the cotangent Laplacian (per-triangle weights are
     // positive semi-definite even for obtuse triangles), one vertex pinned for translation.
-    pinned_vertex = mesh.boundary_loop.empty() ? 0 : mesh.boundary_loop.front();
+    pinned_vertex = mesh.boundary_loops.empty() ? 0 : mesh.outer_loop().front();
     reduced.assign(n, -1);
     int free_count = 0;
     for (int v = 0; v < n; ++v)
@@ -191,7 +219,7 @@ struct ArapSolver::Impl {
       const double a10 = i01 * g00 + i11 * g01, a11 = i01 * g01 + i11 * g11;  // row 1
       const double p00 = a00 * i00 + a01 * i10, p01 = a00 * i01 + a01 * i11;
       const double p10 = a10 * i00 + a11 * i10, p11 = a10 * i01 + a11 * i11;
-      const double k = -2 * options.barrier_weight * area3[f];
+      const double k = -2 * options.barrier_weight * face_weight[f] * area3[f];
       // grad_M = k * P * M^-T; M^-T = [[i00, i10], [i01, i11]].
       const double d00 = k * (p00 * i00 + p01 * i01), d01 = k * (p00 * i10 + p01 * i11);
       const double d10 = k * (p10 * i00 + p11 * i01), d11 = k * (p10 * i10 + p11 * i11);
@@ -248,7 +276,7 @@ struct ArapSolver::Impl {
       for (size_t v = 0; v < uv.size(); ++v) trial[v] = uv[v] + alpha * (target[v] - uv[v]);
       const double e = total_energy(trial);
       if (!(e < energy)) continue;
-      if (count_loop_self_intersections(mesh.boundary_loop, trial) != 0) continue;
+      if (count_loop_self_intersections(mesh.outer_loop(), trial) != 0) continue;
       trial_energy = e;
       return alpha;
     }
@@ -294,10 +322,11 @@ ArapSolver::ArapSolver(const SurfaceMesh& mesh, const ArapOptions& options)
     : impl_(std::make_unique<Impl>(mesh, options)) {
   auto& s = *impl_;
   const auto t0 = Clock::now();
+  const SurfaceMesh& disk = s.mesh;
   if (options.start != ArapStart::Tutte) {
-    std::vector<glm::dvec2> start = lscm(mesh);
-    const bool usable = count_flipped_triangles(mesh, start) == 0 &&
-                        count_loop_self_intersections(mesh.boundary_loop, start) == 0;
+    std::vector<glm::dvec2> start = lscm(disk);
+    const bool usable = count_flipped_triangles(disk, start) == 0 &&
+                        count_loop_self_intersections(disk.outer_loop(), start) == 0;
     if (usable) {
       s.uv = std::move(start);
       s.report.start_used = ArapStart::Lscm;
@@ -306,7 +335,7 @@ ArapSolver::ArapSolver(const SurfaceMesh& mesh, const ArapOptions& options)
     }
   }
   if (s.uv.empty()) {
-    s.uv = tutte_embedding(mesh);
+    s.uv = tutte_embedding(disk);
     s.report.start_used = ArapStart::Tutte;
   }
   s.report.precompute_ms = ms_since(t0);
@@ -325,6 +354,7 @@ const ArapReport& ArapSolver::report() const { return impl_->report; }
 Parameterization finish_parameterization(const SurfaceMesh& mesh, const ArapSolver& solver) {
   Parameterization result;
   result.uv = solver.uv();
+  result.uv.resize(mesh.vertex_count());  // the holes' patches are dropped
   result.report = solver.report();
   detail::scale_to_surface_area(mesh, result.uv);
   result.quality = measure_map(mesh, result.uv);

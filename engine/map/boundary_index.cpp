@@ -14,12 +14,10 @@ namespace {
 
 // Cells at least `reach` wide over the mesh's box grown by it, and no smaller than a quarter of
 // the longest boundary segment.
-CellGrid boundary_grid(const SurfaceMesh& mesh, double reach) {
-  const auto& loop = mesh.boundary_loop;
+CellGrid boundary_grid(const SurfaceMesh& mesh, const std::vector<glm::ivec2>& segments, double reach) {
   const auto& pos = mesh.positions;
-  const int n = int(loop.size());
   double longest = 0;
-  for (int i = 0; i < n; ++i) longest = std::max(longest, glm::length(pos[loop[(i + 1) % n]] - pos[loop[i]]));
+  for (const glm::ivec2& s : segments) longest = std::max(longest, glm::length(pos[s.y] - pos[s.x]));
   glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
   for (const glm::dvec3& p : pos) lo = glm::min(lo, p), hi = glm::max(hi, p);
   if (pos.empty()) lo = hi = glm::dvec3(0);
@@ -29,12 +27,13 @@ CellGrid boundary_grid(const SurfaceMesh& mesh, double reach) {
 }  // namespace
 
 BoundaryIndex::BoundaryIndex(const SurfaceMesh& mesh, double reach)
-    : mesh_(mesh), reach_(reach > 0 ? reach : 1), grid_(boundary_grid(mesh, reach_)) {
-  const auto& loop = mesh.boundary_loop;
+    : mesh_(mesh),
+      segments_(boundary_segments(mesh)),
+      reach_(reach > 0 ? reach : 1),
+      grid_(boundary_grid(mesh, segments_, reach_)) {
   const auto& pos = mesh.positions;
-  const int n = int(loop.size());
-  for (int i = 0; i < n; ++i) {
-    const glm::dvec3 a = pos[loop[i]], b = pos[loop[(i + 1) % n]];
+  for (int i = 0; i < int(segments_.size()); ++i) {
+    const glm::dvec3 a = pos[segments_[i].x], b = pos[segments_[i].y];
     const glm::ivec3 c0 = grid_.cell_of(glm::min(a, b)), c1 = grid_.cell_of(glm::max(a, b));
     for (int z = c0.z; z <= c1.z; ++z)
       for (int y = c0.y; y <= c1.y; ++y)
@@ -43,15 +42,13 @@ BoundaryIndex::BoundaryIndex(const SurfaceMesh& mesh, double reach)
 }
 
 BoundaryIndex::Nearest BoundaryIndex::nearest(const glm::dvec3& p) const {
-  const auto& loop = mesh_.boundary_loop;
   const auto& pos = mesh_.positions;
-  const int n = int(loop.size());
   Nearest best{reach_, p};
   grid_.for_each_key_around(p, [&](std::uint64_t key) {
     const auto it = buckets_.find(key);
     if (it == buckets_.end()) return;
     for (int i : it->second) {
-      const glm::dvec3 a = pos[loop[i]], ab = pos[loop[(i + 1) % n]] - a;
+      const glm::dvec3 a = pos[segments_[i].x], ab = pos[segments_[i].y] - a;
       const double len2 = glm::dot(ab, ab);
       const double t = len2 > 0 ? std::clamp(glm::dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
       const glm::dvec3 q = a + t * ab;

@@ -1,10 +1,11 @@
 #pragma once
-// The surface's boundary polyline in 3D, its segments bucketed in cubic cells, for nearest-point
+// The surface's boundary polylines (all loops) in 3D, its segments bucketed in cubic cells, for nearest-point
 // queries within a reach: which elements cross the boundary, and how far the adaptive pattern's
 // particles must stay from it.
 #include "elements/cell_grid.h"
 #include "mesh/surface_mesh.h"
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include <cstdint>
@@ -28,6 +29,7 @@ public:
 
 private:
   const SurfaceMesh& mesh_;
+  std::vector<glm::ivec2> segments_;
   double reach_;
   CellGrid grid_;
   std::unordered_map<std::uint64_t, std::vector<int>> buckets_;  // cell -> boundary segments

@@ -13,7 +13,7 @@ namespace paver {
 
 std::vector<glm::dvec2> lscm(const SurfaceMesh& mesh) {
   const int n = mesh.vertex_count();
-  const auto& loop = mesh.boundary_loop;
+  const auto& loop = mesh.outer_loop();
   if (loop.size() < 3) throw InputError("LSCM needs a boundary loop of at least 3 vertices");
 
   // Pin the first boundary vertex and the boundary vertex farthest from it in 3D.

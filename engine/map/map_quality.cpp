@@ -39,16 +39,17 @@ int count_flipped_triangles(const SurfaceMesh& mesh, const std::vector<glm::dvec
   return flipped;
 }
 
-int count_loop_self_intersections(const std::vector<int>& loop, const std::vector<glm::dvec2>& uv) {
-  const int n = static_cast<int>(loop.size());
-  if (n < 4) return 0;
+int count_segment_intersections(const std::vector<glm::ivec2>& segments, const std::vector<glm::dvec2>& uv) {
+  const int n = static_cast<int>(segments.size());
+  if (n < 2) return 0;
   glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
   double total = 0;
-  for (int i = 0; i < n; ++i) {
-    const glm::dvec2 p = uv[loop[i]];
-    if (!std::isfinite(p.x) || !std::isfinite(p.y)) return n;  // a broken map overlaps itself
-    lo = glm::min(lo, p), hi = glm::max(hi, p);
-    total += glm::length(uv[loop[(i + 1) % n]] - p);
+  for (const glm::ivec2& s : segments) {
+    const glm::dvec2 p = uv[s.x], q = uv[s.y];
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(q.x) || !std::isfinite(q.y))
+      return n;  // a broken map overlaps itself
+    lo = glm::min(lo, glm::min(p, q)), hi = glm::max(hi, glm::max(p, q));
+    total += glm::length(q - p);
   }
   // Cells about one average edge long: each edge touches a few cells, each cell holds a few edges.
   const double cell = std::max(total / n, 1e-300);
@@ -62,7 +63,7 @@ int count_loop_self_intersections(const std::vector<int>& loop, const std::vecto
   // Counting sort of (cell, edge) pairs into CSR buckets.
   std::vector<int> start(size_t(nx) * ny + 1, 0);
   auto for_cells = [&](int e, auto&& visit) {
-    const glm::dvec2 a = uv[loop[e]], b = uv[loop[(e + 1) % n]];
+    const glm::dvec2 a = uv[segments[e].x], b = uv[segments[e].y];
     const glm::ivec2 c0 = cell_of(glm::min(a, b)), c1 = cell_of(glm::max(a, b));
     for (int y = c0.y; y <= c1.y; ++y)
       for (int x = c0.x; x <= c1.x; ++x) visit(size_t(y) * nx + x);
@@ -76,10 +77,9 @@ int count_loop_self_intersections(const std::vector<int>& loop, const std::vecto
   for (size_t c = 0; c + 1 < start.size(); ++c) {
     for (int i = start[c]; i < start[c + 1]; ++i) {
       for (int j = i + 1; j < start[c + 1]; ++j) {
-        const int e = std::min(edges[i], edges[j]), f = std::max(edges[i], edges[j]);
-        if (f - e <= 1 || (e == 0 && f == n - 1)) continue;  // neighbours share a vertex
-        const glm::dvec2 p1 = uv[loop[e]], p2 = uv[loop[(e + 1) % n]];
-        const glm::dvec2 q1 = uv[loop[f]], q2 = uv[loop[(f + 1) % n]];
+        const glm::ivec2 s = segments[edges[i]], t = segments[edges[j]];
+        if (s.x == t.x || s.x == t.y || s.y == t.x || s.y == t.y) continue;  // neighbours share a vertex
+        const glm::dvec2 p1 = uv[s.x], p2 = uv[s.y], q1 = uv[t.x], q2 = uv[t.y];
         if (!segments_intersect(p1, p2, q1, q2)) continue;
         // A pair may share several cells: count it in the first cell both edges touch.
         const glm::ivec2 first = glm::max(cell_of(glm::min(p1, p2)), cell_of(glm::min(q1, q2)));
@@ -90,10 +90,18 @@ int count_loop_self_intersections(const std::vector<int>& loop, const std::vecto
   return count;
 }
 
+int count_loop_self_intersections(const std::vector<int>& loop, const std::vector<glm::dvec2>& uv) {
+  if (loop.size() < 4) return 0;
+  std::vector<glm::ivec2> segments;
+  segments.reserve(loop.size());
+  for (size_t k = 0; k < loop.size(); ++k) segments.emplace_back(loop[k], loop[(k + 1) % loop.size()]);
+  return count_segment_intersections(segments, uv);
+}
+
 MapQuality measure_map(const SurfaceMesh& mesh, const std::vector<glm::dvec2>& uv) {
   MapQuality q;
   q.flipped_triangles = count_flipped_triangles(mesh, uv);
-  q.boundary_intersections = count_loop_self_intersections(mesh.boundary_loop, uv);
+  q.boundary_intersections = count_segment_intersections(boundary_segments(mesh), uv);
   double area3 = 0, area2 = 0;
   for (const auto& t : mesh.triangles) {
     area3 += detail::triangle_area(mesh.positions[t.x], mesh.positions[t.y], mesh.positions[t.z]);

@@ -14,7 +14,7 @@ namespace paver {
 
 std::vector<glm::dvec2> tutte_embedding(const SurfaceMesh& mesh) {
   const int n = mesh.vertex_count();
-  const auto& loop = mesh.boundary_loop;
+  const auto& loop = mesh.outer_loop();
   std::vector<glm::dvec2> uv(n, glm::dvec2(0));
 
   // Boundary on a circle of the surface's area, spaced by arc length, counter-clockwise in

@@ -24,7 +24,8 @@ std::vector<double> mean_curvature(const SurfaceMesh& mesh) {
     }
   }
   std::vector<bool> on_boundary(n, false);
-  for (int b : mesh.boundary_loop) on_boundary[b] = true;
+  for (const std::vector<int>& loop : mesh.boundary_loops)
+    for (int b : loop) on_boundary[b] = true;
   std::vector<double> h(n, 0);
   for (int v = 0; v < n; ++v)
     if (!on_boundary[v] && area[v] > 0) h[v] = glm::length(laplacian[v]) / (4 * area[v]);

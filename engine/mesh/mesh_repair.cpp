@@ -250,12 +250,14 @@ long long orient_consistently(std::vector<glm::ivec3>& triangles, const Edges& e
   return flipped;
 }
 
-// The one boundary loop of consistently oriented, manifold triangles, following the direction of
-// its sides and starting at its lowest vertex.
-std::vector<int> single_boundary_loop(const std::vector<glm::ivec3>& triangles, const Edges& edges,
-                                      size_t vertex_count, const std::string& source, const std::string& note) {
+// The boundary loops of consistently oriented, manifold triangles, each following the direction
+// of its sides and starting at its lowest vertex; the longest (in 3D) first, then by first vertex.
+std::vector<std::vector<int>> boundary_loops(const std::vector<glm::ivec3>& triangles, const Edges& edges,
+                                             const std::vector<glm::dvec3>& positions, const std::string& source,
+                                             const std::string& note) {
+  const size_t vertex_count = positions.size();
   std::vector<int> next(vertex_count, -1);
-  int first = -1;
+  bool any = false;
   for (const auto& [begin, end] : edges.ranges) {
     if (end - begin != 1) continue;
     // The face may have been flipped since `edges` was collected: read the direction off the face.
@@ -263,37 +265,32 @@ std::vector<int> single_boundary_loop(const std::vector<glm::ivec3>& triangles, 
     int c = 0;
     while (edge_key(t[c], t[(c + 1) % 3]) != edges.sides[begin].key) ++c;
     next[t[c]] = t[(c + 1) % 3];
-    if (first < 0 || t[c] < first) first = t[c];
+    any = true;
   }
-  if (first < 0)
-    fail(source, "is a closed surface (it has no boundary edges); Paver needs an open surface with one boundary "
-                 "loop; cut it open first" +
+  if (!any)
+    fail(source, "is a closed surface (it has no boundary edges); Paver paves open surfaces (disks, bands, "
+                 "surfaces with holes): cut it open first, for example across its middle into two halves" +
                      note);
   std::vector<char> visited(vertex_count, 0);
-  std::vector<int> loop_sizes;
-  std::vector<int> loop;
+  std::vector<std::vector<int>> loops;
   for (int start = 0; start < int(vertex_count); ++start) {
     if (next[start] < 0 || visited[start]) continue;
-    int size = 0;
+    std::vector<int>& loop = loops.emplace_back();
     for (int v = start; v >= 0 && !visited[v]; v = next[v]) {
       visited[v] = 1;
-      if (start == first) loop.push_back(v);
-      ++size;
+      loop.push_back(v);
     }
-    loop_sizes.push_back(size);
   }
-  if (loop_sizes.size() > 1) {
-    std::sort(loop_sizes.rbegin(), loop_sizes.rend());
-    std::string sizes;
-    for (size_t i = 0; i < loop_sizes.size() && i < 5; ++i)
-      sizes += (i == 0 ? "" : ", ") + std::to_string(loop_sizes[i]);
-    if (loop_sizes.size() > 5) sizes += ", ...";
-    fail(source, "has " + std::to_string(loop_sizes.size()) + " boundary loops (holes) of " + sizes +
-                     " edges; Paver needs exactly one: fill the holes or cut the surface so that its boundary is a "
-                     "single loop" +
-                     note);
-  }
-  return loop;
+  std::vector<double> length(loops.size(), 0);
+  for (size_t l = 0; l < loops.size(); ++l)
+    for (size_t k = 0; k < loops[l].size(); ++k)
+      length[l] += glm::length(positions[loops[l][(k + 1) % loops[l].size()]] - positions[loops[l][k]]);
+  std::vector<size_t> order(loops.size());
+  for (size_t l = 0; l < order.size(); ++l) order[l] = l;
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return length[a] > length[b]; });
+  std::vector<std::vector<int>> sorted;
+  for (size_t l : order) sorted.push_back(std::move(loops[l]));
+  return sorted;
 }
 
 }  // namespace
@@ -346,7 +343,7 @@ LoadedSurface check_and_repair(std::vector<glm::dvec3> positions, const std::vec
   if (flipped > 0)
     loaded.warnings.push_back(source + ": reoriented " + count_of(flipped, "face", "faces") +
                               " to match their neighbours");
-  const std::vector<int> loop = single_boundary_loop(triangles, edges, positions.size(), source, note);
+  const std::vector<std::vector<int>> loops = boundary_loops(triangles, edges, positions, source, note);
 
   // Compact the vertices to those the kept faces use.
   std::fill(used.begin(), used.end(), 0);
@@ -359,18 +356,26 @@ LoadedSurface check_and_repair(std::vector<glm::dvec3> positions, const std::vec
       mesh.positions.push_back(positions[v]);
     }
 
-  // One boundary loop on a connected, orientable surface: a disk exactly when V - E + F = 1.
+  // A connected, orientable surface of genus g with L boundary loops has V - E + F = 2 - 2g - L.
   const long long euler = static_cast<long long>(mesh.positions.size()) -
                           static_cast<long long>(edges.ranges.size()) + static_cast<long long>(triangles.size());
-  if (euler != 1)
-    fail(source, "is not a topological disk: it has one boundary loop but " +
-                     count_of((1 - euler) / 2, "handle", "handles") + " (V - E + F = " + std::to_string(euler) +
-                     ", a disk has 1); Paver needs a disk-like surface: cut through the handles or fill them" + note);
+  const long long loop_count = static_cast<long long>(loops.size());
+  const long long handles = (2 - loop_count - euler) / 2;
+  if (handles != 0)
+    fail(source, "has " + count_of(handles, "handle", "handles") + " (V - E + F = " + std::to_string(euler) + " with " +
+                     count_of(loop_count, "boundary loop", "boundary loops") + "; a surface without handles has " +
+                     std::to_string(2 - loop_count) +
+                     "); Paver needs a surface without handles (a disk, a band, a surface with holes): cut through "
+                     "the handles or fill them" +
+                     note);
 
   mesh.triangles.reserve(triangles.size());
   for (const glm::ivec3& t : triangles) mesh.triangles.emplace_back(new_index[t.x], new_index[t.y], new_index[t.z]);
-  mesh.boundary_loop.reserve(loop.size());
-  for (int v : loop) mesh.boundary_loop.push_back(new_index[v]);
+  for (const std::vector<int>& loop : loops) {
+    std::vector<int>& kept = mesh.boundary_loops.emplace_back();
+    kept.reserve(loop.size());
+    for (int v : loop) kept.push_back(new_index[v]);
+  }
   return loaded;
 }
 

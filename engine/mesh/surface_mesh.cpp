@@ -27,4 +27,24 @@ double bounding_box_diagonal(const SurfaceMesh& mesh) {
   return glm::length(hi - lo);
 }
 
+std::vector<glm::ivec2> boundary_segments(const SurfaceMesh& mesh) {
+  std::vector<glm::ivec2> segments;
+  segments.reserve(boundary_vertex_count(mesh));
+  for (const std::vector<int>& loop : mesh.boundary_loops)
+    for (size_t k = 0; k < loop.size(); ++k) segments.emplace_back(loop[k], loop[(k + 1) % loop.size()]);
+  return segments;
+}
+
+double boundary_length(const SurfaceMesh& mesh) {
+  double length = 0;
+  for (const glm::ivec2& s : boundary_segments(mesh)) length += glm::length(mesh.positions[s.y] - mesh.positions[s.x]);
+  return length;
+}
+
+int boundary_vertex_count(const SurfaceMesh& mesh) {
+  size_t count = 0;
+  for (const std::vector<int>& loop : mesh.boundary_loops) count += loop.size();
+  return static_cast<int>(count);
+}
+
 }  // namespace paver

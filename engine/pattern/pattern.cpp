@@ -65,7 +65,7 @@ Pattern build_pattern(const SurfaceMap& map, const UnitCell& cell, const Placeme
     return glm::dvec2((p.x * a2.y - p.y * a2.x) / det, (a1.x * p.y - a1.y * p.x) / det);
   };
   glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-  for (int v : map.mesh.boundary_loop) {
+  for (int v : map.mesh.outer_loop()) {  // the holes lie inside it
     const glm::dvec2 l = lattice_coords(placement.map_to_pattern(map.uv[v]));
     lo = glm::min(lo, l), hi = glm::max(hi, l);
   }

@@ -114,15 +114,6 @@ double spacing_curvature_correlation(const SurfaceMap& map, const Elements& elem
   return pearson(ranks(s), ranks(k));
 }
 
-namespace {
-double boundary_length(const SurfaceMesh& mesh) {
-  double length = 0;
-  const std::vector<int>& loop = mesh.boundary_loop;
-  for (size_t k = 0; k < loop.size(); ++k)
-    length += glm::length(mesh.positions[loop[(k + 1) % loop.size()]] - mesh.positions[loop[k]]);
-  return length;
-}
-}  // namespace
 
 // Mean over the surface (vertex weights: a third of each triangle's area) of the squared spacing
 // factor of eq. 5, 1 + c + m * normalised |H|: a curvature-aware design asks for that much more

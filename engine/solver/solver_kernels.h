@@ -50,12 +50,13 @@ inline int locate(const SolverSurface& s, glm::vec2 p, glm::vec3& bary) {
 // The point of the boundary nearest to p, nudged into the map (the NOTES' reading of strays).
 // `segment` receives the boundary segment it lies on.
 inline glm::vec2 pull_back(const SolverSurface& s, glm::vec2 p, int& segment) {
-  const int n = static_cast<int>(s.boundary_uv.size());
+  const int n = static_cast<int>(s.boundary_segments.size());
   float best = INFINITY;
   glm::vec2 result = p;
   for (int i = 0; i < n; ++i) {
     const BoundaryCandidate candidate =
-        boundary_candidate(p, s.boundary_uv[i], s.boundary_uv[i + 1 == n ? 0 : i + 1], s.boundary_inward[i]);
+        boundary_candidate(p, glm::vec2(s.boundary_segments[i].x, s.boundary_segments[i].y),
+                           glm::vec2(s.boundary_segments[i].z, s.boundary_segments[i].w), s.boundary_inward[i]);
     if (candidate.dist2 < best) {
       best = candidate.dist2;
       segment = i;

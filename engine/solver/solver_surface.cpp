@@ -25,7 +25,7 @@ private:
 std::uint64_t fingerprint_of(const SolverSurface& s) {
   Fnv1a h;
   h.add(s.uv), h.add(s.position), h.add(s.curvature), h.add(s.triangles);
-  h.add(s.grid_start), h.add(s.grid_triangles), h.add(s.boundary_uv), h.add(s.boundary_inward);
+  h.add(s.grid_start), h.add(s.grid_triangles), h.add(s.boundary_segments), h.add(s.boundary_inward);
   const float values[] = {s.grid_origin.x, s.grid_origin.y, s.grid_cell_size, s.curvature_min, s.curvature_max,
                           s.centre.x, s.centre.y};
   const std::int32_t sizes[] = {s.grid_nx, s.grid_ny};
@@ -62,17 +62,17 @@ SolverSurface make_solver_surface(const SurfaceMap& map) {
   s.grid_triangles = map.grid.cell_triangles;
 
   // Boundary segments and the triangle each belongs to (the one using it as an edge).
-  const auto& loop = mesh.boundary_loop;
-  const int n = static_cast<int>(loop.size());
-  s.boundary_uv.resize(n);
+  const std::vector<glm::ivec2> segments = boundary_segments(mesh);
+  const int n = static_cast<int>(segments.size());
+  s.boundary_segments.resize(n);
   s.boundary_inward.resize(n);
-  std::vector<int> next(mesh.vertex_count(), -1);
+  // Each boundary vertex starts exactly one segment (the loops are disjoint).
+  std::vector<int> next(mesh.vertex_count(), -1), segment_of(mesh.vertex_count(), -1);
   for (int i = 0; i < n; ++i) {
-    next[loop[i]] = loop[(i + 1) % n];
-    s.boundary_uv[i] = glm::vec2(map.uv[loop[i]]);
+    next[segments[i].x] = segments[i].y;
+    segment_of[segments[i].x] = i;
+    s.boundary_segments[i] = glm::vec4(glm::vec2(map.uv[segments[i].x]), glm::vec2(map.uv[segments[i].y]));
   }
-  std::vector<int> segment_of(mesh.vertex_count(), -1);
-  for (int i = 0; i < n; ++i) segment_of[loop[i]] = i;
   for (const auto& t : mesh.triangles) {
     const int c[3] = {t.x, t.y, t.z};
     for (int k = 0; k < 3; ++k) {

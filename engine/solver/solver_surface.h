@@ -23,9 +23,9 @@ struct SolverSurface {
   std::int32_t grid_nx = 0, grid_ny = 0;
   std::vector<std::int32_t> grid_start;      // #cells + 1
   std::vector<std::int32_t> grid_triangles;  // CSR triangle lists
-  // Boundary of M^: segment s joins boundary_uv[s] and boundary_uv[(s+1) % n]; a point pulled
-  // back onto it is nudged towards the centroid of the boundary triangle on that segment.
-  std::vector<glm::vec2> boundary_uv;        // #B loop vertices
+  // Boundary of M^, every loop's segments: segment s joins boundary_segments[s].xy and .zw; a
+  // point pulled back onto it is nudged towards the centroid of the boundary triangle on it.
+  std::vector<glm::vec4> boundary_segments;  // #B segment ends
   std::vector<glm::vec2> boundary_inward;    // #B centroid of the triangle on segment s
   float curvature_min = 0, curvature_max = 0;
   glm::vec2 centre{0};                       // O(M^): centre of the map's bounding box (eq. 12)

@@ -127,6 +127,43 @@ TEST_F(PaverCli, VersionExitsZero) {
 
 using PaverRun = CliTest;
 
+TEST_F(PaverRun, APlateWithTwoHolesIsPavedAroundThem) {
+  // A 5 x 3 grid of unit squares, each split in two, without the squares (1, 1) and (3, 1):
+  // one outer boundary and two holes.
+  constexpr int kW = 6, kH = 4;  // vertices per row, rows
+  std::ostringstream obj;
+  for (int j = 0; j < kH; ++j)
+    for (int i = 0; i < kW; ++i) obj << "v " << i << ' ' << j << " 0\n";
+  const auto index = [](int i, int j) { return j * kW + i + 1; };
+  for (int j = 0; j + 1 < kH; ++j) {
+    for (int i = 0; i + 1 < kW; ++i) {
+      if (j == 1 && (i == 1 || i == 3)) continue;
+      obj << "f " << index(i, j) << ' ' << index(i + 1, j) << ' ' << index(i + 1, j + 1) << '\n';
+      obj << "f " << index(i, j) << ' ' << index(i + 1, j + 1) << ' ' << index(i, j + 1) << '\n';
+    }
+  }
+  const fs::path holes = dir() / "two_holes.obj";
+  write_file_text(holes, obj.str());
+  const fs::path out = dir() / "out";
+  const CliResult r = paver({"run", holes.string(), "--spacing", "0.25", "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const json report = read_json(out / "report.json");
+  EXPECT_EQ(report["surface"]["boundary_loops"].get<int>(), 3);
+  EXPECT_EQ(report["surface"]["holes"].get<int>(), 2);
+  EXPECT_TRUE(report["parameterization"]["bijective"].get<bool>());
+  EXPECT_TRUE(report["verdict"]["ok"].get<bool>()) << report["verdict"].dump();
+  // No stone's footprint reaches into a hole (the squares [1, 2] x [1, 2] and [3, 4] x [1, 2]).
+  const std::vector<Placement> rows = read_placements(out / "placements.csv");
+  ASSERT_GT(rows.size(), 100u);
+  for (const Placement& row : rows)
+    for (double hole_x : {1.0, 3.0}) {
+      const double dx = std::max({hole_x - row.p[0], 0.0, row.p[0] - (hole_x + 1)});
+      const double dy = std::max({1.0 - row.p[1], 0.0, row.p[1] - 2.0});
+      EXPECT_GE(std::hypot(dx, dy), 0.5 * row.diameter - 1e-9)
+          << "a stone at (" << row.p[0] << ", " << row.p[1] << ") reaches into the hole at x = " << hole_x;
+    }
+}
+
 TEST_F(PaverRun, DomeHexWritesEveryOutputOnTheSurface) {
   const fs::path out = dir() / "dome";
   const CliResult r = paver({"run", "assets/surfaces/dome.obj", "--pattern", "hex", "--spacing", "6", "--out",
@@ -463,28 +500,6 @@ TEST_F(PaverRunErrors, ClosedSurface) {
   const fs::path out = dir() / "out";
   const CliResult r = paver({"run", tetrahedron.string(), "--out", out.string()});
   expect_input_error(r, out, {"tetrahedron.obj", "cut it open"});
-}
-
-TEST_F(PaverRunErrors, TwoHoles) {
-  // A 5 x 3 grid of unit squares, each split in two, without the squares (1, 1) and (3, 1):
-  // one outer boundary and two holes.
-  constexpr int kW = 6, kH = 4;  // vertices per row, rows
-  std::ostringstream obj;
-  for (int j = 0; j < kH; ++j)
-    for (int i = 0; i < kW; ++i) obj << "v " << i << ' ' << j << " 0\n";
-  const auto index = [](int i, int j) { return j * kW + i + 1; };
-  for (int j = 0; j + 1 < kH; ++j) {
-    for (int i = 0; i + 1 < kW; ++i) {
-      if (j == 1 && (i == 1 || i == 3)) continue;
-      obj << "f " << index(i, j) << ' ' << index(i + 1, j) << ' ' << index(i + 1, j + 1) << '\n';
-      obj << "f " << index(i, j) << ' ' << index(i + 1, j + 1) << ' ' << index(i, j + 1) << '\n';
-    }
-  }
-  const fs::path holes = dir() / "two_holes.obj";
-  write_file_text(holes, obj.str());
-  const fs::path out = dir() / "out";
-  const CliResult r = paver({"run", holes.string(), "--out", out.string()});
-  expect_input_error(r, out, {"two_holes.obj", "boundary loops"});
 }
 
 TEST_F(PaverRunErrors, NanCoordinate) {

@@ -27,10 +27,11 @@ SurfaceMap flat_plate(double size, int cells) {
       m.triangles.emplace_back(at(i, j), at(i + 1, j), at(i + 1, j + 1));
       m.triangles.emplace_back(at(i, j), at(i + 1, j + 1), at(i, j + 1));
     }
-  for (int i = 0; i < cells; ++i) m.boundary_loop.push_back(at(i, 0));
-  for (int j = 0; j < cells; ++j) m.boundary_loop.push_back(at(cells, j));
-  for (int i = cells; i > 0; --i) m.boundary_loop.push_back(at(i, cells));
-  for (int j = cells; j > 0; --j) m.boundary_loop.push_back(at(0, j));
+  std::vector<int>& loop = m.boundary_loops.emplace_back();
+  for (int i = 0; i < cells; ++i) loop.push_back(at(i, 0));
+  for (int j = 0; j < cells; ++j) loop.push_back(at(cells, j));
+  for (int i = cells; i > 0; --i) loop.push_back(at(i, cells));
+  for (int j = cells; j > 0; --j) loop.push_back(at(0, j));
   SurfaceMap map;
   map.normals.assign(m.positions.size(), glm::dvec3(0, 0, 1));
   map.mesh = std::move(m);

@@ -25,7 +25,7 @@ inline SurfaceMesh unit_square_surface() {
   SurfaceMesh m;
   m.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
   m.triangles = {{0, 1, 2}, {0, 2, 3}};
-  m.boundary_loop = {0, 1, 2, 3};
+  m.boundary_loops = {{0, 1, 2, 3}};
   return m;
 }
 

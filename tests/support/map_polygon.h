@@ -11,7 +11,7 @@ namespace paver::test {
 
 inline std::vector<glm::dvec2> boundary_polygon(const SurfaceMap& map) {
   std::vector<glm::dvec2> polygon;
-  for (int v : map.mesh.boundary_loop) polygon.push_back(map.uv[v]);
+  for (int v : map.mesh.outer_loop()) polygon.push_back(map.uv[v]);
   return polygon;
 }
 

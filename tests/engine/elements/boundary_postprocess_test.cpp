@@ -83,7 +83,7 @@ double distance_to_polygon(const std::vector<glm::dvec2>& polygon, glm::dvec2 p)
 
 // 3D distance from p to the surface's boundary polyline, over every segment.
 double distance_to_boundary_3d(const SurfaceMap& map, const glm::dvec3& p) {
-  const auto& loop = map.mesh.boundary_loop;
+  const auto& loop = map.mesh.outer_loop();
   const auto& x = map.mesh.positions;
   double best = std::numeric_limits<double>::infinity();
   for (size_t i = 0; i < loop.size(); ++i)

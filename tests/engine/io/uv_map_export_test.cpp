@@ -136,7 +136,7 @@ TEST_F(UvMapExport, AwkwardNumbersKeepNineDigits) {
   SurfaceMesh mesh;
   mesh.positions = {{0, 0, 0}, {1.0 / 3, -2e-7, 12345.678901}, {-1e5, 0.5, 2}, {3.14159265358979, 1e-300, -7}};
   mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
-  mesh.boundary_loop = {0, 1, 2, 3};
+  mesh.boundary_loops = {{0, 1, 2, 3}};
   const std::vector<glm::dvec2> uv = {{0, 0}, {2.0 / 3, 1e-12}, {-98765.4321, 0.1}, {1e10, -1.0 / 7}};
   const fs::path path = folder_ / "awkward.obj";
   write_uv_map_obj(path, mesh, uv);
@@ -147,7 +147,7 @@ TEST_F(UvMapExport, RewritingReplacesTheFile) {
   SurfaceMesh mesh;
   mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   mesh.triangles = {{0, 1, 2}};
-  mesh.boundary_loop = {0, 1, 2};
+  mesh.boundary_loops = {{0, 1, 2}};
   const fs::path path = folder_ / "map.obj";
   write_uv_map_obj(path, mesh, {{0, 0}, {5, 0}, {0, 5}});
   write_uv_map_obj(path, mesh, {{0, 0}, {1, 0}, {0, 1}});

@@ -132,9 +132,9 @@ TEST(TutteEmbedding, BoundaryOnACircleAndBijective) {
   const SurfaceMesh mesh = load_surface(test::scanned_mesh("bunnyhead")).mesh;
   const auto uv = tutte_embedding(mesh);
   const double radius = std::sqrt(surface_area(mesh) / std::numbers::pi);
-  for (int b : mesh.boundary_loop) EXPECT_NEAR(glm::length(uv[b]), radius, 1e-9 * radius);
+  for (int b : mesh.outer_loop()) EXPECT_NEAR(glm::length(uv[b]), radius, 1e-9 * radius);
   EXPECT_EQ(count_flipped_triangles(mesh, uv), 0);
-  EXPECT_EQ(count_loop_self_intersections(mesh.boundary_loop, uv), 0);
+  EXPECT_EQ(count_loop_self_intersections(mesh.outer_loop(), uv), 0);
 }
 
 TEST(MapQuality, CountsFlipsAndBoundaryCrossings) {
@@ -142,15 +142,15 @@ TEST(MapQuality, CountsFlipsAndBoundaryCrossings) {
   std::vector<glm::dvec2> uv;
   for (const auto& p : plane.positions) uv.emplace_back(p.x, p.y);
   EXPECT_EQ(count_flipped_triangles(plane, uv), 0);
-  EXPECT_EQ(count_loop_self_intersections(plane.boundary_loop, uv), 0);
+  EXPECT_EQ(count_loop_self_intersections(plane.outer_loop(), uv), 0);
   // Pull an interior vertex across its neighbours: the triangles around it fold.
   const int centre = 2 * 5 + 2;
   uv[centre] = {0.9, 0.9};
   EXPECT_GT(count_flipped_triangles(plane, uv), 0);
   // Push a boundary vertex through the opposite side of the square: the loop crosses itself.
   uv[centre] = {0.5, 0.5};
-  uv[plane.boundary_loop[2]] = {0.5, 1.5};
-  EXPECT_GT(count_loop_self_intersections(plane.boundary_loop, uv), 0);
+  uv[plane.outer_loop()[2]] = {0.5, 1.5};
+  EXPECT_GT(count_loop_self_intersections(plane.outer_loop(), uv), 0);
 }
 
 TEST(MapQuality, FigureEightLoopCrossesOnce) {

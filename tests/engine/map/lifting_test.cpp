@@ -81,7 +81,7 @@ TEST(MeanCurvature, SphereCapHasCurvatureOneOverRadius) {
   const SurfaceMesh dome = load_surface(test::bundled_surface("dome")).mesh;
   const auto h = mean_curvature(dome);
   std::vector<bool> boundary(dome.vertex_count(), false);
-  for (int b : dome.boundary_loop) boundary[b] = true;
+  for (int b : dome.outer_loop()) boundary[b] = true;
   for (int v = 0; v < dome.vertex_count(); ++v) {
     if (boundary[v]) continue;
     EXPECT_NEAR(h[v], 0.01, 0.001) << v;

@@ -110,7 +110,7 @@ TEST_P(UvGridLocate, PointsOnEdgesAndVerticesGetOneOfTheirTriangles) {
     check(0.5 * (map.uv[tri.x] + map.uv[tri.y]), "edge " + std::to_string(tri.x) + "-" + std::to_string(tri.y));
   }
   // The boundary itself belongs to the map.
-  const auto& loop = map.mesh.boundary_loop;
+  const auto& loop = map.mesh.outer_loop();
   for (size_t i = 0; i < loop.size(); ++i) {
     check(map.uv[loop[i]], "boundary vertex " + std::to_string(loop[i]));
     check(0.5 * (map.uv[loop[i]] + map.uv[loop[(i + 1) % loop.size()]]), "boundary edge " + std::to_string(i));

@@ -64,14 +64,15 @@ void expect_valid_surface(const SurfaceMesh& mesh) {
   int boundary_edges = 0;
   for (std::uint64_t side : sides)
     if (!sides.count(directed(int(side & 0xffffffffu), int(side >> 32)))) ++boundary_edges;
-  const std::vector<int>& loop = mesh.boundary_loop;
-  EXPECT_EQ(int(loop.size()), boundary_edges);
-  EXPECT_EQ(std::set<int>(loop.begin(), loop.end()).size(), loop.size()) << "loop visits a vertex twice";
-  for (size_t i = 0; i < loop.size(); ++i) {
-    const int a = loop[i], b = loop[(i + 1) % loop.size()];
-    EXPECT_TRUE(sides.count(directed(a, b))) << "loop step " << a << "->" << b << " is not a face side";
-    EXPECT_FALSE(sides.count(directed(b, a))) << "loop step " << a << "->" << b << " is not a boundary edge";
-  }
+  std::set<int> on_loops;
+  for (const std::vector<int>& loop : mesh.boundary_loops)
+    for (size_t i = 0; i < loop.size(); ++i) {
+      EXPECT_TRUE(on_loops.insert(loop[i]).second) << "vertex " << loop[i] << " is on the loops twice";
+      const int a = loop[i], b = loop[(i + 1) % loop.size()];
+      EXPECT_TRUE(sides.count(directed(a, b))) << "loop step " << a << "->" << b << " is not a face side";
+      EXPECT_FALSE(sides.count(directed(b, a))) << "loop step " << a << "->" << b << " is not a boundary edge";
+    }
+  EXPECT_EQ(int(on_loops.size()), boundary_edges) << "the loops hold every boundary edge";
   std::vector<char> used(mesh.positions.size(), 0);
   for (const glm::ivec3& t : mesh.triangles) used[t.x] = used[t.y] = used[t.z] = 1;
   for (size_t v = 0; v < used.size(); ++v) EXPECT_TRUE(used[v]) << "vertex " << v << " is unreferenced";
@@ -108,24 +109,32 @@ TEST(MeshLoaderRealMeshes, BunnyheadCountsAndBoundary) {
   const LoadedSurface& loaded = real_mesh("bunnyhead.obj");
   EXPECT_EQ(loaded.mesh.face_count(), 3000);
   EXPECT_EQ(loaded.mesh.vertex_count(), 1550);
-  EXPECT_EQ(loaded.mesh.boundary_loop.size(), 98u);
+  EXPECT_EQ(loaded.mesh.outer_loop().size(), 98u);
   EXPECT_TRUE(loaded.warnings.empty()) << loaded.warnings.front();
   expect_valid_surface(loaded.mesh);
 }
 
-// A scanned band and a scan with two holes: refused, naming every loop (until bands and holes
-// are paved: issue 12).
-TEST(MeshLoaderRealMeshes, BandAndHolesAreRefusedNamingTheirLoops) {
-  const std::pair<const char*, const char*> cases[] = {
-      {"bunnyhead_band.obj", "has 2 boundary loops (holes) of 125, 33 edges"},
-      {"bunnyhead_three_loops.obj", "has 3 boundary loops (holes) of 59, 33, 32 edges"}};
-  for (const auto& [name, expected] : cases) {
-    try {
-      load_surface(scanned(name));
-      ADD_FAILURE() << name << " was accepted";
-    } catch (const InputError& e) {
-      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
-    }
+// A scanned band and a scan with two holes load with every loop, the longest (in 3D) first.
+TEST(MeshLoaderRealMeshes, BandAndHolesLoadWithEveryLoopTheLongestFirst) {
+  const std::pair<const char*, std::vector<size_t>> cases[] = {{"bunnyhead_band.obj", {125, 33}},
+                                                               {"bunnyhead_three_loops.obj", {59, 33, 32}}};
+  for (const auto& [name, expected_sizes] : cases) {
+    const SurfaceMesh& mesh = real_mesh(name).mesh;
+    std::vector<size_t> sizes;
+    for (const auto& loop : mesh.boundary_loops) sizes.push_back(loop.size());
+    std::vector<size_t> sorted = sizes;
+    std::sort(sorted.rbegin(), sorted.rend());
+    EXPECT_EQ(sorted, expected_sizes) << name;
+    ASSERT_FALSE(mesh.boundary_loops.empty());
+    const auto loop_length = [&](const std::vector<int>& loop) {
+      double length = 0;
+      for (size_t k = 0; k < loop.size(); ++k)
+        length += glm::length(mesh.positions[loop[(k + 1) % loop.size()]] - mesh.positions[loop[k]]);
+      return length;
+    };
+    for (const auto& loop : mesh.boundary_loops)
+      EXPECT_LE(loop_length(loop), loop_length(mesh.outer_loop())) << name << ": the outer loop is the longest";
+    expect_valid_surface(mesh);
   }
 }
 
@@ -133,7 +142,7 @@ TEST(MeshLoaderRealMeshes, MazeCountsAndBoundary) {
   const LoadedSurface& loaded = real_mesh("maze.obj");
   EXPECT_EQ(loaded.mesh.face_count(), 9174);
   EXPECT_EQ(loaded.mesh.vertex_count(), 6120);
-  EXPECT_EQ(loaded.mesh.boundary_loop.size(), 3064u);
+  EXPECT_EQ(loaded.mesh.outer_loop().size(), 3064u);
   expect_valid_surface(loaded.mesh);
 }
 
@@ -150,7 +159,7 @@ TEST_F(MeshLoaderTest, QuadGridIsTriangulated) {
   const LoadedSurface loaded = load_surface(write("grid.obj", grid_obj(4, 3, true)));
   EXPECT_EQ(loaded.mesh.face_count(), 2 * 12);
   EXPECT_EQ(loaded.mesh.vertex_count(), 20);
-  EXPECT_EQ(loaded.mesh.boundary_loop.size(), 14u);
+  EXPECT_EQ(loaded.mesh.outer_loop().size(), 14u);
   EXPECT_TRUE(loaded.warnings.empty());
   EXPECT_NEAR(surface_area(loaded.mesh), 12.0, 1e-12);
   EXPECT_NEAR(bounding_box_diagonal(loaded.mesh), 5.0, 1e-12);
@@ -180,7 +189,7 @@ TEST_F(MeshLoaderTest, CollinearPolygonVerticesAreKept) {
   EXPECT_EQ(loaded.mesh.face_count(), 6);
   EXPECT_EQ(loaded.dropped_degenerate_faces, 0);
   EXPECT_NEAR(surface_area(loaded.mesh), 4.0, 1e-12);
-  EXPECT_EQ(loaded.mesh.boundary_loop.size(), 8u);
+  EXPECT_EQ(loaded.mesh.outer_loop().size(), 8u);
   expect_valid_surface(loaded.mesh);
 }
 
@@ -193,7 +202,7 @@ TEST_F(MeshLoaderTest, SelfIntersectingPolygonFallsBackToFan) {
   }
   const LoadedSurface loaded = make_surface(positions, {{0, 2, 4, 1, 3}}, "pentagram");
   EXPECT_EQ(loaded.mesh.face_count(), 3);
-  EXPECT_EQ(loaded.mesh.boundary_loop.size(), 5u);
+  EXPECT_EQ(loaded.mesh.outer_loop().size(), 5u);
   expect_valid_surface(loaded.mesh);
 }
 
@@ -201,7 +210,7 @@ TEST_F(MeshLoaderTest, ReadsOff) {
   const LoadedSurface loaded =
       load_surface(write("square.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n"));
   EXPECT_EQ(loaded.mesh.face_count(), 2);
-  EXPECT_EQ(loaded.mesh.boundary_loop.size(), 4u);
+  EXPECT_EQ(loaded.mesh.outer_loop().size(), 4u);
   expect_valid_surface(loaded.mesh);
 }
 
@@ -285,7 +294,7 @@ TEST_F(MeshLoaderTest, LargeGridIsHandled) {
     }
   const LoadedSurface loaded = make_surface(std::move(positions), faces, "grid");
   EXPECT_EQ(loaded.mesh.face_count(), 2 * (n - 1) * (n - 1));
-  EXPECT_EQ(loaded.mesh.boundary_loop.size(), size_t(4 * (n - 1)));
+  EXPECT_EQ(loaded.mesh.outer_loop().size(), size_t(4 * (n - 1)));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -649,7 +658,7 @@ TEST_F(MeshLoaderTest, ClosedCubeIsRefused) {
   EXPECT_TRUE(Contains(message, "cut it open"));
 }
 
-TEST_F(MeshLoaderTest, HolesAreCounted) {
+TEST_F(MeshLoaderTest, HolesAreLoadedAsLoops) {
   // A 5 x 5 quad grid with two interior quads removed: the outer loop and two holes.
   std::ostringstream obj;
   const int n = 5;
@@ -661,9 +670,13 @@ TEST_F(MeshLoaderTest, HolesAreCounted) {
       const int a = j * (n + 1) + i + 1, b = a + 1, c = a + n + 1, d = c + 1;
       obj << "f " << a << ' ' << b << ' ' << d << ' ' << c << '\n';
     }
-  const std::string message = load_error(write("holes.obj", obj.str()));
-  EXPECT_TRUE(Contains(message, "has 3 boundary loops (holes)"));
-  EXPECT_TRUE(Contains(message, "Paver needs exactly one"));
+  const LoadedSurface loaded = load_surface(write("holes.obj", obj.str()));
+  ASSERT_EQ(loaded.mesh.boundary_loops.size(), 3u);
+  EXPECT_EQ(loaded.mesh.hole_count(), 2);
+  EXPECT_EQ(loaded.mesh.outer_loop().size(), 20u) << "the grid's rim is the outer loop";
+  EXPECT_EQ(loaded.mesh.boundary_loops[1].size(), 4u);
+  EXPECT_EQ(loaded.mesh.boundary_loops[2].size(), 4u);
+  expect_valid_surface(loaded.mesh);
 }
 
 TEST_F(MeshLoaderTest, HandleIsRefused) {

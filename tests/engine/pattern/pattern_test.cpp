@@ -215,7 +215,7 @@ TEST(PatternPlacement, MapToPatternAndBackAreInverses) {
 TEST(PatternFlatSquare, TheMapIsTheSquareUpToAMotion) {
   // Everything below relies on the flat square's map being isometric and centred at the origin.
   const SurfaceMap& map = flat_map();
-  EXPECT_EQ(map.mesh.boundary_loop.size(), size_t(4 * kQuads));
+  EXPECT_EQ(map.mesh.outer_loop().size(), size_t(4 * kQuads));
   glm::dvec2 centre(0);
   for (const glm::dvec2& q : map.uv) centre += q;
   centre /= double(map.uv.size());

@@ -42,7 +42,7 @@ const SurfaceMap& dome_map() { return *test::bundled_map("dome"); }
 
 bool inside_map(const SurfaceMap& map, glm::dvec2 p) {
   bool in = false;
-  const std::vector<int>& loop = map.mesh.boundary_loop;
+  const std::vector<int>& loop = map.mesh.outer_loop();
   for (size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++) {
     const glm::dvec2 a = map.uv[loop[i]], b = map.uv[loop[j]];
     if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y)) in = !in;

@@ -137,7 +137,7 @@ TEST_P(RunReportOnPavement, CountsAgreeWithThePavement) {
   EXPECT_EQ(r["surface"]["path"].get<std::string>(), info.surface_path);
   EXPECT_EQ(r["surface"]["vertices"].get<int>(), map.mesh.vertex_count());
   EXPECT_EQ(r["surface"]["faces"].get<int>(), map.mesh.face_count());
-  EXPECT_EQ(r["surface"]["boundary_vertices"].get<long>(), long(map.mesh.boundary_loop.size()));
+  EXPECT_EQ(r["surface"]["boundary_vertices"].get<long>(), long(map.mesh.outer_loop().size()));
   EXPECT_EQ(r["design"]["source"].get<std::string>(), c.name);
   EXPECT_EQ(r["design"]["spacing"].get<double>(), p.design.pattern.spacing);
   EXPECT_EQ(r["design"]["tessellation"].get<std::string>(), std::string(tessellation_name(c.design.pattern.tessellation)));

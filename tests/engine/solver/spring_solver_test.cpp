@@ -645,11 +645,13 @@ TEST(SpringSolver, CoincidentParticlesStayFinite) {
   // How two particles come to coincide: two neighbours pushed out past a convex corner of the map
   // are both pulled back onto the corner vertex (the nearest boundary point of each) and nudged by
   // the same rule to the same point.
-  const std::vector<glm::vec2>& boundary = scene.surface.boundary_uv;
+  const std::vector<glm::vec4>& boundary = scene.surface.boundary_segments;
   const glm::vec2 centre = scene.surface.centre;
-  glm::vec2 corner = boundary[0];
-  for (glm::vec2 q : boundary)
+  glm::vec2 corner(boundary[0].x, boundary[0].y);
+  for (glm::vec4 segment : boundary) {
+    const glm::vec2 q(segment.x, segment.y);
     if (glm::length(q - centre) > glm::length(corner - centre)) corner = q;
+  }
   const glm::vec2 out = glm::normalize(corner - centre);  // the corner's bisector, outwards
   const glm::vec2 side(-out.y, out.x);
   SpringSystem sys = hand_system({corner + 5.0f * out, corner + 7.0f * out + 0.5f * side}, {{0, 1, 0.0f}});
