@@ -221,8 +221,12 @@ int run_run(const RunArgs& args) {
                 pavement.design.pattern.spacing);
   const auto& q = map.parameterization.quality;
   const auto& pr = map.parameterization.report;
-  std::printf("surface  %s: %d vertices, %d faces, area %.6g\n", printable(args.surface).c_str(), map.mesh.vertex_count(),
-              map.mesh.face_count(), surface_area(map.mesh));
+  const int holes = map.mesh.hole_count();
+  const std::string shape = holes == 0   ? "a disk"
+                            : holes == 1 ? "a band or a disk with a hole (2 boundary loops)"
+                                         : std::to_string(holes) + " holes (" + std::to_string(holes + 1) + " boundary loops)";
+  std::printf("surface  %s: %d vertices, %d faces, area %.6g, %s\n", printable(args.surface).c_str(),
+              map.mesh.vertex_count(), map.mesh.face_count(), surface_area(map.mesh), shape.c_str());
   std::printf("map      ARAP from %s, %d iterations: %d flips, %d boundary overlaps, s1/s2 mean %.3f max %.3f\n",
               pr.start_used == ArapStart::Lscm ? "LSCM" : "Tutte", pr.iterations, q.flipped_triangles,
               q.boundary_intersections, q.stretch_mean, q.stretch_max);

@@ -15,6 +15,21 @@ inline std::vector<glm::dvec2> boundary_polygon(const SurfaceMap& map) {
   return polygon;
 }
 
+// Boundary loop `l` (0 the outer one, then the holes) as a polygon in the map.
+inline std::vector<glm::dvec2> loop_polygon(const SurfaceMap& map, size_t l) {
+  std::vector<glm::dvec2> polygon;
+  for (int v : map.mesh.boundary_loops[l]) polygon.push_back(map.uv[v]);
+  return polygon;
+}
+
+// Twice the signed area (positive counter-clockwise).
+inline double signed_area2(const std::vector<glm::dvec2>& polygon) {
+  double sum = 0;
+  for (size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++)
+    sum += polygon[j].x * polygon[i].y - polygon[i].x * polygon[j].y;
+  return sum;
+}
+
 // Crossing-number test.
 inline bool inside(const std::vector<glm::dvec2>& polygon, glm::dvec2 p) {
   bool in = false;

@@ -16,10 +16,13 @@ namespace paver::test {
 inline std::filesystem::path source_dir() { return PAVER_SOURCE_DIR; }
 
 inline std::vector<std::string> bundled_surface_names() {
-  return {"dome", "saddle", "wave", "vase", "torus_section", "pendant", "facade"};
+  return {"dome",   "saddle",    "wave",           "vase",           "torus_section", "pendant",
+          "facade", "bangle", "ring_band", "facade_windows", "pendant_pierced"};
 }
 // Real scans copied into assets/scanned (sources and licence in its README).
-inline std::vector<std::string> scanned_mesh_names() { return {"bunnyhead", "maze"}; }
+inline std::vector<std::string> scanned_mesh_names() {
+  return {"bunnyhead", "maze", "bunnyhead_band", "bunnyhead_three_loops"};
+}
 
 inline std::filesystem::path bundled_surface(const std::string& name) {
   return source_dir() / "assets/surfaces" / (name + ".obj");

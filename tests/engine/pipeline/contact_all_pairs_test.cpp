@@ -4,6 +4,7 @@
 // plain loop over ALL pairs of elements, written here with no spatial structure, counts the pairs
 // closer than r_i + r_j + gap and finds the smallest clearance. The pipeline must leave no such
 // pair, and its report (quality_after) must give the same figures as this loop.
+#include "all_pairs.h"
 #include "pipeline/pavement.h"
 #include "pattern/default_spacing.h"
 #include "surface_maps.h"
@@ -20,22 +21,8 @@
 namespace paver {
 namespace {
 
-struct AllPairs {
-  long violations = 0;
-  double min_clearance = std::numeric_limits<double>::infinity();
-};
-
-AllPairs all_pairs(const Elements& e, double gap) {
-  AllPairs out;
-  for (size_t i = 0; i < e.size(); ++i)
-    for (size_t j = i + 1; j < e.size(); ++j) {
-      const double d = glm::length(e.position[i] - e.position[j]);
-      const double radii = 0.5 * e.diameter[i] + 0.5 * e.diameter[j];
-      if (d < radii + gap) ++out.violations;
-      out.min_clearance = std::min(out.min_clearance, d - radii);
-    }
-  return out;
-}
+using test::all_pairs;
+using test::AllPairs;
 
 std::shared_ptr<const SurfaceMap> surface(const std::string& name) {
   for (const std::string& scan : test::scanned_mesh_names())
