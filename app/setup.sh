@@ -3,7 +3,7 @@
 # everything (Release, build/), then either runs the main job on a bundled surface (`demo`) or the
 # whole test suite (`test`). README's quick start is these two commands. `sanitize` (CI's second
 # stage) builds the engine, the CLI and the fuzz targets with clang under ASan+UBSan into
-# build-sanitize/, runs their tests there and each fuzz target for PAVER_FUZZ_SECONDS (default 60).
+# build-sanitize/, runs their tests there and each fuzz target for PAVER_FUZZ_SECONDS (default 40).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -11,7 +11,7 @@ usage() { echo "usage: app/setup.sh demo|test|build|sanitize" >&2; exit 2; }
 [ $# -eq 1 ] || usage
 mode=$1
 case "$mode" in demo|test|build|sanitize) ;; *) usage ;; esac
-fuzz_seconds=${PAVER_FUZZ_SECONDS:-60}
+fuzz_seconds=${PAVER_FUZZ_SECONDS:-40}
 [[ "$fuzz_seconds" =~ ^[0-9]+$ ]] || { echo "setup: PAVER_FUZZ_SECONDS must be a whole number of seconds, got '$fuzz_seconds'" >&2; exit 2; }
 
 packages=(
