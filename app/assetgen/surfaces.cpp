@@ -113,12 +113,17 @@ Mesh wave(int target) {
 }
 
 // Facade panel, 400 wide (x) by 200 high (y), bulging towards +z by up to 25, less at the top.
+HeightField facade_field() {
+  return {[](double x, double y) {
+            const double v = y / 200.0;
+            return 25.0 * std::sin(kPi * x / 400.0) * (1.0 - 0.3 * v * v);
+          },
+          {0.0, 0.0},
+          {400.0, 200.0}};
+}
+
 Mesh facade(int target) {
-  const HeightField hf{[](double x, double y) {
-                         const double v = y / 200.0;
-                         return 25.0 * std::sin(kPi * x / 400.0) * (1.0 - 0.3 * v * v);
-                       },
-                       {0.0, 0.0}, {400.0, 200.0}};
+  const HeightField hf = facade_field();
   return fit_faces([&](double h) { return height_field(hf, h); }, 10.0, target);
 }
 
@@ -314,11 +319,7 @@ Mesh ring_band(int target) {
 // The facade panel with 4 x 3 windows: the grid's cells whose centres fall in a window are left
 // out, so each window is a clean rectangle of cells with the panel's own triangles around it.
 Mesh facade_windows(int target) {
-  const HeightField hf{[](double x, double y) {
-                         const double v = y / 200.0;
-                         return 25.0 * std::sin(kPi * x / 400.0) * (1.0 - 0.3 * v * v);
-                       },
-                       {0.0, 0.0}, {400.0, 200.0}};
+  const HeightField hf = facade_field();
   const auto in_window = [](dvec3 c) {
     // Windows 50 wide and 34 high, on a 100 x 60 raster starting 25 in from the left and 20 up.
     const double fx = std::fmod(c.x - 25.0, 100.0), fy = std::fmod(c.y - 20.0, 60.0);

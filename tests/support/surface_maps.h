@@ -28,4 +28,11 @@ inline std::shared_ptr<const SurfaceMap> bundled_map(std::string name) {
   return cached_map(bundled_surface(name));
 }
 
+// A bundled surface or a scan in assets/scanned, by name.
+inline std::shared_ptr<const SurfaceMap> named_map(const std::string& name) {
+  for (const std::string& scan : scanned_mesh_names())
+    if (scan == name) return cached_map(scanned_mesh(name));
+  return bundled_map(name);
+}
+
 }  // namespace paver::test

@@ -24,6 +24,11 @@ inline std::vector<std::string> scanned_mesh_names() {
   return {"bunnyhead", "maze", "bunnyhead_band", "bunnyhead_three_loops"};
 }
 
+// The bundled and scanned surfaces that are not disks: bands and surfaces with holes.
+inline std::vector<std::string> holed_surface_names() {
+  return {"bangle", "ring_band", "facade_windows", "pendant_pierced", "bunnyhead_band", "bunnyhead_three_loops"};
+}
+
 inline std::filesystem::path bundled_surface(const std::string& name) {
   return source_dir() / "assets/surfaces" / (name + ".obj");
 }

@@ -54,20 +54,10 @@ TEST(HolePatches, ADiskIsLeftAsItIs) {
   EXPECT_EQ(patched.mesh.boundary_loops, surface.boundary_loops);
 }
 
-std::vector<std::string> surfaces_with_holes() {
-  return {"bangle", "ring_band", "facade_windows", "pendant_pierced", "bunnyhead_band", "bunnyhead_three_loops"};
-}
-
-std::shared_ptr<const SurfaceMap> map_of(const std::string& name) {
-  for (const std::string& scan : test::scanned_mesh_names())
-    if (scan == name) return test::cached_map(test::scanned_mesh(name));
-  return test::bundled_map(name);
-}
-
 class HoledMap : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(HoledMap, IsBijectiveWithEachHoleInsideTheOuterLoopTurnedTheOtherWayAndApart) {
-  const auto map = map_of(GetParam());
+  const auto map = test::named_map(GetParam());
   const SurfaceMesh& mesh = map->mesh;
   ASSERT_GE(mesh.boundary_loops.size(), 2u);
   EXPECT_EQ(map->uv.size(), size_t(mesh.vertex_count())) << "the patches' centres are dropped";
@@ -96,7 +86,7 @@ TEST_P(HoledMap, IsBijectiveWithEachHoleInsideTheOuterLoopTurnedTheOtherWayAndAp
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Surfaces, HoledMap, ::testing::ValuesIn(surfaces_with_holes()));
+INSTANTIATE_TEST_SUITE_P(Surfaces, HoledMap, ::testing::ValuesIn(test::holed_surface_names()));
 
 }  // namespace
 }  // namespace paver

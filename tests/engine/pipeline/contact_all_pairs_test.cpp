@@ -24,12 +24,6 @@ namespace {
 using test::all_pairs;
 using test::AllPairs;
 
-std::shared_ptr<const SurfaceMap> surface(const std::string& name) {
-  for (const std::string& scan : test::scanned_mesh_names())
-    if (scan == name) return test::cached_map(test::scanned_mesh(name));
-  return test::bundled_map(name);
-}
-
 using Case = std::tuple<std::string, Tessellation, bool>;  // surface, tessellation, with gap
 using AdaptiveCase = std::tuple<Tessellation, bool>;       // on the bunny head
 
@@ -49,7 +43,7 @@ class ContactAllPairs : public ::testing::TestWithParam<Case> {};
 
 TEST_P(ContactAllPairs, NoPairCloserThanItsRadiiPlusTheGapAndTheReportAgrees) {
   const auto& [name, tessellation, with_gap] = GetParam();
-  const auto map = surface(name);
+  const auto map = test::named_map(name);
   Design design;
   design.pattern.tessellation = tessellation;
   design.pattern.topology = Topology::Lattice;  // the paper's pattern; adaptive and auto have their own cases
@@ -65,7 +59,7 @@ class ContactAllPairsAdaptive : public ::testing::TestWithParam<AdaptiveCase> {}
 
 TEST_P(ContactAllPairsAdaptive, TheAdaptivePatternKeepsTheRuleToo) {
   const auto& [tessellation, with_gap] = GetParam();
-  const auto map = surface("bunnyhead");
+  const auto map = test::named_map("bunnyhead");
   Design design;
   design.pattern.tessellation = tessellation;
   design.pattern.topology = Topology::Adaptive;

@@ -17,18 +17,12 @@
 namespace paver {
 namespace {
 
-std::shared_ptr<const SurfaceMap> map_of(const std::string& name) {
-  for (const std::string& scan : test::scanned_mesh_names())
-    if (scan == name) return test::cached_map(test::scanned_mesh(name));
-  return test::bundled_map(name);
-}
-
 using Case = std::tuple<std::string, Tessellation>;
 class HolesAndBands : public ::testing::TestWithParam<Case> {};
 
 TEST_P(HolesAndBands, NoContactNoCrossingAndFillOfAtLeast85Percent) {
   const auto& [name, tessellation] = GetParam();
-  const auto map = map_of(name);
+  const auto map = test::named_map(name);
   ASSERT_GE(map->mesh.boundary_loops.size(), 2u);
   Design design;
   design.pattern.tessellation = tessellation;
@@ -46,8 +40,7 @@ TEST_P(HolesAndBands, NoContactNoCrossingAndFillOfAtLeast85Percent) {
 
 INSTANTIATE_TEST_SUITE_P(
     Surfaces, HolesAndBands,
-    ::testing::Combine(::testing::Values("bangle", "ring_band", "facade_windows", "pendant_pierced", "bunnyhead_band",
-                                         "bunnyhead_three_loops"),
+    ::testing::Combine(::testing::ValuesIn(test::holed_surface_names()),
                        ::testing::Values(Tessellation::Triangle, Tessellation::Hexagon)),
     [](const auto& info) {
       return std::get<0>(info.param) + "_" + std::string(tessellation_name(std::get<1>(info.param)));
