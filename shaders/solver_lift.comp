@@ -65,7 +65,9 @@ void main() {
     atomicOr(control[kControlError], kErrorNonFinite);
     return;
   }
-  vec2 p = before;
+  // Wrapping into the period (a map that wraps) is not a pull back.
+  vec2 wrapped = wrap_position(P.period, P.period_origin, before);
+  vec2 p = wrapped;
   vec3 b = vec3(0.0f);
   int t = -1;
   int hint = triangle_hint[a];
@@ -94,7 +96,7 @@ void main() {
   lifted[a] = lift_barycentric(b, surface_position[i], surface_position[j], surface_position[k],
                                surface_curvature[i], surface_curvature[j], surface_curvature[k]);
   if (pc.first == 0u) return;
-  bool pulled = p != before;
+  bool pulled = p != wrapped;
   pulled_back[a] = pulled ? 1u : 0u;
   stray_count[a] = next_stray_count(P, stray_count[a], pulled);
   if (pulled) atomicAdd(control[kControlStrays], 1u);

@@ -20,7 +20,7 @@ void main() {
       for (int i = neighbor_start[a]; i < neighbor_start[a + 1]; ++i) {
         int nb = neighbor[i];
         if (stray_count[nb] == kRetired) continue;
-        vec2 pb = position_in[nb];
+        vec2 pb = nearest_image(P.period, position_in[nb], pa);
         int spring = neighbor_spring[i];
         float l = target[spring];
         precise vec2 d = pb - pa;

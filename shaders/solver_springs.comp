@@ -13,7 +13,7 @@ void main() {
   float previous = target[s];
   bool fresh = previous <= 0.0f;
   bool reset = fresh || pulled_back[a] != 0u || pulled_back[b] != 0u;
-  precise vec2 d2 = position_in[b] - position_in[a];
+  precise vec2 d2 = nearest_image(P.period, position_in[b], position_in[a]) - position_in[a];
   precise vec3 d3 = lifted[b].xyz - lifted[a].xyz;
   SpringState state = update_spring(P, d2, d3, lifted[a].w, lifted[b].w, rest_length[s], previous,
                                     initial_target[s], reset, spring_flags[s]);

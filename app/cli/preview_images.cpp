@@ -46,14 +46,15 @@ PreviewImages PreviewImages::open() {
 void PreviewImages::write(const std::filesystem::path& folder, const SurfaceMap& map, const Pavement& pavement,
                           const ShapeMesh* custom, PreviewSize size) {
   render::Renderer& r = *impl_->renderer;
-  r.set_surface(map);
+  const SurfaceMap& points_map = pavement_map(map, pavement);  // a band's seamless map, when paved on it
+  r.set_surface(points_map);
   const auto stone_colours =
       render::element_colours(pavement.elements, render::ColourMode::NeighbourRatio, pavement.design.elements.gap);
   auto colours = stone_colours;
   Elements with_beads;  // the beads are drawn with the stones, as they are exported
   const Elements& drawn = stones_and_beads(pavement, with_beads, &colours);
   r.set_elements(drawn, colours, custom);
-  r.set_pattern(map, pavement.pattern, pavement.points);
+  r.set_pattern(points_map, pavement.pattern, pavement.points);
   render::SceneStyle style;
   r.render_3d(size.width, size.height, render::frame_surface(map.mesh), style);
   render::Image preview = r.read_back(0);
@@ -64,7 +65,7 @@ void PreviewImages::write(const std::filesystem::path& folder, const SurfaceMap&
   const bool marks_defects = !pavement.pattern.defects.empty();
   if (marks_defects)
     r.set_elements(pavement.elements, defect_marked_colours(pavement, stone_colours), custom);
-  r.render_2d(size.width, size.height, render::frame_map(map), style);
+  r.render_2d(size.width, size.height, render::frame_map(points_map), style);
   render::Image param = r.read_back(1);
   if (marks_defects) render::draw_defect_legend(param, kFewer, kMore);
   render::write_png(folder / "param.png", param);

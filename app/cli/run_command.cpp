@@ -241,6 +241,17 @@ int run_run(const RunArgs& args) {
                 pavement.relaxation.packing_iterations, pavement.relaxation.jammed, pavement.relaxation.milliseconds);
   std::printf("\n");
   if (!pavement.topology_choice.empty()) std::printf("topology %s\n", pavement.topology_choice.c_str());
+  if (map.mesh.boundary_loops.size() == 2) {
+    if (pavement.band_closure)
+      std::printf("band     seamless (period %.6g, map s1/s2 mean %.3f): %s\n", map.seamless->period,
+                  map.seamless->parameterization.quality.stretch_mean, describe_band_closure(*pavement.band_closure).c_str());
+    else
+      std::printf("band     paved as an annulus: %s\n",
+                  !map.seamless_unavailable.empty() ? map.seamless_unavailable.c_str()
+                  : pavement.design.pattern.topology == Topology::Lattice
+                      ? "the seamless lattice tore or left bare patches; the lattice on the annulus did better"
+                      : "the adaptive pattern grows on the annulus map");
+  }
   std::printf("optimize %s%s%s: %d iterations, %s (last max step %.3g); %d filled, %d eliminated at the boundary, "
               "%d removed still colliding\n",
               backend.name.c_str(), backend.device.empty() ? "" : " on ", backend.device.c_str(), pavement.solve.iterations, std::string(stop_reason_name(pavement.solve.reason)).c_str(),

@@ -298,24 +298,32 @@ void Renderer::set_surface(const SurfaceMap& map) {
   d.surface_indices = d.host_buffer(indices, vk::BufferUsageFlagBits::eIndexBuffer);
   d.surface_index_count = std::uint32_t(indices.size());
 
-  // The map: filled triangles, a light wireframe and the boundary in a darker line.
+  // The map: filled triangles, a light wireframe and the boundary in a darker line. A map that
+  // wraps (a band's seamless map) is drawn with its neighbouring periods, faded.
   std::vector<FlatVertex> tris, lines;
-  const std::uint32_t fill = pack({206, 209, 214}), wire = pack({170, 174, 182}), edge = pack({60, 64, 72});
-  for (const auto& t : map.mesh.triangles) {
-    for (int c : {t.x, t.y, t.z}) tris.push_back({glm::vec3(glm::vec2(map.uv[c]), 0), fill});
-    const int corners[3] = {t.x, t.y, t.z};
-    for (int k = 0; k < 3; ++k) {
-      const int a = corners[k], b = corners[(k + 1) % 3];
-      if (a < b) {  // each interior edge once (it appears as a < b in one of its triangles)
-        lines.push_back({glm::vec3(glm::vec2(map.uv[a]), 0), wire});
-        lines.push_back({glm::vec3(glm::vec2(map.uv[b]), 0), wire});
-      }
+  const std::uint32_t fill = pack({206, 209, 214}), faded = pack({112, 115, 121}), wire = pack({170, 174, 182}),
+                      edge = pack({60, 64, 72});
+  const std::vector<double> shifts = map_wraps(map) ? std::vector<double>{0.0, -map.period, map.period}
+                                                    : std::vector<double>{0.0};
+  const auto at = [](glm::dvec2 q, double shift) { return glm::vec3(float(q.x + shift), float(q.y), 0.0f); };
+  for (const double shift : shifts)
+    for (int f = 0; f < map.mesh.face_count(); ++f) {
+      const std::array<glm::dvec2, 3> corner = triangle_uv(map, f);
+      for (const glm::dvec2& q : corner) tris.push_back({at(q, shift), shift == 0 ? fill : faded});
+      if (shift != 0) continue;
+      const glm::ivec3 t = map.mesh.triangles[f];
+      for (int k = 0; k < 3; ++k)
+        if (t[k] < t[(k + 1) % 3]) {  // each interior edge once (it appears as a < b in one of its triangles)
+          lines.push_back({at(corner[k], 0), wire});
+          lines.push_back({at(corner[(k + 1) % 3], 0), wire});
+        }
     }
-  }
-  for (const glm::ivec2& segment : boundary_segments(map.mesh)) {
-    lines.push_back({glm::vec3(glm::vec2(map.uv[segment.x]), 0), edge});
-    lines.push_back({glm::vec3(glm::vec2(map.uv[segment.y]), 0), edge});
-  }
+  for (const double shift : shifts)
+    for (const glm::ivec2& segment : boundary_segments(map.mesh)) {
+      const glm::dvec2 a = map.uv[segment.x], b = nearest_image(map, map.uv[segment.y], a);
+      lines.push_back({at(a, shift), edge});
+      lines.push_back({at(b, shift), edge});
+    }
   d.map_triangles = d.host_buffer(tris, vk::BufferUsageFlagBits::eVertexBuffer);
   d.map_lines = d.host_buffer(lines, vk::BufferUsageFlagBits::eVertexBuffer);
   d.map_triangle_count = std::uint32_t(tris.size());
@@ -380,7 +388,8 @@ void Renderer::set_pattern(const SurfaceMap& map, const Pattern& pattern, const 
   std::vector<glm::dvec2> samples;
   const std::uint32_t real = pack({30, 90, 200}), virtual_colour = pack({140, 170, 220});
   for (int e = 0; e < pattern.edge_count(); ++e) {
-    const glm::dvec2 a = points[pattern.edge_a[e]], b = points[pattern.edge_b[e]];
+    const glm::dvec2 a = points[pattern.edge_a[e]];
+    const glm::dvec2 b = nearest_image(map, points[pattern.edge_b[e]], a);  // across a band's seam
     const std::uint32_t c = pattern.edge_virtual[e] ? virtual_colour : real;
     lines2d.push_back({glm::vec3(glm::vec2(a), 0), c});
     lines2d.push_back({glm::vec3(glm::vec2(b), 0), c});

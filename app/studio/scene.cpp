@@ -6,10 +6,18 @@ bool sync_scene(Scene& scene, render::Renderer& renderer, Document& doc, const L
                 const ViewSettings& views) {
   const SurfaceMap* map = doc.surface.map.get();
   if (!map) return false;
+  // The map the points are on (a band's seamless map or its annulus), drawn once it changes;
+  // the elements are uploaded after it.
+  const auto show_map = [&](const SurfaceMap& shown) {
+    if (scene.map_2d == &shown) return;
+    renderer.set_surface(shown);
+    scene.map_2d = &shown;
+  };
   if (scene.surface != map) {
     renderer.set_surface(*map);
     renderer.set_elements({}, {});
     scene.surface = map;
+    scene.map_2d = map;
     scene.pavement = nullptr;
     scene.live_sequence = 0;
     ++scene.generation;
@@ -26,10 +34,12 @@ bool sync_scene(Scene& scene, render::Renderer& renderer, Document& doc, const L
     // Post-processing is left out while the particles move: it is the slow part, and only the
     // final pavement is exported.
     const PlacedElements placed =
-        place_all_elements(*map, *snapshot->pattern, snapshot->points, snapshot->design, false);
+        place_all_elements(map_for_topology(*map, snapshot->design.pattern.topology), *snapshot->pattern,
+                           snapshot->points, snapshot->design, false);
+    show_map(map_for_topology(*map, snapshot->design.pattern.topology));
     renderer.set_elements(placed.elements, render::element_colours(placed.elements, views.colour_mode, snapshot->design.elements.gap),
                           custom_shape(doc));
-    renderer.set_pattern(*map, *snapshot->pattern, snapshot->points);
+    renderer.set_pattern(*scene.map_2d, *snapshot->pattern, snapshot->points);
     scene.pavement = nullptr;
     scene.live_sequence = snapshot->sequence;
     ++scene.generation;
@@ -42,8 +52,9 @@ bool sync_scene(Scene& scene, render::Renderer& renderer, Document& doc, const L
   if (scene.pavement == &p && !recolour) return false;
   auto colours = render::element_colours(p.elements, views.colour_mode, p.design.elements.gap);
   Elements with_beads;  // drawn with the stones, as they are exported; stone i stays element i
+  show_map(pavement_map(*map, p));
   renderer.set_elements(stones_and_beads(p, with_beads, &colours), colours, custom_shape(doc));
-  renderer.set_pattern(*map, p.pattern, p.points);
+  renderer.set_pattern(*scene.map_2d, p.pattern, p.points);
   const bool first_upload = scene.pavement != &p;
   scene.pavement = &p;
   ++scene.generation;

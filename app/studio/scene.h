@@ -16,6 +16,7 @@ namespace paver::studio {
 
 struct Scene {
   const SurfaceMap* surface = nullptr;    // the map last uploaded
+  const SurfaceMap* map_2d = nullptr;     // the map drawn (a band's seamless map when its points are on it)
   const Pavement* pavement = nullptr;     // the final pavement last uploaded; null while live
   std::uint64_t live_sequence = 0;        // the live snapshot last uploaded
   render::ColourMode colour_mode = render::ColourMode::NeighbourRatio;

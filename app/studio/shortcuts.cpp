@@ -1,3 +1,4 @@
+#include "pipeline/pavement.h"
 #include "shortcuts.h"
 
 #include "studio.h"
@@ -60,7 +61,7 @@ void handle_shortcuts(Studio& s) {
   if (pressed(GLFW_KEY_N)) step_run(s);
   if (pressed(GLFW_KEY_R) && s.doc.surface.map) {
     s.views.camera = render::frame_surface(s.doc.surface.map->mesh);
-    s.views.map_view = render::frame_map(*s.doc.surface.map);
+    s.views.map_view = render::frame_map(map_for_topology(*s.doc.surface.map, s.doc.design.pattern.topology));
   }
   if (pressed(GLFW_KEY_V)) s.views.large_3d = !s.views.large_3d;
   if (pressed(GLFW_KEY_L)) s.views.style.show_lattice = !s.views.style.show_lattice;

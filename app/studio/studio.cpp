@@ -1,3 +1,4 @@
+#include "pipeline/pavement.h"
 #include "studio.h"
 
 #include "io/output_guard.h"
@@ -43,7 +44,7 @@ void take_loaded_surface(Studio& s) {
   OpenedSurface& opened = *outcome->surface;
   const SurfaceMap& map = *opened.map;
   s.views.camera = render::frame_surface(map.mesh);
-  s.views.map_view = render::frame_map(map);
+  s.views.map_view = render::frame_map(map_for_topology(map, s.doc.design.pattern.topology));
   remember(s, opened.path);
   std::string status = "opened " + opened.path.string() + ": " + std::to_string(map.mesh.vertex_count()) +
                        " vertices, " + std::to_string(map.mesh.face_count()) + " faces";

@@ -48,7 +48,9 @@ Elements place_beads(const SurfaceMap& map, const Elements& stones, const Elemen
         if (k <= j || !std::binary_search(neighbours[std::size_t(i)].begin(), neighbours[std::size_t(i)].end(), k))
           continue;
         triangles.push_back({i, j, k});
-        middles.push_back((stones.uv[std::size_t(i)] + stones.uv[std::size_t(j)] + stones.uv[std::size_t(k)]) / 3.0);
+        const glm::dvec2 a = stones.uv[std::size_t(i)];  // the other two in one piece with it, across a seam
+        middles.push_back((a + nearest_image(map, stones.uv[std::size_t(j)], a) +
+                           nearest_image(map, stones.uv[std::size_t(k)], a)) / 3.0);
       }
     }
   LiftedPoints lifted;

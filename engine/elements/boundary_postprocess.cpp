@@ -26,7 +26,9 @@ double first_boundary_hit(const SurfaceMap& map, const std::vector<glm::ivec2>& 
   const glm::dvec2 d = q - p;
   double best = std::numeric_limits<double>::infinity();
   for (const glm::ivec2& segment : segments) {
-    const glm::dvec2 a = map.uv[segment.x], b = map.uv[segment.y];
+    // On a map that wraps: the segment in one piece, in the copy next to p.
+    const glm::dvec2 a = nearest_image(map, map.uv[segment.x], p);
+    const glm::dvec2 b = nearest_image(map, map.uv[segment.y], a);
     const glm::dvec2 e = b - a;
     const double denom = cross2(d, e);
     if (denom == 0) continue;

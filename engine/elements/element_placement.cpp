@@ -43,7 +43,8 @@ Elements place_elements(const SurfaceMap& map, const Pattern& pattern,
     const EdgeElementDesign& spec = design.edge[s];
     for (int e = 0; e < pattern.edge_count(); ++e) {
       if (pattern.edge_virtual[e] || !spec.sits_on(pattern.edge_cell_edge[e])) continue;
-      const glm::dvec2 a = points[pattern.edge_a[e]], b = points[pattern.edge_b[e]];
+      const glm::dvec2 a = points[pattern.edge_a[e]];
+      const glm::dvec2 b = nearest_image(map, points[pattern.edge_b[e]], a);  // across a band's seam
       pending.push_back({ElementKind::Edge, e, s, spec.scale * spacing, spec.shape});
       centres.push_back(a + spec.t * (b - a));
       if (anchor != EdgeAnchor::SurfaceChord) continue;

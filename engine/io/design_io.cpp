@@ -27,6 +27,7 @@ using nlohmann::json;
 constexpr Tessellation kTessellations[] = {Tessellation::Triangle, Tessellation::Grid, Tessellation::Hexagon};
 constexpr Topology kTopologies[] = {Topology::Lattice, Topology::Adaptive, Topology::Auto};
 constexpr Units kUnits[] = {Units::Millimetre, Units::Centimetre, Units::Metre, Units::Inch};
+constexpr BandRows kBandRows[] = {BandRows::Along, BandRows::Across};
 constexpr FilterBase kFilterBases[] = {FilterBase::Current, FilterBase::Initial};
 constexpr ShapeKind kShapes[] = {ShapeKind::Sphere, ShapeKind::Gem, ShapeKind::HexPrism, ShapeKind::Disc,
                                  ShapeKind::Custom};
@@ -147,6 +148,9 @@ public:
   void read(const json& value, const std::string& path, Topology& out) const {
     read_name(value, path, out, kTopologies, topology_name);
   }
+  void read(const json& value, const std::string& path, BandRows& out) const {
+    read_name(value, path, out, kBandRows, band_rows_name);
+  }
   void read(const json& value, const std::string& path, Units& out) const {
     read_name(value, path, out, kUnits, units_name);
   }
@@ -218,10 +222,11 @@ public:
   }
 
   void read(const json& value, const std::string& path, Placement& out) const {
-    check_object(value, path, {"offset", "rotation_deg", "scale"});
+    check_object(value, path, {"offset", "rotation_deg", "scale", "band_rows"});
     field(value, path, "offset", out.offset);
     field(value, path, "rotation_deg", out.rotation_deg);
     field(value, path, "scale", out.scale);
+    field(value, path, "band_rows", out.band_rows);
   }
 
   void read(const json& value, const std::string& path, SolverParams& out) const {
@@ -331,6 +336,7 @@ Json to_json(const Design& design) {
   placement["offset"] = Json::array({design.placement.offset.x, design.placement.offset.y});
   placement["rotation_deg"] = design.placement.rotation_deg;
   placement["scale"] = design.placement.scale;
+  placement["band_rows"] = std::string(band_rows_name(design.placement.band_rows));
 
   Json solver = Json::object();
   for (const SolverParameter& p : solver_parameters()) {

@@ -356,7 +356,10 @@ Parameterization finish_parameterization(const SurfaceMesh& mesh, const ArapSolv
   result.uv = solver.uv();
   result.uv.resize(mesh.vertex_count());  // the holes' patches are dropped
   result.report = solver.report();
-  detail::scale_to_surface_area(mesh, result.uv);
+  const detail::UvRescale rescale = detail::scale_to_surface_area(mesh, result.uv);
+  // close_holes puts one centre vertex per hole after the surface's vertices.
+  for (std::size_t h = 0; h < std::size_t(mesh.hole_count()); ++h)
+    result.hole_centres.push_back(rescale(solver.uv()[mesh.vertex_count() + h]));
   result.quality = measure_map(mesh, result.uv);
   return result;
 }

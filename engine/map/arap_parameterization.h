@@ -50,6 +50,9 @@ struct ArapReport {
 
 struct Parameterization {
   std::vector<glm::dvec2> uv;        // #V parameter coordinates; 2D area equals 3D area
+  // Where each hole's temporary patch had its centre, in the same frame: a point inside the
+  // hole that sees all of its rim (the patch's fan never folds). A band's seamless map starts from it.
+  std::vector<glm::dvec2> hole_centres;
   MapQuality quality;
   ArapReport report;
 };

@@ -20,7 +20,7 @@ int lift_points(const SurfaceMap& map, std::span<const glm::dvec2> points, Lifte
       [&](const tbb::blocked_range<std::size_t>& range, int outside) {
         for (std::size_t i = range.begin(); i != range.end(); ++i) {
           glm::dvec3 b;
-          const int t = locate(map.grid, map.uv, tris, points[i], b);
+          const int t = locate_on_map(map, points[i], b);
           out.triangle[i] = t;
           if (t < 0) {
             ++outside;
@@ -37,8 +37,8 @@ int lift_points(const SurfaceMap& map, std::span<const glm::dvec2> points, Lifte
 }
 
 glm::dvec2 map_point(const SurfaceMap& map, int triangle, glm::dvec3 bary) {
-  const glm::ivec3 c = map.mesh.triangles[triangle];
-  return bary.x * map.uv[c.x] + bary.y * map.uv[c.y] + bary.z * map.uv[c.z];
+  const std::array<glm::dvec2, 3> c = triangle_uv(map, triangle);
+  return bary.x * c[0] + bary.y * c[1] + bary.z * c[2];
 }
 
 }  // namespace paver

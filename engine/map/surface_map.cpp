@@ -1,10 +1,12 @@
 #include "map/surface_map.h"
 
+#include "map/seamless_band.h"
 #include "mesh/mean_curvature.h"
 
 #include <glm/common.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -14,6 +16,31 @@ namespace paver {
 double normalised_curvature(const SurfaceMap& map, double kappa) {
   const double range = map.curvature_max - map.curvature_min;
   return range > 0 ? std::clamp((kappa - map.curvature_min) / range, 0.0, 1.0) : 0.0;
+}
+
+glm::dvec2 wrap_point(const SurfaceMap& map, glm::dvec2 p) {
+  if (!map_wraps(map)) return p;
+  return {p.x - map.period * std::floor((p.x - map.period_origin) / map.period), p.y};
+}
+
+glm::dvec2 nearest_image(const SurfaceMap& map, glm::dvec2 p, glm::dvec2 near) {
+  if (!map_wraps(map)) return p;
+  return {p.x - map.period * std::floor((p.x - near.x) / map.period + 0.5), p.y};
+}
+
+std::array<glm::dvec2, 3> triangle_uv(const SurfaceMap& map, int t) {
+  if (!map_wraps(map)) {
+    const glm::ivec3 c = map.mesh.triangles[t];
+    return {map.uv[c.x], map.uv[c.y], map.uv[c.z]};
+  }
+  const glm::ivec3 c = map.domain.triangles[t];
+  return {map.domain.uv[c.x], map.domain.uv[c.y], map.domain.uv[c.z]};
+}
+
+int locate_on_map(const SurfaceMap& map, glm::dvec2 p, glm::dvec3& bary) {
+  if (!map_wraps(map)) return locate(map.grid, map.uv, map.mesh.triangles, p, bary);
+  const int t = locate(map.grid, map.domain.uv, map.domain.triangles, wrap_point(map, p), bary);
+  return t < 0 ? t : t % map.mesh.face_count();
 }
 
 SurfaceMap make_surface_map(SurfaceMesh mesh, std::vector<glm::dvec2> uv) {
@@ -46,6 +73,7 @@ SurfaceMap make_surface_map(SurfaceMesh mesh, Parameterization parameterization)
   std::vector<glm::dvec2> uv = parameterization.uv;
   SurfaceMap map = make_surface_map(std::move(mesh), std::move(uv));
   map.parameterization = std::move(parameterization);
+  add_seamless_map(map);  // a band's second map, which wraps
   return map;
 }
 

@@ -8,6 +8,9 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include <array>
+#include <memory>
+#include <string>
 #include <vector>
 
 namespace paver {
@@ -21,6 +24,15 @@ struct SurfaceMap;
 // curvature_max, clamped to [0, 1]; 0 on a surface whose curvature does not vary.
 double normalised_curvature(const SurfaceMap& map, double kappa);
 
+// The triangles of a map that wraps (a band's seamless map), laid out for point location: each
+// triangle in one piece (its corners shifted by whole periods as needed), three times: first as
+// is (triangle t of the mesh is triangle t here), then shifted by -T, then by +T.
+struct MapDomain {
+  std::vector<glm::dvec2> uv;         // domain vertices
+  std::vector<int> vertex;            // the mesh vertex each one copies
+  std::vector<glm::ivec3> triangles;  // 3 #F
+};
+
 struct SurfaceMap {
   SurfaceMesh mesh;                    // M: positions, triangles, boundary loop
   std::vector<glm::dvec2> uv;          // #V: M^, 2D area equals 3D area
@@ -30,7 +42,34 @@ struct SurfaceMap {
   UvGrid grid;
   glm::dvec2 uv_min{0}, uv_max{0};     // bounding box of M^ (its centre is O(M^), eq. 12)
   Parameterization parameterization;   // how the map was made and how good it is
+
+  // A map that wraps (docs/holes_and_bands.md, "Seamless bands"): the plane repeats every
+  // T = (period, 0); points wrap into u in [period_origin, period_origin + period), and `grid`
+  // is over `domain`. uv_min/uv_max then frame one period. 0 for a map that does not wrap.
+  double period = 0;
+  double period_origin = 0;
+  MapDomain domain;
+
+  // A band (two boundary loops) is mapped twice: this map, an annulus (which the adaptive pattern
+  // paves), and its seamless map, or the reason it has none.
+  std::shared_ptr<const SurfaceMap> seamless;
+  std::string seamless_unavailable;
 };
+
+inline bool map_wraps(const SurfaceMap& map) { return map.period > 0; }
+
+// p with its u wrapped into the map's period (p itself for a map that does not wrap).
+glm::dvec2 wrap_point(const SurfaceMap& map, glm::dvec2 p);
+
+// The copy of p (p + k T) nearest to `near`: the other end of a spring or an edge that crosses the
+// seam. p itself for a map that does not wrap.
+glm::dvec2 nearest_image(const SurfaceMap& map, glm::dvec2 p, glm::dvec2 near);
+
+// Triangle t's corners in the map, in one piece.
+std::array<glm::dvec2, 3> triangle_uv(const SurfaceMap& map, int t);
+
+// The mesh triangle containing p (wrapped first), or -1; `bary` as uv_grid's locate.
+int locate_on_map(const SurfaceMap& map, glm::dvec2 p, glm::dvec3& bary);
 
 // Parameterizes the mesh (ARAP, bijective) and builds the lifting data; throws as above.
 SurfaceMap build_surface_map(SurfaceMesh mesh, const ArapOptions& options = {});

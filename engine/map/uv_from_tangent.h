@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 #include <glm/mat2x2.hpp>
 
+#include <array>
 #include <cmath>
 
 namespace paver {
@@ -18,8 +19,8 @@ struct UvFromTangent {
   // Zero for a degenerate triangle (the displacement maps to no move).
   UvFromTangent(const SurfaceMap& map, int t) {
     const glm::ivec3 tri = map.mesh.triangles[t];
-    const glm::dvec2 u0 = map.uv[tri.x];
-    const glm::dmat2 uv_edges(map.uv[tri.y] - u0, map.uv[tri.z] - u0);
+    const std::array<glm::dvec2, 3> corner = triangle_uv(map, t);
+    const glm::dmat2 uv_edges(corner[1] - corner[0], corner[2] - corner[0]);
     if (std::abs(glm::determinant(uv_edges)) == 0) return;
     const glm::dmat2 to_bary = glm::inverse(uv_edges);
     const glm::dvec3 p0 = map.mesh.positions[tri.x];

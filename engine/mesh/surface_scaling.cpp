@@ -12,15 +12,17 @@ double uv_area(const SurfaceMesh& mesh, const std::vector<glm::dvec2>& uv) {
   return area;
 }
 
-void scale_to_surface_area(const SurfaceMesh& mesh, std::vector<glm::dvec2>& uv) {
+UvRescale scale_to_surface_area(const SurfaceMesh& mesh, std::vector<glm::dvec2>& uv) {
   const double a2 = std::abs(uv_area(mesh, uv));
-  if (!(a2 > 0)) return;
+  if (!(a2 > 0)) return {};
   const double s = std::sqrt(surface_area(mesh) / a2);
   glm::dvec2 centre(0);
   for (const auto& p : uv) centre += p;
   centre /= double(uv.size());
   // Centring too keeps coordinates small, which keeps float32 lifting accurate.
-  for (auto& p : uv) p = (p - centre) * s;
+  const UvRescale rescale{centre, s};
+  for (auto& p : uv) p = rescale(p);
+  return rescale;
 }
 
 }  // namespace paver::detail

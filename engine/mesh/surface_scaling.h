@@ -9,6 +9,12 @@
 namespace paver::detail {
 
 double uv_area(const SurfaceMesh& mesh, const std::vector<glm::dvec2>& uv);
-void scale_to_surface_area(const SurfaceMesh& mesh, std::vector<glm::dvec2>& uv);
+// The map applied: uv -> (uv - centre) * scale (identity when uv has no area).
+struct UvRescale {
+  glm::dvec2 centre{0};
+  double scale = 1;
+  glm::dvec2 operator()(glm::dvec2 p) const { return (p - centre) * scale; }
+};
+UvRescale scale_to_surface_area(const SurfaceMesh& mesh, std::vector<glm::dvec2>& uv);
 
 }  // namespace paver::detail

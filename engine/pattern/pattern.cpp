@@ -3,11 +3,13 @@
 #include "core/input_error.h"
 
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <stdexcept>
 
 namespace paver {
 namespace {
@@ -65,10 +67,28 @@ Pattern build_pattern(const SurfaceMap& map, const UnitCell& cell, const Placeme
     return glm::dvec2((p.x * a2.y - p.y * a2.x) / det, (a1.x * p.y - a1.y * p.x) / det);
   };
   glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-  for (int v : map.mesh.outer_loop()) {  // the holes lie inside it
-    const glm::dvec2 l = lattice_coords(placement.map_to_pattern(map.uv[v]));
+  const auto cover = [&](glm::dvec2 q) {
+    const glm::dvec2 l = lattice_coords(placement.map_to_pattern(q));
     lo = glm::min(lo, l), hi = glm::max(hi, l);
+  };
+  // On a map that wraps, the points are those of one period (uv_min..uv_max frame it), and an edge
+  // that leaves it goes on from the point one period back.
+  const bool wraps = map_wraps(map);
+  glm::ivec2 period_cells(0);
+  if (wraps) {
+    for (const glm::dvec2 q : {map.uv_min, map.uv_max, glm::dvec2(map.uv_min.x, map.uv_max.y),
+                               glm::dvec2(map.uv_max.x, map.uv_min.y)})
+      cover(q);
+    const glm::dvec2 t = lattice_coords(placement.map_to_pattern(glm::dvec2(map.period, 0)) -
+                                        placement.map_to_pattern(glm::dvec2(0)));
+    period_cells = glm::ivec2(glm::round(t));
+    if (!(glm::length(t - glm::dvec2(period_cells)) < 1e-6) || period_cells == glm::ivec2(0))
+      throw std::logic_error("build_pattern: the band's period is not a lattice vector (close_band first)");
+  } else {
+    for (int v : map.mesh.outer_loop()) cover(map.uv[v]);  // the holes lie inside it
   }
+  const double window_end = map.period_origin + map.period;
+  const auto in_window = [&](glm::dvec2 q) { return !wraps || (q.x >= map.period_origin && q.x < window_end); };
   // An offset (or a scale) that puts the map this many cells from the lattice's origin only
   // repeats the lattice, and its cell indices would overflow: refuse it.
   constexpr double kMaxCellIndex = 1e8;
@@ -105,7 +125,7 @@ Pattern build_pattern(const SurfaceMap& map, const UnitCell& cell, const Placeme
         const glm::dvec2 q = placement.pattern_to_map(cell.position(v, c));
         map_position[slot(c, v)] = q;
         glm::dvec3 bary;
-        if (locate(map.grid, map.uv, map.mesh.triangles, q, bary) < 0) continue;
+        if (!in_window(q) || locate_on_map(map, q, bary) < 0) continue;
         index[slot(c, v)] = pattern.point_count();
         pattern.points.push_back(q);
         pattern.point_cell_vertex.push_back(v);
@@ -117,7 +137,19 @@ Pattern build_pattern(const SurfaceMap& map, const UnitCell& cell, const Placeme
       for (int e = 0; e < int(cell.edges.size()); ++e) {
         const CellEdge& edge = cell.edges[e];
         const glm::ivec2 c(cx, cy);
-        const long sa = slot(c, edge.from), sb = slot(c + edge.offset, edge.to);
+        const long sa = slot(c, edge.from);
+        // On a map that wraps, each edge is seen from its `from` end in the period, and its `to`
+        // end taken back into the period; `back` is how far it was moved.
+        glm::ivec2 to_cell = c + edge.offset;
+        glm::dvec2 back(0);
+        if (wraps) {
+          if (!in_window(map_position[sa])) continue;
+          const double to_u = placement.pattern_to_map(cell.position(edge.to, to_cell)).x;
+          const int turns = to_u >= window_end ? 1 : to_u < map.period_origin ? -1 : 0;
+          to_cell -= turns * period_cells;
+          back = glm::dvec2(turns * map.period, 0);
+        }
+        const long sb = slot(to_cell, edge.to);
         const int a = index[sa], b = sb >= 0 ? index[sb] : -1;
         if (a >= 0 && b >= 0) {
           pattern.edge_a.push_back(a);
@@ -129,7 +161,7 @@ Pattern build_pattern(const SurfaceMap& map, const UnitCell& cell, const Placeme
           const bool from_inside = a >= 0;
           const glm::dvec2 outside = from_inside
               ? placement.pattern_to_map(cell.position(edge.to, c + edge.offset))
-              : map_position[sa];
+              : map_position[sa] - back;
           pattern.crossing_edges.push_back({from_inside ? a : b, outside, e, from_inside});
         }
       }

@@ -5,6 +5,8 @@
 
 namespace paver {
 
+std::string_view band_rows_name(BandRows rows) { return rows == BandRows::Across ? "across" : "along"; }
+
 glm::dvec2 Placement::map_to_pattern(glm::dvec2 q) const {
   const double a = rotation_deg * std::numbers::pi / 180.0;
   const double c = std::cos(a), s = std::sin(a);

@@ -4,12 +4,20 @@
 //   p = R(rotation) * (scale * q) + offset.
 #include <glm/vec2.hpp>
 
+#include <string_view>
+
 namespace paver {
+
+// On a band paved seamlessly, which way the lattice's rows run: along the band (around it) or
+// across it (rim to rim). Its rotation is then the band's, not `rotation_deg`.
+enum class BandRows { Along, Across };
+std::string_view band_rows_name(BandRows rows);  // "along", "across"
 
 struct Placement {
   glm::dvec2 offset{0, 0};   // pattern-plane units (same as D); default 0
   double rotation_deg = 0;   // degrees, counter-clockwise; default 0
   double scale = 1;          // > 0; default 1 (the map keeps the surface's area)
+  BandRows band_rows = BandRows::Across;  // default "across" (docs/holes_and_bands.md says why)
 
   glm::dvec2 map_to_pattern(glm::dvec2 q) const;
   glm::dvec2 pattern_to_map(glm::dvec2 p) const;

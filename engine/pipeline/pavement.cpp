@@ -10,7 +10,11 @@
 #include "core/input_error.h"
 #include "report/verdict.h"
 
+#include <glm/geometric.hpp>
+
 #include <chrono>
+#include <cmath>
+#include <numbers>
 #include <cstdio>
 #include <string>
 
@@ -77,6 +81,28 @@ UnitCell check_design_cell(const Design& design) {
 
 namespace {
 
+// Rows that run along a band's rims are kept or lost whole at each rim, so where the lattice sits
+// across the band decides how many fit: of a few shifts across (a fraction of the cell each, on
+// top of the design's offset), the one whose laid-out elements keep the most after the boundary
+// post-processing.
+glm::dvec2 best_offset_across(const SurfaceMap& map, const UnitCell& cell, const Design& design, glm::ivec2 step) {
+  constexpr int kTries = 8;
+  const double angle = design.placement.rotation_deg * std::numbers::pi / 180.0;
+  const glm::dvec2 across(-std::sin(angle), std::cos(angle));  // the band's v in the pattern plane
+  // Rows along the repeating step lie this far apart: a shift by it gives the same lattice.
+  const double band_step = std::abs(cell.cell_area()) / glm::length(double(step.x) * cell.a1 + double(step.y) * cell.a2);
+  glm::dvec2 best = design.placement.offset;
+  std::size_t best_count = 0;
+  for (int k = 0; k < kTries; ++k) {
+    Placement placement = design.placement;
+    placement.offset += (band_step * k / kTries) * across;
+    const Pattern pattern = build_pattern(map, cell, placement);
+    const std::size_t count = place_all_elements(map, pattern, pattern.points, design, true).elements.size();
+    if (count > best_count) best_count = count, best = placement.offset;
+  }
+  return best;
+}
+
 // The pavement of one topology (lattice or adaptive).
 Pavement pave_with_topology(const SurfaceMap& map, Design design, const PavementOptions& options) {
   Pavement pavement;
@@ -88,10 +114,31 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
   auto t0 = start("pattern");
   if (design.pattern.spacing <= 0)
     design.pattern.spacing = default_spacing(map.mesh, design.pattern.tessellation);
+  const bool adaptive = design.pattern.topology == Topology::Adaptive;
+  if (map_wraps(map) && !adaptive) {
+    // A band's seamless map: the lattice turned and its D changed a little, so that it closes.
+    check_design_cell(design);  // the design's own errors first, at its own spacing
+    BandClosure closure = close_band(map, make_design_cell(design.pattern), design.placement);
+    if (closure.spacing < design.pattern.spacing) {
+      // Closer elements may break the design's gap, which is in surface units: then one step fewer.
+      Design closer = design;
+      closer.pattern.spacing = closure.spacing;
+      try {
+        check_design_cell(closer);
+      } catch (const InputError&) {
+        closure = close_band(map, make_design_cell(design.pattern), design.placement, true);
+      }
+    }
+    design.pattern.spacing = closure.spacing;
+    design.placement.rotation_deg = closure.rotation_deg;
+    pavement.band_closure = closure;
+    pavement.seamless = true;
+  }
   pavement.cell = check_design_cell(design);
+  if (pavement.seamless)
+    design.placement.offset = best_offset_across(map, pavement.cell, design, pavement.band_closure->step);
   const QualityBasis basis = quality_basis(map, pavement.cell, design.elements, design.solver);
   // The adaptive pattern is grown instead of the lattice (docs/topology.md).
-  const bool adaptive = design.pattern.topology == Topology::Adaptive;
   if (adaptive) {
     AdaptivePattern grown = build_adaptive_pattern(map, pavement.cell, design, options.stop);
     pavement.pattern = std::move(grown.pattern);
@@ -208,13 +255,40 @@ const Elements& stones_and_beads(const Pavement& pavement, Elements& storage,
   return storage;
 }
 
+const SurfaceMap& map_for_topology(const SurfaceMap& map, Topology topology) {
+  return map.seamless && topology != Topology::Adaptive ? *map.seamless : map;
+}
+
+const SurfaceMap& pavement_map(const SurfaceMap& map, const Pavement& pavement) {
+  return pavement.seamless && map.seamless ? *map.seamless : map;
+}
+
 Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptions& options) {
-  if (design.pattern.topology != Topology::Auto) return pave_with_topology(map, std::move(design), options);
+  // A band's lattice closes on its seamless map; the adaptive pattern grows on its annulus map.
+  const SurfaceMap& lattice_map = map_for_topology(map, Topology::Lattice);
+  if (design.pattern.topology == Topology::Lattice) return pave_with_topology(lattice_map, std::move(design), options);
+  if (design.pattern.topology == Topology::Adaptive) return pave_with_topology(map, std::move(design), options);
   Design lattice = design;
   lattice.pattern.topology = Topology::Lattice;
-  Pavement first = pave_with_topology(map, std::move(lattice), options);
+  Pavement first = pave_with_topology(lattice_map, lattice, options);
+  bool stopped = options.stop && options.stop->load();
+  if (&lattice_map != &map && !lattice_failure(first.after).empty() && !stopped) {
+    // A band whose seamless lattice tore or left bare patches: the lattice on its annulus map too
+    // (rows that cross the rims at an angle keep more elements at them); the better one is kept.
+    Pavement annulus = pave_with_topology(map, std::move(lattice), options);
+    const Verdict seamless_verdict = judge_pavement(first.after), annulus_verdict = judge_pavement(annulus.after);
+    const bool annulus_better = annulus_verdict.problems.size() < seamless_verdict.problems.size() ||
+                                (annulus_verdict.problems.size() == seamless_verdict.problems.size() &&
+                                 annulus.after.fill > first.after.fill);
+    Pavement& kept = annulus_better ? annulus : first;
+    const Pavement& dropped = annulus_better ? first : annulus;
+    double tried = 0;
+    for (const auto& [stage, ms] : dropped.timings) tried += ms;
+    kept.timings.insert(kept.timings.begin(), {annulus_better ? "seamless_tried" : "annulus_tried", tried});
+    if (annulus_better) first = std::move(annulus);
+    stopped = options.stop && options.stop->load();
+  }
   const std::string failure = lattice_failure(first.after);
-  const bool stopped = options.stop && options.stop->load();
   const std::string unsupported = failure.empty() ? "" : adaptive_pattern_unsupported(first.design);
   if (failure.empty() || stopped || !unsupported.empty()) {
     first.topology_choice = failure.empty() ? "auto: lattice (it neither tore nor left bare patches)"
@@ -225,6 +299,10 @@ Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptio
   }
   // The same design, spacing as resolved, grown on the surface; kept when it judges better.
   Design grown = first.design;
+  if (first.band_closure) {  // the annulus needs no closing: the design's own spacing and placement
+    grown.pattern.spacing = first.band_closure->spacing_before;
+    grown.placement = design.placement;
+  }
   grown.pattern.topology = Topology::Adaptive;
   Pavement second = pave_with_topology(map, std::move(grown), options);
   const Verdict lattice_verdict = judge_pavement(first.after), adaptive_verdict = judge_pavement(second.after);

@@ -8,6 +8,7 @@
 #include "elements/refill.h"
 #include "design/design.h"
 #include "elements/elements.h"
+#include "pattern/band_closure.h"
 #include "pattern/pattern.h"
 #include "report/pavement_quality.h"
 #include "solver/spring_solver.h"
@@ -16,6 +17,7 @@
 
 #include <functional>
 #include <array>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -59,6 +61,10 @@ struct Pavement {
   // For pattern.topology "auto": which topology was kept and why (design.pattern.topology says
   // which); empty otherwise.
   std::string topology_choice;
+  // A band's lattice is paved on its seamless map (SurfaceMap::seamless): then `points` are in
+  // that map's frame, and `band_closure` says how the lattice was closed around it.
+  bool seamless = false;
+  std::optional<BandClosure> band_closure;
   PavementQuality before;            // the initial pavement, post-processed the same way
   PavementQuality paper;             // after the paper's optimizer and post-processing alone
   PavementQuality after;             // the final pavement
@@ -70,6 +76,13 @@ struct Pavement {
 // (one per stone, if given) gets the beads' metal colour appended.
 const Elements& stones_and_beads(const Pavement& pavement, Elements& storage,
                                  std::vector<std::array<std::uint8_t, 3>>* colours = nullptr);
+
+// The map a pattern of this topology is laid on: a band's seamless map for the lattice (the first
+// pass of "auto" too), else `map`.
+const SurfaceMap& map_for_topology(const SurfaceMap& map, Topology topology);
+
+// The map `pavement.points` are on: the surface's seamless map for a seamless pavement, else `map`.
+const SurfaceMap& pavement_map(const SurfaceMap& map, const Pavement& pavement);
 
 // Unit cell of the design: tessellation at D, operators in order, bracing edges if asked.
 // Throws InputError naming the operator ("pattern.operators[1]: ...") when one fails.

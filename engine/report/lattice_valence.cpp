@@ -8,7 +8,7 @@
 
 namespace paver {
 
-std::vector<int> lattice_valences(const Elements& elements, int regular_valence, double spacing) {
+std::vector<int> lattice_valences(const Elements& elements, int regular_valence, double spacing, double period) {
   if (regular_valence != 6) return vertex_valences(elements, kValenceShell);
   std::vector<int> valence(elements.size(), -1), vertex;
   std::vector<glm::dvec2> uv;
@@ -19,9 +19,22 @@ std::vector<int> lattice_valences(const Elements& elements, int regular_valence,
       uv.push_back(elements.uv[i]);
       position.push_back(elements.position[i]);
     }
+  // Across a seam: the points once more a period to either side; an edge counts once, between the
+  // points it joins.
+  const int n = int(vertex.size());
+  if (period > 0)
+    for (const double shift : {-period, period})
+      for (int i = 0; i < n; ++i) {
+        uv.push_back(uv[i] + glm::dvec2(shift, 0));
+        position.push_back(position[i]);
+      }
   std::vector<std::pair<int, int>> edges;
   for (const glm::ivec3& t : triangulate_surface_points(uv, position, 2.5 * spacing))
-    for (int k = 0; k < 3; ++k) edges.push_back(std::minmax(t[k], t[(k + 1) % 3]));
+    for (int k = 0; k < 3; ++k) {
+      const int a = t[k], b = t[(k + 1) % 3];
+      if (a >= n && b >= n) continue;  // between two copies
+      edges.push_back(std::minmax(a % n, b % n));
+    }
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   for (int v : vertex) valence[v] = 0;

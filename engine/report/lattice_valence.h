@@ -15,6 +15,8 @@ inline constexpr double kValenceShell = 1.25;  // between the first ring (1) and
 
 // Per element: its valence, -1 for E-elements. `regular_valence` is the lattice's (6, 4 or 3);
 // `spacing` is D (triangles longer than 2.5 D, across a concave boundary, are not edges).
-std::vector<int> lattice_valences(const Elements& elements, int regular_valence, double spacing);
+// `period` > 0: the elements' uv repeat every (period, 0) (a band's seamless map), and neighbours
+// across the seam count.
+std::vector<int> lattice_valences(const Elements& elements, int regular_valence, double spacing, double period = 0);
 
 }  // namespace paver

@@ -204,7 +204,7 @@ PavementQuality measure_pavement(const SurfaceMap& map, const Pattern& pattern,
   }
   q.coverage = disc_area / surface_area(map.mesh);
   if (basis.regular_valence > 0) {
-    const std::vector<int> valence = lattice_valences(elements, basis.regular_valence, basis.spacing);
+    const std::vector<int> valence = lattice_valences(elements, basis.regular_valence, basis.spacing, map.period);
     long regular = 0;
     for (size_t i = 0; i < elements.size(); ++i) {
       if (valence[i] < 0 || to_boundary[i] < kInteriorDepth * basis.spacing) continue;

@@ -55,6 +55,30 @@ PavementCounts count_pavement(const Pavement& pavement) {
   return c;
 }
 
+
+namespace {
+
+// How a band was paved (docs/holes_and_bands.md): seamless, with the lattice closed around it, or
+// as an annulus and why. null for a surface that is not a band.
+nlohmann::json band_json(const SurfaceMap& map, const Pavement& pavement) {
+  if (map.mesh.boundary_loops.size() != 2) return nullptr;
+  nlohmann::json band = {{"seamless", pavement.seamless}};
+  if (map.seamless) band["period"] = map.seamless->period;
+  if (!pavement.seamless)
+    band["annulus_because"] = !map.seamless_unavailable.empty() ? map.seamless_unavailable
+                              : pavement.design.pattern.topology == Topology::Lattice
+                                  ? "the seamless lattice tore or left bare patches; the lattice on the annulus did better"
+                                  : "the adaptive pattern grows on the annulus map";
+  if (const auto& c = pavement.band_closure)
+    band["closure"] = {{"spacing_before", c->spacing_before}, {"spacing", c->spacing},
+                       {"lattice_steps_around", c->around},    {"step_cells", {c->step.x, c->step.y}},
+                       {"rotation_deg", c->rotation_deg},       {"rows", c->rows_across ? "across" : "along"},
+                       {"text", describe_band_closure(*c)}};
+  return band;
+}
+
+}  // namespace
+
 nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const Pavement& pavement,
                                const StageTimings& timings) {
   using nlohmann::json;
@@ -107,6 +131,7 @@ nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const
                    {"boundary_crossing_edges", counts.boundary_crossing_edges},
                    {"topology", topology_name(pavement.design.pattern.topology)},
                    {"topology_choice", pavement.topology_choice},
+                   {"band", band_json(map, pavement)},
                    {"defects", pattern.defects.size()},
                    {"relaxation", {{"iterations", pavement.relaxation.iterations},
                                    {"seeds_kept", pavement.relaxation.seeds_kept},

@@ -24,6 +24,7 @@ namespace paver {
 using glm::vec2;
 using glm::vec3;
 using glm::vec4;
+using std::floor;
 using std::sqrt;
 using std::uint32_t;
 #define PAVER_CONST inline constexpr
@@ -108,7 +109,10 @@ struct PAVER_ALIGN16 SolverConstants {
   int spring_count;
   uint32_t filter_base_initial;  // 1: clamp against l_ab at initialisation, 0: current l_ab
   uint32_t stray_patience;       // pulls back in a row before a particle retires; 0 = never
-  uint32_t pad0;
+  // A map that wraps (a band's seamless map): the plane repeats every (period, 0), and particles
+  // live at u in [period_origin, period_origin + period). period = 0: it does not wrap.
+  float period, period_origin;
+  uint32_t pad0, pad1, pad2;
 };
 
 // Push constants of the lift pass (count_strays, always) and the spring pass (always).
@@ -118,7 +122,7 @@ struct SolverPush {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(SolverConstants) == 112);
+static_assert(sizeof(SolverConstants) == 128);
 static_assert(offsetof(SolverConstants, dt) == 32);
 static_assert(offsetof(SolverConstants, curvature_min) == 48);
 static_assert(offsetof(SolverConstants, centre) == 64);  // std140: vec2 on 8 bytes
@@ -126,6 +130,7 @@ static_assert(offsetof(SolverConstants, grid_origin) == 72);
 static_assert(offsetof(SolverConstants, grid_nx) == 80);
 static_assert(offsetof(SolverConstants, spring_count) == 96);
 static_assert(offsetof(SolverConstants, stray_patience) == 104);
+static_assert(offsetof(SolverConstants, period) == 108);
 static_assert(sizeof(SolverPush) == 8);
 #endif
 
@@ -164,6 +169,23 @@ PAVER_FN vec3 clamp_barycentric(vec3 b) {
   PAVER_PRECISE float sum = clamped.x + clamped.y + clamped.z;
   PAVER_PRECISE vec3 result = vec3(clamped.x / sum, clamped.y / sum, clamped.z / sum);
   return result;
+}
+
+// p with its u wrapped into the period (p itself when the map does not wrap).
+PAVER_FN vec2 wrap_position(float period, float origin, vec2 p) {
+  if (period <= 0.0f) return p;
+  PAVER_PRECISE float turns = floor((p.x - origin) / period);
+  PAVER_PRECISE float u = p.x - turns * period;
+  return vec2(u, p.y);
+}
+
+// The copy of p nearest to `near` (p itself when the map does not wrap): a spring's other end
+// across the seam.
+PAVER_FN vec2 nearest_image(float period, vec2 p, vec2 near) {
+  if (period <= 0.0f) return p;
+  PAVER_PRECISE float turns = floor((p.x - near.x) / period + 0.5f);
+  PAVER_PRECISE float u = p.x - turns * period;
+  return vec2(u, p.y);
 }
 
 // Squared distance from p to segment ab and, in `nudged`, the segment's nearest point moved 1% of
@@ -316,7 +338,8 @@ PAVER_FN SpringSums accumulate_spring(PAVER_IN(SolverConstants) k, SpringSums s,
 PAVER_FN vec2 particle_step(PAVER_IN(SolverConstants) k, vec2 pa, SpringSums s) {
   PAVER_PRECISE vec2 restoring = vec2(s.force.x / s.k_sum, s.force.y / s.k_sum);
   PAVER_PRECISE vec2 local_force = vec2(s.centroid_sum.x / s.w_sum - pa.x, s.centroid_sum.y / s.w_sum - pa.y);
-  PAVER_PRECISE vec2 to_centre = k.centre - pa;
+  // On a map that wraps, the centre is a line along the band: G pulls across it only.
+  PAVER_PRECISE vec2 to_centre = k.period > 0.0f ? vec2(0.0f, k.centre.y - pa.y) : k.centre - pa;
   PAVER_PRECISE float centre_dist = length_2d(to_centre);
   PAVER_PRECISE float g = centre_dist > 0.0f ? s.stretch_sum / float(s.used) / centre_dist : 0.0f;
   PAVER_PRECISE vec2 global_force = vec2(g * to_centre.x, g * to_centre.y);

@@ -71,10 +71,12 @@ struct LiftedParticle {
   float curvature;
 };
 
-// Lifts particle p; strays are first pulled back (p is updated in place). `hint` is the triangle
+// Lifts particle p, wrapped into the period on a map that wraps; strays are first pulled back (p
+// is updated in place). `hint` is the triangle
 // the particle was in last time: particles move little per iteration, so it usually still
 // contains p and the grid search is skipped. It is updated.
 inline LiftedParticle lift_particle(const SolverSurface& s, glm::vec2& p, std::int32_t& hint) {
+  p = wrap_position(s.period, s.period_origin, p);
   glm::vec3 b(0.0f);
   int t = -1;
   if (hint >= 0) {
@@ -117,7 +119,7 @@ inline Move move_particle(const SolverConstants& k, const SpringSystem& sys, int
   for (int i = sys.neighbor_start[a]; i < sys.neighbor_start[a + 1]; ++i) {
     const int nb = sys.neighbor[i];
     if (sys.stray_count[nb] == kRetired) continue;
-    const glm::vec2 pb = position[nb];
+    const glm::vec2 pb = nearest_image(k.period, position[nb], pa);
     const int spring = sys.neighbor_spring[i];
     const float l = sys.target[spring];
     const glm::vec2 d = pb - pa;

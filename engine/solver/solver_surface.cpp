@@ -2,6 +2,7 @@
 
 #include <glm/common.hpp>
 
+#include <array>
 #include <limits>
 
 namespace paver {
@@ -27,7 +28,7 @@ std::uint64_t fingerprint_of(const SolverSurface& s) {
   h.add(s.uv), h.add(s.position), h.add(s.curvature), h.add(s.triangles);
   h.add(s.grid_start), h.add(s.grid_triangles), h.add(s.boundary_segments), h.add(s.boundary_inward);
   const float values[] = {s.grid_origin.x, s.grid_origin.y, s.grid_cell_size, s.curvature_min, s.curvature_max,
-                          s.centre.x, s.centre.y};
+                          s.centre.x, s.centre.y, s.period, s.period_origin};
   const std::int32_t sizes[] = {s.grid_nx, s.grid_ny};
   h.add(values, sizeof values);
   h.add(sizes, sizeof sizes);
@@ -39,29 +40,37 @@ std::uint64_t fingerprint_of(const SolverSurface& s) {
 SolverSurface make_solver_surface(const SurfaceMap& map) {
   SolverSurface s;
   const auto& mesh = map.mesh;
-  s.uv.reserve(map.uv.size());
-  for (const auto& q : map.uv) s.uv.emplace_back(float(q.x), float(q.y));
+  const bool wraps = map_wraps(map);
+  // The vertex behind each solver vertex: the mesh's own, or the domain's copies of them.
+  const std::vector<glm::dvec2>& uv = wraps ? map.domain.uv : map.uv;
+  const auto vertex_of = [&](std::size_t d) { return wraps ? std::size_t(map.domain.vertex[d]) : d; };
+  s.uv.reserve(uv.size());
+  for (const auto& q : uv) s.uv.emplace_back(float(q.x), float(q.y));
   // The solver uses 3D differences only: centred before the cast to float32, a part far from the
   // origin keeps the precision of one at it.
   glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
   for (const auto& p : mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
   const glm::dvec3 middle = mesh.positions.empty() ? glm::dvec3(0) : 0.5 * (lo + hi);
-  s.position.reserve(mesh.positions.size());
-  for (const auto& p : mesh.positions) {
-    const glm::dvec3 q = p - middle;
+  s.position.reserve(uv.size());
+  s.curvature.reserve(uv.size());
+  for (std::size_t d = 0; d < uv.size(); ++d) {
+    const glm::dvec3 q = mesh.positions[vertex_of(d)] - middle;
     s.position.emplace_back(float(q.x), float(q.y), float(q.z), 0.0f);
+    s.curvature.push_back(float(map.curvature[vertex_of(d)]));
   }
-  s.curvature.assign(map.curvature.begin(), map.curvature.end());
-  s.triangles.reserve(mesh.triangles.size() * 3);
-  for (const auto& t : mesh.triangles) s.triangles.insert(s.triangles.end(), {t.x, t.y, t.z});
+  const std::vector<glm::ivec3>& triangles = wraps ? map.domain.triangles : mesh.triangles;
+  s.triangles.reserve(triangles.size() * 3);
+  for (const auto& t : triangles) s.triangles.insert(s.triangles.end(), {t.x, t.y, t.z});
   s.grid_origin = glm::vec2(map.grid.origin);
   s.grid_cell_size = float(map.grid.cell_size);
   s.grid_nx = map.grid.nx;
   s.grid_ny = map.grid.ny;
   s.grid_start = map.grid.cell_start;
   s.grid_triangles = map.grid.cell_triangles;
+  s.period = float(map.period);
+  s.period_origin = float(map.period_origin);
 
-  // Boundary segments and the triangle each belongs to (the one using it as an edge).
+  // Boundary segments, each with the triangle that has it as an edge, in one piece with it.
   const std::vector<glm::ivec2> segments = boundary_segments(mesh);
   const int n = static_cast<int>(segments.size());
   s.boundary_segments.resize(n);
@@ -71,18 +80,26 @@ SolverSurface make_solver_surface(const SurfaceMap& map) {
   for (int i = 0; i < n; ++i) {
     next[segments[i].x] = segments[i].y;
     segment_of[segments[i].x] = i;
-    s.boundary_segments[i] = glm::vec4(glm::vec2(map.uv[segments[i].x]), glm::vec2(map.uv[segments[i].y]));
   }
-  for (const auto& t : mesh.triangles) {
-    const int c[3] = {t.x, t.y, t.z};
+  for (int f = 0; f < mesh.face_count(); ++f) {
+    const glm::ivec3 t = mesh.triangles[f];
+    const std::array<glm::dvec2, 3> corner = triangle_uv(map, f);
     for (int k = 0; k < 3; ++k) {
-      const int a = c[k], b = c[(k + 1) % 3];
+      const int a = t[k], b = t[(k + 1) % 3];
       if (next[a] == b) {
-        const glm::dvec2 centroid = (map.uv[t.x] + map.uv[t.y] + map.uv[t.z]) / 3.0;
+        const glm::dvec2 centroid = (corner[0] + corner[1] + corner[2]) / 3.0;
+        s.boundary_segments[segment_of[a]] = glm::vec4(glm::vec2(corner[k]), glm::vec2(corner[(k + 1) % 3]));
         s.boundary_inward[segment_of[a]] = glm::vec2(centroid);
       }
     }
   }
+  if (wraps)
+    for (const double shift : {-map.period, map.period})
+      for (int i = 0; i < n; ++i) {
+        const glm::dvec4 q(s.boundary_segments[i]);
+        s.boundary_segments.push_back(glm::vec4(q + glm::dvec4(shift, 0, shift, 0)));
+        s.boundary_inward.push_back(glm::vec2(glm::dvec2(s.boundary_inward[i]) + glm::dvec2(shift, 0)));
+      }
   s.curvature_min = float(map.curvature_min);
   s.curvature_max = float(map.curvature_max);
   s.centre = glm::vec2(0.5 * (map.uv_min + map.uv_max));

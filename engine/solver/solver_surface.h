@@ -12,11 +12,15 @@
 
 namespace paver {
 
+// On a map that wraps (a band's seamless map), the vertices and triangles are its MapDomain's (three
+// copies of each triangle, in one piece each) and the boundary segments are those of the three
+// copies too; positions are wrapped into the period before they are located.
 struct SolverSurface {
   std::vector<glm::vec2> uv;                 // #V map coordinates
   std::vector<glm::vec4> position;           // #V surface positions (w unused: std430 alignment)
   std::vector<float> curvature;              // #V mean curvature |H|
   std::vector<std::int32_t> triangles;       // #F * 3 vertex indices
+  float period = 0, period_origin = 0;       // SurfaceMap's: 0 when the map does not wrap
   // Uniform grid (same layout as UvGrid, in float).
   glm::vec2 grid_origin{0};
   float grid_cell_size = 1;

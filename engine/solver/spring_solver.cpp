@@ -56,6 +56,8 @@ SolverConstants make_solver_constants(const SolverParams& p, const SolverSurface
   k.centre = surface.centre;
   k.filter_base_initial = p.filter_base == FilterBase::Initial ? 1u : 0u;
   k.stray_patience = std::uint32_t(p.stray_patience);
+  k.period = surface.period;
+  k.period_origin = surface.period_origin;
   return k;
 }
 
@@ -94,7 +96,8 @@ void CpuSpringSolver::lift_all(bool count_strays) {
     curvature_[a] = l.curvature;
     // The closing lift of solve() only refreshes the lifted state; it is not an iteration.
     if (!count_strays) return;
-    const bool pulled = system_.position[a] != before;
+    // Wrapping into the period is not a pull back.
+    const bool pulled = system_.position[a] != wrap_position(surface_.period, surface_.period_origin, before);
     pulled_back_[a] = pulled ? 1 : 0;
     system_.stray_count[a] = next_stray_count(constants_, system_.stray_count[a], pulled);
     if (pulled) strays.fetch_add(1, std::memory_order_relaxed);
@@ -109,7 +112,8 @@ void CpuSpringSolver::update_springs() {
     // unfiltered target, which is also its l_ab at initialisation.
     const bool fresh = system_.target[s] <= 0.0f;
     const SpringState st = update_spring(
-        constants_, system_.position[b] - system_.position[a], lifted_[b] - lifted_[a], curvature_[a],
+        constants_, nearest_image(constants_.period, system_.position[b], system_.position[a]) - system_.position[a],
+        lifted_[b] - lifted_[a], curvature_[a],
         curvature_[b], system_.rest_length[s], system_.target[s], system_.initial_target[s],
         fresh || pulled_back_[a] != 0 || pulled_back_[b] != 0, system_.spring_flags[s]);
     system_.target[s] = st.target;

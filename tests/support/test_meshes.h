@@ -52,6 +52,23 @@ SurfaceMesh grid_surface(int nu, int nv, F&& f) {
   return make_surface(std::move(positions), faces, "grid_surface").mesh;
 }
 
+// A band: nu x nv quads over [0,1)^2 closed around u (column nu is column 0), mapped through
+// `f(u, v)` to 3D; two boundary loops, at v = 0 and v = 1.
+template <class F>
+SurfaceMesh band_surface(int nu, int nv, F&& f) {
+  std::vector<glm::dvec3> positions;
+  std::vector<std::vector<int>> faces;
+  for (int j = 0; j <= nv; ++j)
+    for (int i = 0; i < nu; ++i) positions.push_back(f(double(i) / nu, double(j) / nv));
+  auto id = [&](int i, int j) { return j * nu + i % nu; };
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return make_surface(std::move(positions), faces, "band_surface").mesh;
+}
+
 }  // namespace paver::test
 
 namespace paver::test {

@@ -278,7 +278,7 @@ void toolbar(Studio& s) {
   ImGui::SameLine();
   if (ImGui::Button("reset view (R)") && s.doc.surface.map) {
     s.views.camera = render::frame_surface(s.doc.surface.map->mesh);
-    s.views.map_view = render::frame_map(*s.doc.surface.map);
+    s.views.map_view = render::frame_map(map_for_topology(*s.doc.surface.map, s.doc.design.pattern.topology));
   }
 }
 

@@ -1,0 +1,43 @@
+#pragma once
+// A band's seamless map (issue 12, "Bands: seamless"; docs/holes_and_bands.md).
+//
+// A band (two boundary loops) mapped as an annulus puts a lattice on it that cannot close on
+// itself: the rows bend around the hole. Mapped instead onto an infinite strip that repeats every
+// period T, a lattice whose T is a lattice vector closes around the band with no seam.
+//
+// How: the annulus map's log-polar image (about the hole's patch centre, which sees the whole
+// hole: angle along the band, log radius across) is a strip that wraps, each triangle in one
+// piece once its corners are shifted by whole turns. ARAP is then run on it with T free: the
+// global step solves for the vertices and T together, each triangle's corners shifted by their
+// whole periods. Every step is shortened until no triangle folds. The result is rotated so that
+// T = (period, 0) and scaled so that its area equals the surface's.
+#include "map/surface_map.h"
+
+#include <glm/vec2.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace paver {
+
+struct SeamlessBandMap {
+  std::vector<glm::dvec2> uv;          // #V, one copy of each vertex
+  std::vector<glm::ivec3> corner_turns;  // #F: corner k of triangle t sits at uv + turns[k] * T
+  double period = 0;                   // |T|; T = (period, 0)
+  int iterations = 0;                  // ARAP iterations run
+  double stretch_mean = 0;             // area-weighted mean of s1/s2 of the seamless map
+};
+
+// The seamless map of a band from its annulus map (uv: #V, hole_centre as Parameterization's).
+// Empty, with `why_not` set, when it cannot be made without folds.
+std::optional<SeamlessBandMap> map_band_seamlessly(const SurfaceMesh& band, const std::vector<glm::dvec2>& annulus_uv,
+                                                  glm::dvec2 hole_centre, std::string& why_not);
+
+// The lifting data of a seamless map: a SurfaceMap that wraps (normals and curvature from `annulus`).
+SurfaceMap make_seamless_surface_map(const SurfaceMap& annulus, const SeamlessBandMap& band);
+
+// Both for a band's annulus map: fills annulus.seamless, or annulus.seamless_unavailable.
+void add_seamless_map(SurfaceMap& annulus);
+
+}  // namespace paver

@@ -1,0 +1,65 @@
+#include "pattern/band_closure.h"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+namespace paver {
+namespace {
+
+// The lattice vector that repeats around the band: along the rows, the shortest one; across
+// them, the one most nearly square to it (the shortest of those).
+glm::ivec2 repeating_step(const UnitCell& cell, bool across) {
+  const auto vector_of = [&](glm::ivec2 m) { return double(m.x) * cell.a1 + double(m.y) * cell.a2; };
+  constexpr int kReach = 3;
+  glm::ivec2 along(1, 0);
+  for (int i = -kReach; i <= kReach; ++i)
+    for (int j = 0; j <= kReach; ++j) {
+      const glm::ivec2 m(i, j);
+      if ((j == 0 && i <= 0) || glm::length(vector_of(m)) >= glm::length(vector_of(along)) * (1 - 1e-9)) continue;
+      along = m;
+    }
+  if (!across) return along;
+  const glm::dvec2 row = glm::normalize(vector_of(along));
+  glm::ivec2 best(0, 0);
+  double best_cos = 2, best_length = 0;
+  for (int i = -kReach; i <= kReach; ++i)
+    for (int j = 0; j <= kReach; ++j) {
+      const glm::ivec2 m(i, j);
+      if (j == 0 && i <= 0) continue;
+      const double length = glm::length(vector_of(m));
+      const double c = std::abs(glm::dot(vector_of(m), row)) / length;
+      if (c < best_cos - 1e-9 || (c < best_cos + 1e-9 && length < best_length)) best = m, best_cos = c, best_length = length;
+    }
+  return best;
+}
+
+}  // namespace
+
+BandClosure close_band(const SurfaceMap& map, const UnitCell& cell, const Placement& placement, bool never_closer) {
+  BandClosure closure;
+  closure.rows_across = placement.band_rows == BandRows::Across;
+  closure.spacing_before = cell.spacing;
+  closure.step = repeating_step(cell, closure.rows_across);
+  const glm::dvec2 v = double(closure.step.x) * cell.a1 + double(closure.step.y) * cell.a2;
+  closure.rotation_deg = std::atan2(v.y, v.x) * 180.0 / std::numbers::pi;
+  const double around_length = map.period * placement.scale;  // T in the pattern plane
+  const double steps = around_length / glm::length(v);
+  // At least three steps around: fewer would join a point to itself or twice to another.
+  closure.around = std::max(3, int(never_closer ? std::floor(steps) : std::round(steps)));
+  closure.spacing = cell.spacing * around_length / (closure.around * glm::length(v));
+  return closure;
+}
+
+std::string describe_band_closure(const BandClosure& closure) {
+  char before[32], after[32];
+  std::snprintf(before, sizeof before, "%.4g", closure.spacing_before);
+  std::snprintf(after, sizeof after, "%.4g", closure.spacing);
+  return "D " + std::string(before) + " -> " + after + ": " +
+         std::to_string(closure.around) + " lattice steps close the band (rows " +
+         (closure.rows_across ? "across" : "along") + " it)";
+}
+
+}  // namespace paver

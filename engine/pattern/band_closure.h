@@ -1,0 +1,34 @@
+#pragma once
+// Closing a lattice around a band (issue 12, "Bands: seamless"): on a map that wraps every
+// T = (period, 0), the lattice is turned so that T is a lattice vector and its spacing changed by
+// the least amount that makes a whole number of elements go around: "D 0.630 -> 0.628: 90
+// elements close the band".
+#include "map/surface_map.h"
+#include "pattern/placement.h"
+#include "pattern/unit_cell.h"
+
+#include <glm/vec2.hpp>
+
+#include <string>
+
+namespace paver {
+
+struct BandClosure {
+  double spacing_before = 0;  // the design's D
+  double spacing = 0;         // D after closing
+  int around = 0;             // lattice steps (elements in a row) once around the band
+  glm::ivec2 step{1, 0};      // the lattice vector that repeats around, in cells (a1, a2)
+  double rotation_deg = 0;    // the placement rotation that lines it up with the band
+  bool rows_across = false;   // the rows run across the band (else along it)
+};
+
+// The closure of `cell` (at the design's spacing) on `map` (which wraps) under `placement`
+// (its scale counts; its rotation is replaced): the nearest whole number of steps, or with
+// `never_closer` the largest that does not bring the elements closer (a design at its gap's limit).
+BandClosure close_band(const SurfaceMap& map, const UnitCell& cell, const Placement& placement,
+                       bool never_closer = false);
+
+// "D 0.630 -> 0.628: 90 elements close the band (rows along it)".
+std::string describe_band_closure(const BandClosure& closure);
+
+}  // namespace paver

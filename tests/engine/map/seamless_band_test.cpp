@@ -1,0 +1,154 @@
+// A band's seamless map (issue 12, "Bands: seamless"): a periodic map whose period is the band's
+// length, with no fold, and a lattice that closes around it with no seam: on a right circular
+// cylinder every element away from the rims has its nearest neighbour at 1.00 +- 0.01 lattice
+// distances, across the seam too (checked over all pairs, in 3D, not through the map).
+#include "map/seamless_band.h"
+#include "map/surface_map.h"
+#include "mesh/triangle_geometry.h"
+#include "pattern/band_closure.h"
+#include "pipeline/pavement.h"
+#include "test_meshes.h"
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace paver {
+namespace {
+
+constexpr double kRadius = 10, kHeight = 8;
+
+const SurfaceMap& cylinder_map() {
+  static const SurfaceMap map = build_surface_map(test::band_surface(120, 16, [](double u, double v) {
+    const double a = 2 * std::numbers::pi * u;
+    return glm::dvec3(kRadius * std::cos(a), kRadius * std::sin(a), kHeight * v);
+  }));
+  return map;
+}
+
+TEST(SeamlessBand, CylinderUnrollsToAStripWithoutFolds) {
+  const SurfaceMap& annulus = cylinder_map();
+  ASSERT_TRUE(annulus.seamless) << annulus.seamless_unavailable;
+  const SurfaceMap& band = *annulus.seamless;
+  EXPECT_FALSE(map_wraps(annulus));
+  ASSERT_TRUE(map_wraps(band));
+  // The period is the cylinder's circumference, less what the polygon cuts off.
+  const double polygon = 120 * 2 * kRadius * std::sin(std::numbers::pi / 120);
+  EXPECT_NEAR(band.period, polygon, 1e-3 * polygon);
+  EXPECT_NEAR(band.parameterization.quality.stretch_mean, 1.0, 1e-3);
+  // Every triangle in one piece and positive; together they cover exactly one period.
+  double area = 0;
+  for (int f = 0; f < band.mesh.face_count(); ++f) {
+    const auto c = triangle_uv(band, f);
+    const double a = detail::signed_area(c[0], c[1], c[2]);
+    EXPECT_GT(a, 0) << "triangle " << f;
+    area += a;
+  }
+  EXPECT_NEAR(area, band.period * kHeight, 1e-3 * area);
+}
+
+TEST(SeamlessBand, EveryPointOfThePeriodIsFoundOnce) {
+  const SurfaceMap& band = *cylinder_map().seamless;
+  // Points along the middle of the strip, over three periods: each lifts to the cylinder at the
+  // height of its v and the angle of its u.
+  const double middle_v = 0.5 * (band.uv_min.y + band.uv_max.y);
+  for (int k = -150; k <= 150; ++k) {
+    const glm::dvec2 p(band.period_origin + k * band.period / 100.0, middle_v);
+    glm::dvec3 bary;
+    const int t = locate_on_map(band, p, bary);
+    ASSERT_GE(t, 0) << "u " << p.x;
+    const glm::ivec3 tri = band.mesh.triangles[t];
+    const glm::dvec3 q = bary.x * band.mesh.positions[tri.x] + bary.y * band.mesh.positions[tri.y] +
+                         bary.z * band.mesh.positions[tri.z];
+    EXPECT_NEAR(q.z, 0.5 * kHeight, 0.05 * kHeight);
+    EXPECT_NEAR(glm::length(glm::dvec2(q)), kRadius, 0.01 * kRadius);
+  }
+}
+
+// The nearest neighbour of each vertex element at least one diameter from both rims, over all
+// pairs, in lattice distances.
+std::pair<double, double> nearest_neighbour_range(const Pavement& p) {
+  double lo = std::numeric_limits<double>::infinity(), hi = 0;
+  const Elements& e = p.elements;
+  int counted = 0;
+  for (size_t i = 0; i < e.size(); ++i) {
+    if (e.kind[i] != ElementKind::Vertex) continue;
+    const double z = e.position[i].z;
+    if (z < e.diameter[i] || z > kHeight - e.diameter[i]) continue;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (size_t j = 0; j < e.size(); ++j)
+      if (j != i && e.kind[j] == ElementKind::Vertex) nearest = std::min(nearest, glm::length(e.position[i] - e.position[j]));
+    lo = std::min(lo, nearest / p.design.pattern.spacing);
+    hi = std::max(hi, nearest / p.design.pattern.spacing);
+    ++counted;
+  }
+  EXPECT_GT(counted, 100);
+  return {lo, hi};
+}
+
+class SeamlessCylinder : public ::testing::TestWithParam<Tessellation> {};
+
+TEST_P(SeamlessCylinder, NeighboursAreOneLatticeStepApartAcrossTheSeamToo) {
+  Design design;
+  design.pattern.tessellation = GetParam();
+  design.pattern.spacing = 0.63;
+  design.elements.vertex.scale = 0.8;
+  for (const BandRows rows : {BandRows::Along, BandRows::Across})
+    for (const bool optimize : {false, true}) {
+      design.placement.band_rows = rows;
+      PavementOptions options;
+      options.optimize = optimize;
+      const Pavement p = make_pavement(cylinder_map(), design, options);
+      ASSERT_TRUE(p.seamless);
+      ASSERT_TRUE(p.band_closure);
+      const BandClosure& c = *p.band_closure;
+      const std::string what = describe_band_closure(c) + (optimize ? ", optimized" : ", as laid");
+      // A whole number of steps closes the band, and D moved by at most half a step's worth.
+      const UnitCell& cell = p.cell;
+      const double step = glm::length(double(c.step.x) * cell.a1 + double(c.step.y) * cell.a2);
+      EXPECT_NEAR(c.around * step, cylinder_map().seamless->period, 1e-9 * c.around * step) << what;
+      EXPECT_LE(std::abs(c.spacing - 0.63), 0.5 * 0.63 / c.around * step / c.spacing) << what;
+      EXPECT_EQ(p.design.pattern.spacing, c.spacing);
+      const auto [lo, hi] = nearest_neighbour_range(p);
+      EXPECT_GE(lo, 0.99) << what;
+      EXPECT_LE(hi, 1.01) << what;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(TriAndGrid, SeamlessCylinder, ::testing::Values(Tessellation::Triangle, Tessellation::Grid),
+                         [](const auto& info) { return std::string(tessellation_name(info.param)); });
+
+TEST(SeamlessBand, RowsAcrossTheBandTurnTheLattice) {
+  Design design;
+  design.pattern.tessellation = Tessellation::Grid;
+  design.pattern.spacing = 0.63;
+  design.placement.band_rows = BandRows::Across;
+  PavementOptions options;
+  options.optimize = false;
+  const Pavement across = make_pavement(cylinder_map(), design, options);
+  ASSERT_TRUE(across.band_closure);
+  EXPECT_TRUE(across.band_closure->rows_across);
+  EXPECT_EQ(across.band_closure->step, glm::ivec2(0, 1));
+  EXPECT_NEAR(std::abs(across.band_closure->rotation_deg), 90, 1e-9);
+  const auto [lo, hi] = nearest_neighbour_range(across);
+  EXPECT_GE(lo, 0.99);
+  EXPECT_LE(hi, 1.01);
+}
+
+TEST(SeamlessBand, TheAdaptivePatternPavesTheAnnulus) {
+  Design design;
+  design.pattern.topology = Topology::Adaptive;
+  design.pattern.spacing = 0.63;
+  PavementOptions options;
+  options.optimize = false;
+  const Pavement p = make_pavement(cylinder_map(), design, options);
+  EXPECT_FALSE(p.seamless);
+  EXPECT_FALSE(p.band_closure);
+  EXPECT_EQ(&pavement_map(cylinder_map(), p), &cylinder_map());
+}
+
+}  // namespace
+}  // namespace paver
