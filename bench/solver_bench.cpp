@@ -2,8 +2,12 @@
 //   design/<name>       the whole pavement (pattern, optimizer, post-processing, collision
 //                       resolution, quality) per bundled design; stage times as counters.
 //   solver/<N>/<threads> CPU solver milliseconds per iteration at N particles on the dense wave.
+//   solver_shape/<band|disk>/<N> the same on the bangle's seamless map (which wraps) and on the dome
+//                       (a disk), at N particles of a tri lattice: a band costs what a disk costs
+//                       per particle (compare ns_per_particle of the two rows of one run).
 #include "io/design_io.h"
 #include "mesh/mesh_loader.h"
+#include "pipeline/pavement.h"
 #include "pipeline/run_pipeline.h"
 #include "solver/spring_solver.h"
 
@@ -81,6 +85,46 @@ const SolverCase& solver_case(int n) {
   return *c;
 }
 
+// A tri lattice of about n particles on a bundled surface, laid out (not optimised) as the
+// pipeline does: on the bangle, on its seamless map.
+struct ShapeCase {
+  std::shared_ptr<const paver::SurfaceMap> map;
+  paver::Pavement pavement;
+  paver::SolverSurface surface;
+};
+
+const ShapeCase& shape_case(const std::string& surface, int n) {
+  static std::map<std::pair<std::string, int>, std::unique_ptr<ShapeCase>> cases;
+  auto& c = cases[{surface, n}];
+  if (!c) {
+    c = std::make_unique<ShapeCase>();
+    c->map = std::make_shared<const paver::SurfaceMap>(paver::build_surface_map(
+        paver::load_surface(fs::path(PAVER_SOURCE_DIR) / "assets/surfaces" / (surface + ".obj")).mesh));
+    paver::Design design;
+    design.pattern.topology = paver::Topology::Lattice;
+    design.pattern.spacing = std::sqrt(2 * paver::surface_area(c->map->mesh) / (std::sqrt(3.0) * n));
+    paver::PavementOptions options;
+    options.optimize = false;
+    options.postprocess = false;
+    options.refill = false;
+    c->pavement = paver::make_pavement(*c->map, design, options);
+    c->surface = paver::make_solver_surface(paver::pavement_map(*c->map, c->pavement));
+  }
+  return *c;
+}
+
+void solver_shape(benchmark::State& state, std::string surface) {
+  const ShapeCase& c = shape_case(surface, int(state.range(0)));
+  paver::SpringSystem system = paver::make_spring_system(c.pavement.pattern);
+  paver::SolverParams params;
+  paver::CpuSpringSolver s(c.surface, system, params, c.pavement.design.pattern.spacing, 0);
+  for (auto _ : state) benchmark::DoNotOptimize(s.step());
+  state.counters["particles"] = system.particle_count();
+  state.counters["seamless"] = c.pavement.seamless;
+  state.counters["ns_per_particle"] = benchmark::Counter(
+      double(state.iterations()) * system.particle_count(), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
 void solver(benchmark::State& state) {
   const SolverCase& c = solver_case(int(state.range(0)));
   const int threads = state.range(1) > 0 ? int(state.range(1)) : tbb::this_task_arena::max_concurrency();
@@ -100,6 +144,12 @@ const bool registered = [] {
         ->Unit(benchmark::kMillisecond)
         ->UseRealTime()
         ->Iterations(3);
+  for (const auto& [name, surface] : {std::pair{"band", "bangle"}, std::pair{"disk", "dome"}})
+    benchmark::RegisterBenchmark(("solver_shape/" + std::string(name)).c_str(), solver_shape, std::string(surface))
+        ->Arg(100000)
+        ->ArgName("particles")
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
   if (fs::exists(fs::path(PAVER_BINARY_DIR) / "assets/wave_dense.obj"))
     benchmark::RegisterBenchmark("solver", solver)
         ->ArgsProduct({{1000, 10000, 100000, 1000000}, {1, 0}})

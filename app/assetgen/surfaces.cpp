@@ -370,6 +370,41 @@ Mesh pendant_pierced(int target) {
   return fit_faces(pierced, 1.0, target);
 }
 
+// A bead: an olive (ellipsoid of revolution about z) 12 mm long and 8 mm across, closed, with
+// no boundary loop. Rings at even steps of the profile's length between the two poles.
+Mesh bead_mesh(double h) {
+  constexpr double kHalfLength = 6.0, kRadius = 4.0;
+  std::vector<dvec2> pts;
+  const int samples = 400;
+  for (int i = 0; i <= samples; ++i) {
+    const double phi = kPi * i / samples;
+    pts.emplace_back(kRadius * std::sin(phi), -kHalfLength * std::cos(phi));
+  }
+  const Polyline profile(std::move(pts));
+  const int rows = std::max(2, rounded(profile.length() / (h * std::sqrt(3.0) / 2.0)));
+  Mesh m;
+  const int bottom = m.add(dvec3(0.0, 0.0, -kHalfLength));
+  std::vector<Row> rs;
+  for (int i = 1; i < rows; ++i) {
+    const dvec2 p = profile.at(static_cast<double>(i) / rows);
+    const double turn = (i % 2) * 0.5;
+    const int count = std::max(6, rounded(2.0 * kPi * p.x / h));
+    rs.push_back(make_ring(m, count, [&](double t) {
+      const double th = 2.0 * kPi * (t + turn / count);
+      return dvec3(p.x * std::cos(th), p.x * std::sin(th), p.y);
+    }));
+  }
+  stitch_rings(m, bottom, rs);
+  // The top cap runs against the bottom one: seen from outside, both turn the same way.
+  const int top = m.add(dvec3(0.0, 0.0, kHalfLength));
+  const std::vector<int>& last = rs.back().idx;
+  for (std::size_t j = 0; j < last.size(); ++j) m.f.push_back({top, last[(j + 1) % last.size()], last[j]});
+  orient(m, [](dvec3 q) { return q; });
+  return m;
+}
+
+Mesh bead(int target) { return fit_faces(bead_mesh, 1.0, target); }
+
 dvec3 up(dvec3) { return {0.0, 0.0, 1.0}; }
 
 }  // namespace
@@ -391,6 +426,7 @@ std::vector<Surface> small_set() {
       {"ring_band", [] { return ring_band(1200); }, [](dvec3 p) { return dvec3(p.x, p.y, 0.0); }, 2},
       {"facade_windows", [] { return facade_windows(2400); }, up, 13},
       {"pendant_pierced", [] { return pendant_pierced(3000); }, up, 4},
+      {"bead", [] { return bead(1600); }, [](dvec3 p) { return p; }, 0},
   };
 }
 

@@ -12,7 +12,7 @@ struct Surface {
   std::string name;
   std::function<Mesh()> build;
   Outward outward;  // expected normal side, checked on every face
-  int boundary_loops = 1;  // 1 for a disk, 2 for a band, 1 + holes for a pierced surface
+  int boundary_loops = 1;  // 1 for a disk, 2 for a band, 1 + holes for a pierced surface, 0 closed
 };
 
 // The small set (400-3000 faces each), committed in assets/surfaces.

@@ -45,6 +45,9 @@ int run_param(const ParamArgs& args) {
   const auto t0 = Clock::now();
   LoadedSurface loaded = load_surface(args.surface);
   for (const auto& w : loaded.warnings) std::cerr << "paver: warning: " << printable(w) << "\n";
+  if (loaded.mesh.boundary_loops.empty())
+    throw InputError(args.surface + ": is a closed surface; `paver param` maps one open surface, and `paver run` "
+                     "cuts a closed one into charts (--cut)");
   const auto t1 = Clock::now();
   // Said before the mapping, which can take minutes on a big mesh.
   std::printf("%s: %d vertices, %d faces, %d boundary vertices in %zu loops (loaded in %.1f ms)\n",

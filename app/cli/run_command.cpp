@@ -41,6 +41,7 @@ struct RunArgs {
   std::string design;
   std::string pattern;
   std::string topology;
+  std::string cut = "auto";
   std::optional<double> spacing;
   std::optional<double> gap;
   std::optional<double> margin;
@@ -86,6 +87,9 @@ int run_run(const RunArgs& args) {
   nothing_written_yet();
   PipelineRequest request;
   request.surface_path = args.surface;
+  const std::optional<CutAxis> cut_axis = cut_axis_from_name(args.cut);
+  if (!cut_axis) throw InputError("--cut " + printable(args.cut) + ": use auto, x, y or z");
+  request.cut = *cut_axis;
   request.design_source = args.design.empty() ? "defaults" : args.design;
   request.design_path = args.design;
   request.on_warning = [](const std::string& w) { std::cerr << "paver: warning: " << printable(w) << "\n"; };
@@ -162,6 +166,9 @@ int run_run(const RunArgs& args) {
     throw InputError("--cutter " + printable(args.cutter) + ": use seat (girdle, seat cone, hole through) or element");
   if (!args.subtract && args.thickness) throw InputError("--thickness is the metal's for --subtract: add --subtract");
   if (args.subtract) {
+    request.closed_surface_refusal =
+        "--subtract cuts the metal of open surfaces only for now (a closed surface's charts would each get walls "
+        "at their seams); leave out --subtract";
     if (!args.thickness) throw InputError("--subtract needs --thickness T: how thick the metal is, surface units");
     const double thickness = finite_non_negative("--thickness", *args.thickness, "the metal's thickness, surface units");
     if (!(thickness > 0)) throw InputError("--thickness 0: the metal needs a thickness above 0");
@@ -222,11 +229,15 @@ int run_run(const RunArgs& args) {
   const auto& q = map.parameterization.quality;
   const auto& pr = map.parameterization.report;
   const int holes = map.mesh.hole_count();
-  const std::string shape = holes == 0   ? "a disk"
+  const std::string shape = is_atlas(map) ? "a closed surface, cut into " + std::to_string(chart_count(map)) +
+                                                  " charts (" + std::to_string(map.mesh.boundary_loops.size()) +
+                                                  " seam loops, each chart's side counted)"
+                            : holes == 0 ? "a disk"
                             : holes == 1 ? "a band or a disk with a hole (2 boundary loops)"
                                          : std::to_string(holes) + " holes (" + std::to_string(holes + 1) + " boundary loops)";
   std::printf("surface  %s: %d vertices, %d faces, area %.6g, %s\n", printable(args.surface).c_str(),
-              map.mesh.vertex_count(), map.mesh.face_count(), surface_area(map.mesh), shape.c_str());
+              is_atlas(map) ? map.closed_surface_vertices : map.mesh.vertex_count(),
+              is_atlas(map) ? map.closed_surface_faces : map.mesh.face_count(), surface_area(map.mesh), shape.c_str());
   std::printf("map      ARAP from %s, %d iterations: %d flips, %d boundary overlaps, s1/s2 mean %.3f max %.3f\n",
               pr.start_used == ArapStart::Lscm ? "LSCM" : "Tutte", pr.iterations, q.flipped_triangles,
               q.boundary_intersections, q.stretch_mean, q.stretch_max);
@@ -241,7 +252,7 @@ int run_run(const RunArgs& args) {
                 pavement.relaxation.packing_iterations, pavement.relaxation.jammed, pavement.relaxation.milliseconds);
   std::printf("\n");
   if (!pavement.topology_choice.empty()) std::printf("topology %s\n", pavement.topology_choice.c_str());
-  if (map.mesh.boundary_loops.size() == 2) {
+  if (is_band(map)) {
     if (pavement.band_closure)
       std::printf("band     seamless (period %.6g, map s1/s2 mean %.3f): %s\n", map.seamless->period,
                   map.seamless->parameterization.quality.stretch_mean, describe_band_closure(*pavement.band_closure).c_str());
@@ -315,13 +326,17 @@ int run_run(const RunArgs& args) {
 std::function<int()> add_run_command(CLI::App& app) {
   auto args = std::make_shared<RunArgs>();
   CLI::App* cmd = app.add_subcommand("run", "Pave a surface: map, pattern, elements, export and report");
-  cmd->add_option("SURFACE", args->surface, "Open surface: OBJ, OFF, PLY or STL")->required();
+  cmd->add_option("SURFACE", args->surface, "Surface: OBJ, OFF, PLY or STL (open, or closed without handles)")->required();
   cmd->add_option("--design", args->design, "design.json (flags below override it)");
   cmd->add_option("--pattern", args->pattern, "Tessellation: tri, grid or hex");
   cmd->add_option("--topology", args->topology,
                   "auto (default: the lattice, or the adaptive pattern where the lattice tears or leaves bare patches), "
                   "lattice (the paper's) or adaptive: particles grown on the surface with point defects, for maps "
                   "that distort a lattice (tri and hex; docs/topology.md)");
+  cmd->add_option("--cut", args->cut,
+                  "A closed surface (a bead, a figurine) is cut into charts by a plane across this axis through its "
+                  "centre: auto (its longest axis, default), x, y or z")
+      ->capture_default_str();
   cmd->add_option("--spacing", args->spacing, "Edge length D in surface units (default: from the surface size)");
   cmd->add_option("--gap", args->gap,
                   "Required free space between neighbouring elements, surface units (default 0: touching)");

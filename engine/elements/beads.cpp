@@ -67,10 +67,11 @@ Elements place_beads(const SurfaceMap& map, const Elements& stones, const Elemen
     candidates.push_back(ElementKind::Bead, triangles[t][0], 0, middles[t], lifted.position[t], lifted.normal[t],
                          2 * room * design.beads.scale, ShapeKind::Sphere);
   }
-  const std::vector<double> to_boundary = distances_to_boundary(map, candidates, design.margin);
+  const double margin = boundary_margin(map, design.margin, design.gap);
+  const std::vector<double> to_boundary = distances_to_boundary(map, candidates, margin);
   std::vector<std::uint8_t> outside(candidates.size(), 0);
   for (std::size_t b = 0; b < candidates.size(); ++b)
-    outside[b] = !keeps_margin(to_boundary[b], candidates.diameter[b], design.margin);
+    outside[b] = !keeps_margin(to_boundary[b], candidates.diameter[b], margin);
   candidates.erase_flagged(outside);
   return candidates;
 }

@@ -109,7 +109,7 @@ RefillReport refill_bare_regions(const SurfaceMap& map, Elements& elements, cons
       trial.push_back(ElementKind::Vertex, -1, 0, candidates[c],
                       lifted.triangle[c] < 0 ? glm::dvec3(0) : lifted.position[c],
                       lifted.triangle[c] < 0 ? glm::dvec3(0, 0, 1) : lifted.normal[c], diameter, spec.vertex.shape);
-    const double margin = design.elements.margin;
+    const double margin = boundary_margin(map, design.elements.margin, design.elements.gap);
     const std::vector<double> to_boundary = distances_to_boundary(map, trial, margin);
     std::vector<int> next;
     for (size_t c = 0; c < candidates.size(); ++c) {

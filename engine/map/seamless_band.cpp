@@ -364,7 +364,7 @@ SurfaceMap make_seamless_surface_map(const SurfaceMap& annulus, const SeamlessBa
 }
 
 void add_seamless_map(SurfaceMap& annulus) {
-  if (annulus.mesh.boundary_loops.size() != 2) return;
+  if (!is_band(annulus)) return;
   if (annulus.parameterization.hole_centres.size() != 1) {
     annulus.seamless_unavailable = "its map has no hole centre";
     return;

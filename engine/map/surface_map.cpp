@@ -1,6 +1,7 @@
 #include "map/surface_map.h"
 
 #include "map/seamless_band.h"
+#include "map/surface_charts.h"
 #include "mesh/mean_curvature.h"
 
 #include <glm/common.hpp>
@@ -43,20 +44,23 @@ int locate_on_map(const SurfaceMap& map, glm::dvec2 p, glm::dvec3& bary) {
   return t < 0 ? t : t % map.mesh.face_count();
 }
 
+void set_curvature_range(SurfaceMap& map) {
+  if (map.curvature.empty()) return;
+  // Percentiles, not the extremes: one sliver's huge |H| would squeeze every other vertex into
+  // the bottom of the range, and c and m would act nowhere on a scanned mesh.
+  std::vector<double> sorted = map.curvature;
+  std::sort(sorted.begin(), sorted.end());
+  const auto at = [&](double p) { return sorted[size_t(p * double(sorted.size() - 1) + 0.5)]; };
+  map.curvature_min = at(kCurvatureLowPercentile), map.curvature_max = at(kCurvatureHighPercentile);
+}
+
 SurfaceMap make_surface_map(SurfaceMesh mesh, std::vector<glm::dvec2> uv) {
   SurfaceMap map;
   map.mesh = std::move(mesh);
   map.uv = std::move(uv);
   map.normals = vertex_normals(map.mesh);
   map.curvature = mean_curvature(map.mesh);
-  if (!map.curvature.empty()) {
-    // Percentiles, not the extremes: one sliver's huge |H| would squeeze every other vertex into
-    // the bottom of the range, and c and m would act nowhere on a scanned mesh.
-    std::vector<double> sorted = map.curvature;
-    std::sort(sorted.begin(), sorted.end());
-    const auto at = [&](double p) { return sorted[size_t(p * double(sorted.size() - 1) + 0.5)]; };
-    map.curvature_min = at(kCurvatureLowPercentile), map.curvature_max = at(kCurvatureHighPercentile);
-  }
+  set_curvature_range(map);
   map.uv_min = glm::dvec2(std::numeric_limits<double>::infinity());
   map.uv_max = -map.uv_min;
   for (const auto& p : map.uv) map.uv_min = glm::min(map.uv_min, p), map.uv_max = glm::max(map.uv_max, p);
@@ -78,6 +82,7 @@ SurfaceMap make_surface_map(SurfaceMesh mesh, Parameterization parameterization)
 }
 
 SurfaceMap build_surface_map(SurfaceMesh mesh, const ArapOptions& options) {
+  if (mesh.boundary_loops.empty()) return *map_closed_surface(mesh, CutAxis::Auto, "the closed surface");
   Parameterization param = parameterize_arap(mesh, options);
   return make_surface_map(std::move(mesh), std::move(param));
 }

@@ -6,7 +6,7 @@
 // two real pieces notices. Components are joined through shared vertices, so pieces touching at a
 // single vertex stay one component and are refused as non-manifold there. The manifold,
 // orientation and boundary checks look at the kept component only.
-// Everything else (non-manifold, non-orientable, closed, several holes, handles) is an InputError
+// Everything else (non-manifold, non-orientable, handles) is an InputError
 // that names the file, the place and the fix.
 #include "mesh/mesh_repair.h"
 
@@ -267,10 +267,7 @@ std::vector<std::vector<int>> boundary_loops(const std::vector<glm::ivec3>& tria
     next[t[c]] = t[(c + 1) % 3];
     any = true;
   }
-  if (!any)
-    fail(source, "is a closed surface (it has no boundary edges); Paver paves open surfaces (disks, bands, "
-                 "surfaces with holes): cut it open first, for example across its middle into two halves" +
-                     note);
+  if (!any) return {};  // a closed surface: the map stage cuts it into charts
   std::vector<char> visited(vertex_count, 0);
   std::vector<std::vector<int>> loops;
   for (int start = 0; start < int(vertex_count); ++start) {
@@ -365,8 +362,8 @@ LoadedSurface check_and_repair(std::vector<glm::dvec3> positions, const std::vec
     fail(source, "has " + count_of(handles, "handle", "handles") + " (V - E + F = " + std::to_string(euler) + " with " +
                      count_of(loop_count, "boundary loop", "boundary loops") + "; a surface without handles has " +
                      std::to_string(2 - loop_count) +
-                     "); Paver needs a surface without handles (a disk, a band, a surface with holes): cut through "
-                     "the handles or fill them" +
+                     "); Paver needs a surface without handles (a disk, a band, a surface with holes, or a closed "
+                     "one like a bead): cut through the handles or fill them" +
                      note);
 
   mesh.triangles.reserve(triangles.size());

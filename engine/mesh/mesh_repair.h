@@ -1,7 +1,7 @@
 #pragma once
 // Checks a polygon soup and repairs it into the SurfaceMesh Paver paves: triangulation, the
-// largest connected component, manifoldness, consistent orientation, a single boundary loop and
-// disk topology. What it repairs is reported as warnings; what it cannot is an InputError.
+// largest connected component, manifoldness, consistent orientation, and no handles (a disk, a
+// surface with holes, or a closed one). What it repairs is reported as warnings; what it cannot is an InputError.
 #include "mesh/mesh_loader.h"
 
 #include <glm/vec3.hpp>

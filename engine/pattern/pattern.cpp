@@ -85,7 +85,9 @@ Pattern build_pattern(const SurfaceMap& map, const UnitCell& cell, const Placeme
     if (!(glm::length(t - glm::dvec2(period_cells)) < 1e-6) || period_cells == glm::ivec2(0))
       throw std::logic_error("build_pattern: the band's period is not a lattice vector (close_band first)");
   } else {
-    for (int v : map.mesh.outer_loop()) cover(map.uv[v]);  // the holes lie inside it
+    // Every loop: a hole lies inside its outer loop, but an atlas's charts lie side by side.
+    for (const std::vector<int>& loop : map.mesh.boundary_loops)
+      for (int v : loop) cover(map.uv[v]);
   }
   const double window_end = map.period_origin + map.period;
   const auto in_window = [&](glm::dvec2 q) { return !wraps || (q.x >= map.period_origin && q.x < window_end); };

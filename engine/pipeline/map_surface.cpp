@@ -72,7 +72,7 @@ void check_surface_proportions(const std::filesystem::path& path, const SurfaceM
 }
 
 MappedSurface map_surface_file(const std::filesystem::path& path, const PipelineProgress& progress,
-                               const StopRequested& stop, const PipelineWarning& warn) {
+                               const StopRequested& stop, const PipelineWarning& warn, CutAxis cut) {
   const auto report = [&](float fraction, const std::string& stage) {
     if (progress) progress(fraction, stage);
   };
@@ -90,6 +90,26 @@ MappedSurface map_surface_file(const std::filesystem::path& path, const Pipeline
   if (stopped()) return out;
 
   t0 = Clock::now();
+  if (loaded.mesh.boundary_loops.empty()) {
+    try {
+      std::optional<SurfaceMap> atlas = map_closed_surface(
+          loaded.mesh, cut, path.string(),
+          [&](int chart, int charts) {
+            report(0.05f + 0.9f * float(chart) / float(charts),
+                   "mapping: chart " + std::to_string(chart + 1) + " of " + std::to_string(charts));
+          },
+          stopped);
+      if (!atlas) return out;
+      out.map = std::make_shared<const SurfaceMap>(std::move(*atlas));
+    } catch (const InputError&) {
+      throw;  // names the file and the chart already
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error(path.string() + ": " + e.what());
+    }
+    out.timings.emplace_back("parameterize", ms_since(t0));
+    report(1.0f, "mapped");
+    return out;
+  }
   try {
     report(0.05f, "mapping: start map and factorization");
     std::optional<Parameterization> parameterization = parameterize_arap(

@@ -2,6 +2,7 @@
 // Stages 1-2 of the pipeline: a surface file, loaded and checked (mesh/), mapped bijectively to
 // the plane (map/). run_pipeline (so `paver run`) and the studio's background loader call this;
 // `paver param`, which exposes the map's own options, calls the map stage's functions directly.
+#include "map/surface_charts.h"
 #include "map/surface_map.h"
 #include "pipeline/pavement.h"
 
@@ -37,7 +38,9 @@ struct MappedSurface {
 
 // Throws InputError for a file Paver cannot pave (naming the file), std::runtime_error naming the
 // file when the map fails.
+// A closed surface is cut into charts across `cut` (map/surface_charts.h) and mapped as their atlas.
 MappedSurface map_surface_file(const std::filesystem::path& path, const PipelineProgress& progress = {},
-                               const StopRequested& stop = {}, const PipelineWarning& warn = {});
+                               const StopRequested& stop = {}, const PipelineWarning& warn = {},
+                               CutAxis cut = CutAxis::Auto);
 
 }  // namespace paver

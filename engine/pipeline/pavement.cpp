@@ -50,7 +50,8 @@ PlacedElements place_all_elements(const SurfaceMap& map, const Pattern& pattern,
   if (postprocess) {
     placed.filled = fill_boundary_edges(map, pattern, points, design.elements, design.pattern.spacing, placed.elements,
                                         retired);
-    placed.eliminated = eliminate_boundary_elements(map, placed.elements, design.elements.margin);
+    placed.eliminated = eliminate_boundary_elements(
+        map, placed.elements, boundary_margin(map, design.elements.margin, design.elements.gap));
   }
   return placed;
 }

@@ -62,12 +62,15 @@ PipelineResult run_pipeline(PipelineRequest request) {
     result.timings = std::move(request.map_timings);
   } else {
     const StopRequested stop_requested = [&] { return stop && stop->load(); };
-    MappedSurface mapped = map_surface_file(request.surface_path, request.progress, stop_requested, request.on_warning);
+    MappedSurface mapped =
+        map_surface_file(request.surface_path, request.progress, stop_requested, request.on_warning, request.cut);
     result.map = std::move(mapped.map);
     result.warnings = std::move(mapped.warnings);
     result.timings = std::move(mapped.timings);
   }
   check_stop();
+  if (!request.closed_surface_refusal.empty() && result.map && is_atlas(*result.map))
+    throw InputError(request.surface_path.string() + " is a closed surface: " + request.closed_surface_refusal);
 
   if (request.out) {
     std::function<void(const Pattern&, const Design&)> caller_hook = std::move(request.pavement.on_pattern);

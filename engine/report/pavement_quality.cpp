@@ -137,7 +137,8 @@ double mean_area_factor(const SurfaceMap& map, const SolverParams& params) {
 
 double ideal_element_count(const SurfaceMap& map, const QualityBasis& basis) {
   if (!(basis.area_per_element > 0)) return 0;
-  const double area = surface_area(map.mesh) - basis.boundary_strip * boundary_length(map.mesh);
+  // A closed surface has no boundary: its atlas's seams are not forgiven a strip.
+  const double area = surface_area(map.mesh) - basis.boundary_strip * (is_atlas(map) ? 0.0 : boundary_length(map.mesh));
   return std::max(area, 0.0) / (basis.area_per_element * mean_area_factor(map, basis.solver));
 }
 
@@ -146,7 +147,7 @@ QualityBasis quality_basis(const SurfaceMap& map, const UnitCell& cell, const El
   QualityBasis basis;
   basis.solver = solver;
   basis.gap = elements.gap;
-  basis.margin = elements.margin;
+  basis.margin = boundary_margin(map, elements.margin, elements.gap);
   double per_cell = 0, largest = 0;
   if (elements.vertex.enabled) per_cell += double(cell.vertices.size());
   for (const EdgeElementDesign& spec : elements.edge) {
@@ -165,7 +166,7 @@ QualityBasis quality_basis(const SurfaceMap& map, const UnitCell& cell, const El
   }
   basis.spacing = cell.spacing;
   basis.boundary_strip =
-      0.5 * (elements.vertex.enabled ? elements.vertex.scale * cell.spacing : largest) + elements.margin;
+      0.5 * (elements.vertex.enabled ? elements.vertex.scale * cell.spacing : largest) + basis.margin;
   basis.ideal_count = ideal_element_count(map, basis);
   return basis;
 }

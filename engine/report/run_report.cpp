@@ -61,7 +61,7 @@ namespace {
 // How a band was paved (docs/holes_and_bands.md): seamless, with the lattice closed around it, or
 // as an annulus and why. null for a surface that is not a band.
 nlohmann::json band_json(const SurfaceMap& map, const Pavement& pavement) {
-  if (map.mesh.boundary_loops.size() != 2) return nullptr;
+  if (!is_band(map)) return nullptr;
   nlohmann::json band = {{"seamless", pavement.seamless}};
   if (map.seamless) band["period"] = map.seamless->period;
   if (!pavement.seamless)
@@ -97,11 +97,15 @@ nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const
   return json{
       {"paver_report_version", 1},
       {"surface", {{"path", info.surface_path},
-                   {"vertices", map.mesh.vertex_count()},
-                   {"faces", map.mesh.face_count()},
-                   {"boundary_vertices", boundary_vertex_count(map.mesh)},
-                   {"boundary_loops", map.mesh.boundary_loops.size()},
-                   {"holes", map.mesh.hole_count()},
+                   {"vertices", is_atlas(map) ? map.closed_surface_vertices : map.mesh.vertex_count()},
+                   {"faces", is_atlas(map) ? map.closed_surface_faces : map.mesh.face_count()},
+                   {"boundary_vertices", is_atlas(map) ? 0 : boundary_vertex_count(map.mesh)},
+                   {"boundary_loops", is_atlas(map) ? 0 : map.mesh.boundary_loops.size()},
+                   {"holes", is_atlas(map) ? 0 : map.mesh.hole_count()},
+                   {"closed", is_atlas(map)},
+                   {"charts", chart_count(map)},
+                   {"seam_loops", is_atlas(map) ? map.mesh.boundary_loops.size() : 0},
+                   {"seam_length", is_atlas(map) ? 0.5 * boundary_length(map.mesh) : 0.0},
                    {"area", surface_area(map.mesh)},
                    {"curvature_min", map.curvature_min},
                    {"curvature_max", map.curvature_max}}},

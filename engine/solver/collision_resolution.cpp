@@ -83,6 +83,9 @@ Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface,
       const int pi = carrier(ai, pj);
       if (pi < 0 || pj < 0 || pi == pj || lifted.triangle[pi] < 0 || lifted.triangle[pj] < 0) continue;
       if (system.stray_count[pi] == kRetired || system.stray_count[pj] == kRetired) continue;
+      // Across an atlas's seam a spring would pull across the plane between two charts, not
+      // across the surface: such a pair is left to the removal below.
+      if (is_atlas(map) && map.chart_of_face[lifted.triangle[pi]] != map.chart_of_face[lifted.triangle[pj]]) continue;
       // The particles must end up as much farther apart as the elements need to.
       const double need =
           options.clearance * contact_distance(elements.diameter[c.i], elements.diameter[c.j], design.elements.gap);

@@ -164,6 +164,32 @@ TEST_F(PaverRun, APlateWithTwoHolesIsPavedAroundThem) {
     }
 }
 
+TEST_F(PaverRun, AClosedBeadIsCutIntoChartsAndPavedAsOneSurface) {
+  const fs::path out = dir() / "bead";
+  const CliResult r = paver({"run", "assets/surfaces/bead.obj", "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  EXPECT_NE(r.out.find("a closed surface, cut into 2 charts"), std::string::npos) << r.out;
+  const json report = read_json(out / "report.json");
+  EXPECT_TRUE(report["surface"]["closed"].get<bool>());
+  EXPECT_EQ(report["surface"]["charts"].get<int>(), 2);
+  EXPECT_EQ(report["surface"]["boundary_loops"].get<int>(), 0);
+  EXPECT_GT(report["surface"]["seam_length"].get<double>(), 0);
+  EXPECT_TRUE(report["verdict"]["ok"].get<bool>()) << report["verdict"].dump();
+  // Stones all round the bead: both halves (z < 0 and z > 0) are paved.
+  const std::vector<Placement> rows = read_placements(out / "placements.csv");
+  ASSERT_GT(rows.size(), 300u);
+  int below = 0;
+  for (const Placement& row : rows) below += row.p[2] < 0;
+  EXPECT_GT(below, int(rows.size()) / 3);
+  EXPECT_LT(below, 2 * int(rows.size()) / 3);
+  // --cut picks the plane: across x, the halves are x < 0 and x > 0.
+  const CliResult across = paver({"run", "assets/surfaces/bead.obj", "--cut", "x", "--out", (dir() / "x").string()});
+  ASSERT_EQ(across.exit_code, 0) << describe(across);
+  const CliResult wrong = paver({"run", "assets/surfaces/bead.obj", "--cut", "w", "--out", (dir() / "w").string()});
+  EXPECT_EQ(wrong.exit_code, 2);
+  EXPECT_NE(wrong.err.find("--cut w: use auto, x, y or z"), std::string::npos) << describe(wrong);
+}
+
 TEST_F(PaverRun, DomeHexWritesEveryOutputOnTheSurface) {
   const fs::path out = dir() / "dome";
   const CliResult r = paver({"run", "assets/surfaces/dome.obj", "--pattern", "hex", "--spacing", "6", "--out",
@@ -492,14 +518,40 @@ TEST_F(PaverRunErrors, MissingSurface) {
   expect_input_error(r, out, {"no_such_surface.obj", "not found"});
 }
 
-TEST_F(PaverRunErrors, ClosedSurface) {
-  const fs::path tetrahedron = dir() / "tetrahedron.obj";
-  write_file_text(tetrahedron,
-                  "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
-                  "f 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n");
+TEST_F(PaverRunErrors, ClosedSurfaceWithAHandle) {
+  // A closed torus, 12 x 6 quads: genus 1.
+  constexpr int kU = 12, kV = 6;
+  std::ostringstream obj;
+  for (int j = 0; j < kV; ++j)
+    for (int i = 0; i < kU; ++i) {
+      const double a = 2 * M_PI * i / kU, b = 2 * M_PI * j / kV;
+      obj << "v " << (3 + std::cos(b)) * std::cos(a) << ' ' << (3 + std::cos(b)) * std::sin(a) << ' ' << std::sin(b)
+          << '\n';
+    }
+  const auto index = [](int i, int j) { return (j % kV) * kU + (i % kU) + 1; };
+  for (int j = 0; j < kV; ++j)
+    for (int i = 0; i < kU; ++i)
+      obj << "f " << index(i, j) << ' ' << index(i + 1, j) << ' ' << index(i + 1, j + 1) << ' ' << index(i, j + 1)
+          << '\n';
+  const fs::path torus = dir() / "torus.obj";
+  write_file_text(torus, obj.str());
   const fs::path out = dir() / "out";
-  const CliResult r = paver({"run", tetrahedron.string(), "--out", out.string()});
-  expect_input_error(r, out, {"tetrahedron.obj", "cut it open"});
+  const CliResult r = paver({"run", torus.string(), "--out", out.string()});
+  expect_input_error(r, out, {"torus.obj", "1 handle", "cut through the handles"});
+}
+
+TEST_F(PaverRunErrors, SubtractOnAClosedSurfaceIsRefusedBeforeAnythingIsWritten) {
+  const fs::path out = dir() / "out";
+  const CliResult r =
+      paver({"run", "assets/surfaces/bead.obj", "--subtract", "--thickness", "0.5", "--out", out.string()});
+  expect_input_error(r, out, {"bead.obj is a closed surface", "leave out --subtract"});
+}
+
+TEST_F(PaverRunErrors, ParamRefusesAClosedSurfaceNamingRun) {
+  const CliResult r = paver({"param", "assets/surfaces/bead.obj"});
+  EXPECT_EQ(r.exit_code, 2) << describe(r);
+  EXPECT_NE(r.err.find("closed surface"), std::string::npos) << describe(r);
+  EXPECT_NE(r.err.find("--cut"), std::string::npos) << describe(r);
 }
 
 TEST_F(PaverRunErrors, NanCoordinate) {

@@ -29,6 +29,9 @@ inline std::vector<std::string> holed_surface_names() {
   return {"bangle", "ring_band", "facade_windows", "pendant_pierced", "bunnyhead_band", "bunnyhead_three_loops"};
 }
 
+// Bundled closed surfaces (no boundary loop): the map cuts them into charts.
+inline std::vector<std::string> closed_surface_names() { return {"bead"}; }
+
 inline std::filesystem::path bundled_surface(const std::string& name) {
   return source_dir() / "assets/surfaces" / (name + ".obj");
 }

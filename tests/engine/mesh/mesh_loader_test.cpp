@@ -643,19 +643,20 @@ TEST_F(MeshLoaderTest, MoebiusStripIsRefused) {
   EXPECT_TRUE(Contains(message, "not orientable"));
 }
 
-TEST_F(MeshLoaderTest, ClosedTetrahedronIsRefused) {
-  const std::string message =
-      load_error(write("tet.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n"));
-  EXPECT_TRUE(Contains(message, "tet.obj: "));
-  EXPECT_TRUE(Contains(message, "closed"));
-  EXPECT_TRUE(Contains(message, "cut it open"));
+TEST_F(MeshLoaderTest, ClosedTetrahedronLoadsWithNoBoundaryLoop) {
+  // A closed surface without handles is accepted: the map stage cuts it into charts.
+  const LoadedSurface tet =
+      load_surface(write("tet.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n"));
+  EXPECT_EQ(tet.mesh.face_count(), 4);
+  EXPECT_TRUE(tet.mesh.boundary_loops.empty());
 }
 
-TEST_F(MeshLoaderTest, ClosedCubeIsRefused) {
-  const std::string message = load_error(write("cube.off",
-                                               "OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
-                                               "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n"));
-  EXPECT_TRUE(Contains(message, "cut it open"));
+TEST_F(MeshLoaderTest, ClosedCubeLoadsWithNoBoundaryLoop) {
+  const LoadedSurface cube = load_surface(write("cube.off",
+                                                "OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+                                                "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n"));
+  EXPECT_EQ(cube.mesh.face_count(), 12);
+  EXPECT_TRUE(cube.mesh.boundary_loops.empty());
 }
 
 TEST_F(MeshLoaderTest, HolesAreLoadedAsLoops) {

@@ -1,0 +1,201 @@
+#include "map/surface_charts.h"
+
+#include "core/input_error.h"
+#include "map/arap_parameterization.h"
+#include "map/map_quality.h"
+#include "mesh/mean_curvature.h"
+#include "mesh/mesh_repair.h"
+
+#include <Eigen/Dense>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <limits>
+#include <map>
+#include <numeric>
+
+namespace paver {
+
+std::string_view cut_axis_name(CutAxis axis) {
+  switch (axis) {
+    case CutAxis::Auto: return "auto";
+    case CutAxis::X: return "x";
+    case CutAxis::Y: return "y";
+    case CutAxis::Z: return "z";
+  }
+  return "?";
+}
+
+std::optional<CutAxis> cut_axis_from_name(std::string_view name) {
+  for (CutAxis a : {CutAxis::Auto, CutAxis::X, CutAxis::Y, CutAxis::Z})
+    if (name == cut_axis_name(a)) return a;
+  return std::nullopt;
+}
+
+namespace {
+
+glm::dvec3 face_centroid(const SurfaceMesh& mesh, const glm::ivec3& t) {
+  return (mesh.positions[t.x] + mesh.positions[t.y] + mesh.positions[t.z]) / 3.0;
+}
+
+// Smallest index of each face's connected piece among faces with the same side.
+std::vector<int> pieces_by_side(const SurfaceMesh& mesh, const std::vector<int>& side) {
+  const int nf = mesh.face_count();
+  std::vector<int> parent(nf);
+  std::iota(parent.begin(), parent.end(), 0);
+  const auto find = [&](int f) {
+    while (parent[f] != f) f = parent[f] = parent[parent[f]];
+    return f;
+  };
+  std::map<std::pair<int, int>, int> first_face_of_edge;
+  for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) {
+      const auto key = std::minmax(mesh.triangles[f][k], mesh.triangles[f][(k + 1) % 3]);
+      const auto [it, added] = first_face_of_edge.emplace(key, f);
+      if (added || side[it->second] != side[f]) continue;
+      const int a = find(it->second), b = find(f);
+      if (a != b) parent[std::max(a, b)] = std::min(a, b);
+    }
+  std::vector<int> piece(nf);
+  for (int f = 0; f < nf; ++f) piece[f] = find(f);
+  return piece;
+}
+
+}  // namespace
+
+ChartCut cut_into_charts(const SurfaceMesh& closed, CutAxis axis, const std::string& source) {
+  ChartCut cut;
+  // The area centroid and, for the automatic axis, the principal axis of the area.
+  double area = 0;
+  glm::dvec3 centre(0);
+  for (const glm::ivec3& t : closed.triangles) {
+    const double a = 0.5 * glm::length(glm::cross(closed.positions[t.y] - closed.positions[t.x],
+                                                  closed.positions[t.z] - closed.positions[t.x]));
+    area += a;
+    centre += a * face_centroid(closed, t);
+  }
+  centre /= area;
+  if (axis == CutAxis::Auto) {
+    Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+    for (const glm::ivec3& t : closed.triangles) {
+      const double a = 0.5 * glm::length(glm::cross(closed.positions[t.y] - closed.positions[t.x],
+                                                    closed.positions[t.z] - closed.positions[t.x]));
+      const glm::dvec3 d = face_centroid(closed, t) - centre;
+      const Eigen::Vector3d e(d.x, d.y, d.z);
+      covariance += a * e * e.transpose();
+    }
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
+    const Eigen::Vector3d longest = solver.eigenvectors().col(2);  // eigenvalues ascend
+    cut.normal = glm::normalize(glm::dvec3(longest.x(), longest.y(), longest.z()));
+  } else {
+    cut.normal = axis == CutAxis::X ? glm::dvec3(1, 0, 0) : axis == CutAxis::Y ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1);
+  }
+  cut.offset = glm::dot(cut.normal, centre);
+
+  std::vector<int> side(closed.face_count());
+  for (int f = 0; f < closed.face_count(); ++f)
+    side[f] = glm::dot(cut.normal, face_centroid(closed, closed.triangles[f])) >= cut.offset ? 1 : 0;
+  const std::vector<int> piece = pieces_by_side(closed, side);
+  std::map<int, std::vector<int>> faces_of_piece;
+  for (int f = 0; f < closed.face_count(); ++f) faces_of_piece[piece[f]].push_back(f);
+  if (faces_of_piece.size() < 2)
+    throw InputError(source + ": the plane across its " + std::string(axis == CutAxis::Auto ? "longest axis" : "axis") +
+                     " leaves all of the closed surface on one side; choose another --cut axis");
+
+  for (const auto& [first, faces] : faces_of_piece) {
+    std::vector<int> index(closed.vertex_count(), -1), vertex_of;
+    std::vector<glm::dvec3> positions;
+    std::vector<std::vector<int>> polygons;
+    for (const int f : faces) {
+      std::vector<int>& polygon = polygons.emplace_back();
+      for (int k = 0; k < 3; ++k) {
+        const int v = closed.triangles[f][k];
+        if (index[v] < 0) {
+          index[v] = int(positions.size());
+          positions.push_back(closed.positions[v]);
+          vertex_of.push_back(v);
+        }
+        polygon.push_back(index[v]);
+      }
+    }
+    const std::string chart_name =
+        source + " (chart " + std::to_string(cut.charts.size() + 1) + " of the closed surface cut across its " +
+        (axis == CutAxis::Auto ? "longest axis" : std::string(cut_axis_name(axis)) + " axis") + ")";
+    LoadedSurface chart = check_and_repair(std::move(positions), polygons, chart_name, 0);
+    cut.charts.push_back(std::move(chart.mesh));
+    cut.vertex_of.push_back(std::move(vertex_of));
+  }
+  return cut;
+}
+
+std::optional<SurfaceMap> map_closed_surface(const SurfaceMesh& closed, CutAxis axis, const std::string& source,
+                                             const std::function<void(int chart, int charts)>& progress,
+                                             const std::function<bool()>& stop) {
+  const ChartCut cut = cut_into_charts(closed, axis, source);
+  const int charts = int(cut.charts.size());
+  std::vector<Parameterization> maps;
+  for (int c = 0; c < charts; ++c) {
+    if (stop && stop()) return std::nullopt;
+    if (progress) progress(c, charts);
+    maps.push_back(parameterize_arap(cut.charts[c]));
+  }
+
+  // Side by side along u, centred on v = 0, half the largest chart apart: no lattice edge spans two.
+  std::vector<glm::dvec2> lo(charts), hi(charts);
+  double largest = 0;
+  for (int c = 0; c < charts; ++c) {
+    lo[c] = glm::dvec2(std::numeric_limits<double>::infinity()), hi[c] = -lo[c];
+    for (const glm::dvec2& q : maps[c].uv) lo[c] = glm::min(lo[c], q), hi[c] = glm::max(hi[c], q);
+    largest = std::max({largest, hi[c].x - lo[c].x, hi[c].y - lo[c].y});
+  }
+  SurfaceMesh atlas;
+  std::vector<glm::dvec2> uv;
+  std::vector<int> surface_vertex, chart_of_face;
+  double cursor = 0;
+  for (int c = 0; c < charts; ++c) {
+    const int base = atlas.vertex_count();
+    const glm::dvec2 shift(cursor - lo[c].x, -0.5 * (lo[c].y + hi[c].y));
+    for (int v = 0; v < cut.charts[c].vertex_count(); ++v) {
+      atlas.positions.push_back(cut.charts[c].positions[v]);
+      uv.push_back(maps[c].uv[v] + shift);
+      surface_vertex.push_back(cut.vertex_of[c][v]);
+    }
+    for (const glm::ivec3& t : cut.charts[c].triangles) {
+      atlas.triangles.push_back(t + glm::ivec3(base));
+      chart_of_face.push_back(c);
+    }
+    for (const std::vector<int>& loop : cut.charts[c].boundary_loops) {
+      std::vector<int>& kept = atlas.boundary_loops.emplace_back();
+      for (const int v : loop) kept.push_back(v + base);
+    }
+    cursor += hi[c].x - lo[c].x + 0.5 * largest;
+  }
+
+  Parameterization combined;
+  combined.uv = uv;
+  combined.quality = measure_map(atlas, uv);
+  combined.report = maps.front().report;
+  for (int c = 1; c < charts; ++c) {
+    combined.report.iterations += maps[c].report.iterations;
+    combined.report.blocked_steps += maps[c].report.blocked_steps;
+    combined.report.precompute_ms += maps[c].report.precompute_ms;
+    combined.report.solve_ms += maps[c].report.solve_ms;
+  }
+  SurfaceMap map = make_surface_map(std::move(atlas), std::move(combined));
+  map.seamless_unavailable.clear();  // two charts' seams are not a band's rims
+  // Normals and curvature of the closed surface: a seam vertex has faces on both sides.
+  const std::vector<glm::dvec3> normals = vertex_normals(closed);
+  const std::vector<double> curvature = mean_curvature(closed);
+  for (std::size_t v = 0; v < surface_vertex.size(); ++v) {
+    map.normals[v] = normals[surface_vertex[v]];
+    map.curvature[v] = curvature[surface_vertex[v]];
+  }
+  set_curvature_range(map);
+  map.chart_of_face = std::move(chart_of_face);
+  map.closed_surface_vertices = closed.vertex_count();
+  map.closed_surface_faces = closed.face_count();
+  return map;
+}
+
+}  // namespace paver
