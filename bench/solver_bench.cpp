@@ -102,6 +102,7 @@ const ShapeCase& shape_case(const std::string& surface, int n) {
         paver::load_surface(fs::path(PAVER_SOURCE_DIR) / "assets/surfaces" / (surface + ".obj")).mesh));
     paver::Design design;
     design.pattern.topology = paver::Topology::Lattice;
+    design.pattern.tessellation = paver::Tessellation::Triangle;
     design.pattern.spacing = std::sqrt(2 * paver::surface_area(c->map->mesh) / (std::sqrt(3.0) * n));
     paver::PavementOptions options;
     options.optimize = false;
