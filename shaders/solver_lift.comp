@@ -45,8 +45,8 @@ vec2 pull_back(vec2 p, out int segment) {
   vec2 result = p;
   int n = P.boundary_count;
   for (int i = 0; i < n; ++i) {
-    BoundaryCandidate candidate =
-        boundary_candidate(p, boundary_segments[i].xy, boundary_segments[i].zw, boundary_inward[i]);
+    BoundaryCandidate candidate = wrapped_boundary_candidate(P.period, p, boundary_segments[i].xy,
+                                                             boundary_segments[i].zw, boundary_inward[i]);
     if (candidate.dist2 < best) {
       best = candidate.dist2;
       segment = i;
@@ -78,11 +78,12 @@ void main() {
   if (t < 0) t = locate(p, b);
   if (t < 0) {
     int segment;
+    vec2 stray = p;
     p = pull_back(p, segment);
     t = locate(p, b);
     if (t < 0) {
       // Rounding left the nudged point outside: the triangle's centroid is inside for sure.
-      p = boundary_inward[segment];
+      p = nearest_image(P.period, boundary_inward[segment], stray);
       t = locate(p, b);
     }
     if (t < 0) {

@@ -211,6 +211,19 @@ PAVER_FN BoundaryCandidate boundary_candidate(vec2 p, vec2 a, vec2 b, vec2 inwar
   return result;
 }
 
+// The same on a map that wraps: the image of p nearest the segment is pulled back, and the nudged
+// point moved back beside p (so one copy of the boundary serves every period). Plain
+// boundary_candidate when the map does not wrap.
+PAVER_FN BoundaryCandidate wrapped_boundary_candidate(float period, vec2 p, vec2 a, vec2 b, vec2 inward) {
+  PAVER_PRECISE vec2 middle = vec2(0.5f * (a.x + b.x), 0.5f * (a.y + b.y));
+  vec2 q = nearest_image(period, p, middle);
+  BoundaryCandidate candidate = boundary_candidate(q, a, b, inward);
+  PAVER_PRECISE float shift = p.x - q.x;
+  PAVER_PRECISE vec2 back = vec2(candidate.nudged.x + shift, candidate.nudged.y);
+  candidate.nudged = back;
+  return candidate;
+}
+
 // Eq. 2 and 3: position and curvature at barycentric b of a triangle with corners (xyz, curvature).
 PAVER_FN vec4 lift_barycentric(vec3 b, vec4 pi, vec4 pj, vec4 pk, float ki, float kj, float kk) {
   PAVER_PRECISE vec3 position = vec3(b.x * pi.x + b.y * pj.x + b.z * pk.x, b.x * pi.y + b.y * pj.y + b.z * pk.y,

@@ -54,9 +54,9 @@ inline glm::vec2 pull_back(const SolverSurface& s, glm::vec2 p, int& segment) {
   float best = INFINITY;
   glm::vec2 result = p;
   for (int i = 0; i < n; ++i) {
-    const BoundaryCandidate candidate =
-        boundary_candidate(p, glm::vec2(s.boundary_segments[i].x, s.boundary_segments[i].y),
-                           glm::vec2(s.boundary_segments[i].z, s.boundary_segments[i].w), s.boundary_inward[i]);
+    const BoundaryCandidate candidate = wrapped_boundary_candidate(
+        s.period, p, glm::vec2(s.boundary_segments[i].x, s.boundary_segments[i].y),
+        glm::vec2(s.boundary_segments[i].z, s.boundary_segments[i].w), s.boundary_inward[i]);
     if (candidate.dist2 < best) {
       best = candidate.dist2;
       segment = i;
@@ -86,11 +86,12 @@ inline LiftedParticle lift_particle(const SolverSurface& s, glm::vec2& p, std::i
   if (t < 0) t = locate(s, p, b);
   if (t < 0) {
     int segment = 0;
+    const glm::vec2 stray = p;
     p = pull_back(s, p, segment);
     t = locate(s, p, b);
     if (t < 0) {
       // Rounding left the nudged point outside: the triangle's centroid is inside for sure.
-      p = s.boundary_inward[segment];
+      p = nearest_image(s.period, s.boundary_inward[segment], stray);
       t = locate(s, p, b);
     }
     if (t < 0) return {glm::vec3(NAN), 0.0f};  // cannot happen for a valid map; caught by the caller

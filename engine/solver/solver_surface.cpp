@@ -93,13 +93,6 @@ SolverSurface make_solver_surface(const SurfaceMap& map) {
       }
     }
   }
-  if (wraps)
-    for (const double shift : {-map.period, map.period})
-      for (int i = 0; i < n; ++i) {
-        const glm::dvec4 q(s.boundary_segments[i]);
-        s.boundary_segments.push_back(glm::vec4(q + glm::dvec4(shift, 0, shift, 0)));
-        s.boundary_inward.push_back(glm::vec2(glm::dvec2(s.boundary_inward[i]) + glm::dvec2(shift, 0)));
-      }
   s.curvature_min = float(map.curvature_min);
   s.curvature_max = float(map.curvature_max);
   s.centre = glm::vec2(0.5 * (map.uv_min + map.uv_max));

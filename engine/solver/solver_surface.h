@@ -13,8 +13,8 @@
 namespace paver {
 
 // On a map that wraps (a band's seamless map), the vertices and triangles are its MapDomain's (three
-// copies of each triangle, in one piece each) and the boundary segments are those of the three
-// copies too; positions are wrapped into the period before they are located.
+// copies of each triangle, in one piece each); positions are wrapped into the period before they
+// are located, and a stray is pulled back to its nearest image of the one copy of the boundary.
 struct SolverSurface {
   std::vector<glm::vec2> uv;                 // #V map coordinates
   std::vector<glm::vec4> position;           // #V surface positions (w unused: std430 alignment)
