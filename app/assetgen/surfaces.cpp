@@ -274,6 +274,19 @@ Mesh pendant_mesh(double h) {
 
 Mesh pendant(int target) { return fit_faces(pendant_mesh, 1.0, target); }
 
+// Ring i of `rows` on a profile (r, z) revolved about z, with as many vertices as its length
+// needs; alternate rows are turned by half a step, so the triangles between them are
+// near-equilateral.
+Row revolved_ring(Mesh& m, const Polyline& profile, int i, int rows, double h) {
+  const dvec2 p = profile.at(static_cast<double>(i) / rows);
+  const double turn = (i % 2) * 0.5;
+  const int count = std::max(6, rounded(2.0 * kPi * p.x / h));
+  return make_ring(m, count, [&](double t) {
+    const double th = 2.0 * kPi * (t + turn / count);
+    return dvec3(p.x * std::cos(th), p.x * std::sin(th), p.y);
+  });
+}
+
 // A band of revolution about z: rows of constant height on the profile (r(z), z), z0..z1, each a
 // closed ring with as many vertices as its length needs. Both rims are open: two boundary loops.
 Mesh band_of_revolution(const std::function<double(double)>& radius, double z0, double z1, double h) {
@@ -287,16 +300,7 @@ Mesh band_of_revolution(const std::function<double(double)>& radius, double z0, 
   const int rows = std::max(1, rounded(profile.length() / (h * std::sqrt(3.0) / 2.0)));
   Mesh m;
   std::vector<Row> rs;
-  for (int i = 0; i <= rows; ++i) {
-    const dvec2 p = profile.at(static_cast<double>(i) / rows);
-    // Alternate rows turned by half a step: near-equilateral triangles between them.
-    const double turn = (i % 2) * 0.5;
-    const int count = std::max(6, rounded(2.0 * kPi * p.x / h));
-    rs.push_back(make_ring(m, count, [&](double t) {
-      const double th = 2.0 * kPi * (t + turn / count);
-      return dvec3(p.x * std::cos(th), p.x * std::sin(th), p.y);
-    }));
-  }
+  for (int i = 0; i <= rows; ++i) rs.push_back(revolved_ring(m, profile, i, rows, h));
   for (std::size_t i = 1; i < rs.size(); ++i) stitch(m, rs[i - 1], rs[i], true);
   orient(m, [](dvec3 q) { return dvec3(q.x, q.y, 0.0); });
   return m;
@@ -385,15 +389,7 @@ Mesh bead_mesh(double h) {
   Mesh m;
   const int bottom = m.add(dvec3(0.0, 0.0, -kHalfLength));
   std::vector<Row> rs;
-  for (int i = 1; i < rows; ++i) {
-    const dvec2 p = profile.at(static_cast<double>(i) / rows);
-    const double turn = (i % 2) * 0.5;
-    const int count = std::max(6, rounded(2.0 * kPi * p.x / h));
-    rs.push_back(make_ring(m, count, [&](double t) {
-      const double th = 2.0 * kPi * (t + turn / count);
-      return dvec3(p.x * std::cos(th), p.x * std::sin(th), p.y);
-    }));
-  }
+  for (int i = 1; i < rows; ++i) rs.push_back(revolved_ring(m, profile, i, rows, h));
   stitch_rings(m, bottom, rs);
   // The top cap runs against the bottom one: seen from outside, both turn the same way.
   const int top = m.add(dvec3(0.0, 0.0, kHalfLength));

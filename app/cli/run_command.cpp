@@ -257,11 +257,7 @@ int run_run(const RunArgs& args) {
       std::printf("band     seamless (period %.6g, map s1/s2 mean %.3f): %s\n", map.seamless->period,
                   map.seamless->parameterization.quality.stretch_mean, describe_band_closure(*pavement.band_closure).c_str());
     else
-      std::printf("band     paved as an annulus: %s\n",
-                  !map.seamless_unavailable.empty() ? map.seamless_unavailable.c_str()
-                  : pavement.design.pattern.topology == Topology::Lattice
-                      ? "the seamless lattice tore or left bare patches; the lattice on the annulus did better"
-                      : "the adaptive pattern grows on the annulus map");
+      std::printf("band     paved as an annulus: %s\n", band_annulus_reason(map, pavement).c_str());
   }
   std::printf("optimize %s%s%s: %d iterations, %s (last max step %.3g); %d filled, %d eliminated at the boundary, "
               "%d removed still colliding\n",

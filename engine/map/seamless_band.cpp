@@ -273,7 +273,6 @@ std::optional<SeamlessBandMap> map_band_seamlessly(const SurfaceMesh& band, cons
 
   // The rims must not cross themselves or each other, in any copy: each rim unrolled along itself
   // over three periods, as one polyline.
-  const PeriodicUv final_map{out.uv, glm::dvec2(out.period, 0)};
   const auto image_near = [&](glm::dvec2 q, glm::dvec2 near) {
     return glm::dvec2(q.x - out.period * std::floor((q.x - near.x) / out.period + 0.5), q.y);
   };
@@ -298,26 +297,6 @@ std::optional<SeamlessBandMap> map_band_seamlessly(const SurfaceMesh& band, cons
     return std::nullopt;
   }
 
-  // Distortion, as measure_map reports it for a map that does not wrap.
-  double weighted = 0, total = 0;
-  for (int f = 0; f < nf; ++f) {
-    const glm::ivec3 t = band.triangles[f];
-    const auto flat = detail::flatten_triangle(band.positions[t.x], band.positions[t.y], band.positions[t.z]);
-    const glm::dvec2 c0 = corner(final_map, t.x, out.corner_turns[f].x),
-                     c1 = corner(final_map, t.y, out.corner_turns[f].y),
-                     c2 = corner(final_map, t.z, out.corner_turns[f].z);
-    // J = [c1 - c0, c2 - c0] * inverse([f1 - f0, f2 - f0]).
-    const double a = flat[1].x, b = flat[2].x, d = flat[2].y;
-    if (!(a > 0 && d > 0)) continue;
-    const glm::dvec2 e1 = c1 - c0, e2 = c2 - c0;
-    const glm::dvec2 col0 = e1 / a, col1 = (e2 - b * col0) / d;
-    const double p = glm::dot(col0, col0), q = glm::dot(col1, col1), r = glm::dot(col0, col1);
-    const double mean = 0.5 * (p + q), dev = std::sqrt(std::max(0.0, 0.25 * (p - q) * (p - q) + r * r));
-    const double s1 = std::sqrt(mean + dev), s2 = std::sqrt(std::max(mean - dev, 0.0));
-    const double area3 = 0.5 * a * d;
-    if (s2 > 0) weighted += area3 * s1 / s2, total += area3;
-  }
-  out.stretch_mean = total > 0 ? weighted / total : 0;
   return out;
 }
 
@@ -331,7 +310,6 @@ SurfaceMap make_seamless_surface_map(const SurfaceMap& annulus, const SeamlessBa
   map.parameterization = annulus.parameterization;
   map.parameterization.uv = band.uv;
   map.parameterization.hole_centres.clear();
-  map.parameterization.quality.stretch_mean = band.stretch_mean;
   map.period = band.period;
 
   DomainBuilder builder;
@@ -358,6 +336,11 @@ SurfaceMap make_seamless_surface_map(const SurfaceMap& annulus, const SeamlessBa
   map.period_origin = lo.x;
   map.uv_min = lo;
   map.uv_max = glm::dvec2(lo.x + band.period, hi.y);
+  // Its quality as measure_map sees one period: the first copy's triangles, each in one piece.
+  SurfaceMesh one_period;
+  for (const int v : domain.vertex) one_period.positions.push_back(map.mesh.positions[v]);
+  one_period.triangles = first;
+  map.parameterization.quality = measure_map(one_period, domain.uv);
   map.domain = std::move(domain);
   map.grid = build_uv_grid(map.domain.uv, map.domain.triangles);
   return map;

@@ -26,7 +26,6 @@ struct SeamlessBandMap {
   std::vector<glm::ivec3> corner_turns;  // #F: corner k of triangle t sits at uv + turns[k] * T
   double period = 0;                   // |T|; T = (period, 0)
   int iterations = 0;                  // ARAP iterations run
-  double stretch_mean = 0;             // area-weighted mean of s1/s2 of the seamless map
 };
 
 // The seamless map of a band from its annulus map (uv: #V, hole_centre as Parameterization's).

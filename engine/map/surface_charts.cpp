@@ -5,6 +5,7 @@
 #include "map/map_quality.h"
 #include "mesh/mean_curvature.h"
 #include "mesh/mesh_repair.h"
+#include "mesh/triangle_geometry.h"
 
 #include <Eigen/Dense>
 #include <glm/common.hpp>
@@ -67,23 +68,23 @@ std::vector<int> pieces_by_side(const SurfaceMesh& mesh, const std::vector<int>&
 ChartCut cut_into_charts(const SurfaceMesh& closed, CutAxis axis, const std::string& source) {
   ChartCut cut;
   // The area centroid and, for the automatic axis, the principal axis of the area.
+  const int nf = closed.face_count();
+  std::vector<double> face_area(nf);
   double area = 0;
   glm::dvec3 centre(0);
-  for (const glm::ivec3& t : closed.triangles) {
-    const double a = 0.5 * glm::length(glm::cross(closed.positions[t.y] - closed.positions[t.x],
-                                                  closed.positions[t.z] - closed.positions[t.x]));
-    area += a;
-    centre += a * face_centroid(closed, t);
+  for (int f = 0; f < nf; ++f) {
+    const glm::ivec3 t = closed.triangles[f];
+    face_area[f] = detail::triangle_area(closed.positions[t.x], closed.positions[t.y], closed.positions[t.z]);
+    area += face_area[f];
+    centre += face_area[f] * face_centroid(closed, t);
   }
   centre /= area;
   if (axis == CutAxis::Auto) {
     Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-    for (const glm::ivec3& t : closed.triangles) {
-      const double a = 0.5 * glm::length(glm::cross(closed.positions[t.y] - closed.positions[t.x],
-                                                    closed.positions[t.z] - closed.positions[t.x]));
-      const glm::dvec3 d = face_centroid(closed, t) - centre;
+    for (int f = 0; f < nf; ++f) {
+      const glm::dvec3 d = face_centroid(closed, closed.triangles[f]) - centre;
       const Eigen::Vector3d e(d.x, d.y, d.z);
-      covariance += a * e * e.transpose();
+      covariance += face_area[f] * e * e.transpose();
     }
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
     const Eigen::Vector3d longest = solver.eigenvectors().col(2);  // eigenvalues ascend

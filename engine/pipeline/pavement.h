@@ -81,6 +81,10 @@ const Elements& stones_and_beads(const Pavement& pavement, Elements& storage,
 // pass of "auto" too), else `map`.
 const SurfaceMap& map_for_topology(const SurfaceMap& map, Topology topology);
 
+// Why a band was paved as an annulus, not seamlessly ("" when it was seamless or is no band):
+// for the summary and report.json.
+std::string band_annulus_reason(const SurfaceMap& map, const Pavement& pavement);
+
 // The map `pavement.points` are on: the surface's seamless map for a seamless pavement, else `map`.
 const SurfaceMap& pavement_map(const SurfaceMap& map, const Pavement& pavement);
 

@@ -64,11 +64,7 @@ nlohmann::json band_json(const SurfaceMap& map, const Pavement& pavement) {
   if (!is_band(map)) return nullptr;
   nlohmann::json band = {{"seamless", pavement.seamless}};
   if (map.seamless) band["period"] = map.seamless->period;
-  if (!pavement.seamless)
-    band["annulus_because"] = !map.seamless_unavailable.empty() ? map.seamless_unavailable
-                              : pavement.design.pattern.topology == Topology::Lattice
-                                  ? "the seamless lattice tore or left bare patches; the lattice on the annulus did better"
-                                  : "the adaptive pattern grows on the annulus map";
+  if (!pavement.seamless) band["annulus_because"] = band_annulus_reason(map, pavement);
   if (const auto& c = pavement.band_closure)
     band["closure"] = {{"spacing_before", c->spacing_before}, {"spacing", c->spacing},
                        {"lattice_steps_around", c->around},    {"step_cells", {c->step.x, c->step.y}},
