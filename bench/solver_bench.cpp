@@ -2,7 +2,7 @@
 //   design/<name>       the whole pavement (pattern, optimizer, post-processing, collision
 //                       resolution, quality) per bundled design; stage times as counters.
 //   solver/<N>/<threads> CPU solver milliseconds per iteration at N particles on the dense wave.
-//   solver_shape/<band|disk>/<N> the same on the bangle's seamless map (which wraps) and on the dome
+//   solver_shape/<band|disk>/<N>/<threads> the same on the bangle's seamless map (which wraps) and on the dome
 //                       (a disk), at N particles of a tri lattice: a band costs what a disk costs
 //                       per particle (compare ns_per_particle of the two rows of one run).
 #include "io/design_io.h"
@@ -118,9 +118,11 @@ void solver_shape(benchmark::State& state, std::string surface) {
   const ShapeCase& c = shape_case(surface, int(state.range(0)));
   paver::SpringSystem system = paver::make_spring_system(c.pavement.pattern);
   paver::SolverParams params;
-  paver::CpuSpringSolver s(c.surface, system, params, c.pavement.design.pattern.spacing, 0);
+  const int threads = state.range(1) > 0 ? int(state.range(1)) : tbb::this_task_arena::max_concurrency();
+  paver::CpuSpringSolver s(c.surface, system, params, c.pavement.design.pattern.spacing, threads);
   for (auto _ : state) benchmark::DoNotOptimize(s.step());
   state.counters["particles"] = system.particle_count();
+  state.counters["threads"] = threads;
   state.counters["seamless"] = c.pavement.seamless;
   state.counters["ns_per_particle"] = benchmark::Counter(
       double(state.iterations()) * system.particle_count(), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
@@ -147,8 +149,8 @@ const bool registered = [] {
         ->Iterations(3);
   for (const auto& [name, surface] : {std::pair{"band", "bangle"}, std::pair{"disk", "dome"}})
     benchmark::RegisterBenchmark(("solver_shape/" + std::string(name)).c_str(), solver_shape, std::string(surface))
-        ->Arg(100000)
-        ->ArgName("particles")
+        ->ArgsProduct({{100000}, {1, 0}})
+        ->ArgNames({"particles", "threads"})
         ->Unit(benchmark::kMillisecond)
         ->UseRealTime();
   if (fs::exists(fs::path(PAVER_BINARY_DIR) / "assets/wave_dense.obj"))
