@@ -263,8 +263,10 @@ int run_run(const RunArgs& args) {
               "%d removed still colliding\n",
               backend.name.c_str(), backend.device.empty() ? "" : " on ", backend.device.c_str(), pavement.solve.iterations, std::string(stop_reason_name(pavement.solve.reason)).c_str(),
               pavement.solve.last_max_step, pavement.filled, pavement.eliminated, pavement.resolution.removed);
-  std::printf("elements %zu (%ld V, %ld E), %d of them added into bare regions\n", pavement.elements.size(),
+  std::printf("elements %zu (%ld V, %ld E), %d of them added into bare regions", pavement.elements.size(),
               counts.vertex_elements, counts.edge_elements, pavement.refill.added);
+  if (is_atlas(map)) std::printf(" (%d across the seams)", pavement.refill.on_seams);
+  std::printf("\n");
   const BillOfStones bill = bill_of_stones(pavement.elements, pavement.design.units);
   for (const StoneRow& row : bill.rows) {
     std::printf("stones   %ld %s of %.2f mm", row.count, std::string(shape_name(row.shape)).c_str(), row.diameter_mm);

@@ -9,6 +9,10 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
+#include <span>
+#include <unordered_map>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -33,6 +37,28 @@ bool clears_all(const ElementHash& hash, const Elements& elements, const glm::dv
   return clear;
 }
 
+// The density rule: no closer to any element than a triangle packing with the design's area per
+// element, times eq. 5's growth at the curvature there.
+struct DensityRule {
+  double packing = 0, c = 0, m = 0;
+  DensityRule(const Design& design, double area_per_element)
+      : packing(std::sqrt(area_per_element / (0.5 * std::sqrt(3.0)))), c(design.solver.c), m(design.solver.m) {}
+  double spacing(const SurfaceMap& map, double curvature) const {
+    return packing * (1 + c + m * normalised_curvature(map, curvature));
+  }
+  double widest() const { return packing * (1 + c + std::max(m, 0.0)); }
+};
+
+// A hash over `elements` whose cells are wide enough for every query of a new element of `diameter`.
+CellGrid element_grid(const SurfaceMap& map, const Elements& elements, double diameter, double gap, double widest) {
+  double largest = diameter;
+  for (double d : elements.diameter) largest = std::max(largest, d);
+  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+  for (const glm::dvec3& p : map.mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  const double reach = std::max(0.5 * (largest + diameter) + gap, widest);
+  return CellGrid(lo - glm::dvec3(reach), hi + glm::dvec3(reach), reach);
+}
+
 }  // namespace
 
 RefillReport refill_bare_regions(const SurfaceMap& map, Elements& elements, const Design& design,
@@ -44,20 +70,9 @@ RefillReport refill_bare_regions(const SurfaceMap& map, Elements& elements, cons
     return report;
   const double diameter = spec.vertex.scale * design.pattern.spacing;
   const double gap = spec.gap;
-  double largest = diameter;
-  for (double d : elements.diameter) largest = std::max(largest, d);
-  // Spacing of a triangle packing (sqrt(3)/2 s^2 per element) with the design's density.
-  const double packing = std::sqrt(area_per_element / (0.5 * std::sqrt(3.0)));
-  const double c = design.solver.c, m = design.solver.m;
-  const auto local_spacing = [&](double curvature) {
-    return packing * (1 + c + m * normalised_curvature(map, curvature));
-  };
-  const double widest = packing * (1 + c + std::max(m, 0.0));
-
-  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-  for (const glm::dvec3& p : map.mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
-  const double reach = std::max(0.5 * (largest + diameter) + gap, widest);
-  const CellGrid grid(lo - glm::dvec3(reach), hi + glm::dvec3(reach), reach);
+  const DensityRule density(design, area_per_element);
+  const auto local_spacing = [&](double curvature) { return density.spacing(map, curvature); };
+  const CellGrid grid = element_grid(map, elements, diameter, gap, density.widest());
   ElementHash hash(elements, grid);
 
   std::vector<int> seeds(elements.size());
@@ -125,6 +140,71 @@ RefillReport refill_bare_regions(const SurfaceMap& map, Elements& elements, cons
   }
   report.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return report;
+}
+
+void refill_seams(const SurfaceMap& map, Elements& elements, const Design& design, double area_per_element,
+                  RefillReport& report) {
+  const ElementsDesign& spec = design.elements;
+  if (!is_atlas(map) || !spec.vertex.enabled || design.elements.allow_overlap || !(area_per_element > 0)) return;
+  const auto t0 = std::chrono::steady_clock::now();
+  const double diameter = spec.vertex.scale * design.pattern.spacing;
+  const DensityRule density(design, area_per_element);
+  const CellGrid grid = element_grid(map, elements, diameter, spec.gap, density.widest());
+  ElementHash hash(elements, grid);
+  const SurfaceMesh& mesh = map.mesh;
+  // The one triangle on each boundary edge (a seam edge of its chart).
+  std::unordered_map<std::uint64_t, int> triangle_on;
+  const auto edge_key = [](int a, int b) { return (std::uint64_t(std::uint32_t(std::min(a, b))) << 32) | std::uint32_t(std::max(a, b)); };
+  for (int t = 0; t < mesh.face_count(); ++t)
+    for (int k = 0; k < 3; ++k) triangle_on[edge_key(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3])] = t;
+  // Along the seam in steps of a tenth of a diameter; across it at these shares of a diameter into
+  // the chart walked (the other side is walked with its own chart's loop).
+  const double step = 0.1 * diameter;
+  constexpr std::array<double, 4> kInto = {1e-6, 0.15, 0.3, 0.45};
+  LiftedPoints lifted;
+  lifted.resize(1);
+  for (const std::vector<int>& loop : mesh.boundary_loops) {
+    double carried = 0;  // arc length since the last sample, carried across edges
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      const int a = loop[k], b = loop[(k + 1) % loop.size()];
+      const auto on = triangle_on.find(edge_key(a, b));
+      if (on == triangle_on.end()) continue;
+      const int t = on->second;
+      const glm::dvec3 pa = mesh.positions[a], pb = mesh.positions[b];
+      const double length = glm::length(pb - pa);
+      if (!(length > 0)) continue;
+      const glm::dvec3 along = (pb - pa) / length;
+      int third = 0;
+      for (int c = 0; c < 3; ++c)
+        if (mesh.triangles[t][c] != a && mesh.triangles[t][c] != b) third = mesh.triangles[t][c];
+      glm::dvec3 into = mesh.positions[third] - pa;
+      into -= glm::dot(into, along) * along;
+      if (!(glm::length(into) > 0)) continue;
+      into = glm::normalize(into);
+      const UvFromTangent uv_step(map, t);
+      for (double s = step - carried; s < length; s += step) {
+        const double w = s / length;
+        const glm::dvec2 uv0 = map.uv[a] * (1 - w) + map.uv[b] * w;
+        const glm::dvec3 p0 = pa * (1 - w) + pb * w;
+        for (const double share : kInto) {
+          const glm::dvec2 uv = uv0 + uv_step(into * (share * diameter));
+          if (lift_points(map, std::span(&uv, 1), lifted) > 0) continue;
+          // The uv step is linear in the triangle; far from the seam the lift is the truth.
+          if (glm::length(lifted.position[0] - p0) > diameter) continue;
+          if (!clears_all(hash, elements, lifted.position[0], diameter, spec.gap,
+                          density.spacing(map, lifted.curvature[0])))
+            continue;
+          elements.push_back(ElementKind::Vertex, -1, 0, uv, lifted.position[0], lifted.normal[0], diameter,
+                             spec.vertex.shape);
+          hash.insert(int(elements.size()) - 1);
+          ++report.added, ++report.on_seams;
+          break;
+        }
+      }
+      carried = std::fmod(carried + length, step);
+    }
+  }
+  report.milliseconds += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
 }  // namespace paver

@@ -19,6 +19,7 @@ namespace paver {
 
 struct RefillReport {
   int added = 0;
+  int on_seams = 0;  // of `added`: straddling a closed surface's chart seams (refill_seams)
   int waves = 0;
   double milliseconds = 0;
 };
@@ -28,5 +29,14 @@ struct RefillReport {
 // `design` has its spacing resolved; `area_per_element` is the regular pattern's (QualityBasis).
 RefillReport refill_bare_regions(const SurfaceMap& map, Elements& elements, const Design& design,
                                  double area_per_element, const std::atomic<bool>* stop = nullptr);
+
+// A closed surface's atlas (map/surface_charts.h): each chart's elements keep off its seams, so a
+// strip about two element radii wide runs bare along every seam, though the seam is no edge of the
+// real surface. This walks every seam and adds elements across it wherever one keeps the contact
+// rule and the density rule above with every element, in 3D, over both charts: its centre on the
+// seam or up to half a diameter into either chart, the nearest to the seam that fits, greedily
+// along the seam. Adds to `report` (added, on_seams). Does nothing on a map that is no atlas.
+void refill_seams(const SurfaceMap& map, Elements& elements, const Design& design, double area_per_element,
+                  RefillReport& report);
 
 }  // namespace paver

@@ -4,6 +4,7 @@
 #include "map/arap_parameterization.h"
 #include "map/map_quality.h"
 #include "mesh/mean_curvature.h"
+#include "mesh/mesh_loader.h"
 #include "mesh/mesh_repair.h"
 #include "mesh/triangle_geometry.h"
 
@@ -12,6 +13,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <map>
 #include <numeric>
@@ -63,6 +65,76 @@ std::vector<int> pieces_by_side(const SurfaceMesh& mesh, const std::vector<int>&
   return piece;
 }
 
+// A crossing nearer a vertex than this share of its edge goes through the vertex instead: the
+// seam then leaves the plane by at most that much, and no sliver is made.
+constexpr double kSnapShare = 0.15;
+
+// The closed surface with every face that the plane crosses split along it, so that the seam is
+// the plane's section (straight across the faces) and not a staircase of whole faces, which would
+// keep a strip of elements off it as deep as a face. Vertices within kSnapShare of a crossing
+// are taken as on the plane.
+SurfaceMesh split_along_plane(const SurfaceMesh& closed, glm::dvec3 normal, double offset, const std::string& source) {
+  const int nv = closed.vertex_count();
+  std::vector<double> height(nv);
+  for (int v = 0; v < nv; ++v) height[v] = glm::dot(normal, closed.positions[v]) - offset;
+  std::vector<int> side(nv);
+  for (int v = 0; v < nv; ++v) side[v] = height[v] > 0 ? 1 : height[v] < 0 ? -1 : 0;
+  for (const glm::ivec3& t : closed.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const int a = t[k], b = t[(k + 1) % 3];
+      if (side[a] * side[b] >= 0) continue;
+      const double share = height[a] / (height[a] - height[b]);
+      if (share < kSnapShare) side[a] = 0;
+      if (share > 1 - kSnapShare) side[b] = 0;
+    }
+  std::vector<glm::dvec3> positions = closed.positions;
+  std::map<std::pair<int, int>, int> crossing;
+  const auto crossing_vertex = [&](int a, int b) {
+    const auto key = std::minmax(a, b);
+    const auto [it, added] = crossing.emplace(key, int(positions.size()));
+    if (added) {
+      const double share = height[a] / (height[a] - height[b]);
+      positions.push_back(closed.positions[a] + share * (closed.positions[b] - closed.positions[a]));
+    }
+    return it->second;
+  };
+  std::vector<std::vector<int>> faces;
+  // Each side's part of a split triangle is a triangle or a convex quad, in the triangle's order.
+  const auto add_part = [&](const std::vector<int>& part) {
+    if (part.size() == 3) {
+      faces.push_back(part);
+    } else if (part.size() == 4) {
+      // The shorter diagonal.
+      const double d02 = glm::length(positions[part[0]] - positions[part[2]]);
+      const double d13 = glm::length(positions[part[1]] - positions[part[3]]);
+      if (d02 <= d13)
+        faces.push_back({part[0], part[1], part[2]}), faces.push_back({part[0], part[2], part[3]});
+      else
+        faces.push_back({part[1], part[2], part[3]}), faces.push_back({part[1], part[3], part[0]});
+    }
+  };
+  for (const glm::ivec3& t : closed.triangles) {
+    bool above = false, below = false;
+    for (int k = 0; k < 3; ++k) above |= side[t[k]] > 0, below |= side[t[k]] < 0;
+    if (!(above && below)) {
+      faces.push_back({t.x, t.y, t.z});
+      continue;
+    }
+    std::vector<int> upper, lower;
+    for (int k = 0; k < 3; ++k) {
+      const int a = t[k], b = t[(k + 1) % 3];
+      if (side[a] >= 0) upper.push_back(a);
+      if (side[a] <= 0) lower.push_back(a);
+      if (side[a] * side[b] < 0) {
+        const int x = crossing_vertex(a, b);
+        upper.push_back(x), lower.push_back(x);
+      }
+    }
+    add_part(upper), add_part(lower);
+  }
+  return make_surface(std::move(positions), faces, source).mesh;
+}
+
 }  // namespace
 
 ChartCut cut_into_charts(const SurfaceMesh& closed, CutAxis axis, const std::string& source) {
@@ -93,28 +165,39 @@ ChartCut cut_into_charts(const SurfaceMesh& closed, CutAxis axis, const std::str
     cut.normal = axis == CutAxis::X ? glm::dvec3(1, 0, 0) : axis == CutAxis::Y ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1);
   }
   cut.offset = glm::dot(cut.normal, centre);
+  cut.surface = split_along_plane(closed, cut.normal, cut.offset, source);
+  const SurfaceMesh& surface = cut.surface;
 
-  std::vector<int> side(closed.face_count());
-  for (int f = 0; f < closed.face_count(); ++f)
-    side[f] = glm::dot(cut.normal, face_centroid(closed, closed.triangles[f])) >= cut.offset ? 1 : 0;
-  const std::vector<int> piece = pieces_by_side(closed, side);
+  // A face's side: that of its vertices off the plane (after the split no face has both sides).
+  std::vector<int> side(surface.face_count());
+  for (int f = 0; f < surface.face_count(); ++f) {
+    const glm::ivec3 t = surface.triangles[f];
+    const glm::dvec3 corners[3] = {surface.positions[t.x], surface.positions[t.y], surface.positions[t.z]};
+    double farthest = 0;
+    for (const glm::dvec3& p : corners) {
+      const double h = glm::dot(cut.normal, p) - cut.offset;
+      if (std::abs(h) > std::abs(farthest)) farthest = h;
+    }
+    side[f] = farthest >= 0 ? 1 : 0;
+  }
+  const std::vector<int> piece = pieces_by_side(surface, side);
   std::map<int, std::vector<int>> faces_of_piece;
-  for (int f = 0; f < closed.face_count(); ++f) faces_of_piece[piece[f]].push_back(f);
+  for (int f = 0; f < surface.face_count(); ++f) faces_of_piece[piece[f]].push_back(f);
   if (faces_of_piece.size() < 2)
     throw InputError(source + ": the plane across its " + std::string(axis == CutAxis::Auto ? "longest axis" : "axis") +
                      " leaves all of the closed surface on one side; choose another --cut axis");
 
   for (const auto& [first, faces] : faces_of_piece) {
-    std::vector<int> index(closed.vertex_count(), -1), vertex_of;
+    std::vector<int> index(surface.vertex_count(), -1), vertex_of;
     std::vector<glm::dvec3> positions;
     std::vector<std::vector<int>> polygons;
     for (const int f : faces) {
       std::vector<int>& polygon = polygons.emplace_back();
       for (int k = 0; k < 3; ++k) {
-        const int v = closed.triangles[f][k];
+        const int v = surface.triangles[f][k];
         if (index[v] < 0) {
           index[v] = int(positions.size());
-          positions.push_back(closed.positions[v]);
+          positions.push_back(surface.positions[v]);
           vertex_of.push_back(v);
         }
         polygon.push_back(index[v]);
@@ -186,8 +269,8 @@ std::optional<SurfaceMap> map_closed_surface(const SurfaceMesh& closed, CutAxis 
   SurfaceMap map = make_surface_map(std::move(atlas), std::move(combined));
   map.seamless_unavailable.clear();  // two charts' seams are not a band's rims
   // Normals and curvature of the closed surface: a seam vertex has faces on both sides.
-  const std::vector<glm::dvec3> normals = vertex_normals(closed);
-  const std::vector<double> curvature = mean_curvature(closed);
+  const std::vector<glm::dvec3> normals = vertex_normals(cut.surface);
+  const std::vector<double> curvature = mean_curvature(cut.surface);
   for (std::size_t v = 0; v < surface_vertex.size(); ++v) {
     map.normals[v] = normals[surface_vertex[v]];
     map.curvature[v] = curvature[surface_vertex[v]];

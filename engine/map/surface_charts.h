@@ -26,13 +26,15 @@ std::string_view cut_axis_name(CutAxis axis);  // "auto", "x", "y", "z"
 std::optional<CutAxis> cut_axis_from_name(std::string_view name);
 
 struct ChartCut {
+  SurfaceMesh surface;                      // the closed surface, its faces split along the plane
   std::vector<SurfaceMesh> charts;          // each open, its loops the seams
-  std::vector<std::vector<int>> vertex_of;  // per chart: chart vertex -> surface vertex
+  std::vector<std::vector<int>> vertex_of;  // per chart: chart vertex -> `surface` vertex
   glm::dvec3 normal{0, 0, 1};               // the cutting plane: dot(normal, p) = offset
   double offset = 0;
 };
 
-// Cuts a closed surface (no boundary loop, no handle) through its area centroid. Throws
+// Cuts a closed surface (no boundary loop, no handle) through its area centroid, splitting the
+// faces the plane crosses so that the seams are straight, not stepped by whole faces. Throws
 // InputError, naming `source`, when a chart is not a surface Paver maps (it has handles).
 ChartCut cut_into_charts(const SurfaceMesh& closed, CutAxis axis, const std::string& source);
 

@@ -209,8 +209,13 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
   }
   if (options.refill && !design.elements.allow_overlap) {
     t0 = start("refill");
-    pavement.refill =
-        refill_bare_regions(map, pavement.elements, design, basis.area_per_element, options.stop);
+    // Across a closed surface's seams first, so that the bare regions' refill grows from there too.
+    RefillReport seams;
+    refill_seams(map, pavement.elements, design, basis.area_per_element, seams);
+    pavement.refill = refill_bare_regions(map, pavement.elements, design, basis.area_per_element, options.stop);
+    pavement.refill.added += seams.added;
+    pavement.refill.on_seams = seams.on_seams;
+    pavement.refill.milliseconds += seams.milliseconds;
     pavement.timings.emplace_back("refill", ms_since(t0));
   }
 

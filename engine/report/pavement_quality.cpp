@@ -200,7 +200,8 @@ PavementQuality measure_pavement(const SurfaceMap& map, const Pattern& pattern,
       distances_to_boundary(map, elements, kInteriorDepth * basis.spacing + basis.margin);
   double disc_area = 0;
   for (size_t i = 0; i < elements.size(); ++i) {
-    if (!keeps_margin(to_boundary[i], elements.diameter[i], basis.margin)) ++q.boundary_crossings;
+    // A closed surface's seams are no edge of it: an element may lie across one (refill_seams).
+    if (!is_atlas(map) && !keeps_margin(to_boundary[i], elements.diameter[i], basis.margin)) ++q.boundary_crossings;
     disc_area += std::numbers::pi * 0.25 * elements.diameter[i] * elements.diameter[i];
   }
   q.coverage = disc_area / surface_area(map.mesh);

@@ -157,6 +157,7 @@ nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const
                                 {"removed", pavement.resolution.removed},
                                 {"milliseconds", pavement.resolution.milliseconds}}},
       {"refill", {{"added", pavement.refill.added},
+                  {"across_seams", pavement.refill.on_seams},
                   {"waves", pavement.refill.waves},
                   {"milliseconds", pavement.refill.milliseconds}}},
       {"removed", {{"total", pavement.eliminated + pavement.resolution.removed},
