@@ -41,6 +41,7 @@ struct RunArgs {
   std::string design;
   std::string pattern;
   std::string topology;
+  std::string rim_rows;
   std::string cut = "auto";
   std::optional<double> spacing;
   std::optional<double> gap;
@@ -117,6 +118,11 @@ int run_run(const RunArgs& args) {
     design.pattern.spacing = finite_non_negative("--spacing", *args.spacing, "0 = derive from the surface");
   if (args.gap)
     design.elements.gap = finite_non_negative("--gap", *args.gap, "free space between elements, surface units");
+  if (!args.rim_rows.empty()) {
+    const auto r = rim_rows_from_name(args.rim_rows);
+    if (!r) throw InputError("--rim-rows " + printable(args.rim_rows) + ": use none, holes or all");
+    design.elements.rim_rows = *r;
+  }
   if (args.margin)
     design.elements.margin =
         finite_non_negative("--margin", *args.margin, "free band along the surface's boundary, surface units");
@@ -267,6 +273,11 @@ int run_run(const RunArgs& args) {
               counts.vertex_elements, counts.edge_elements, pavement.refill.added);
   if (is_atlas(map)) std::printf(" (%d across the seams)", pavement.refill.on_seams);
   std::printf("\n");
+  if (pavement.design.elements.rim_rows != RimRows::None)
+    std::printf("rim rows %s: %d of %zu rims, %d elements along them; %d pattern elements made way\n",
+                std::string(rim_rows_name(pavement.design.elements.rim_rows)).c_str(), pavement.rim_rows.loops,
+                rim_row_loops(map, pavement.design.elements.rim_rows).size(), pavement.rim_rows.placed,
+                pavement.rim_rows.made_way);
   const BillOfStones bill = bill_of_stones(pavement.elements, pavement.design.units);
   for (const StoneRow& row : bill.rows) {
     std::printf("stones   %ld %s of %.2f mm", row.count, std::string(shape_name(row.shape)).c_str(), row.diameter_mm);
@@ -340,6 +351,9 @@ std::function<int()> add_run_command(CLI::App& app) {
                   "Required free space between neighbouring elements, surface units (default 0: touching)");
   cmd->add_option("--margin", args->margin,
                   "Free band along the surface's boundary that no element may enter, surface units (default 0)");
+  cmd->add_option("--rim-rows", args->rim_rows,
+                  "A row of stones that follows a rim, so a hole's edge looks designed, not trimmed: none (default), "
+                  "holes (every loop but the outer edge) or all");
   cmd->add_flag("--beads", args->beads,
                 "Add a bead (shared prong) in the gap between every three stones in contact; scale in the design "
                 "file (elements.beads.scale)");

@@ -25,6 +25,21 @@ std::optional<Topology> topology_from_name(std::string_view name) {
   return std::nullopt;
 }
 
+std::string_view rim_rows_name(RimRows r) {
+  switch (r) {
+    case RimRows::None: return "none";
+    case RimRows::Holes: return "holes";
+    case RimRows::All: return "all";
+  }
+  return "none";
+}
+
+std::optional<RimRows> rim_rows_from_name(std::string_view name) {
+  for (RimRows r : {RimRows::None, RimRows::Holes, RimRows::All})
+    if (name == rim_rows_name(r)) return r;
+  return std::nullopt;
+}
+
 std::string_view units_name(Units u) {
   switch (u) {
     case Units::Millimetre: return "mm";

@@ -22,6 +22,12 @@ enum class Topology { Lattice, Adaptive, Auto };
 std::string_view topology_name(Topology t);  // "lattice", "adaptive", "auto"
 std::optional<Topology> topology_from_name(std::string_view name);
 
+// Rows of elements that follow the surface's rims (elements/rim_rows.h): none (the pattern is
+// trimmed at the rims, the default), around the holes only, or along every rim (the outer edge too).
+enum class RimRows { None, Holes, All };
+std::string_view rim_rows_name(RimRows r);  // "none", "holes", "all"
+std::optional<RimRows> rim_rows_from_name(std::string_view name);
+
 // The unit of the surface's coordinates (and so of D, the gap and every length in a design).
 // Stone sizes and carats are reported in millimetres from it.
 enum class Units { Millimetre, Centimetre, Metre, Inch };
@@ -68,6 +74,7 @@ struct ElementsDesign {
   bool allow_overlap = false;             // allow elements that intersect by design (paper Fig. 15)
   double gap = 0;                         // required free space between footprints, surface units
   double margin = 0;                      // free band along the boundary: no footprint nearer, surface units
+  RimRows rim_rows = RimRows::None;       // a row of V-elements along the rims (elements/rim_rows.h)
   BeadDesign beads;
 };
 

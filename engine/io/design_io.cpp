@@ -28,6 +28,7 @@ constexpr Tessellation kTessellations[] = {Tessellation::Triangle, Tessellation:
 constexpr Topology kTopologies[] = {Topology::Lattice, Topology::Adaptive, Topology::Auto};
 constexpr Units kUnits[] = {Units::Millimetre, Units::Centimetre, Units::Metre, Units::Inch};
 constexpr BandRows kBandRows[] = {BandRows::Along, BandRows::Across};
+constexpr RimRows kRimRows[] = {RimRows::None, RimRows::Holes, RimRows::All};
 constexpr FilterBase kFilterBases[] = {FilterBase::Current, FilterBase::Initial};
 constexpr ShapeKind kShapes[] = {ShapeKind::Sphere, ShapeKind::Gem, ShapeKind::HexPrism, ShapeKind::Disc,
                                  ShapeKind::Custom};
@@ -151,6 +152,9 @@ public:
   void read(const json& value, const std::string& path, BandRows& out) const {
     read_name(value, path, out, kBandRows, band_rows_name);
   }
+  void read(const json& value, const std::string& path, RimRows& out) const {
+    read_name(value, path, out, kRimRows, rim_rows_name);
+  }
   void read(const json& value, const std::string& path, Units& out) const {
     read_name(value, path, out, kUnits, units_name);
   }
@@ -205,13 +209,14 @@ public:
   }
 
   void read(const json& value, const std::string& path, ElementsDesign& out) const {
-    check_object(value, path, {"vertex", "edge", "custom_shape", "allow_overlap", "gap", "margin", "beads"});
+    check_object(value, path, {"vertex", "edge", "custom_shape", "allow_overlap", "gap", "margin", "rim_rows", "beads"});
     field(value, path, "vertex", out.vertex);
     field(value, path, "edge", out.edge);
     field(value, path, "custom_shape", out.custom_shape);
     field(value, path, "allow_overlap", out.allow_overlap);
     field(value, path, "gap", out.gap);
     field(value, path, "margin", out.margin);
+    field(value, path, "rim_rows", out.rim_rows);
     field(value, path, "beads", out.beads);
   }
 
@@ -330,6 +335,7 @@ Json to_json(const Design& design) {
   elements_json["allow_overlap"] = elements.allow_overlap;
   elements_json["gap"] = elements.gap;
   elements_json["margin"] = elements.margin;
+  elements_json["rim_rows"] = std::string(rim_rows_name(elements.rim_rows));
   elements_json["beads"] = Json{{"enabled", elements.beads.enabled}, {"scale", elements.beads.scale}};
 
   Json placement = Json::object();

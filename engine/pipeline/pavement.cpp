@@ -207,6 +207,11 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
     pavement.elements = place(pavement.points, {});
     pavement.paper = pavement.before;
   }
+  if (design.elements.rim_rows != RimRows::None && !design.elements.allow_overlap) {
+    t0 = start("rim_rows");
+    pavement.rim_rows = place_rim_rows(map, pavement.elements, design);
+    pavement.timings.emplace_back("rim_rows", ms_since(t0));
+  }
   if (options.refill && !design.elements.allow_overlap) {
     t0 = start("refill");
     // Across a closed surface's seams first, so that the bare regions' refill grows from there too.

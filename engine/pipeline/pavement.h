@@ -6,6 +6,7 @@
 #include "pattern/particle_relaxation.h"
 #include "solver/collision_resolution.h"
 #include "elements/refill.h"
+#include "elements/rim_rows.h"
 #include "design/design.h"
 #include "elements/elements.h"
 #include "pattern/band_closure.h"
@@ -57,6 +58,7 @@ struct Pavement {
   SolveReport solve;                 // iterations, stop reason, time
   CollisionResolutionReport resolution;
   RefillReport refill;
+  RimRowReport rim_rows;
   RelaxationReport relaxation;       // the adaptive pattern's particle relaxation
   // For pattern.topology "auto": which topology was kept and why (design.pattern.topology says
   // which); empty otherwise.

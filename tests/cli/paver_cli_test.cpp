@@ -164,6 +164,27 @@ TEST_F(PaverRun, APlateWithTwoHolesIsPavedAroundThem) {
     }
 }
 
+TEST_F(PaverRun, RimRowsRingThePendantsPiercingsOnRequest) {
+  const fs::path out = dir() / "rims";
+  const CliResult r = paver({"run", "assets/surfaces/pendant_pierced.obj", "--rim-rows", "holes", "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  EXPECT_NE(r.out.find("rim rows holes: 3 of 3 rims"), std::string::npos) << describe(r);
+  const json report = read_json(out / "report.json");
+  EXPECT_EQ(report["rim_rows"]["rims"], "holes");
+  EXPECT_EQ(report["rim_rows"]["loops"].get<int>(), 3);
+  EXPECT_GT(report["rim_rows"]["placed"].get<int>(), 15);
+  EXPECT_EQ(report["removed"]["making_way_for_rim_rows"].get<int>(), report["rim_rows"]["made_way"].get<int>());
+  EXPECT_TRUE(report["verdict"]["ok"].get<bool>()) << report["verdict"].dump();
+  EXPECT_EQ(read_json(out / "design.json")["elements"]["rim_rows"], "holes");
+  // A wrong name: exit 2, one line naming the option and the choices, nothing written.
+  const fs::path wrong_out = dir() / "wrong";
+  const CliResult wrong =
+      paver({"run", "assets/surfaces/pendant_pierced.obj", "--rim-rows", "outer", "--out", wrong_out.string()});
+  EXPECT_EQ(wrong.exit_code, 2);
+  EXPECT_NE(wrong.err.find("--rim-rows outer: use none, holes or all"), std::string::npos) << describe(wrong);
+  EXPECT_FALSE(fs::exists(wrong_out));
+}
+
 TEST_F(PaverRun, AClosedBeadIsCutIntoChartsAndPavedAsOneSurface) {
   const fs::path out = dir() / "bead";
   const CliResult r = paver({"run", "assets/surfaces/bead.obj", "--out", out.string()});

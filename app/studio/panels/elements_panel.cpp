@@ -91,6 +91,15 @@ void jewellery_section(Document& doc, Design& d) {
               "With a stone size, D grows with it so the stones keep their size.");
   if (length_field("edge margin", d.elements.margin, unit.c_str())) change_design(doc, d);
   help_marker("No stone comes nearer the surface's edge than this (0 = its edge may touch the rim).");
+  const char* rim_names[] = {"none (trimmed)", "around the holes", "along every rim"};
+  int rims = int(d.elements.rim_rows);
+  if (ImGui::Combo("rim rows", &rims, rim_names, 3)) {
+    d.elements.rim_rows = RimRows(rims);
+    change_design(doc, d);
+  }
+  help_marker("A row of stones that follows the surface's rims, so a hole's edge looks designed, not "
+              "trimmed: around the holes (every rim but the outer edge) or along every rim. The pattern's "
+              "stones that the row would touch make way. A closed surface has no rims.");
   if (ImGui::Checkbox("beads between stones", &d.elements.beads.enabled)) change_design(doc, d);
   help_marker("A small bead of metal (a shared prong) in the gap between every three stones in contact; "
               "triangle patterns have them, grid and hex do not.");

@@ -173,6 +173,27 @@ void pattern_panel(Document& doc, UiState& ui) {
   if (doc.result.pavement && d.pattern.spacing <= 0)
     ImGui::TextDisabled("derived: D = %.4g", doc.result.pavement->design.pattern.spacing);
 
+  const char* topology_names[] = {"lattice (the paper's)", "adaptive (point defects)", "auto"};
+  int topology = int(d.pattern.topology);
+  if (ImGui::Combo("topology", &topology, topology_names, 3)) {
+    d.pattern.topology = Topology(topology);
+    change_design(doc, d);
+  }
+  help_marker("Lattice: the regular tessellation laid over the map. Adaptive: stones grown on the surface "
+              "at the same spacing, with a few 5- and 7-neighbour defects where the map distorts the "
+              "lattice (tri and hex). Auto: the lattice, unless it tears or leaves bare patches and the "
+              "adaptive pattern does better.");
+  if (doc.surface.map && is_band(*doc.surface.map)) {
+    const char* row_names[] = {"along the band", "across the band"};
+    int rows = int(d.placement.band_rows);
+    if (ImGui::Combo("band rows", &rows, row_names, 2)) {
+      d.placement.band_rows = BandRows(rows);
+      change_design(doc, d);
+    }
+    help_marker("On a ring or bangle the lattice closes around the band: a whole number of stones goes "
+                "round (D changes a little to make it so). Rows across the band (the default) or along it.");
+  }
+
   bool bracing = d.pattern.bracing;
   if (ImGui::Checkbox("bracing (virtual edges across faces)", &bracing)) {
     d.pattern.bracing = bracing;

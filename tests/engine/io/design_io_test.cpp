@@ -43,6 +43,7 @@ Design non_default_design() {
   d.elements.allow_overlap = true;
   d.elements.gap = 0.1 / 3;
   d.elements.margin = 0.35;
+  d.elements.rim_rows = RimRows::Holes;
   d.elements.beads = {true, 1.25};
   d.placement.offset = {-1.5, 2.0 / 3.0};
   d.placement.rotation_deg = -37.5;
@@ -100,6 +101,7 @@ void expect_same(const Design& a, const Design& b) {
   EXPECT_EQ(a.elements.allow_overlap, b.elements.allow_overlap);
   EXPECT_EQ(a.elements.gap, b.elements.gap);
   EXPECT_EQ(a.elements.margin, b.elements.margin);
+  EXPECT_EQ(a.elements.rim_rows, b.elements.rim_rows);
   EXPECT_EQ(a.elements.beads.enabled, b.elements.beads.enabled);
   EXPECT_EQ(a.elements.beads.scale, b.elements.beads.scale);
   EXPECT_EQ(a.placement.offset, b.placement.offset);
@@ -163,7 +165,8 @@ TEST(DesignIo, WritesEveryKey) {
   EXPECT_EQ(j.at("units"), "mm");
   EXPECT_EQ(j.at("pattern").size(), 5u);
   EXPECT_EQ(j.at("pattern").at("topology"), "auto");
-  EXPECT_EQ(j.at("elements").size(), 7u);
+  EXPECT_EQ(j.at("elements").size(), 8u);
+  EXPECT_EQ(j.at("elements").at("rim_rows"), "none");
   EXPECT_EQ(j.at("elements").at("beads").size(), 2u);
   EXPECT_EQ(j.at("elements").at("vertex").size(), 3u);
   EXPECT_EQ(j.at("placement").size(), 4u);
@@ -176,6 +179,12 @@ TEST(DesignIo, WritesEveryKey) {
   EXPECT_EQ(full.at("elements").at("edge").at(0).at("shape"), "hex_prism");
   EXPECT_EQ(full.at("pattern").at("tessellation"), "grid");
   EXPECT_EQ(full.at("pattern").at("topology"), "adaptive");
+}
+
+TEST(DesignIo, RimRowsAreNamed) {
+  const std::string message = json_error(R"({"version": 1, "elements": {"rim_rows": "outer"}})");
+  EXPECT_TRUE(contains(message, "elements.rim_rows")) << message;
+  EXPECT_TRUE(contains(message, "holes")) << message;
 }
 
 TEST(DesignIo, UnitsAreNamed) {

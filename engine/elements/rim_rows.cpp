@@ -1,0 +1,212 @@
+#include "elements/rim_rows.h"
+
+#include "elements/boundary_postprocess.h"
+#include "elements/contact_rule.h"
+#include "elements/element_hash.h"
+#include "map/boundary_index.h"
+#include "map/lifting.h"
+#include "map/uv_from_tangent.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <unordered_map>
+#include <vector>
+
+namespace paver {
+namespace {
+
+// Samples of the offset curve per diameter: fine enough that placing an element at the nearest
+// sample's arc length errs by well under the contact aim's slack.
+constexpr double kSamplesPerDiameter = 40;
+
+struct OffsetCurve {
+  std::vector<glm::dvec2> uv;
+  std::vector<glm::dvec3> position;
+  std::vector<double> arc;  // arc length at each sample; the loop closes back to sample 0
+  double length = 0;
+};
+
+std::uint64_t edge_key(int a, int b) {
+  return (std::uint64_t(std::uint32_t(std::min(a, b))) << 32) | std::uint32_t(std::max(a, b));
+}
+
+// The curve `offset` inside the rim `loop` (3D distance along the surface, through each rim
+// edge's triangle), sampled and lifted; samples where an element would break the edge rule (a
+// narrow neck, a concave corner: another part of the boundary nearer) are dropped.
+OffsetCurve offset_curve(const SurfaceMap& map, const std::vector<int>& loop,
+                         const std::unordered_map<std::uint64_t, int>& triangle_on, double offset, double step,
+                         const BoundaryIndex& boundary, double diameter, double margin) {
+  const SurfaceMesh& mesh = map.mesh;
+  OffsetCurve curve;
+  LiftedPoints lifted;
+  lifted.resize(1);
+  double carried = 0;
+  for (std::size_t k = 0; k < loop.size(); ++k) {
+    const int a = loop[k], b = loop[(k + 1) % loop.size()];
+    const auto on = triangle_on.find(edge_key(a, b));
+    if (on == triangle_on.end()) continue;
+    const int t = on->second;
+    const glm::dvec3 pa = mesh.positions[a], pb = mesh.positions[b];
+    const double length = glm::length(pb - pa);
+    if (!(length > 0)) continue;
+    const glm::dvec3 along = (pb - pa) / length;
+    int third = 0;
+    for (int c = 0; c < 3; ++c)
+      if (mesh.triangles[t][c] != a && mesh.triangles[t][c] != b) third = mesh.triangles[t][c];
+    glm::dvec3 into = mesh.positions[third] - pa;
+    into -= glm::dot(into, along) * along;
+    if (!(glm::length(into) > 0)) continue;
+    into = glm::normalize(into);
+    const UvFromTangent uv_step(map, t);
+    const glm::dvec2 ua = map.uv[a], ub = nearest_image(map, map.uv[b], ua);  // across a band's seam
+    for (double s = step - carried; s < length; s += step) {
+      const double w = s / length;
+      glm::dvec2 uv = ua * (1 - w) + ub * w + uv_step(into * offset);
+      if (lift_points(map, std::span(&uv, 1), lifted) > 0) continue;
+      // The uv step is linear in the triangle: correct it once so that the lifted point lies at
+      // the offset from the rim point (as refill corrects its steps).
+      const glm::dvec3 rim = pa * (1 - w) + pb * w;
+      const double got = glm::length(lifted.position[0] - rim);
+      if (got > 0 && std::abs(got - offset) > 1e-3 * offset) {
+        const glm::dvec2 base = ua * (1 - w) + ub * w;
+        uv = base + (uv - base) * (offset / got);
+        if (lift_points(map, std::span(&uv, 1), lifted) > 0) continue;
+      }
+      if (!keeps_margin(boundary.nearest(lifted.position[0]).distance, diameter, margin)) continue;
+      curve.uv.push_back(wrap_point(map, uv));
+      curve.position.push_back(lifted.position[0]);
+    }
+    carried = std::fmod(carried + length, step);
+  }
+  const std::size_t n = curve.position.size();
+  curve.arc.resize(n);
+  for (std::size_t i = 1; i < n; ++i) curve.arc[i] = curve.arc[i - 1] + glm::length(curve.position[i] - curve.position[i - 1]);
+  if (n > 1) curve.length = curve.arc[n - 1] + glm::length(curve.position[0] - curve.position[n - 1]);
+  return curve;
+}
+
+// Cells of at least `reach` over the surface's box (every element lies on it).
+CellGrid surface_grid(const SurfaceMesh& mesh, double reach) {
+  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+  for (const glm::dvec3& p : mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  return CellGrid(lo - glm::dvec3(reach), hi + glm::dvec3(reach), reach);
+}
+
+}  // namespace
+
+std::vector<int> rim_row_loops(const SurfaceMap& map, RimRows rows) {
+  std::vector<int> loops;
+  if (rows == RimRows::None || is_atlas(map)) return loops;
+  for (int l = rows == RimRows::All ? 0 : 1; l < int(map.mesh.boundary_loops.size()); ++l) loops.push_back(l);
+  return loops;
+}
+
+RimRowReport place_rim_rows(const SurfaceMap& map, Elements& elements, const Design& design) {
+  const auto t0 = std::chrono::steady_clock::now();
+  RimRowReport report;
+  const ElementsDesign& spec = design.elements;
+  const std::vector<int> loops = rim_row_loops(map, spec.rim_rows);
+  if (loops.empty() || !spec.vertex.enabled || !(design.pattern.spacing > 0)) return report;
+  const SurfaceMesh& mesh = map.mesh;
+  const double diameter = spec.vertex.scale * design.pattern.spacing;
+  const double margin = boundary_margin(map, spec.margin, spec.gap);
+  // A hair beyond the margin, so that the edge rule (exact, like the contact rule) holds after rounding.
+  const double offset = (0.5 * diameter + margin) * (1 + kContactAim);
+  const double neighbours = contact_distance(diameter, diameter, spec.gap) * (1 + kContactAim);
+  const BoundaryIndex boundary(mesh, 2 * offset);
+  std::unordered_map<std::uint64_t, int> triangle_on;
+  for (int t = 0; t < mesh.face_count(); ++t)
+    for (int k = 0; k < 3; ++k) triangle_on[edge_key(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3])] = t;
+
+  Elements row;
+  LiftedPoints lifted;
+  lifted.resize(1);
+  for (const int l : loops) {
+    const OffsetCurve curve =
+        offset_curve(map, mesh.boundary_loops[l], triangle_on, offset, diameter / kSamplesPerDiameter, boundary,
+                     diameter, margin);
+    if (curve.position.size() < 3 || !(curve.length > neighbours)) continue;
+    // As many as close the loop evenly; one fewer when a chord over a bend comes out short.
+    for (int count = int(curve.length / neighbours); count >= 1; --count) {
+      Elements trial;
+      std::size_t sample = 0;
+      for (int i = 0; i < count; ++i) {
+        const double at = curve.length * i / count;
+        while (sample + 1 < curve.arc.size() && curve.arc[sample + 1] <= at) ++sample;
+        // Between two samples: where samples were dropped (a concave corner) the two may be far
+        // apart, so interpolate and keep the point if it keeps the offset from the boundary.
+        glm::dvec2 uv = curve.uv[sample];
+        glm::dvec3 position = curve.position[sample];
+        const std::size_t next = (sample + 1) % curve.uv.size();
+        const double span = (sample + 1 < curve.arc.size() ? curve.arc[sample + 1] : curve.length) - curve.arc[sample];
+        if (span > 0 && at > curve.arc[sample]) {
+          const double w = (at - curve.arc[sample]) / span;
+          glm::dvec2 between = curve.uv[sample] * (1 - w) + nearest_image(map, curve.uv[next], curve.uv[sample]) * w;
+          if (lift_points(map, std::span(&between, 1), lifted) == 0 &&
+              keeps_margin(boundary.nearest(lifted.position[0]).distance, diameter, margin))
+            uv = wrap_point(map, between), position = lifted.position[0];
+          else if (w > 0.5)
+            uv = curve.uv[next], position = curve.position[next];
+        }
+        trial.push_back(ElementKind::Vertex, -1, 0, uv, position, glm::dvec3(0, 0, 1), diameter, spec.vertex.shape);
+      }
+      bool spaced = true;
+      for (int i = 0; i < count && spaced && count > 1; ++i) {
+        const int j = (i + 1) % count;
+        spaced = !elements_collide(glm::length(trial.position[i] - trial.position[j]), diameter, diameter, spec.gap);
+      }
+      if (!spaced) continue;
+      // Normals from the surface at each centre.
+      for (int i = 0; i < count; ++i) {
+        const glm::dvec2 uv = trial.uv[i];
+        lift_points(map, std::span(&uv, 1), lifted);
+        if (lifted.triangle[0] >= 0) trial.normal[i] = lifted.normal[0];
+      }
+      // Against the rows of the other rims (two holes close together): the later one gives way.
+      const ElementHash placed(row, surface_grid(mesh, neighbours));
+      int kept = 0;
+      for (int i = 0; i < count; ++i) {
+        bool clear = true;
+        placed.for_each_near(trial.position[i], [&](int j) {
+          if (elements_collide(glm::length(trial.position[i] - row.position[j]), diameter, row.diameter[j], spec.gap))
+            clear = false;
+        });
+        if (!clear) continue;
+        row.push_back(ElementKind::Vertex, -1, 0, trial.uv[i], trial.position[i], trial.normal[i], diameter,
+                      spec.vertex.shape);
+        ++kept;
+      }
+      report.placed += kept;
+      if (kept > 0) ++report.loops;
+      break;
+    }
+  }
+
+  // The pattern's elements that a row element would touch make way.
+  if (row.size() > 0) {
+    double largest = diameter;
+    for (double d : elements.diameter) largest = std::max(largest, d);
+    const ElementHash hash(elements, surface_grid(mesh, 0.5 * (largest + diameter) + spec.gap));
+    std::vector<std::uint8_t> remove(elements.size(), 0);
+    for (std::size_t i = 0; i < row.size(); ++i)
+      hash.for_each_near(row.position[i], [&](int j) {
+        if (elements_collide(glm::length(row.position[i] - elements.position[j]), diameter, elements.diameter[j], spec.gap))
+          remove[j] = 1;
+      });
+    report.made_way = int(std::count(remove.begin(), remove.end(), std::uint8_t(1)));
+    elements.erase_flagged(remove);
+    for (std::size_t i = 0; i < row.size(); ++i)
+      elements.push_back(ElementKind::Vertex, -1, 0, row.uv[i], row.position[i], row.normal[i], diameter,
+                         spec.vertex.shape);
+  }
+  report.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return report;
+}
+
+}  // namespace paver

@@ -1,0 +1,31 @@
+#pragma once
+// Rim rows (issue 12, "the user can ask for a row of elements that follows a rim"): a hole's edge
+// trimmed through a lattice looks cut, not designed. On request (elements.rim_rows: "holes" or
+// "all"), each chosen rim gets a row of V-elements that follows it: centres on the curve a radius
+// plus the margin inside the rim, spaced evenly along it, as many as close the loop with the
+// contact rule (and the gap) between neighbours. The pattern's elements that the row would touch
+// make way; the bare regions' refill then packs against the row. A closed surface's seams are not
+// rims and get none.
+#include "design/design.h"
+#include "elements/elements.h"
+#include "map/surface_map.h"
+
+namespace paver {
+
+struct RimRowReport {
+  int loops = 0;      // rims that got a row
+  int placed = 0;     // elements along them
+  int made_way = 0;   // pattern elements removed because the row would touch them
+  double milliseconds = 0;
+};
+
+// Which of the map's loops are rims the design asks a row for: none, the holes (every loop but
+// the outer, the longest), or all.
+std::vector<int> rim_row_loops(const SurfaceMap& map, RimRows rows);
+
+// Adds the rows to `elements` (source -1, the design's vertex spec) and removes the elements they
+// would touch. `map` is the one the pavement's uv live in. Does nothing for RimRows::None, on an
+// atlas, or when the design has no V-elements.
+RimRowReport place_rim_rows(const SurfaceMap& map, Elements& elements, const Design& design);
+
+}  // namespace paver

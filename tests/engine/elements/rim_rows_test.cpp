@@ -1,0 +1,148 @@
+// Tests for engine/elements/rim_rows.cpp: on request, a row of stones follows each chosen rim,
+// a radius plus the margin inside it, evenly spaced, the pattern making way; the pavement keeps
+// the contact rule over all pairs, crosses no rim and still covers the surface. On the pierced
+// pendant (three holes), the ring band (two rims, seamless) and the bead (seams are no rims).
+#include "all_pairs.h"
+#include "map/boundary_index.h"
+#include "pattern/default_spacing.h"
+#include "pipeline/pavement.h"
+#include "report/verdict.h"
+#include "surface_maps.h"
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace paver {
+namespace {
+
+Design design_for(const SurfaceMap& map, Tessellation tessellation, RimRows rows, double gap_share) {
+  Design design;
+  design.pattern.tessellation = tessellation;
+  design.pattern.spacing = default_spacing(map.mesh, tessellation);
+  design.elements.gap = gap_share * design.pattern.spacing;
+  design.elements.vertex.scale = 1 - gap_share;
+  design.elements.rim_rows = rows;
+  return design;
+}
+
+// Index of the boundary loop nearest to p (3D, over every loop's segments).
+int nearest_loop(const SurfaceMesh& mesh, const glm::dvec3& p) {
+  int best_loop = -1;
+  double best = std::numeric_limits<double>::infinity();
+  for (int l = 0; l < int(mesh.boundary_loops.size()); ++l) {
+    const std::vector<int>& loop = mesh.boundary_loops[l];
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      const glm::dvec3 a = mesh.positions[loop[k]], b = mesh.positions[loop[(k + 1) % loop.size()]];
+      const double t = std::clamp(glm::dot(p - a, b - a) / std::max(glm::dot(b - a, b - a), 1e-300), 0.0, 1.0);
+      const double d = glm::length(p - (a + t * (b - a)));
+      if (d < best) best = d, best_loop = l;
+    }
+  }
+  return best_loop;
+}
+
+struct RowCheck {
+  std::vector<int> per_loop;  // row elements whose nearest rim is each loop
+  double worst_offset_error = 0;  // |distance to the rim - (radius + margin)|, x D
+  double widest_step = 0;         // largest distance from a row element to its nearest row neighbour, x D
+};
+
+// The row elements: those that lie a radius plus the margin from a rim (within 2% of D); the
+// widest step is taken over those of the rims the design asks a row for.
+RowCheck check_rows(const SurfaceMap& map, const Pavement& p) {
+  const std::vector<int> rims = rim_row_loops(map, p.design.elements.rim_rows);
+  const double D = p.design.pattern.spacing;
+  const double diameter = p.design.elements.vertex.scale * D;
+  const double offset = 0.5 * diameter + p.design.elements.margin;
+  const BoundaryIndex boundary(map.mesh, 4 * D);
+  RowCheck check;
+  check.per_loop.assign(map.mesh.boundary_loops.size(), 0);
+  std::vector<glm::dvec3> row;
+  for (std::size_t i = 0; i < p.elements.size(); ++i) {
+    const double d = boundary.nearest(p.elements.position[i]).distance;
+    if (std::abs(d - offset) > 0.02 * D) continue;
+    const int loop = nearest_loop(map.mesh, p.elements.position[i]);
+    ++check.per_loop[loop];
+    if (std::find(rims.begin(), rims.end(), loop) != rims.end()) row.push_back(p.elements.position[i]);
+    check.worst_offset_error = std::max(check.worst_offset_error, std::abs(d - offset) / D);
+  }
+  for (std::size_t i = 0; i < row.size(); ++i) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < row.size(); ++j)
+      if (j != i) nearest = std::min(nearest, glm::length(row[i] - row[j]));
+    check.widest_step = std::max(check.widest_step, nearest / D);
+  }
+  return check;
+}
+
+void expect_sound(const Pavement& p, const std::string& what) {
+  const test::AllPairs truth = test::all_pairs(p.elements, p.design.elements.gap);
+  EXPECT_EQ(truth.violations, 0) << what << ": smallest clearance " << truth.min_clearance;
+  EXPECT_EQ(p.after.contact_violations, truth.violations) << what;
+  EXPECT_EQ(p.after.boundary_crossings, 0) << what;
+  EXPECT_GE(p.after.fill, 0.85) << what;
+  const Verdict verdict = judge_pavement(p.after);
+  EXPECT_TRUE(verdict.ok) << what << ": " << (verdict.problems.empty() ? "" : verdict.problems.front());
+}
+
+TEST(RimRows, EveryHoleOfThePiercedPendantGetsARowAndThePavementStaysSound) {
+  const auto map = test::bundled_map("pendant_pierced");
+  ASSERT_EQ(map->mesh.boundary_loops.size(), 4u);
+  for (const Tessellation tessellation : {Tessellation::Triangle, Tessellation::Hexagon})
+    for (const double gap_share : {0.0, 0.08}) {
+      const std::string what = std::string(tessellation_name(tessellation)) + " gap " + std::to_string(gap_share);
+      const Pavement without = make_pavement(*map, design_for(*map, tessellation, RimRows::None, gap_share));
+      const Pavement with = make_pavement(*map, design_for(*map, tessellation, RimRows::Holes, gap_share));
+      EXPECT_EQ(without.rim_rows.placed, 0) << what;
+      EXPECT_EQ(with.rim_rows.loops, 3) << what;
+      EXPECT_GE(with.rim_rows.placed, 3 * 5) << what;
+      expect_sound(with, what);
+      const RowCheck rows = check_rows(*map, with);
+      // Each hole (loops 1-3) is ringed: at least the row's elements sit at the offset from it.
+      for (int l = 1; l < 4; ++l) EXPECT_GE(rows.per_loop[l], 5) << what << " hole " << l;
+      // A row, not scattered stones: every row element has a row neighbour within 1.6 D.
+      EXPECT_LE(rows.widest_step, 1.6) << what;
+      // Trimmed, the pattern leaves fewer elements at that offset from the holes.
+      const RowCheck trimmed = check_rows(*map, without);
+      int ringed = 0, trimmed_ring = 0;
+      for (int l = 1; l < 4; ++l) ringed += rows.per_loop[l], trimmed_ring += trimmed.per_loop[l];
+      EXPECT_GT(ringed, trimmed_ring) << what;
+    }
+}
+
+TEST(RimRows, AllRimsIncludesTheOuterEdge) {
+  const auto map = test::bundled_map("pendant_pierced");
+  const Pavement p = make_pavement(*map, design_for(*map, Tessellation::Triangle, RimRows::All, 0));
+  EXPECT_EQ(p.rim_rows.loops, 4);
+  expect_sound(p, "all rims");
+  EXPECT_GE(check_rows(*map, p).per_loop[0], 40);
+  EXPECT_EQ(rim_row_loops(*map, RimRows::All).size(), 4u);
+  EXPECT_EQ(rim_row_loops(*map, RimRows::Holes), (std::vector<int>{1, 2, 3}));
+}
+
+TEST(RimRows, ABandGetsARowAlongEachRimAcrossItsSeam) {
+  const auto map = test::bundled_map("ring_band");
+  const Pavement p = make_pavement(*map, design_for(*map, Tessellation::Triangle, RimRows::All, 0.05));
+  EXPECT_TRUE(p.seamless);
+  EXPECT_EQ(p.rim_rows.loops, 2);
+  expect_sound(p, "ring band");
+  const RowCheck rows = check_rows(*map, p);
+  EXPECT_LE(rows.widest_step, 1.6);
+  EXPECT_GE(rows.per_loop[0], 20);
+  EXPECT_GE(rows.per_loop[1], 20);
+}
+
+TEST(RimRows, AClosedSurfacesSeamsAreNoRims) {
+  const auto map = test::bundled_map("bead");
+  EXPECT_TRUE(rim_row_loops(*map, RimRows::All).empty());
+  const Pavement p = make_pavement(*map, design_for(*map, Tessellation::Hexagon, RimRows::All, 0));
+  EXPECT_EQ(p.rim_rows.placed, 0);
+}
+
+}  // namespace
+}  // namespace paver
