@@ -320,6 +320,14 @@ Mesh ring_band(int target) {
   return fit_faces([&](double h) { return band_of_revolution(radius, -3.0, 3.0, h); }, 0.5, target);
 }
 
+// An open vase all the way round: the vase's profile (belly r = 42, neck 24, lip 32, 120 high)
+// revolved a full turn with no bottom, so its foot and its lip are two rims: a band whose girth
+// changes 1.75-fold, which no seamless lattice follows without tearing (docs/holes_and_bands.md).
+Mesh vase_band(int target) {
+  const auto radius = [](double z) { return 30.0 + 12.0 * std::sin(z / 25.0) + 14.0 * std::pow(z / 120.0, 8.0); };
+  return fit_faces([&](double h) { return band_of_revolution(radius, 0.0, 120.0, h); }, 5.0, target);
+}
+
 // The facade panel with 4 x 3 windows: the grid's cells whose centres fall in a window are left
 // out, so each window is a clean rectangle of cells with the panel's own triangles around it.
 Mesh facade_windows(int target) {
@@ -420,6 +428,7 @@ std::vector<Surface> small_set() {
       {"facade", [] { return facade(1200); }, up},
       {"bangle", [] { return bangle(2400); }, [](dvec3 p) { return dvec3(p.x, p.y, 0.0); }, 2},
       {"ring_band", [] { return ring_band(1200); }, [](dvec3 p) { return dvec3(p.x, p.y, 0.0); }, 2},
+      {"vase_band", [] { return vase_band(2400); }, [](dvec3 p) { return dvec3(p.x, p.y, 0.0); }, 2},
       {"facade_windows", [] { return facade_windows(2400); }, up, 13},
       {"pendant_pierced", [] { return pendant_pierced(3000); }, up, 4},
       {"bead", [] { return bead(1600); }, [](dvec3 p) { return p; }, 0},

@@ -17,7 +17,7 @@ inline std::filesystem::path source_dir() { return PAVER_SOURCE_DIR; }
 
 inline std::vector<std::string> bundled_surface_names() {
   return {"dome",   "saddle",    "wave",           "vase",           "torus_section", "pendant",
-          "facade", "bangle", "ring_band", "facade_windows", "pendant_pierced"};
+          "facade", "bangle", "ring_band", "vase_band", "facade_windows", "pendant_pierced"};
 }
 // Real scans copied into assets/scanned (sources and licence in its README).
 inline std::vector<std::string> scanned_mesh_names() {
@@ -26,7 +26,8 @@ inline std::vector<std::string> scanned_mesh_names() {
 
 // The bundled and scanned surfaces that are not disks: bands and surfaces with holes.
 inline std::vector<std::string> holed_surface_names() {
-  return {"bangle", "ring_band", "facade_windows", "pendant_pierced", "bunnyhead_band", "bunnyhead_three_loops"};
+  return {"bangle",          "ring_band",      "vase_band",
+          "facade_windows",  "pendant_pierced", "bunnyhead_band", "bunnyhead_three_loops"};
 }
 
 // Bundled closed surfaces (no boundary loop): the map cuts them into charts.
