@@ -186,6 +186,33 @@ struct DomainBuilder {
   }
 };
 
+// Why the rims of `m` are not those of a bijective band map, or empty: each rim, unrolled along
+// itself, must close one period T away from where it started (go once around), and over three
+// periods neither may cross itself or the other. ARAP's fold-free steps keep every triangle
+// positive but not the rims apart: the line search checks this too.
+std::string rim_problem(const SurfaceMesh& band, const PeriodicUv& m) {
+  const double tt = glm::dot(m.t, m.t);
+  if (!(tt > 0)) return "the band's period collapsed";
+  const auto image_near = [&](glm::dvec2 q, glm::dvec2 near) {
+    return q - m.t * std::floor(glm::dot(q - near, m.t) / tt + 0.5);
+  };
+  std::vector<glm::dvec2> rim_uv;
+  std::vector<glm::ivec2> rim_segments;
+  for (const std::vector<int>& loop : band.boundary_loops) {
+    std::vector<glm::dvec2> unrolled;
+    for (const int v : loop) unrolled.push_back(unrolled.empty() ? m.uv[v] : image_near(m.uv[v], unrolled.back()));
+    const glm::dvec2 closing = image_near(unrolled.front(), unrolled.back()) - unrolled.front();
+    if (glm::length(glm::abs(closing) - glm::abs(m.t)) > 1e-6 * std::sqrt(tt))
+      return "a rim of the band does not go once around its seamless map";
+    const int first = int(rim_uv.size());
+    for (int copy = -1; copy <= 1; ++copy)
+      for (const glm::dvec2& q : unrolled) rim_uv.push_back(q + double(copy) * closing);
+    for (int k = first; k + 1 < int(rim_uv.size()); ++k) rim_segments.emplace_back(k, k + 1);
+  }
+  if (count_segment_intersections(rim_segments, rim_uv) > 0) return "the band's rims cross on its seamless map";
+  return "";
+}
+
 }  // namespace
 
 std::optional<SeamlessBandMap> map_band_seamlessly(const SurfaceMesh& band, const std::vector<glm::dvec2>& annulus_uv,
@@ -223,6 +250,10 @@ std::optional<SeamlessBandMap> map_band_seamlessly(const SurfaceMesh& band, cons
     why_not = "its annulus map does not unroll without folds";
     return std::nullopt;
   }
+  if (const std::string problem = rim_problem(band, start); !problem.empty()) {
+    why_not = problem + " (as unrolled from its annulus map)";
+    return std::nullopt;
+  }
 
   PeriodicArap arap(band, turns);
   if (!arap.factorized()) {
@@ -241,7 +272,7 @@ std::optional<SeamlessBandMap> map_band_seamlessly(const SurfaceMesh& band, cons
     int halvings = 0;
     for (; halvings < kMaxHalvings; ++halvings, step *= 0.5) {
       trial = blend(current, target, step);
-      if (folds(band, turns, trial)) continue;
+      if (folds(band, turns, trial) || !rim_problem(band, trial).empty()) continue;
       trial_energy = arap.energy(trial);
       if (trial_energy <= energy) break;
     }
@@ -270,32 +301,6 @@ std::optional<SeamlessBandMap> map_band_seamlessly(const SurfaceMesh& band, cons
   }
   out.period = scale * length;
   out.corner_turns = std::move(turns);
-
-  // The rims must not cross themselves or each other, in any copy: each rim unrolled along itself
-  // over three periods, as one polyline.
-  const auto image_near = [&](glm::dvec2 q, glm::dvec2 near) {
-    return glm::dvec2(q.x - out.period * std::floor((q.x - near.x) / out.period + 0.5), q.y);
-  };
-  std::vector<glm::dvec2> rim_uv;
-  std::vector<glm::ivec2> rim_segments;
-  for (const std::vector<int>& loop : band.boundary_loops) {
-    std::vector<glm::dvec2> unrolled;
-    for (const int v : loop) unrolled.push_back(unrolled.empty() ? out.uv[v] : image_near(out.uv[v], unrolled.back()));
-    // A rim goes once around: it closes one period away from where it started.
-    const double gap = image_near(unrolled.front(), unrolled.back()).x - unrolled.front().x;
-    if (std::abs(std::abs(gap) - out.period) > 1e-6 * out.period) {
-      why_not = "a rim of the band does not go once around its seamless map";
-      return std::nullopt;
-    }
-    const int first = int(rim_uv.size());
-    for (int copy = -1; copy <= 1; ++copy)
-      for (const glm::dvec2& q : unrolled) rim_uv.push_back(q + glm::dvec2(copy * gap, 0));
-    for (int k = first; k + 1 < int(rim_uv.size()); ++k) rim_segments.emplace_back(k, k + 1);
-  }
-  if (count_segment_intersections(rim_segments, rim_uv) > 0) {
-    why_not = "the band's rims cross on its seamless map";
-    return std::nullopt;
-  }
 
   return out;
 }
