@@ -172,9 +172,6 @@ int run_run(const RunArgs& args) {
     throw InputError("--cutter " + printable(args.cutter) + ": use seat (girdle, seat cone, hole through) or element");
   if (!args.subtract && args.thickness) throw InputError("--thickness is the metal's for --subtract: add --subtract");
   if (args.subtract) {
-    request.closed_surface_refusal =
-        "--subtract cuts the metal of open surfaces only for now (a closed surface's charts would each get walls "
-        "at their seams); leave out --subtract";
     if (!args.thickness) throw InputError("--subtract needs --thickness T: how thick the metal is, surface units");
     const double thickness = finite_non_negative("--thickness", *args.thickness, "the metal's thickness, surface units");
     if (!(thickness > 0)) throw InputError("--thickness 0: the metal needs a thickness above 0");

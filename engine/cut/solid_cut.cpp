@@ -203,7 +203,11 @@ CutSolid cut_pavement(const SurfaceMap& map, const Elements& elements, const Cut
     if (options.stop && options.stop->load()) throw Interrupted();
   };
   CutSolid result;
-  const SurfaceMesh shell_mesh = thick_shell(map.mesh, map.normals, options.thickness);
+  // A closed surface's metal is a hollow shell of the whole surface (its atlas's charts would each
+  // get a wall at their seams).
+  const bool closed = is_atlas(map);
+  const SurfaceMesh shell_mesh = thick_shell(closed ? map.closed_surface : map.mesh,
+                                             closed ? map.closed_surface_normals : map.normals, options.thickness);
   if (PMP::does_self_intersect(to_cgal<RoundedMesh>(shell_mesh)))
     throw InputError("--thickness " + number_text(options.thickness) +
                      ": the metal folds into itself (the surface curves more tightly than that somewhere); use a "

@@ -279,6 +279,8 @@ std::optional<SurfaceMap> map_closed_surface(const SurfaceMesh& closed, CutAxis 
   map.chart_of_face = std::move(chart_of_face);
   map.closed_surface_vertices = closed.vertex_count();
   map.closed_surface_faces = closed.face_count();
+  map.closed_surface = cut.surface;
+  map.closed_surface_normals = normals;
   return map;
 }
 

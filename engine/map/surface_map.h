@@ -60,6 +60,10 @@ struct SurfaceMap {
   // vertices once per chart), every boundary loop a seam. Empty for an open surface.
   std::vector<int> chart_of_face;
   int closed_surface_vertices = 0, closed_surface_faces = 0;  // the closed surface as loaded
+  // The closed surface as cut (faces split along the plane, seams not duplicated) and its vertex
+  // normals: the metal under its pavement is thickened from it, so no wall stands at a seam.
+  SurfaceMesh closed_surface;
+  std::vector<glm::dvec3> closed_surface_normals;
 };
 
 inline bool map_wraps(const SurfaceMap& map) { return map.period > 0; }

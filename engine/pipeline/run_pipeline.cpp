@@ -69,8 +69,6 @@ PipelineResult run_pipeline(PipelineRequest request) {
     result.timings = std::move(mapped.timings);
   }
   check_stop();
-  if (!request.closed_surface_refusal.empty() && result.map && is_atlas(*result.map))
-    throw InputError(request.surface_path.string() + " is a closed surface: " + request.closed_surface_refusal);
 
   if (request.out) {
     std::function<void(const Pattern&, const Design&)> caller_hook = std::move(request.pavement.on_pattern);

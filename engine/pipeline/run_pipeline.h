@@ -36,9 +36,6 @@ struct PipelineRequest {
   std::shared_ptr<const SurfaceMap> map;
   StageTimings map_timings;
   CutAxis cut = CutAxis::Auto;             // how a closed surface is cut into charts
-  // Non-empty: a closed surface is refused with this reason, right after it is loaded and mapped
-  // (an output that cannot take an atlas yet, like the CLI's --subtract).
-  std::string closed_surface_refusal;
 
   Design design;
   std::string design_source = "defaults";  // names the design in errors and the report: its file, "defaults", "studio"

@@ -7,6 +7,8 @@
 #include "closed_mesh_checks.h"
 #include "core/input_error.h"
 #include "map/surface_map.h"
+#include "pipeline/pavement.h"
+#include "surface_maps.h"
 
 #include <gtest/gtest.h>
 
@@ -85,6 +87,33 @@ TEST(SolidCut, SeatsInAFlatPlateRemoveExactlyTheirVolumeWithinIt) {
   EXPECT_EQ(cut.united_cutters, 0);
   EXPECT_EQ(test::unpaired_edges(cut.mesh), 0u) << "closed, edge-manifold and consistently oriented";
   EXPECT_NEAR(test::signed_volume(cut.mesh), cut.volume, 1e-6) << "the written mesh has the volume reported";
+}
+
+// A closed bead's metal is a hollow shell of the whole surface: thickened from the closed surface
+// (no wall at the charts' seams: exactly two faces per surface face), closed, and cut by the seats
+// of stones on both charts.
+TEST(SolidCut, AClosedBeadIsAHollowShellWithNoWallAtItsSeams) {
+  const auto map = test::bundled_map("bead");
+  ASSERT_TRUE(is_atlas(*map));
+  const double thickness = 0.4;
+  const SurfaceMesh shell = thick_shell(map->closed_surface, map->closed_surface_normals, thickness);
+  EXPECT_EQ(shell.face_count(), 2 * map->closed_surface.face_count());
+  EXPECT_EQ(test::unpaired_edges(shell), 0u);
+  const double area = surface_area(map->closed_surface);
+  Design design;
+  design.pattern.spacing = 1.6;
+  design.elements.vertex.shape = ShapeKind::Gem;
+  const Pavement p = make_pavement(*map, design);
+  ASSERT_GT(p.elements.size(), 40u);
+  const CutSolid cut = cut_pavement(*map, p.elements, {.cutter = CutterKind::Seat, .thickness = thickness});
+  // Thinner than area x thickness inside a convex surface, by about thickness x mean curvature.
+  EXPECT_GT(cut.shell_volume, 0.8 * area * thickness);
+  EXPECT_LT(cut.shell_volume, area * thickness);
+  EXPECT_LT(cut.volume, cut.shell_volume);
+  EXPECT_GT(cut.volume, 0.5 * cut.shell_volume);
+  EXPECT_EQ(cut.cutters, int(p.elements.size()));
+  EXPECT_EQ(test::unpaired_edges(cut.mesh), 0u) << "closed, edge-manifold and consistently oriented";
+  EXPECT_NEAR(test::signed_volume(cut.mesh), cut.volume, 1e-6 * cut.volume);
 }
 
 // The paper's way (Fig. 14): the element itself is the cutter. A sphere centred on the top face
