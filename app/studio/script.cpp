@@ -1,5 +1,7 @@
 #include "script.h"
 
+#include "map/surface_charts.h"
+
 #include "core/input_error.h"
 #include "pattern/unit_cell.h"
 
@@ -17,7 +19,7 @@ namespace {
 using Kind = ScriptCommand::Kind;
 
 constexpr std::pair<std::string_view, Kind> kCommands[] = {
-    {"open", Kind::Open},       {"design", Kind::Design}, {"pattern", Kind::Pattern},
+    {"open", Kind::Open},       {"cut_axis", Kind::CutAxis}, {"design", Kind::Design}, {"pattern", Kind::Pattern},
     {"spacing", Kind::Spacing}, {"set", Kind::Set},       {"optimize", Kind::Optimize},
     {"undo", Kind::Undo},       {"redo", Kind::Redo},     {"export", Kind::Export}, {"cut", Kind::Cut},
     {"screenshot", Kind::Screenshot}, {"view3d", Kind::View3d}, {"view2d", Kind::View2d},
@@ -89,6 +91,12 @@ bool parse_script_line(std::string_view line, int line_number, const std::string
       need_argument("tri, grid or hex");
       if (!tessellation_from_name(rest))
         throw InputError(where + "pattern '" + std::string(rest) + "': use tri, grid or hex");
+      out.text = std::string(rest);
+      break;
+    case Kind::CutAxis:
+      need_argument("auto, x, y or z");
+      if (!cut_axis_from_name(rest))
+        throw InputError(where + "cut_axis '" + std::string(rest) + "': use auto, x, y or z");
       out.text = std::string(rest);
       break;
     case Kind::Panel: {

@@ -1,8 +1,9 @@
 #pragma once
 // The studio's scripted session (--script FILE): one command per line, `#` starts a comment.
-//   open PATH | design PATH | pattern tri|grid|hex | spacing D | set KEY VALUE | optimize |
+//   open PATH | cut_axis auto|x|y|z | design PATH | pattern tri|grid|hex | spacing D | set KEY VALUE | optimize |
 //   undo | redo | export DIR | cut THICKNESS DIR | screenshot FILE.png | view3d | view2d | panel NAME | wait N | quit
-// (panel shows a side panel: file, pattern, elements, optimize, report or help)
+// (panel shows a side panel: file, pattern, elements, optimize, report or help; cut_axis picks the
+// plane a closed surface is cut across, and opens an open closed surface again with it)
 // Parsing is separate from running so that a typo fails before anything is done.
 #include <string>
 #include <string_view>
@@ -11,10 +12,10 @@
 namespace paver::studio {
 
 struct ScriptCommand {
-  enum class Kind { Open, Design, Pattern, Spacing, Set, Optimize, Undo, Redo, Export, Cut, Screenshot, View3d,
+  enum class Kind { Open, CutAxis, Design, Pattern, Spacing, Set, Optimize, Undo, Redo, Export, Cut, Screenshot, View3d,
                     View2d, Panel, Wait, Quit };
   Kind kind = Kind::Quit;
-  std::string text;    // open/design/export/cut/screenshot: the path; pattern, panel: the name; set: the key
+  std::string text;    // open/design/export/cut/screenshot: the path; pattern, panel, cut_axis: the name; set: the key
   std::string value;   // set: the value as written
   double number = 0;   // spacing: D; cut: the metal's thickness
   int frames = 0;      // wait: N

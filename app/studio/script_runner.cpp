@@ -50,6 +50,7 @@ void ScriptRunner::act(Studio& s, const ScriptCommand& c) {
   Document& doc = s.doc;
   switch (c.kind) {
     case Kind::Open: open_surface(s, c.text); break;
+    case Kind::CutAxis: set_cut_axis(s, *cut_axis_from_name(c.text)); break;
     case Kind::Design:
       if (open_design_file(doc, c.text)) s.ui.design_path = c.text;
       break;
@@ -82,6 +83,7 @@ void ScriptRunner::act(Studio& s, const ScriptCommand& c) {
 bool ScriptRunner::settled(const Studio& s, const ScriptCommand& c) {
   switch (c.kind) {
     case Kind::Open: return !s.loader.busy() && s.doc.surface.path == std::filesystem::path(c.text);
+    case Kind::CutAxis: return !s.loader.busy();
     case Kind::Screenshot: return !s.ui.screenshot;  // after_present wrote it
     case Kind::Wait: return frames_left_-- <= 0;
     case Kind::Cut: return !s.cutter.busy() && !s.cutter.has_outcome();  // and its outcome reported

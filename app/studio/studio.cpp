@@ -79,9 +79,15 @@ void take_run_outcome(Studio& s) {
 }  // namespace
 
 void open_surface(Studio& s, const fs::path& path) {
-  s.loader.start(path);
+  s.loader.start(path, s.ui.cut_axis);
   s.ui.surface_path = path.string();
   report_status(s.doc, "opening " + path.string());
+}
+
+void set_cut_axis(Studio& s, CutAxis axis) {
+  if (axis == s.ui.cut_axis) return;
+  s.ui.cut_axis = axis;
+  if (s.doc.surface.map && is_atlas(*s.doc.surface.map)) open_surface(s, s.doc.surface.path);
 }
 
 void open_any(Studio& s, const fs::path& path) {

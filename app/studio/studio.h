@@ -48,6 +48,7 @@ struct UiState {
   std::optional<std::filesystem::path> screenshot;  // write the next presented frame here
   std::string select_panel;            // a script's `panel NAME`: selected on the next frame
   double cut_thickness = 1;            // Cut metal: the metal's thickness, surface units
+  CutAxis cut_axis = CutAxis::Auto;    // the plane a closed surface is cut across (paver run --cut)
 };
 
 struct Studio {
@@ -71,6 +72,8 @@ struct Studio {
 
 // Starts loading a surface in the background; the design stays.
 void open_surface(Studio& s, const std::filesystem::path& path);
+// Sets the plane a closed surface is cut across; an open closed surface is opened again with it.
+void set_cut_axis(Studio& s, CutAxis axis);
 // A dropped or recent file: a .json design is loaded, anything else opened as a surface.
 void open_any(Studio& s, const std::filesystem::path& path);
 // Chooses the solver backend (cpu, vulkan, auto); reports when it cannot.

@@ -22,12 +22,13 @@ struct SurfaceLoader::Shared {
 
 namespace {
 
-SurfaceLoadOutcome load_and_map(const std::filesystem::path& path, std::stop_token stop, SurfaceLoader::Shared& shared) {
+SurfaceLoadOutcome load_and_map(const std::filesystem::path& path, CutAxis cut, std::stop_token stop,
+                                SurfaceLoader::Shared& shared) {
   SurfaceLoadOutcome outcome;
   try {
     MappedSurface mapped = map_surface_file(
         path, [&](float fraction, const std::string& stage) { shared.report(fraction, stage); },
-        [&] { return stop.stop_requested(); });
+        [&] { return stop.stop_requested(); }, {}, cut);
     if (!mapped.map) return outcome;  // abandoned
     outcome.surface = OpenedSurface{path, std::move(mapped.map), std::move(mapped.warnings), std::move(mapped.timings)};
   } catch (const InputError& e) {
@@ -40,11 +41,11 @@ SurfaceLoadOutcome load_and_map(const std::filesystem::path& path, std::stop_tok
 
 }  // namespace
 
-void SurfaceLoader::start(const std::filesystem::path& path) {
+void SurfaceLoader::start(const std::filesystem::path& path, CutAxis cut) {
   auto shared = std::make_shared<Shared>();
   shared_ = shared;
-  jobs_.start([shared, path](std::stop_token stop) {
-    SurfaceLoadOutcome outcome = load_and_map(path, stop, *shared);
+  jobs_.start([shared, path, cut](std::stop_token stop) {
+    SurfaceLoadOutcome outcome = load_and_map(path, cut, stop, *shared);
     std::lock_guard lock(shared->mutex);
     shared->progress = 1;
     shared->outcome = std::move(outcome);

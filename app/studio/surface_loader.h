@@ -6,6 +6,7 @@
 #include "background_jobs.h"
 
 #include "pipeline/pavement.h"
+#include "map/surface_charts.h"
 #include "map/surface_map.h"
 
 #include <filesystem>
@@ -30,7 +31,8 @@ struct SurfaceLoadOutcome {
 
 class SurfaceLoader {
 public:
-  void start(const std::filesystem::path& path);  // a load in progress is abandoned
+  // A load in progress is abandoned. A closed surface is cut into charts across `cut`.
+  void start(const std::filesystem::path& path, CutAxis cut = CutAxis::Auto);
   bool busy() const;
   float progress() const;     // 0..1
   std::string stage() const;  // "loading", "mapping (ARAP 40 / 300)", ...

@@ -132,47 +132,47 @@ RimRowReport place_rim_rows(const SurfaceMap& map, Elements& elements, const Des
         offset_curve(map, mesh.boundary_loops[l], triangle_on, offset, diameter / kSamplesPerDiameter, boundary,
                      diameter, margin);
     if (curve.position.size() < 3 || !(curve.length > neighbours)) continue;
-    // As many as close the loop evenly; one fewer when a chord over a bend comes out short.
+    // As many as close the loop evenly (fewer while a chord over a bend comes out short). Where
+    // samples were dropped (a neck, a concave step) an element that falls in the gap goes to the
+    // gap's nearer end, and does not count against the spacing: a local gap, not a thinner row.
+    const double sample_step = diameter / kSamplesPerDiameter;
     for (int count = int(curve.length / neighbours); count >= 1; --count) {
       Elements trial;
+      std::vector<std::uint8_t> snapped;  // put on a gap's end: its spacing to the next is not the row's
       std::size_t sample = 0;
       for (int i = 0; i < count; ++i) {
         const double at = curve.length * i / count;
         while (sample + 1 < curve.arc.size() && curve.arc[sample + 1] <= at) ++sample;
-        // Between two samples: where samples were dropped (a concave corner) the two may be far
-        // apart, so interpolate and keep the point if it keeps the offset from the boundary.
-        glm::dvec2 uv = curve.uv[sample];
-        glm::dvec3 position = curve.position[sample];
         const std::size_t next = (sample + 1) % curve.uv.size();
         const double span = (sample + 1 < curve.arc.size() ? curve.arc[sample + 1] : curve.length) - curve.arc[sample];
-        if (span > 0 && at > curve.arc[sample]) {
-          const double w = (at - curve.arc[sample]) / span;
-          glm::dvec2 between = curve.uv[sample] * (1 - w) + nearest_image(map, curve.uv[next], curve.uv[sample]) * w;
-          if (lift_points(map, std::span(&between, 1), lifted) == 0 &&
-              keeps_margin(boundary.nearest(lifted.position[0]).distance, diameter, margin))
-            uv = wrap_point(map, between), position = lifted.position[0];
-          else if (w > 0.5)
-            uv = curve.uv[next], position = curve.position[next];
+        const double w = span > 0 ? std::clamp((at - curve.arc[sample]) / span, 0.0, 1.0) : 0.0;
+        glm::dvec2 uv = curve.uv[sample] * (1 - w) + nearest_image(map, curve.uv[next], curve.uv[sample]) * w;
+        bool on_gap_end = false;
+        if (lift_points(map, std::span(&uv, 1), lifted) > 0 ||
+            (span > 2 * sample_step && !keeps_margin(boundary.nearest(lifted.position[0]).distance, diameter, margin))) {
+          // In a gap of the curve: on its nearer end (one that lands where another is is left out below).
+          uv = w < 0.5 ? curve.uv[sample] : curve.uv[next];
+          if (lift_points(map, std::span(&uv, 1), lifted) > 0) continue;
+          on_gap_end = true;
         }
-        trial.push_back(ElementKind::Vertex, -1, 0, uv, position, glm::dvec3(0, 0, 1), diameter, spec.vertex.shape);
+        trial.push_back(ElementKind::Vertex, -1, 0, wrap_point(map, uv), lifted.position[0], lifted.normal[0], diameter,
+                        spec.vertex.shape);
+        snapped.push_back(on_gap_end ? 1 : 0);
       }
+      const int placed_here = int(trial.size());
       bool spaced = true;
-      for (int i = 0; i < count && spaced && count > 1; ++i) {
-        const int j = (i + 1) % count;
+      for (int i = 0; i < placed_here && spaced && placed_here > 1; ++i) {
+        const int j = (i + 1) % placed_here;
+        if (snapped[i] || snapped[j]) continue;
         spaced = !elements_collide(glm::length(trial.position[i] - trial.position[j]), diameter, diameter, spec.gap);
       }
-      if (!spaced) continue;
-      // Normals from the surface at each centre.
-      for (int i = 0; i < count; ++i) {
-        const glm::dvec2 uv = trial.uv[i];
-        lift_points(map, std::span(&uv, 1), lifted);
-        if (lifted.triangle[0] >= 0) trial.normal[i] = lifted.normal[0];
-      }
-      // Against the rows of the other rims (two holes close together): the later one gives way.
-      const ElementHash placed(row, surface_grid(mesh, neighbours));
+      if (!spaced && count > 1) continue;
+      // Against every row element kept so far, this rim's too (a tight bend folds the offset curve;
+      // two holes lie close): one that would touch is left out.
+      ElementHash placed(row, surface_grid(mesh, neighbours));
       int kept = 0;
-      for (int i = 0; i < count; ++i) {
-        bool clear = true;
+      for (int i = 0; i < placed_here; ++i) {
+        bool clear = keeps_margin(boundary.nearest(trial.position[i]).distance, diameter, margin);
         placed.for_each_near(trial.position[i], [&](int j) {
           if (elements_collide(glm::length(trial.position[i] - row.position[j]), diameter, row.diameter[j], spec.gap))
             clear = false;
@@ -180,6 +180,7 @@ RimRowReport place_rim_rows(const SurfaceMap& map, Elements& elements, const Des
         if (!clear) continue;
         row.push_back(ElementKind::Vertex, -1, 0, trial.uv[i], trial.position[i], trial.normal[i], diameter,
                       spec.vertex.shape);
+        placed.insert(int(row.size()) - 1);
         ++kept;
       }
       report.placed += kept;

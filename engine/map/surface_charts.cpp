@@ -4,7 +4,6 @@
 #include "map/arap_parameterization.h"
 #include "map/map_quality.h"
 #include "mesh/mean_curvature.h"
-#include "mesh/mesh_loader.h"
 #include "mesh/mesh_repair.h"
 #include "mesh/triangle_geometry.h"
 
@@ -69,11 +68,17 @@ std::vector<int> pieces_by_side(const SurfaceMesh& mesh, const std::vector<int>&
 // seam then leaves the plane by at most that much, and no sliver is made.
 constexpr double kSnapShare = 0.15;
 
+struct SplitSurface {
+  SurfaceMesh mesh;
+  std::vector<int> face_side;  // 1 above the plane, 0 below
+};
+
 // The closed surface with every face that the plane crosses split along it, so that the seam is
 // the plane's section (straight across the faces) and not a staircase of whole faces, which would
 // keep a strip of elements off it as deep as a face. Vertices within kSnapShare of a crossing
-// are taken as on the plane.
-SurfaceMesh split_along_plane(const SurfaceMesh& closed, glm::dvec3 normal, double offset, const std::string& source) {
+// are taken as on the plane (not moved); each face's side is that of its vertices off the plane,
+// of which no face has both kinds.
+SplitSurface split_along_plane(const SurfaceMesh& closed, glm::dvec3 normal, double offset) {
   const int nv = closed.vertex_count();
   std::vector<double> height(nv);
   for (int v = 0; v < nv; ++v) height[v] = glm::dot(normal, closed.positions[v]) - offset;
@@ -98,26 +103,32 @@ SurfaceMesh split_along_plane(const SurfaceMesh& closed, glm::dvec3 normal, doub
     }
     return it->second;
   };
-  std::vector<std::vector<int>> faces;
+  SplitSurface out;
+  std::vector<glm::ivec3>& faces = out.mesh.triangles;
   // Each side's part of a split triangle is a triangle or a convex quad, in the triangle's order.
-  const auto add_part = [&](const std::vector<int>& part) {
+  const auto add_part = [&](const std::vector<int>& part, int face_side) {
     if (part.size() == 3) {
-      faces.push_back(part);
+      faces.emplace_back(part[0], part[1], part[2]);
+      out.face_side.push_back(face_side);
     } else if (part.size() == 4) {
       // The shorter diagonal.
       const double d02 = glm::length(positions[part[0]] - positions[part[2]]);
       const double d13 = glm::length(positions[part[1]] - positions[part[3]]);
       if (d02 <= d13)
-        faces.push_back({part[0], part[1], part[2]}), faces.push_back({part[0], part[2], part[3]});
+        faces.emplace_back(part[0], part[1], part[2]), faces.emplace_back(part[0], part[2], part[3]);
       else
-        faces.push_back({part[1], part[2], part[3]}), faces.push_back({part[1], part[3], part[0]});
+        faces.emplace_back(part[1], part[2], part[3]), faces.emplace_back(part[1], part[3], part[0]);
+      out.face_side.insert(out.face_side.end(), 2, face_side);
     }
   };
   for (const glm::ivec3& t : closed.triangles) {
     bool above = false, below = false;
     for (int k = 0; k < 3; ++k) above |= side[t[k]] > 0, below |= side[t[k]] < 0;
     if (!(above && below)) {
-      faces.push_back({t.x, t.y, t.z});
+      faces.push_back(t);
+      // A face with every vertex on the plane goes by its centroid.
+      const double centroid = height[t.x] + height[t.y] + height[t.z];
+      out.face_side.push_back(above || (!below && centroid >= 0) ? 1 : 0);
       continue;
     }
     std::vector<int> upper, lower;
@@ -130,9 +141,11 @@ SurfaceMesh split_along_plane(const SurfaceMesh& closed, glm::dvec3 normal, doub
         upper.push_back(x), lower.push_back(x);
       }
     }
-    add_part(upper), add_part(lower);
+    add_part(upper, 1), add_part(lower, 0);
   }
-  return make_surface(std::move(positions), faces, source).mesh;
+  // The split keeps the closed surface closed, manifold and oriented: no repair to run.
+  out.mesh.positions = std::move(positions);
+  return out;
 }
 
 }  // namespace
@@ -165,21 +178,10 @@ ChartCut cut_into_charts(const SurfaceMesh& closed, CutAxis axis, const std::str
     cut.normal = axis == CutAxis::X ? glm::dvec3(1, 0, 0) : axis == CutAxis::Y ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1);
   }
   cut.offset = glm::dot(cut.normal, centre);
-  cut.surface = split_along_plane(closed, cut.normal, cut.offset, source);
+  SplitSurface split = split_along_plane(closed, cut.normal, cut.offset);
+  cut.surface = std::move(split.mesh);
   const SurfaceMesh& surface = cut.surface;
-
-  // A face's side: that of its vertices off the plane (after the split no face has both sides).
-  std::vector<int> side(surface.face_count());
-  for (int f = 0; f < surface.face_count(); ++f) {
-    const glm::ivec3 t = surface.triangles[f];
-    const glm::dvec3 corners[3] = {surface.positions[t.x], surface.positions[t.y], surface.positions[t.z]};
-    double farthest = 0;
-    for (const glm::dvec3& p : corners) {
-      const double h = glm::dot(cut.normal, p) - cut.offset;
-      if (std::abs(h) > std::abs(farthest)) farthest = h;
-    }
-    side[f] = farthest >= 0 ? 1 : 0;
-  }
+  const std::vector<int>& side = split.face_side;
   const std::vector<int> piece = pieces_by_side(surface, side);
   std::map<int, std::vector<int>> faces_of_piece;
   for (int f = 0; f < surface.face_count(); ++f) faces_of_piece[piece[f]].push_back(f);
@@ -280,6 +282,7 @@ std::optional<SurfaceMap> map_closed_surface(const SurfaceMesh& closed, CutAxis 
   map.closed_surface_vertices = closed.vertex_count();
   map.closed_surface_faces = closed.face_count();
   map.closed_surface = cut.surface;
+  map.cut_normal = cut.normal;
   map.closed_surface_normals = normals;
   return map;
 }

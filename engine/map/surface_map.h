@@ -64,6 +64,7 @@ struct SurfaceMap {
   // normals: the metal under its pavement is thickened from it, so no wall stands at a seam.
   SurfaceMesh closed_surface;
   std::vector<glm::dvec3> closed_surface_normals;
+  glm::dvec3 cut_normal{0.0};  // the normal of the plane it was cut by
 };
 
 inline bool map_wraps(const SurfaceMap& map) { return map.period > 0; }

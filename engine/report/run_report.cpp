@@ -102,6 +102,7 @@ nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const
                    {"charts", chart_count(map)},
                    {"seam_loops", is_atlas(map) ? map.mesh.boundary_loops.size() : 0},
                    {"seam_length", is_atlas(map) ? 0.5 * boundary_length(map.mesh) : 0.0},
+                   {"cut_normal", {map.cut_normal.x, map.cut_normal.y, map.cut_normal.z}},
                    {"area", surface_area(map.mesh)},
                    {"curvature_min", map.curvature_min},
                    {"curvature_max", map.curvature_max}}},

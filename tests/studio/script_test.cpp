@@ -23,6 +23,7 @@ std::string error_of(const std::string& text) {
 TEST(Script, ParsesEveryCommand) {
   const auto commands = parse_script(
       "open assets/surfaces/dome.obj\n"
+      "cut_axis x\n"
       "design assets/designs/dome_hex_d6.json\n"
       "pattern hex\n"
       "spacing 6\n"
@@ -34,8 +35,8 @@ TEST(Script, ParsesEveryCommand) {
       "wait 3\n"
       "quit\n",
       "s.txt");
-  ASSERT_EQ(commands.size(), 14u);
-  const Kind kinds[] = {Kind::Open,   Kind::Design, Kind::Pattern, Kind::Spacing,    Kind::Set,    Kind::Optimize,
+  ASSERT_EQ(commands.size(), 15u);
+  const Kind kinds[] = {Kind::Open,   Kind::CutAxis, Kind::Design, Kind::Pattern, Kind::Spacing,    Kind::Set,    Kind::Optimize,
                         Kind::Undo,   Kind::Redo,   Kind::Export,  Kind::Screenshot, Kind::View3d, Kind::View2d,
                         Kind::Wait,   Kind::Quit};
   for (std::size_t i = 0; i < commands.size(); ++i) {
@@ -43,12 +44,13 @@ TEST(Script, ParsesEveryCommand) {
     EXPECT_EQ(commands[i].line, int(i) + 1);
   }
   EXPECT_EQ(commands[0].text, "assets/surfaces/dome.obj");
-  EXPECT_EQ(commands[2].text, "hex");
-  EXPECT_EQ(commands[3].number, 6);
-  EXPECT_EQ(commands[4].text, "solver.dt");
-  EXPECT_EQ(commands[4].value, "0.25");
-  EXPECT_EQ(commands[8].text, "out/dir");
-  EXPECT_EQ(commands[12].frames, 3);
+  EXPECT_EQ(commands[1].text, "x");
+  EXPECT_EQ(commands[3].text, "hex");
+  EXPECT_EQ(commands[4].number, 6);
+  EXPECT_EQ(commands[5].text, "solver.dt");
+  EXPECT_EQ(commands[5].value, "0.25");
+  EXPECT_EQ(commands[9].text, "out/dir");
+  EXPECT_EQ(commands[13].frames, 3);
 }
 
 TEST(Script, SkipsCommentsAndBlankLinesButCountsThem) {
@@ -86,6 +88,7 @@ TEST(Script, ErrorsNameTheLineAndTheFix) {
   EXPECT_NE(error_of("wait 1.5").find("whole number"), std::string::npos);
   EXPECT_NE(error_of("quit now").find("takes no argument"), std::string::npos);
   EXPECT_NE(error_of("screenshot shot.jpg").find(".png"), std::string::npos);
+  EXPECT_NE(error_of("cut_axis w").find("use auto, x, y or z"), std::string::npos);
   EXPECT_EQ(error_of("\n\n  optimize extra").rfind("s.txt:3:", 0), 0u);
 }
 

@@ -167,6 +167,30 @@ TEST_F(StudioSession, ScriptedEditExportsWhatTheCliWritesAndScreenshotShowsThePa
 }
 
 #ifdef PAVER_WITH_CGAL
+// A closed bead cut across x (the script's cut_axis, the file panel's "cut across") exports what
+// `paver run --cut x` writes: the same placements.
+TEST_F(StudioSession, AClosedSurfaceCutAcrossAnAxisExportsWhatTheCliWrites) {
+  const fs::path exported = dir_ / "export", script = dir_ / "bead.txt";
+  std::ofstream(script) << "open assets/surfaces/bead.obj\n"
+                           "cut_axis x\n"
+                           "optimize\n"
+                           "export " << exported.string() << "\n"
+                        << "quit\n";
+  const Outcome r = studio("--script " + quote(script.string()) + " --backend cpu --width 1280 --height 800", dir_);
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  ASSERT_TRUE(fs::is_regular_file(exported / "placements.csv")) << describe(r);
+  const fs::path cli_out = dir_ / "cli";
+  const Outcome cli = run_in_source(quote(PAVER_CLI) + " run assets/surfaces/bead.obj --cut x --design " +
+                                        quote((exported / "design.json").string()) +
+                                        " --backend cpu --formats ply --out " + quote(cli_out.string()),
+                                    dir_);
+  ASSERT_EQ(cli.exit_code, 0) << describe(cli);
+  EXPECT_TRUE(read_text(exported / "placements.csv") == read_text(cli_out / "placements.csv"))
+      << "placements.csv differs from paver run --cut x's";
+  const nlohmann::json report = nlohmann::json::parse(read_text(exported / "report.json"));
+  EXPECT_EQ(report["surface"]["cut_normal"], nlohmann::json::array({1.0, 0.0, 0.0})) << report["surface"].dump();
+}
+
 // The studio's Cut metal (in the background) writes the metal `paver run --subtract` writes for
 // the same design, byte for byte.
 TEST_F(StudioSession, CutMetalWritesWhatTheCliSubtractWrites) {

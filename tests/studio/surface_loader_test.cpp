@@ -4,10 +4,12 @@
 
 #include "mesh/mesh_loader.h"
 #include "map/surface_map.h"
+#include "pipeline/map_surface.h"
 
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <thread>
 
 namespace paver::studio {
@@ -45,6 +47,21 @@ TEST(SurfaceLoader, MapsExactlyAsBuildSurfaceMap) {
     EXPECT_EQ(outcome->surface->timings[0].first, "load");
     EXPECT_EQ(outcome->surface->timings[1].first, "parameterize");
   }
+}
+
+// A closed surface is cut across the axis asked for, as `paver run --cut` cuts it.
+TEST(SurfaceLoader, CutsAClosedSurfaceAcrossTheAxisAskedFor) {
+  SurfaceLoader loader;
+  loader.start(test::bundled_surface("bead"), CutAxis::X);
+  const auto outcome = wait_for(loader);
+  ASSERT_TRUE(outcome && outcome->surface) << (outcome ? outcome->error : "none");
+  const SurfaceMap& map = *outcome->surface->map;
+  ASSERT_TRUE(is_atlas(map));
+  EXPECT_EQ(map.cut_normal, glm::dvec3(1, 0, 0));
+  const MappedSurface expected = map_surface_file(test::bundled_surface("bead"), {}, {}, {}, CutAxis::X);
+  EXPECT_EQ(map.uv, expected.map->uv);
+  // The bead's longest axis is z: the default cut is another plane.
+  EXPECT_NEAR(std::abs(map_surface_file(test::bundled_surface("bead")).map->cut_normal.z), 1.0, 1e-6);
 }
 
 TEST(SurfaceLoader, ABadFileIsAnErrorNamingIt) {

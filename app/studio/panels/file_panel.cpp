@@ -57,6 +57,14 @@ void file_panel(Studio& s) {
     ImGui::TextDisabled("%s: %d vertices, %d faces", doc.surface.path.filename().string().c_str(),
                         doc.surface.map->mesh.vertex_count(), doc.surface.map->mesh.face_count());
   ImGui::TextDisabled("or drop a surface or a design .json on the window");
+  if (doc.surface.map && is_atlas(*doc.surface.map)) {
+    const char* axis_names[] = {"its longest axis", "x", "y", "z"};
+    int axis = int(s.ui.cut_axis);
+    if (ImGui::Combo("cut across", &axis, axis_names, 4)) set_cut_axis(s, CutAxis(axis));
+    help_marker("A closed surface (a bead, a figurine) is paved as charts cut apart by a plane through its "
+                "centre, across this axis; stones are added across the seam where both sides leave room. "
+                "Changing it maps the surface again.");
+  }
   if (!s.recent.empty() && ImGui::TreeNode("recent files")) {
     for (const fs::path& path : std::vector<fs::path>(s.recent))  // opening reorders the list
       if (ImGui::Selectable(path.string().c_str())) open_any(s, path);
