@@ -53,9 +53,15 @@ void file_panel(Studio& s) {
   ImGui::SameLine();
   if (ImGui::Button("Open") && !s.ui.surface_path.empty()) open_surface(s, s.ui.surface_path);
   if (s.loader.busy()) ImGui::ProgressBar(s.loader.progress(), ImVec2(-1, 0), s.loader.stage().c_str());
-  if (doc.surface.map)
-    ImGui::TextDisabled("%s: %d vertices, %d faces", doc.surface.path.filename().string().c_str(),
-                        doc.surface.map->mesh.vertex_count(), doc.surface.map->mesh.face_count());
+  if (doc.surface.map) {
+    // A closed surface is counted as loaded, not as its atlas (split faces, seams twice).
+    const SurfaceMap& map = *doc.surface.map;
+    const bool closed = is_atlas(map);
+    ImGui::TextDisabled("%s: %d vertices, %d faces%s", doc.surface.path.filename().string().c_str(),
+                        closed ? map.closed_surface_vertices : map.mesh.vertex_count(),
+                        closed ? map.closed_surface_faces : map.mesh.face_count(),
+                        closed ? (", closed: " + std::to_string(chart_count(map)) + " charts").c_str() : "");
+  }
   ImGui::TextDisabled("or drop a surface or a design .json on the window");
   if (doc.surface.map && is_atlas(*doc.surface.map)) {
     const char* axis_names[] = {"its longest axis", "x", "y", "z"};
