@@ -10,8 +10,10 @@
 #include "core/input_error.h"
 #include "report/verdict.h"
 
+#include <tbb/parallel_for.h>
 #include <glm/geometric.hpp>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -92,15 +94,20 @@ glm::dvec2 best_offset_across(const SurfaceMap& map, const UnitCell& cell, const
   const glm::dvec2 across(-std::sin(angle), std::cos(angle));  // the band's v in the pattern plane
   // Rows along the repeating step lie this far apart: a shift by it gives the same lattice.
   const double band_step = std::abs(cell.cell_area()) / glm::length(double(step.x) * cell.a1 + double(step.y) * cell.a2);
-  glm::dvec2 best = design.placement.offset;
-  std::size_t best_count = 0;
-  for (int k = 0; k < kTries; ++k) {
+  // The tries are independent: side by side (a large band's layout is mostly serial).
+  std::array<std::size_t, kTries> count{};
+  std::array<glm::dvec2, kTries> offset{};
+  tbb::parallel_for(0, kTries, [&](int k) {
     Placement placement = design.placement;
     placement.offset += (band_step * k / kTries) * across;
     const Pattern pattern = build_pattern(map, cell, placement);
-    const std::size_t count = place_all_elements(map, pattern, pattern.points, design, true).elements.size();
-    if (count > best_count) best_count = count, best = placement.offset;
-  }
+    count[k] = place_all_elements(map, pattern, pattern.points, design, true).elements.size();
+    offset[k] = placement.offset;
+  });
+  glm::dvec2 best = design.placement.offset;
+  std::size_t best_count = 0;
+  for (int k = 0; k < kTries; ++k)
+    if (count[k] > best_count) best_count = count[k], best = offset[k];
   return best;
 }
 
