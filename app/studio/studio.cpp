@@ -87,7 +87,12 @@ void open_surface(Studio& s, const fs::path& path) {
 void set_cut_axis(Studio& s, CutAxis axis) {
   if (axis == s.ui.cut_axis) return;
   s.ui.cut_axis = axis;
-  if (s.doc.surface.map && is_atlas(*s.doc.surface.map)) open_surface(s, s.doc.surface.path);
+  // A load in flight is started again with the axis (it may be a closed surface); else the
+  // closed surface on screen is mapped again.
+  if (s.loader.busy())
+    open_surface(s, fs::path(s.loader.path()));
+  else if (s.doc.surface.map && is_atlas(*s.doc.surface.map))
+    open_surface(s, s.doc.surface.path);
 }
 
 void open_any(Studio& s, const fs::path& path) {

@@ -72,7 +72,8 @@ struct Studio {
 
 // Starts loading a surface in the background; the design stays.
 void open_surface(Studio& s, const std::filesystem::path& path);
-// Sets the plane a closed surface is cut across; an open closed surface is opened again with it.
+// Sets the plane a closed surface is cut across; the surface being opened, or the closed surface
+// on screen, is opened again with it.
 void set_cut_axis(Studio& s, CutAxis axis);
 // A dropped or recent file: a .json design is loaded, anything else opened as a surface.
 void open_any(Studio& s, const std::filesystem::path& path);

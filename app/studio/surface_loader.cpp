@@ -42,6 +42,7 @@ SurfaceLoadOutcome load_and_map(const std::filesystem::path& path, CutAxis cut, 
 }  // namespace
 
 void SurfaceLoader::start(const std::filesystem::path& path, CutAxis cut) {
+  path_ = path;
   auto shared = std::make_shared<Shared>();
   shared_ = shared;
   jobs_.start([shared, path, cut](std::stop_token stop) {

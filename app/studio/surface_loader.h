@@ -34,6 +34,7 @@ public:
   // A load in progress is abandoned. A closed surface is cut into charts across `cut`.
   void start(const std::filesystem::path& path, CutAxis cut = CutAxis::Auto);
   bool busy() const;
+  const std::filesystem::path& path() const { return path_; }  // the last one started
   float progress() const;     // 0..1
   std::string stage() const;  // "loading", "mapping (ARAP 40 / 300)", ...
   std::optional<SurfaceLoadOutcome> take_outcome();  // once per finished load
@@ -42,6 +43,7 @@ public:
 
 private:
   std::shared_ptr<Shared> shared_;
+  std::filesystem::path path_;
   BackgroundJobs jobs_;
 };
 

@@ -4,6 +4,7 @@
 #include "pattern/surface_triangulation.h"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace paver {
@@ -27,8 +28,12 @@ std::vector<int> lattice_valences(const Elements& elements, int regular_valence,
   std::vector<int> origin(n);
   for (int i = 0; i < n; ++i) origin[i] = i;
   if (period > 0 && n > 0) {
-    double lo = uv[0].x, hi = uv[0].x;
-    for (int i = 0; i < n; ++i) lo = std::min(lo, uv[i].x), hi = std::max(hi, uv[i].x);
+    // Into one period first: refill may leave a point's u past the period's end.
+    double lo = uv[0].x;
+    for (int i = 0; i < n; ++i) lo = std::min(lo, uv[i].x);
+    for (int i = 0; i < n; ++i) uv[i].x = lo + std::fmod(uv[i].x - lo, period);
+    double hi = lo;
+    for (int i = 0; i < n; ++i) hi = std::max(hi, uv[i].x);
     const double reach = std::min(8 * spacing, period);
     for (int i = 0; i < n; ++i) {
       if (uv[i].x < lo + reach) uv.push_back(uv[i] + glm::dvec2(period, 0)), position.push_back(position[i]), origin.push_back(i);

@@ -46,6 +46,30 @@ TEST(LatticeValence, ATriangleLatticeIsSixValentInsideAndItsHoleLeavesFiveValent
   EXPECT_GE(below_six, 2);
 }
 
+// A band: a triangle lattice on a cylinder of 40 points round, period 40 in u. Every point off
+// the rims is 6-valent, across the seam too, and still when some points' u lies a period off either
+// way (refill does not wrap what it adds).
+TEST(LatticeValence, ABandIsSixValentAcrossItsSeamWhereverItsPointsLie) {
+  constexpr int kRound = 40, kRows = 8;
+  const double period = kRound, radius = kRound / (2 * std::acos(-1.0));
+  for (const bool unwrapped : {false, true}) {
+    Elements e;
+    for (int j = 0; j < kRows; ++j)
+      for (int i = 0; i < kRound; ++i) {
+        double u = i + 0.5 * (j % 2) + 1e-3 * j;
+        const double a = u / radius;
+        if (unwrapped && i < 6) u += period;                // past the period's end
+        if (unwrapped && i >= 20 && i < 26) u -= period;    // and before its start: u spans 1.5 periods
+        e.push_back(ElementKind::Vertex, int(e.size()), 0, {u, j * std::sqrt(3.0) / 2},
+                    {radius * std::cos(a), radius * std::sin(a), j * std::sqrt(3.0) / 2}, {0, 0, 1}, 0.5,
+                    ShapeKind::Sphere);
+      }
+    const std::vector<int> v = lattice_valences(e, 6, 1, period);
+    for (int j = 1; j + 1 < kRows; ++j)
+      for (int i = 0; i < kRound; ++i) EXPECT_EQ(v[j * kRound + i], 6) << "row " << j << " point " << i << (unwrapped ? " (unwrapped)" : "");
+  }
+}
+
 TEST(LatticeValence, AHoneycombHasThreeNeighboursInItsShellAndEdgeElementsHaveNone) {
   Elements e;
   // Honeycomb of edge 1: two points per cell of the triangle lattice of spacing sqrt 3.
