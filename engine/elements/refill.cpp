@@ -3,6 +3,7 @@
 #include "elements/boundary_postprocess.h"
 #include "elements/element_hash.h"
 #include "elements/contact_rule.h"
+#include "map/boundary_walk.h"
 #include "map/lifting.h"
 #include "map/uv_from_tangent.h"
 
@@ -10,9 +11,7 @@
 
 #include <algorithm>
 #include <array>
-#include <cstdint>
 #include <span>
-#include <unordered_map>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -151,59 +150,30 @@ void refill_seams(const SurfaceMap& map, Elements& elements, const Design& desig
   const DensityRule density(design, area_per_element);
   const CellGrid grid = element_grid(map, elements, diameter, spec.gap, density.widest());
   ElementHash hash(elements, grid);
-  const SurfaceMesh& mesh = map.mesh;
-  // The one triangle on each boundary edge (a seam edge of its chart).
-  std::unordered_map<std::uint64_t, int> triangle_on;
-  const auto edge_key = [](int a, int b) { return (std::uint64_t(std::uint32_t(std::min(a, b))) << 32) | std::uint32_t(std::max(a, b)); };
-  for (int t = 0; t < mesh.face_count(); ++t)
-    for (int k = 0; k < 3; ++k) triangle_on[edge_key(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3])] = t;
   // Along the seam in steps of a tenth of a diameter; across it at these shares of a diameter into
   // the chart walked (the other side is walked with its own chart's loop).
-  const double step = 0.1 * diameter;
   constexpr std::array<double, 4> kInto = {1e-6, 0.15, 0.3, 0.45};
   LiftedPoints lifted;
   lifted.resize(1);
-  for (const std::vector<int>& loop : mesh.boundary_loops) {
-    double carried = 0;  // arc length since the last sample, carried across edges
-    for (std::size_t k = 0; k < loop.size(); ++k) {
-      const int a = loop[k], b = loop[(k + 1) % loop.size()];
-      const auto on = triangle_on.find(edge_key(a, b));
-      if (on == triangle_on.end()) continue;
-      const int t = on->second;
-      const glm::dvec3 pa = mesh.positions[a], pb = mesh.positions[b];
-      const double length = glm::length(pb - pa);
-      if (!(length > 0)) continue;
-      const glm::dvec3 along = (pb - pa) / length;
-      int third = 0;
-      for (int c = 0; c < 3; ++c)
-        if (mesh.triangles[t][c] != a && mesh.triangles[t][c] != b) third = mesh.triangles[t][c];
-      glm::dvec3 into = mesh.positions[third] - pa;
-      into -= glm::dot(into, along) * along;
-      if (!(glm::length(into) > 0)) continue;
-      into = glm::normalize(into);
-      const UvFromTangent uv_step(map, t);
-      for (double s = step - carried; s < length; s += step) {
-        const double w = s / length;
-        const glm::dvec2 uv0 = map.uv[a] * (1 - w) + map.uv[b] * w;
-        const glm::dvec3 p0 = pa * (1 - w) + pb * w;
-        for (const double share : kInto) {
-          const glm::dvec2 uv = uv0 + uv_step(into * (share * diameter));
-          if (lift_points(map, std::span(&uv, 1), lifted) > 0) continue;
-          // The uv step is linear in the triangle; far from the seam the lift is the truth.
-          if (glm::length(lifted.position[0] - p0) > diameter) continue;
-          if (!clears_all(hash, elements, lifted.position[0], diameter, spec.gap,
-                          density.spacing(map, lifted.curvature[0])))
-            continue;
-          elements.push_back(ElementKind::Vertex, -1, 0, uv, lifted.position[0], lifted.normal[0], diameter,
-                             spec.vertex.shape);
-          hash.insert(int(elements.size()) - 1);
-          ++report.added, ++report.on_seams;
-          break;
-        }
+  const BoundaryWalk seams(map);
+  for (int loop = 0; loop < int(map.mesh.boundary_loops.size()); ++loop)
+    seams.walk(loop, 0.1 * diameter, [&](const BoundarySample& at) {
+      const UvFromTangent uv_step(map, at.triangle);
+      for (const double share : kInto) {
+        const glm::dvec2 uv = at.uv + uv_step(at.into * (share * diameter));
+        if (lift_points(map, std::span(&uv, 1), lifted) > 0) continue;
+        // The uv step is linear in the triangle; far from the seam the lift is the truth.
+        if (glm::length(lifted.position[0] - at.position) > diameter) continue;
+        if (!clears_all(hash, elements, lifted.position[0], diameter, spec.gap,
+                        density.spacing(map, lifted.curvature[0])))
+          continue;
+        elements.push_back(ElementKind::Vertex, -1, 0, uv, lifted.position[0], lifted.normal[0], diameter,
+                           spec.vertex.shape);
+        hash.insert(int(elements.size()) - 1);
+        ++report.added, ++report.on_seams;
+        return;
       }
-      carried = std::fmod(carried + length, step);
-    }
-  }
+    });
   report.milliseconds += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 

@@ -4,6 +4,7 @@
 #include "elements/contact_rule.h"
 #include "elements/element_hash.h"
 #include "map/boundary_index.h"
+#include "map/boundary_walk.h"
 #include "map/lifting.h"
 #include "map/uv_from_tangent.h"
 
@@ -15,7 +16,6 @@
 #include <cstdint>
 #include <limits>
 #include <span>
-#include <unordered_map>
 #include <vector>
 
 namespace paver {
@@ -32,58 +32,29 @@ struct OffsetCurve {
   double length = 0;
 };
 
-std::uint64_t edge_key(int a, int b) {
-  return (std::uint64_t(std::uint32_t(std::min(a, b))) << 32) | std::uint32_t(std::max(a, b));
-}
-
-// The curve `offset` inside the rim `loop` (3D distance along the surface, through each rim
-// edge's triangle), sampled and lifted; samples where an element would break the edge rule (a
-// narrow neck, a concave corner: another part of the boundary nearer) are dropped.
-OffsetCurve offset_curve(const SurfaceMap& map, const std::vector<int>& loop,
-                         const std::unordered_map<std::uint64_t, int>& triangle_on, double offset, double step,
+// The curve `offset` inside rim `loop` (3D distance along the surface, through each rim edge's
+// triangle), sampled and lifted; samples where an element would break the edge rule (a narrow
+// neck, a concave corner: another part of the boundary nearer) are dropped.
+OffsetCurve offset_curve(const SurfaceMap& map, const BoundaryWalk& rims, int loop, double offset, double step,
                          const BoundaryIndex& boundary, double diameter, double margin) {
-  const SurfaceMesh& mesh = map.mesh;
   OffsetCurve curve;
   LiftedPoints lifted;
   lifted.resize(1);
-  double carried = 0;
-  for (std::size_t k = 0; k < loop.size(); ++k) {
-    const int a = loop[k], b = loop[(k + 1) % loop.size()];
-    const auto on = triangle_on.find(edge_key(a, b));
-    if (on == triangle_on.end()) continue;
-    const int t = on->second;
-    const glm::dvec3 pa = mesh.positions[a], pb = mesh.positions[b];
-    const double length = glm::length(pb - pa);
-    if (!(length > 0)) continue;
-    const glm::dvec3 along = (pb - pa) / length;
-    int third = 0;
-    for (int c = 0; c < 3; ++c)
-      if (mesh.triangles[t][c] != a && mesh.triangles[t][c] != b) third = mesh.triangles[t][c];
-    glm::dvec3 into = mesh.positions[third] - pa;
-    into -= glm::dot(into, along) * along;
-    if (!(glm::length(into) > 0)) continue;
-    into = glm::normalize(into);
-    const UvFromTangent uv_step(map, t);
-    const glm::dvec2 ua = map.uv[a], ub = nearest_image(map, map.uv[b], ua);  // across a band's seam
-    for (double s = step - carried; s < length; s += step) {
-      const double w = s / length;
-      glm::dvec2 uv = ua * (1 - w) + ub * w + uv_step(into * offset);
-      if (lift_points(map, std::span(&uv, 1), lifted) > 0) continue;
-      // The uv step is linear in the triangle: correct it once so that the lifted point lies at
-      // the offset from the rim point (as refill corrects its steps).
-      const glm::dvec3 rim = pa * (1 - w) + pb * w;
-      const double got = glm::length(lifted.position[0] - rim);
-      if (got > 0 && std::abs(got - offset) > 1e-3 * offset) {
-        const glm::dvec2 base = ua * (1 - w) + ub * w;
-        uv = base + (uv - base) * (offset / got);
-        if (lift_points(map, std::span(&uv, 1), lifted) > 0) continue;
-      }
-      if (!keeps_margin(boundary.nearest(lifted.position[0]).distance, diameter, margin)) continue;
-      curve.uv.push_back(wrap_point(map, uv));
-      curve.position.push_back(lifted.position[0]);
+  rims.walk(loop, step, [&](const BoundarySample& at) {
+    const UvFromTangent uv_step(map, at.triangle);
+    glm::dvec2 uv = at.uv + uv_step(at.into * offset);
+    if (lift_points(map, std::span(&uv, 1), lifted) > 0) return;
+    // The uv step is linear in the triangle: correct it once so that the lifted point lies at the
+    // offset from the rim point (as refill corrects its steps).
+    const double got = glm::length(lifted.position[0] - at.position);
+    if (got > 0 && std::abs(got - offset) > 1e-3 * offset) {
+      uv = at.uv + (uv - at.uv) * (offset / got);
+      if (lift_points(map, std::span(&uv, 1), lifted) > 0) return;
     }
-    carried = std::fmod(carried + length, step);
-  }
+    if (!keeps_margin(boundary.nearest(lifted.position[0]).distance, diameter, margin)) return;
+    curve.uv.push_back(wrap_point(map, uv));
+    curve.position.push_back(lifted.position[0]);
+  });
   const std::size_t n = curve.position.size();
   curve.arc.resize(n);
   for (std::size_t i = 1; i < n; ++i) curve.arc[i] = curve.arc[i - 1] + glm::length(curve.position[i] - curve.position[i - 1]);
@@ -120,17 +91,14 @@ RimRowReport place_rim_rows(const SurfaceMap& map, Elements& elements, const Des
   const double offset = (0.5 * diameter + margin) * (1 + kContactAim);
   const double neighbours = contact_distance(diameter, diameter, spec.gap) * (1 + kContactAim);
   const BoundaryIndex boundary(mesh, 2 * offset);
-  std::unordered_map<std::uint64_t, int> triangle_on;
-  for (int t = 0; t < mesh.face_count(); ++t)
-    for (int k = 0; k < 3; ++k) triangle_on[edge_key(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3])] = t;
+  const BoundaryWalk rims(map);
 
   Elements row;
   LiftedPoints lifted;
   lifted.resize(1);
   for (const int l : loops) {
     const OffsetCurve curve =
-        offset_curve(map, mesh.boundary_loops[l], triangle_on, offset, diameter / kSamplesPerDiameter, boundary,
-                     diameter, margin);
+        offset_curve(map, rims, l, offset, diameter / kSamplesPerDiameter, boundary, diameter, margin);
     if (curve.position.size() < 3 || !(curve.length > neighbours)) continue;
     // As many as close the loop evenly (fewer while a chord over a bend comes out short). Where
     // samples were dropped (a neck, a concave step) an element that falls in the gap goes to the
