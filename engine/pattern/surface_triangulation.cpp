@@ -8,6 +8,7 @@
 #include <limits>
 #include <numbers>
 #include <unordered_map>
+#include <tuple>
 #include <utility>
 
 namespace paver {
@@ -46,18 +47,34 @@ double corner_angle(const glm::dvec3& at, const glm::dvec3& p, const glm::dvec3&
   return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
 }
 
-// Insertion order with locality (rows of cells walked alternately left and right), so each point
-// is located by a short walk from the previous one.
-std::vector<int> insertion_order(std::span<const glm::dvec2> p, glm::dvec2 lo, double size) {
-  const int n = int(p.size());
-  const int side = std::max(1, int(std::sqrt(n / 4.0)));
-  std::vector<std::pair<std::int64_t, int>> keyed(n);
-  for (int i = 0; i < n; ++i) {
-    const int cx = std::clamp(int((p[i].x - lo.x) / size * side), 0, side - 1);
-    const int cy = std::clamp(int((p[i].y - lo.y) / size * side), 0, side - 1);
-    const int x = cy % 2 ? side - 1 - cx : cx;
-    keyed[i] = {std::int64_t(cy) * side + x, i};
+// Position of cell (x, y) along a Hilbert curve over a 2^16 x 2^16 grid: cells close on the
+// curve are close in the plane.
+std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y) {
+  std::uint64_t d = 0;
+  for (std::uint32_t s = 1u << 15; s > 0; s >>= 1) {
+    const std::uint32_t rx = (x & s) ? 1 : 0, ry = (y & s) ? 1 : 0;
+    d += std::uint64_t(s) * s * ((3 * rx) ^ ry);
+    if (ry == 0) {  // rotate the quadrant so the curve stays continuous
+      if (rx == 1) x = 0xffffu - x, y = 0xffffu - y;
+      std::swap(x, y);
+    }
   }
+  return d;
+}
+
+// Insertion in Hilbert order: each point is found by a short walk from the previous one, and the
+// triangulated region grows as a compact blob, so a new point outside its hull sees few hull
+// edges. (Rows walked alternately left and right, as before, put every point of a new row outside
+// the hull, where its cavity could span the row: a measure of 1M elements took 49 s, now 12 s. A biased
+// randomized order was faster still but dropped hull triangles on a cocircular lattice.)
+// A coordinate of the unit box on the Hilbert grid.
+std::uint32_t unit_cell(double v) { return std::uint32_t(std::clamp(v * 65535.0, 0.0, 65535.0)); }
+
+// `p` lies in the unit box.
+std::vector<int> insertion_order(std::span<const glm::dvec2> p) {
+  const int n = int(p.size());
+  std::vector<std::pair<std::uint64_t, int>> keyed(n);
+  for (int i = 0; i < n; ++i) keyed[i] = {hilbert_index(unit_cell(p[i].x), unit_cell(p[i].y)), i};
   std::sort(keyed.begin(), keyed.end());
   std::vector<int> order(n);
   for (int i = 0; i < n; ++i) order[i] = keyed[i].second;
@@ -106,7 +123,7 @@ std::vector<glm::ivec3> delaunay_triangulation(std::span<const glm::dvec2> point
   struct Rim { int a, b, outer; };
   std::vector<Rim> rim;
 
-  for (int i : insertion_order(std::span(p.data(), n), glm::dvec2(0), 1.0)) {
+  for (int i : insertion_order(std::span(p.data(), n))) {
     const glm::dvec2 q = p[i];
     // Walk to the triangle containing q; a bounded walk falls back to a scan.
     int t = last;
@@ -220,9 +237,22 @@ std::vector<glm::ivec3> delaunay_triangulation(std::span<const glm::dvec2> point
     last = fan.empty() ? last : fan[0];
   }
 
-  std::vector<glm::ivec3> out;
+  // Canonical: each triangle from its lowest index, triangles along the Hilbert curve through
+  // their centroids. The triangulation does not depend on the insertion order; this way neither
+  // does what is built on its order, and loops over the triangles walk the plane coherently.
+  std::vector<std::pair<std::uint64_t, glm::ivec3>> keyed;
   for (size_t t = 0; t < m.v.size(); ++t)
-    if (alive[t] && m.v[t][0] < n && m.v[t][1] < n && m.v[t][2] < n) out.push_back(m.v[t]);
+    if (alive[t] && m.v[t][0] < n && m.v[t][1] < n && m.v[t][2] < n) {
+      glm::ivec3 t3 = m.v[t];
+      while (t3.x > t3.y || t3.x > t3.z) t3 = glm::ivec3(t3.y, t3.z, t3.x);
+      const glm::dvec2 c = (p[t3.x] + p[t3.y] + p[t3.z]) / 3.0;
+      keyed.push_back({(hilbert_index(unit_cell(c.x), unit_cell(c.y)) << 32) | std::uint32_t(t3.x), t3});
+    }
+  std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) {
+    return a.first != b.first ? a.first < b.first : std::tie(a.second.y, a.second.z) < std::tie(b.second.y, b.second.z);
+  });
+  std::vector<glm::ivec3> out(keyed.size());
+  for (size_t t = 0; t < keyed.size(); ++t) out[t] = keyed[t].second;
   return out;
 }
 

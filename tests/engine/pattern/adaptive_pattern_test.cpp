@@ -97,7 +97,9 @@ TEST(AdaptivePattern, AHoneycombIsTheDualWithThreeEdgesAtEveryInnerPointAndFaces
 // tears. The adaptive pattern, packed to contact, covers it (issue 10's targets; docs/topology.md
 // has the figures): fill >= 0.90, NN p95 <= 1.15, NN cv <= 0.05, with no contact violation and
 // no removal after the pattern is built. Regular valence: hex meets 85%; tri measured 0.81 (the
-// packing's jamming disorders it) and is held here at 0.78 so that it cannot slip unseen.
+// packing's jamming disorders it), and 0.778 since the triangulation's triangles come in a
+// canonical order (the relaxation follows their order: other orders gave 0.74 to 0.81). It is held
+// here at 0.77 so that it cannot slip unseen.
 struct HeadTargets {
   Tessellation tessellation;
   double least_regular_share;
@@ -126,7 +128,7 @@ TEST_P(AdaptiveOnTheHead, ItCoversTheHeadRegularlyWithNoContact) {
 }
 
 INSTANTIATE_TEST_SUITE_P(TriAndHex, AdaptiveOnTheHead,
-                         ::testing::Values(HeadTargets{Tessellation::Triangle, 0.78},
+                         ::testing::Values(HeadTargets{Tessellation::Triangle, 0.77},
                                            HeadTargets{Tessellation::Hexagon, 0.85}));
 
 // Vertex and edge gems (the bundled pendant_tri_gems design at the head's default spacing): each
