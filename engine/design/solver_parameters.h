@@ -46,8 +46,8 @@ struct SliderRange {
 constexpr double kNoLimit = std::numeric_limits<double>::infinity();
 
 // X(type, name, default, valid range, slider range, unit, help). The paper's defaults for c, m,
-// alpha, beta, gamma, the lambdas, the mu's and filter_max; dt, threshold, filter_base and
-// stray_patience are our measured choices where the paper is silent or ambiguous (docs/solver.md).
+// alpha, beta, gamma, the lambdas, the mu's and filter_max; dt, threshold, filter_base,
+// stray_patience and coarse_levels are our measured choices where the paper is silent or ambiguous (docs/solver.md).
 #define PAVER_SOLVER_PARAMETERS(X)                                                                              \
   X(double, c, 0.0, ValueRange::at_least(0), SliderRange({0, 1}), "x D_ab",                                    \
     "Uniform margin: every target length grows by c D_ab (eq. 5). c + m >= 0.")                                \
@@ -81,7 +81,11 @@ constexpr double kNoLimit = std::numeric_limits<double>::infinity();
     "Which l_ab the filter's clamp uses: \"current\" (recomputed every iteration from the distortion) or "     \
     "\"initial\" (fixed at initialisation); the paper is ambiguous (docs/solver.md).")                         \
   X(int, stray_patience, 10, ValueRange::closed(0, 1000000), SliderRange({0, 1000}), "iterations",             \
-    "A particle pulled back onto the map this many iterations in a row is retired (0 = never).")
+    "A particle pulled back onto the map this many iterations in a row is retired (0 = never).")              \
+  X(int, coarse_levels, 8, ValueRange::closed(0, 16), SliderRange({0, 8}), "levels",                            \
+    "Multilevel start: a large lattice first takes the shape of the same design relaxed at 2x, 4x, ... its "    \
+    "spacing (at most this many levels, each of 1,000 points or more), so that it relaxes within the "          \
+    "iteration limit; 0 = the paper's start from the regular lattice (docs/solver.md).")
 
 struct SolverParams {
 #define PAVER_SOLVER_FIELD(type, name, default_value, range, slider, unit, help) type name = default_value;

@@ -162,7 +162,8 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
 
   t0 = start("measure_initial");
   const PlacedElements initial = place_all_elements(map, pavement.pattern, pavement.points, design, options.postprocess);
-  pavement.before = measure_pavement(map, pavement.pattern, pavement.points, initial.elements, basis);
+  pavement.before =
+      measure_pavement(map, pavement.pattern, pavement.points, initial.elements, basis, nullptr, Measure::Counts);
   pavement.timings.emplace_back("measure_initial", ms_since(t0));
 
   pavement.retired.assign(pavement.points.size(), 0);
@@ -182,7 +183,8 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
     pavement.timings.emplace_back("optimize", ms_since(t0));
     t0 = start("measure_paper");
     pavement.elements = place(pavement.points, {});
-    pavement.paper = measure_pavement(map, pavement.pattern, pavement.points, pavement.elements, basis, &pavement.retired);
+    pavement.paper = measure_pavement(map, pavement.pattern, pavement.points, pavement.elements, basis,
+                                      &pavement.retired, Measure::Counts);
     pavement.timings.emplace_back("measure_paper", ms_since(t0));
     if (options.resolve_collisions && !design.elements.allow_overlap) {
       t0 = start("resolve_collisions");
@@ -194,14 +196,21 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
     const SolverSurface surface = make_solver_surface(map);
     SpringSystem system = make_spring_system(pavement.pattern);
     const SolverFactory factory = options.solver ? options.solver : cpu_solver_factory(options.threads);
+    const PatternAtSpacing pattern_at = [&](double spacing) {
+      PatternDesign coarser = design.pattern;
+      coarser.spacing = spacing;
+      return build_pattern(map, make_design_cell(coarser), design.placement);
+    };
+    pavement.coarse_start =
+        coarse_start(surface, system, pattern_at, design.solver, design.pattern.spacing, factory, options.stop);
     pavement.solve = factory(surface, system, design.solver, design.pattern.spacing)->solve(options.observer, options.stop);
     for (int i = 0; i < system.particle_count(); ++i) pavement.points[i] = glm::dvec2(system.position[i]);
     pavement.timings.emplace_back("optimize", ms_since(t0));
 
     t0 = start("measure_paper");
     pavement.elements = place(pavement.points, system.stray_count);
-    pavement.paper =
-        measure_pavement(map, pavement.pattern, pavement.points, pavement.elements, basis, &pavement.retired);
+    pavement.paper = measure_pavement(map, pavement.pattern, pavement.points, pavement.elements, basis,
+                                      &pavement.retired, Measure::Counts);
     pavement.timings.emplace_back("measure_paper", ms_since(t0));
     // Designs that overlap on purpose keep their overlaps.
     if (options.resolve_collisions && !design.elements.allow_overlap) {

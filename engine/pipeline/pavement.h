@@ -4,6 +4,7 @@
 // surface, post-processing, collision resolution and the quality figures. run_pipeline calls it
 // after mapping; the studio re-runs it (through run_pipeline, on its map) on every design change.
 #include "pattern/particle_relaxation.h"
+#include "solver/coarse_start.h"
 #include "solver/collision_resolution.h"
 #include "elements/refill.h"
 #include "elements/rim_rows.h"
@@ -56,6 +57,7 @@ struct Pavement {
   int filled = 0;                    // E-elements added by boundary filling
   int eliminated = 0;                // elements removed for crossing the boundary
   SolveReport solve;                 // iterations, stop reason, time
+  CoarseStartReport coarse_start;    // the lattice's multilevel start (solver/coarse_start.h)
   CollisionResolutionReport resolution;
   RefillReport refill;
   RimRowReport rim_rows;

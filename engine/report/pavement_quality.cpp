@@ -173,8 +173,10 @@ QualityBasis quality_basis(const SurfaceMap& map, const UnitCell& cell, const El
 
 PavementQuality measure_pavement(const SurfaceMap& map, const Pattern& pattern,
                                  const std::vector<glm::dvec2>& points, const Elements& elements,
-                                 const QualityBasis& basis, const std::vector<std::uint8_t>* retired) {
+                                 const QualityBasis& basis, const std::vector<std::uint8_t>* retired,
+                                 Measure depth) {
   PavementQuality q;
+  q.structure_measured = depth == Measure::Full;
   q.elements = long(elements.size());
   q.vertex_elements = std::count(elements.kind.begin(), elements.kind.end(), ElementKind::Vertex);
   q.edge_elements = q.elements - q.vertex_elements;
@@ -205,7 +207,7 @@ PavementQuality measure_pavement(const SurfaceMap& map, const Pattern& pattern,
     disc_area += std::numbers::pi * 0.25 * elements.diameter[i] * elements.diameter[i];
   }
   q.coverage = disc_area / surface_area(map.mesh);
-  if (basis.regular_valence > 0) {
+  if (basis.regular_valence > 0 && q.structure_measured) {
     const std::vector<int> valence = lattice_valences(elements, basis.regular_valence, basis.spacing, map.period);
     long regular = 0;
     for (size_t i = 0; i < elements.size(); ++i) {
@@ -215,7 +217,7 @@ PavementQuality measure_pavement(const SurfaceMap& map, const Pattern& pattern,
     }
     q.regular_valence_share = q.interior_vertex_elements > 0 ? double(regular) / q.interior_vertex_elements : 0;
   }
-  q.spacing_curvature_spearman = spacing_curvature_correlation(map, elements);
+  if (q.structure_measured) q.spacing_curvature_spearman = spacing_curvature_correlation(map, elements);
   return q;
 }
 
@@ -224,7 +226,7 @@ nlohmann::json to_json(const PavementQuality& q) {
     return nlohmann::json{{"min", d.min}, {"p5", d.p5}, {"median", d.median}, {"p95", d.p95},
                           {"max", d.max}, {"mean", d.mean}, {"cv", d.cv}};
   };
-  return nlohmann::json{
+  nlohmann::json json{
       {"elements", q.elements},
       {"vertex_elements", q.vertex_elements},
       {"edge_elements", q.edge_elements},
@@ -245,6 +247,10 @@ nlohmann::json to_json(const PavementQuality& q) {
       {"coverage", q.coverage},
       {"spacing_curvature_spearman", q.spacing_curvature_spearman},
   };
+  if (!q.structure_measured)
+    for (const char* key : {"interior_vertex_elements", "regular_valence_share", "spacing_curvature_spearman"})
+      json[key] = nullptr;
+  return json;
 }
 
 std::vector<std::array<std::uint8_t, 3>> contact_colours(const Elements& elements, double gap) {

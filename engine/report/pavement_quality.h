@@ -59,7 +59,13 @@ struct PavementQuality {
   long boundary_crossings = 0;      // elements nearer the surface boundary than their radius
   double coverage = 0;              // sum of element disc areas / surface area
   double spacing_curvature_spearman = 0;  // rank correlation of local spacing and curvature
+  bool structure_measured = true;   // false: valence share and spearman were not measured (Measure::Counts)
 };
+
+// Full: every figure. Counts: all but the lattice valence and the spacing-curvature correlation,
+// the two that cost a triangulation or a sort of every element (5 s and 1 s at 1M elements): the
+// pipeline's rows before the final one need them for nothing.
+enum class Measure { Full, Counts };
 
 // |P_a P_b| / L_ab for every non-virtual pattern edge whose ends are both in use (not retired),
 // lifted in double (eq. 5, 6).
@@ -84,7 +90,8 @@ QualityBasis quality_basis(const SurfaceMap& map, const UnitCell& cell, const El
 
 PavementQuality measure_pavement(const SurfaceMap& map, const Pattern& pattern,
                                  const std::vector<glm::dvec2>& points, const Elements& elements,
-                                 const QualityBasis& basis, const std::vector<std::uint8_t>* retired = nullptr);
+                                 const QualityBasis& basis, const std::vector<std::uint8_t>* retired = nullptr,
+                                 Measure depth = Measure::Full);
 
 nlohmann::json to_json(const PavementQuality& q);
 

@@ -4,8 +4,10 @@
 // strays are pulled back, or far apart in the pattern but near in space on a folded surface.
 // Each round finds every colliding pair in 3D (all pairs, spatial hash), adds a contact spring
 // between the particles that carry the two elements (rest length = the distance they need),
-// and runs more solver iterations, so the pattern itself makes room. What still collides after
-// the last round is removed, one element per pair, and counted.
+// and runs more solver iterations, so the pattern itself makes room. Where those springs stall
+// in a wide pattern, the rounds retire particles instead, one per colliding pair and apart from
+// each other (vacancies the neighbours relax into). What still collides after the last round is
+// removed, one element per pair, and counted.
 #include "design/design.h"
 #include "elements/elements.h"
 #include "pattern/pattern.h"
@@ -31,6 +33,7 @@ struct CollisionResolutionReport {
   int rounds = 0;
   int contact_springs = 0;
   int solver_iterations = 0;
+  int retired = 0;                 // particles retired where contact springs stalled (vacancies)
   int removed = 0;                 // elements removed because they still collided
   double milliseconds = 0;
 };

@@ -171,7 +171,8 @@ TEST(DesignIo, WritesEveryKey) {
   EXPECT_EQ(j.at("elements").at("vertex").size(), 3u);
   EXPECT_EQ(j.at("placement").size(), 4u);
   EXPECT_EQ(j.at("placement").at("band_rows"), "across");
-  EXPECT_EQ(j.at("solver").size(), 16u);
+  EXPECT_EQ(j.at("solver").size(), 17u);
+  EXPECT_EQ(j.at("solver").at("coarse_levels"), 8);
   const json full = design_to_json(non_default_design());
   EXPECT_EQ(full.at("pattern").at("operators").at(1).size(), 5u);
   EXPECT_EQ(full.at("pattern").at("operators").at(1).at("op"), "add");
