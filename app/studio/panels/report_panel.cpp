@@ -47,7 +47,17 @@ void quality_table(const Pavement& p) {
   row("spring dev. p95", [](const PavementQuality& x) { return x.spring_deviation_p95; }, "%.3f");
   row("boundary crossings", [](const PavementQuality& x) { return x.boundary_crossings; }, "%ld");
   row("coverage", [](const PavementQuality& x) { return x.coverage; }, "%.3f");
-  row("spacing~curvature", [](const PavementQuality& x) { return x.spacing_curvature_spearman; }, "%.3f");
+  // Measured for the final pavement only (Measure::Counts before it): "-" rather than a false 0.
+  ImGui::TableNextRow();
+  ImGui::TableNextColumn();
+  ImGui::TextUnformatted("spacing~curvature");
+  for (const PavementQuality* column : q) {
+    ImGui::TableNextColumn();
+    if (column->structure_measured)
+      ImGui::Text("%.3f", column->spacing_curvature_spearman);
+    else
+      ImGui::TextUnformatted("-");
+  }
   ImGui::EndTable();
 }
 
