@@ -266,12 +266,13 @@ int run_run(const RunArgs& args) {
               "%d removed still colliding\n",
               backend.name.c_str(), backend.device.empty() ? "" : " on ", backend.device.c_str(), pavement.solve.iterations, std::string(stop_reason_name(pavement.solve.reason)).c_str(),
               pavement.solve.last_max_step, pavement.filled, pavement.eliminated, pavement.resolution.removed);
-  if (!pavement.coarse_start.level_points.empty() || pavement.resolution.retired > 0) {
+  if (!pavement.coarse_start.level_points.empty()) {
     std::printf("         multilevel start:");
     for (int points : pavement.coarse_start.level_points) std::printf(" %d", points);
-    std::printf(" points (%d particles found no room), %d vacancies where contact springs stalled\n",
-                pavement.coarse_start.retired, pavement.resolution.retired);
+    std::printf(" points, %d particles found no room\n", pavement.coarse_start.retired);
   }
+  if (pavement.resolution.retired > 0)
+    std::printf("         %d vacancies where contact springs stalled\n", pavement.resolution.retired);
   std::printf("elements %zu (%ld V, %ld E), %d of them added into bare regions", pavement.elements.size(),
               counts.vertex_elements, counts.edge_elements, pavement.refill.added);
   if (is_atlas(map)) std::printf(" (%d across the seams)", pavement.refill.on_seams);

@@ -54,7 +54,9 @@ private:
   // std::unordered_map cost a third of a 1M-element run's time in lookups).
   static constexpr std::uint64_t kEmpty = ~std::uint64_t(0);  // CellGrid keys use 63 bits
   std::size_t find_slot(std::uint64_t key) const {
-    std::size_t slot = std::size_t((key * 0x9e3779b97f4a7c15ull) >> 20) & (keys_.size() - 1);
+    // The product's high bits depend on every bit of the key (its low bits only on the key's low
+    // bits, which hold z and y alone: a flat part would crowd each row of cells into one slot).
+    std::size_t slot = std::size_t((key * 0x9e3779b97f4a7c15ull) >> shift_);
     while (keys_[slot] != key && keys_[slot] != kEmpty) slot = (slot + 1) & (keys_.size() - 1);
     return slot;
   }
@@ -65,8 +67,10 @@ private:
   }
   void grow(std::size_t wanted) {
     std::size_t size = 64;
-    while (size < wanted) size *= 2;
+    int bits = 6;
+    while (size < wanted) size *= 2, ++bits;
     if (size <= keys_.size()) return;
+    shift_ = 64 - bits;
     std::vector<std::uint64_t> keys = std::move(keys_);
     std::vector<int> heads = std::move(head_);
     keys_.assign(size, kEmpty);
@@ -81,6 +85,7 @@ private:
   std::vector<int> head_;            // last point inserted in the slot's cell, -1 when none
   std::vector<int> next_;            // the point inserted before it in the same cell
   std::size_t cells_ = 0;
+  int shift_ = 58;                   // 64 - log2(table size)
 };
 
 }  // namespace paver

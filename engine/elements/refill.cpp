@@ -77,7 +77,7 @@ RefillReport refill_bare_regions(const SurfaceMap& map, Elements& elements, cons
   std::vector<int> seeds(elements.size());
   for (int i = 0; i < int(elements.size()); ++i) seeds[i] = i;
   LiftedPoints seed_lift, lifted;
-  std::vector<glm::dvec3> near;
+  std::vector<int> near;
   for (; !seeds.empty() && report.waves < kMaxWaves; ++report.waves) {
     if (stop && stop->load()) break;
     std::vector<glm::dvec2> seed_uv;
@@ -104,18 +104,20 @@ RefillReport refill_bare_regions(const SurfaceMap& map, Elements& elements, cons
       // Inside a pattern most directions point at a neighbour: they are dropped here, before the
       // lifts and checks that cost per candidate (a 1M-element lattice would offer 12M). The
       // candidate lands near its tangent-plane point (closer than half the step on any surface
-      // the pattern can pave), so one with an element within half the step of that point would
-      // fail the check below anyway.
+      // the pattern can pave), so one with an element within half its contact distance of that
+      // point would fail the check below anyway.
       near.clear();
       hash.for_each_near(elements.position[s], [&](int j) {
-        if (j != s) near.push_back(elements.position[j]);
+        if (j != s) near.push_back(j);
       });
       for (int d = 0; d < kDirections; ++d) {
         const double angle = 2 * std::numbers::pi * d / kDirections;
         const glm::dvec3 step = need * (std::cos(angle) * t1 + std::sin(angle) * t2);
         const glm::dvec3 tangent_point = elements.position[s] + step;
-        if (std::any_of(near.begin(), near.end(),
-                        [&](const glm::dvec3& q) { return glm::length(q - tangent_point) < 0.5 * need; }))
+        if (std::any_of(near.begin(), near.end(), [&](int q) {
+              return glm::length(elements.position[q] - tangent_point) <
+                     0.5 * std::min(need, contact_distance(diameter, elements.diameter[q], gap));
+            }))
           continue;
         candidates.push_back(elements.uv[s] + uv_step(step));
         wanted.push_back(need);

@@ -201,8 +201,10 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
       coarser.spacing = spacing;
       return build_pattern(map, make_design_cell(coarser), design.placement);
     };
-    pavement.coarse_start =
-        coarse_start(surface, system, pattern_at, design.solver, design.pattern.spacing, factory, options.stop);
+    // An atlas's charts lie side by side in one uv frame: a field over it would blend them.
+    if (!is_atlas(map))
+      pavement.coarse_start =
+          coarse_start(surface, system, pattern_at, design.solver, design.pattern.spacing, factory, options.stop);
     pavement.solve = factory(surface, system, design.solver, design.pattern.spacing)->solve(options.observer, options.stop);
     for (int i = 0; i < system.particle_count(); ++i) pavement.points[i] = glm::dvec2(system.position[i]);
     pavement.timings.emplace_back("optimize", ms_since(t0));

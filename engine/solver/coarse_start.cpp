@@ -78,6 +78,9 @@ CoarseStartReport coarse_start(const SolverSurface& surface, SpringSystem& syste
       if (stray_count[i] == kRetired && system.stray_count[i] != kRetired) ++report.retired;
     system.position = std::move(position);
     system.stray_count = std::move(stray_count);
+  } else {
+    report.level_points.clear();  // stopped: nothing of the levels was used
+    report.level_iterations.clear();
   }
   report.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return report;

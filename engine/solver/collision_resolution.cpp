@@ -1,7 +1,6 @@
 #include "solver/collision_resolution.h"
 
 #include "elements/contact_rule.h"
-#include "solver/coarse_start.h"
 
 #include "elements/element_proximity.h"
 #include "map/lifting.h"
@@ -24,6 +23,10 @@ int carrier(const ElementAnchor& anchor, int avoid) {
   return nearer == avoid && other >= 0 ? other : nearer;
 }
 
+// A pattern this large is too wide for its rows to pass their excess out to the rim within a
+// round's 60 iterations (about 30 rows across a 1,000-point pattern relax in 200, docs/solver.md).
+constexpr int kWidePatternParticles = 4000;
+
 // Retires vertex elements' particles where pairs of them collide, most overlapped pair first, in
 // the one of the two in more pairs; returns how many. A particle within two springs of one
 // retired in this round is spared, so that vacancies stay apart and the next round sees how the
@@ -33,11 +36,8 @@ int retire_one_of_each_pair(const Pattern& pattern, const Elements& elements, st
                             const ElementsDesign& design, SpringSystem& system) {
   std::vector<int> count(elements.size(), 0);
   for (const Collision& c : collisions) ++count[c.i], ++count[c.j];
-  const auto overlap = [&](const Collision& c) {
-    return c.distance / contact_distance(elements.diameter[c.i], elements.diameter[c.j], 0.0);
-  };
   std::sort(collisions.begin(), collisions.end(),
-            [&](const Collision& x, const Collision& y) { return overlap(x) < overlap(y); });
+            [](const Collision& x, const Collision& y) { return x.overlap > y.overlap; });
   std::vector<std::uint8_t> spared(system.particle_count(), 0);
   const auto spare_around = [&](int p) {
     for (int i = system.neighbor_start[p]; i < system.neighbor_start[p + 1]; ++i) {
@@ -117,10 +117,9 @@ Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface,
     // room (rows squeezed along a line, typical of a large pattern), pushing two apart presses
     // the next pair together. A vacancy is the defect that fits there: one particle of each
     // pair that two vertex elements make is retired, and its neighbours relax into the space.
-    // Only a pattern too wide for its rows to pass their excess out to the rim within a round's
-    // iterations (the coarse start's reason, solver/coarse_start.h) stalls this way: a small one
-    // can take a few rounds of more collisions before its contact springs clear them all.
-    const bool wide = system.particle_count() >= 4 * kCoarseStartMinPoints;
+    // Only a wide pattern stalls this way: a small one can take a few rounds of more collisions
+    // before its contact springs clear them all.
+    const bool wide = system.particle_count() >= kWidePatternParticles;
     const bool stalled = wide && round > 0 && double(collisions.size()) > 0.8 * double(previous);
     previous = collisions.size();
     if (stalled) {
@@ -129,7 +128,8 @@ Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface,
     lifted.resize(points.size());
     lift_points(map, points, lifted);
     for (const Collision& c : collisions) {
-      if (stalled) break;
+      // In a stalled round, pairs of two vertex elements were given vacancies above.
+      if (stalled && elements.kind[c.i] == ElementKind::Vertex && elements.kind[c.j] == ElementKind::Vertex) continue;
       const ElementAnchor ai = element_anchor(pattern, elements, c.i, design.elements);
       const ElementAnchor aj = element_anchor(pattern, elements, c.j, design.elements);
       const int pj = carrier(aj, -1);

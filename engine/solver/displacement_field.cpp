@@ -41,28 +41,34 @@ void DisplacementField::finish() {
     return;
   }
   // Grow the known region one ring at a time: a new node takes the mean of its known neighbours.
-  std::vector<int> ring;
-  for (bool grew = true; grew;) {
-    grew = false;
-    ring.clear();
-    for (int j = 0; j < ny_; ++j)
-      for (int i = 0; i < nx_; ++i) {
-        if (known[node(i, j)]) continue;
-        glm::dvec2 mean(0);
-        int count = 0;
-        const int di[4] = {-1, 1, 0, 0}, dj[4] = {0, 0, -1, 1};
-        for (int k = 0; k < 4; ++k) {
-          const int a = i + di[k], b = j + dj[k];
-          if (a < 0 || b < 0 || a >= nx_ || b >= ny_ || known[node(a, b)] != 1) continue;
-          mean += sum_[node(a, b)];
-          ++count;
-        }
-        if (count == 0) continue;
-        sum_[node(i, j)] = mean / double(count);
-        ring.push_back(node(i, j));
+  // Each ring is found from the one before, so the growth costs the grid once.
+  const int di[4] = {-1, 1, 0, 0}, dj[4] = {0, 0, -1, 1};
+  std::vector<int> ring, next;
+  for (int n = 0; n < int(known.size()); ++n)
+    if (known[n]) ring.push_back(n);
+  std::vector<std::uint8_t> queued(known);
+  while (!ring.empty()) {
+    next.clear();
+    for (int n : ring)
+      for (int k = 0; k < 4; ++k) {
+        const int a = n % nx_ + di[k], b = n / nx_ + dj[k];
+        if (a < 0 || b < 0 || a >= nx_ || b >= ny_ || queued[node(a, b)]) continue;
+        queued[node(a, b)] = 1;
+        next.push_back(node(a, b));
       }
-    for (int n : ring) known[n] = 1;
-    grew = !ring.empty();
+    for (int n : next) {
+      glm::dvec2 mean(0);
+      int count = 0;
+      for (int k = 0; k < 4; ++k) {
+        const int a = n % nx_ + di[k], b = n / nx_ + dj[k];
+        if (a < 0 || b < 0 || a >= nx_ || b >= ny_ || !known[node(a, b)]) continue;
+        mean += sum_[node(a, b)];
+        ++count;
+      }
+      sum_[n] = mean / double(count);  // count >= 1: it was queued from a known neighbour
+    }
+    for (int n : next) known[n] = 1;
+    ring.swap(next);
   }
 }
 
