@@ -284,10 +284,7 @@ int run_run(const RunArgs& args) {
                 pavement.rim_rows.made_way);
   const BillOfStones bill = bill_of_stones(pavement.elements, pavement.design.units);
   for (const StoneRow& row : bill.rows) {
-    // Hundredths of a mm is how stones are sold; a sub-0.1 mm element (a 1M-element test) keeps
-    // three digits rather than reading "0.00 mm".
-    std::printf(row.diameter_mm >= 0.1 ? "stones   %ld %s of %.2f mm" : "stones   %ld %s of %.3g mm", row.count,
-                std::string(shape_name(row.shape)).c_str(), row.diameter_mm);
+    std::printf("stones   %ld %s of %.2f mm", row.count, std::string(shape_name(row.shape)).c_str(), row.diameter_mm);
     if (row.carat_each) std::printf(", %.4f ct each, %.3f ct", *row.carat_each, row.carat_total);
     std::printf("\n");
   }
