@@ -50,12 +50,12 @@ struct Level {
     for (std::size_t i = 0; i < position.size(); ++i) {
       if (stray_count[i] == kRetired) continue;
       const glm::vec2 moved = glm::vec2(glm::dvec2(position[i]) + field.at(glm::dvec2(position[i])));
-      if (on_map(surface, moved)) {
+      // Every particle starts on the map (the pattern is trimmed to it; earlier levels only move
+      // particles onto it), so one moved off it found no room where the coarse pattern thinned out.
+      if (on_map(surface, moved))
         position[i] = moved;
-      } else if (on_map(surface, position[i])) {
-        // The coarse pattern thinned out here: this particle has no room on the map.
+      else
         stray_count[i] = kRetired;
-      }
     }
     return true;
   }
