@@ -15,7 +15,7 @@ void main() {
     vec2 pa = position_in[a];
     vec2 next = pa;
     float step_length = 0.0f;
-    if (!solver_done() && stray_count[a] != kRetired) {
+    if (!solver_done() && particle_moves(stray_count[a])) {
       SpringSums sums = no_spring_sums();
       for (int i = neighbor_start[a]; i < neighbor_start[a + 1]; ++i) {
         int nb = neighbor[i];

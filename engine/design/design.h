@@ -4,6 +4,7 @@
 #include "elements/element_shape.h"
 #include "pattern/placement.h"
 #include "pattern/unit_cell.h"
+#include "design/element_edits.h"
 #include "design/solver_parameters.h"
 
 #include <algorithm>
@@ -85,6 +86,7 @@ struct Design {
   ElementsDesign elements;
   Placement placement;
   SolverParams solver;
+  ElementEdits edits;                     // single elements pinned, moved, deleted, added
 };
 
 // Paves stones of diameter `stone` (surface units, > 0) with the design's gap between neighbours:

@@ -3,6 +3,7 @@
 namespace paver {
 
 void Elements::clear() {
+  id.clear();
   kind.clear();
   source.clear();
   spec.clear();
@@ -14,6 +15,7 @@ void Elements::clear() {
 }
 
 void Elements::reserve(std::size_t n) {
+  id.reserve(n);
   kind.reserve(n);
   source.reserve(n);
   spec.reserve(n);
@@ -27,6 +29,7 @@ void Elements::reserve(std::size_t n) {
 void Elements::push_back(ElementKind k, int source_index, int spec_index, glm::dvec2 uv_centre,
                          glm::dvec3 centre, glm::dvec3 unit_normal, double element_diameter,
                          ShapeKind s) {
+  id.push_back(kNoElementId);
   kind.push_back(k);
   source.push_back(source_index);
   spec.push_back(spec_index);
@@ -55,6 +58,7 @@ void append_to(std::vector<T>& v, const std::vector<T>& more) {
 }  // namespace
 
 void Elements::erase_flagged(const std::vector<std::uint8_t>& remove) {
+  erase_flagged_from(id, remove);
   erase_flagged_from(kind, remove);
   erase_flagged_from(source, remove);
   erase_flagged_from(spec, remove);
@@ -66,6 +70,7 @@ void Elements::erase_flagged(const std::vector<std::uint8_t>& remove) {
 }
 
 void Elements::append(const Elements& other) {
+  append_to(id, other.id);
   append_to(kind, other.kind);
   append_to(source, other.source);
   append_to(spec, other.spec);

@@ -27,7 +27,11 @@ inline std::array<std::uint8_t, 3> kind_colour(ElementKind kind) {
   return {128, 128, 128};
 }
 
+// The id of an element that number_elements (elements/element_ids.h) has not named yet.
+inline constexpr int kNoElementId = -1;
+
 struct Elements {
+  std::vector<int> id;              // stable id (elements/element_ids.h); kNoElementId until numbered
   std::vector<ElementKind> kind;
   std::vector<int> source;          // pattern point (V), pattern edge (E), or -1 - crossing edge (filling)
   std::vector<int> spec;            // index into the design's edge-element list (E), 0 for V

@@ -88,6 +88,13 @@ public:
     }
   }
 
+  // Reads object[key] into `out`; an edit without its element's id or position means nothing.
+  template <class T>
+  void required(const json& object, const std::string& path, const char* key, T& out) const {
+    if (!object.contains(key)) fail("missing key '" + join(path, key) + "'");
+    field(object, path, key, out);
+  }
+
   // Reads object[key] into `out` when present; an absent key keeps the default already in `out`.
   template <class T>
   void field(const json& object, const std::string& path, const char* key, T& out) const {
@@ -226,6 +233,32 @@ public:
     field(value, path, "scale", out.scale);
   }
 
+  void read(const json& value, const std::string& path, MovedParticle& out) const {
+    check_object(value, path, {"id", "uv", "pinned"});
+    required(value, path, "id", out.id);
+    required(value, path, "uv", out.uv);
+    field(value, path, "pinned", out.pinned);
+  }
+
+  void read(const json& value, const std::string& path, DeletedElement& out) const {
+    check_object(value, path, {"id", "uv"});
+    required(value, path, "id", out.id);
+    required(value, path, "uv", out.uv);
+  }
+
+  void read(const json& value, const std::string& path, AddedElement& out) const {
+    check_object(value, path, {"id", "uv"});
+    required(value, path, "id", out.id);
+    required(value, path, "uv", out.uv);
+  }
+
+  void read(const json& value, const std::string& path, ElementEdits& out) const {
+    check_object(value, path, {"moved", "deleted", "added"});
+    field(value, path, "moved", out.moved);
+    field(value, path, "deleted", out.deleted);
+    field(value, path, "added", out.added);
+  }
+
   void read(const json& value, const std::string& path, Placement& out) const {
     check_object(value, path, {"offset", "rotation_deg", "scale", "band_rows"});
     field(value, path, "offset", out.offset);
@@ -357,6 +390,18 @@ Json to_json(const Design& design) {
         p.member);
   }
 
+  Json moved = Json::array(), deleted = Json::array(), added = Json::array();
+  for (const MovedParticle& m : design.edits.moved)
+    moved.push_back(Json{{"id", m.id}, {"uv", Json::array({m.uv.x, m.uv.y})}, {"pinned", m.pinned}});
+  for (const DeletedElement& d : design.edits.deleted)
+    deleted.push_back(Json{{"id", d.id}, {"uv", Json::array({d.uv.x, d.uv.y})}});
+  for (const AddedElement& a : design.edits.added)
+    added.push_back(Json{{"id", a.id}, {"uv", Json::array({a.uv.x, a.uv.y})}});
+  Json edits = Json::object();
+  edits["moved"] = std::move(moved);
+  edits["deleted"] = std::move(deleted);
+  edits["added"] = std::move(added);
+
   Json root = Json::object();
   root["version"] = Design::kVersion;
   root["units"] = std::string(units_name(design.units));
@@ -364,6 +409,7 @@ Json to_json(const Design& design) {
   root["elements"] = std::move(elements_json);
   root["placement"] = std::move(placement);
   root["solver"] = std::move(solver);
+  root["edits"] = std::move(edits);
   return root;
 }
 
@@ -426,13 +472,14 @@ Design design_from_json(const nlohmann::json& json, const std::string& source) {
     reader.fail("'version' is " + std::to_string(number) + ", but this build reads only version " +
                 std::to_string(Design::kVersion));
 
-  reader.check_object(json, "", {"version", "units", "pattern", "elements", "placement", "solver"});
+  reader.check_object(json, "", {"version", "units", "pattern", "elements", "placement", "solver", "edits"});
   Design design;
   reader.field(json, "", "units", design.units);
   reader.field(json, "", "pattern", design.pattern);
   reader.field(json, "", "elements", design.elements);
   reader.field(json, "", "placement", design.placement);
   reader.field(json, "", "solver", design.solver);
+  reader.field(json, "", "edits", design.edits);
   validate_design(design, source);
   return design;
 }

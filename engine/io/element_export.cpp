@@ -27,7 +27,7 @@ using Colour = std::array<std::uint8_t, 3>;
 // Elements is a struct of arrays; a short array would be read past its end.
 void check_sizes(const Elements& e) {
   const std::size_t n = e.size();
-  if (e.source.size() != n || e.spec.size() != n || e.uv.size() != n || e.position.size() != n ||
+  if (e.id.size() != n || e.source.size() != n || e.spec.size() != n || e.uv.size() != n || e.position.size() != n ||
       e.normal.size() != n || e.diameter.size() != n || e.shape.size() != n)
     throw std::invalid_argument("Elements: its arrays have different lengths");
 }
@@ -170,7 +170,8 @@ void write_placements_csv(const std::filesystem::path& path, const Elements& ele
     ChunkedWriter w(out, stop);
     w.text("id,kind,x,y,z,nx,ny,nz,diameter,u,v\n");
     for (std::size_t i = 0; i < elements.size(); ++i) {
-      w.integer(static_cast<long long>(i));
+      // Unnumbered elements (a caller that placed them itself) are listed by their index.
+      w.integer(static_cast<long long>(elements.id[i] == kNoElementId ? int(i) : elements.id[i]));
       w.text(elements.kind[i] == ElementKind::Vertex ? ",V" : elements.kind[i] == ElementKind::Edge ? ",E" : ",B");
       for (const double value :
            {elements.position[i].x, elements.position[i].y, elements.position[i].z,

@@ -42,7 +42,12 @@ struct Pattern {
   };
   std::vector<Defect> defects;
 
+  // The last points are the designer's added elements (design.edits.added, in order), with
+  // point_cell_vertex -1 and no edges: pattern/pattern_edits.h.
+  int added_points = 0;
+
   int point_count() const { return static_cast<int>(points.size()); }
+  int designed_point_count() const { return point_count() - added_points; }
   int edge_count() const { return static_cast<int>(edge_a.size()); }
 };
 

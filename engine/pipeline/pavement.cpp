@@ -3,10 +3,14 @@
 #include "elements/beads.h"
 #include "elements/boundary_postprocess.h"
 #include "pattern/adaptive_pattern.h"
+#include "solver/edit_relaxation.h"
 #include "solver/surface_spring_relaxation.h"
 #include "pattern/default_spacing.h"
 #include "pattern/design_overlap.h"
 #include "elements/element_placement.h"
+#include "elements/element_deletion.h"
+#include "elements/element_ids.h"
+#include "pattern/pattern_edits.h"
 #include "core/input_error.h"
 #include "report/verdict.h"
 
@@ -154,6 +158,7 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
   } else {
     pavement.pattern = build_pattern(map, pavement.cell, design.placement);
   }
+  const std::vector<EditedParticle> edited = add_edited_points(pavement.pattern, design.edits);
   pavement.points = pavement.pattern.points;
   pavement.timings.emplace_back("pattern", ms_since(t0));
   // Before any element is placed or measured: the caller's bounds (run_pipeline's output size)
@@ -195,6 +200,7 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
     t0 = start("optimize");
     const SolverSurface surface = make_solver_surface(map);
     SpringSystem system = make_spring_system(pavement.pattern);
+    set_aside_added(system, edited);
     const SolverFactory factory = options.solver ? options.solver : cpu_solver_factory(options.threads);
     const PatternAtSpacing pattern_at = [&](double spacing) {
       PatternDesign coarser = design.pattern;
@@ -206,8 +212,8 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
       pavement.coarse_start =
           coarse_start(surface, system, pattern_at, design.solver, design.pattern.spacing, factory, options.stop);
     pavement.solve = factory(surface, system, design.solver, design.pattern.spacing)->solve(options.observer, options.stop);
-    for (int i = 0; i < system.particle_count(); ++i) pavement.points[i] = glm::dvec2(system.position[i]);
     pavement.timings.emplace_back("optimize", ms_since(t0));
+    for (int i = 0; i < system.particle_count(); ++i) pavement.points[i] = glm::dvec2(system.position[i]);
 
     t0 = start("measure_paper");
     pavement.elements = place(pavement.points, system.stray_count);
@@ -221,7 +227,28 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
                                              factory, options.resolution, pavement.resolution, options.stop);
       pavement.timings.emplace_back("resolve_collisions", ms_since(t0));
     }
+    if (!edited.empty()) {
+      // The edits start from the design's own pavement and change it only around them.
+      t0 = start("edits");
+      const HeldParticles beyond = place_edits(system, edited, design.pattern.spacing);
+      for (int i = 0; i < system.particle_count(); ++i) pavement.points[i] = glm::dvec2(system.position[i]);
+      if (options.resolve_collisions && !design.elements.allow_overlap) {
+        CollisionResolutionReport around;
+        pavement.elements = resolve_collisions(map, surface, system, pavement.pattern, design, pavement.points, place,
+                                               factory, options.resolution, around, options.stop);
+        pavement.resolution.rounds += around.rounds;
+        pavement.resolution.contact_springs += around.contact_springs;
+        pavement.resolution.solver_iterations += around.solver_iterations;
+        pavement.resolution.retired += around.retired;
+        pavement.resolution.removed = around.removed;  // the final elements are this resolution's
+      } else {
+        pavement.elements = place(pavement.points, system.stray_count);
+      }
+      release_held(system, beyond);
+      pavement.timings.emplace_back("edits", ms_since(t0));
+    }
   } else {
+    for (const EditedParticle& e : edited) pavement.points[std::size_t(e.particle)] = e.to;  // unoptimized: as put
     pavement.elements = place(pavement.points, {});
     pavement.paper = pavement.before;
   }
@@ -242,6 +269,14 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
     pavement.timings.emplace_back("refill", ms_since(t0));
   }
 
+  number_elements(pavement.elements, pavement.pattern, design.edits.added);
+  if (!design.edits.deleted.empty()) {
+    t0 = start("deletions");
+    pavement.deletions_missed =
+        delete_elements(pavement.elements, design.edits, first_refill_id(pavement.pattern));
+    pavement.timings.emplace_back("deletions", ms_since(t0));
+  }
+
   t0 = start("measure");
   pavement.after =
       measure_pavement(map, pavement.pattern, pavement.points, pavement.elements, basis, &pavement.retired);
@@ -249,6 +284,7 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
   if (design.elements.beads.enabled) {
     t0 = start("beads");
     pavement.beads = place_beads(map, pavement.elements, design.elements);
+    number_beads(pavement.beads, pavement.elements);
     pavement.timings.emplace_back("beads", ms_since(t0));
   }
   pavement.design = std::move(design);
@@ -259,6 +295,19 @@ std::string three_digits(double value) {
   char text[32];
   std::snprintf(text, sizeof text, "%.3g", value);
   return text;
+}
+
+// Element ids name the elements of one pattern, and only the lattice's solver holds particles.
+void check_edits_topology(const Design& design) {
+  const ElementEdits& edits = design.edits;
+  if (edits.empty()) return;
+  if (design.pattern.topology == Topology::Auto)
+    throw InputError("edits: element edits name the elements of one pattern, but pattern.topology is \"auto\"; "
+                     "set it to \"lattice\" or \"adaptive\" (the one the edits were made on)");
+  if (design.pattern.topology == Topology::Adaptive && !(edits.moved.empty() && edits.added.empty()))
+    throw InputError(std::string("edits.") + (edits.moved.empty() ? "added" : "moved") +
+                     ": the adaptive pattern's relaxation cannot hold elements in place yet; use pattern.topology "
+                     "\"lattice\" to pin, move or add elements (deleting works on both)");
 }
 
 // Why a lattice pavement calls for the adaptive pattern: it tore or left bare patches (the
@@ -301,6 +350,7 @@ const SurfaceMap& pavement_map(const SurfaceMap& map, const Pavement& pavement) 
 }
 
 Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptions& options) {
+  check_edits_topology(design);
   // A band's lattice closes on its seamless map; the adaptive pattern grows on its annulus map.
   const SurfaceMap& lattice_map = map_for_topology(map, Topology::Lattice);
   if (design.pattern.topology == Topology::Lattice) return pave_with_topology(lattice_map, std::move(design), options);

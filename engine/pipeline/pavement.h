@@ -65,6 +65,7 @@ struct Pavement {
   // For pattern.topology "auto": which topology was kept and why (design.pattern.topology says
   // which); empty otherwise.
   std::string topology_choice;
+  int deletions_missed = 0;          // design.edits.deleted entries that found no element
   // A band's lattice is paved on its seamless map (SurfaceMap::seamless): then `points` are in
   // that map's frame, and `band_closure` says how the lattice was closed around it.
   bool seamless = false;

@@ -24,6 +24,19 @@ std::string_view start_name(ArapStart s) {
 
 }  // namespace
 
+// The designer's edits of single elements (design.edits) and what became of them.
+nlohmann::json edits_json(const Pavement& pavement) {
+  const ElementEdits& edits = pavement.design.edits;
+  int pinned = 0;
+  for (const MovedParticle& m : edits.moved) pinned += m.pinned ? 1 : 0;
+  const int deleted = int(edits.deleted.size());
+  return {{"moved", edits.moved.size()},
+          {"pinned", pinned},
+          {"added", edits.added.size()},
+          {"deleted", deleted - pavement.deletions_missed},
+          {"deletions_that_found_no_element", pavement.deletions_missed}};
+}
+
 // The beads (shared prongs): how many and how large, in mm; {"enabled": false} without them.
 nlohmann::json beads_json(const Pavement& pavement) {
   const BeadDesign& design = pavement.design.elements.beads;
@@ -170,6 +183,7 @@ nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const
                     {"loops", pavement.rim_rows.loops},
                     {"placed", pavement.rim_rows.placed},
                     {"made_way", pavement.rim_rows.made_way}}},
+      {"edits", edits_json(pavement)},
       {"removed", {{"total", pavement.eliminated + pavement.resolution.removed + pavement.rim_rows.made_way},
                    {"crossing_the_boundary", pavement.eliminated},
                    {"still_colliding_after_resolution", pavement.resolution.removed},

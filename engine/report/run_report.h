@@ -28,6 +28,8 @@ PavementCounts count_pavement(const Pavement& pavement);
 // report.json's `beads`: {"enabled": false}, or the count and the smallest and largest diameter
 // in mm (diameter_mm_min, diameter_mm_max; 0 without beads) with the design's scale.
 nlohmann::json beads_json(const Pavement& pavement);
+// report.json "edits": the designer's pinned, moved, added and deleted elements.
+nlohmann::json edits_json(const Pavement& pavement);
 
 nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const Pavement& pavement,
                                const StageTimings& timings);

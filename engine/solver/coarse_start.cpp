@@ -48,7 +48,7 @@ struct Level {
         field.add(coarse.points[i], glm::dvec2(system.position[i]) - coarse.points[i]);
     field.finish();
     for (std::size_t i = 0; i < position.size(); ++i) {
-      if (stray_count[i] == kRetired) continue;
+      if (!particle_moves(stray_count[i])) continue;  // retired, or pinned by the designer
       const glm::vec2 moved = glm::vec2(glm::dvec2(position[i]) + field.at(glm::dvec2(position[i])));
       // Every particle starts on the map (the pattern is trimmed to it; earlier levels only move
       // particles onto it), so one moved off it found no room where the coarse pattern thinned out.

@@ -53,7 +53,10 @@ int retire_one_of_each_pair(const Pattern& pattern, const Elements& elements, st
     const int pj = element_anchor(pattern, elements, c.j, design).a;
     if (pi < 0 || pj < 0 || spared[pi] || spared[pj]) continue;
     if (system.stray_count[pi] == kRetired || system.stray_count[pj] == kRetired) continue;
-    const int victim = count[c.j] > count[c.i] ? pj : pi;
+    const bool i_pinned = system.stray_count[pi] == kPinned, j_pinned = system.stray_count[pj] == kPinned;
+    if (i_pinned && j_pinned) continue;
+    // A pinned particle stays where the designer put it: the other makes the vacancy.
+    const int victim = i_pinned ? pj : j_pinned ? pi : count[c.j] > count[c.i] ? pj : pi;
     system.stray_count[victim] = kRetired;
     spare_around(victim);
     ++retired;
@@ -63,11 +66,12 @@ int retire_one_of_each_pair(const Pattern& pattern, const Elements& elements, st
 
 }  // namespace
 
-int remove_colliding(Elements& elements, double gap) {
+int remove_colliding(Elements& elements, double gap, std::vector<std::uint8_t>* kept) {
   int removed = 0;
   for (;;) {
     const std::vector<Collision> collisions = find_collisions(elements, gap);
     if (collisions.empty()) return removed;
+    const auto is_kept = [&](int i) { return kept && (*kept)[std::size_t(i)] != 0; };
     std::vector<int> count(elements.size(), 0);
     for (const Collision& c : collisions) ++count[c.i], ++count[c.j];
     std::vector<std::uint8_t> remove(elements.size(), 0);
@@ -76,12 +80,22 @@ int remove_colliding(Elements& elements, double gap) {
       if (settled[c.i] || settled[c.j]) continue;
       // An edge element goes before the vertex element it touches; else the one in more pairs.
       const bool i_edge = elements.kind[c.i] == ElementKind::Edge, j_edge = elements.kind[c.j] == ElementKind::Edge;
-      const int victim = i_edge != j_edge ? (i_edge ? c.i : c.j) : count[c.j] > count[c.i] ? c.j : c.i;
+      // A pinned element stays while the other of its pair can go.
+      const int victim = is_kept(c.i) != is_kept(c.j) ? (is_kept(c.i) ? c.j : c.i)
+                         : i_edge != j_edge          ? (i_edge ? c.i : c.j)
+                         : count[c.j] > count[c.i]   ? c.j
+                                                     : c.i;
       remove[victim] = 1;
       settled[c.i] = settled[c.j] = 1;
       ++removed;
     }
     elements.erase_flagged(remove);
+    if (kept) {
+      std::size_t out = 0;
+      for (std::size_t i = 0; i < remove.size(); ++i)
+        if (!remove[i]) (*kept)[out++] = (*kept)[i];
+      kept->resize(out);
+    }
   }
 }
 
@@ -165,7 +179,12 @@ Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface,
     for (int i = 0; i < system.particle_count(); ++i) points[i] = glm::dvec2(system.position[i]);
     elements = place(points, system.stray_count);
   }
-  report.removed = remove_colliding(elements, design.elements.gap);
+  // Vertex elements of pinned particles (the designer's) are the last to go.
+  std::vector<std::uint8_t> pinned(elements.size(), 0);
+  for (std::size_t i = 0; i < elements.size(); ++i)
+    pinned[i] = elements.kind[i] == ElementKind::Vertex && elements.source[i] >= 0 &&
+                system.stray_count[std::size_t(elements.source[i])] == kPinned;
+  report.removed = remove_colliding(elements, design.elements.gap, &pinned);
   report.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return elements;
 }

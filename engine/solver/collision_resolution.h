@@ -52,7 +52,9 @@ using ElementPlacer =
 
 // The last resort: removes one element of every pair that still collides (an edge element before
 // the vertex element it touches, else the one in more pairs) until none does; returns how many.
-int remove_colliding(Elements& elements, double gap);
+// Elements flagged in `kept` (#elements, the designer's pinned ones) go only when both of a pair
+// are flagged; the flags are erased along with their elements.
+int remove_colliding(Elements& elements, double gap, std::vector<std::uint8_t>* kept = nullptr);
 
 // Resolves collisions by contact springs and returns the final elements; `system` and `points`
 // are updated in place.

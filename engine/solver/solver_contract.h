@@ -88,6 +88,9 @@ PAVER_CONST uint32_t kErrorNonFinite = 1u;  // a particle position became NaN or
 PAVER_CONST uint32_t kErrorNotLifted = 2u;  // a particle could not be located on the map
 
 PAVER_CONST uint32_t kRetired = 0xffffffffu;  // stray_count of a retired particle
+// stray_count of a particle the designer pinned (design.edits): it never moves and never retires,
+// while its springs still pull and push its neighbours.
+PAVER_CONST uint32_t kPinned = 0xfffffffeu;
 PAVER_CONST uint32_t kSpringVirtual = 1u;     // spring_flags: a bracing edge across a face
 // A contact spring keeps two colliding elements apart: its rest length is the required 3D
 // distance (no margin, no filter) and it only pushes, never pulls.
@@ -246,12 +249,15 @@ PAVER_FN vec4 lift_barycentric(vec3 b, vec4 pi, vec4 pj, vec4 pk, float ki, floa
   return vec4(position.x, position.y, position.z, kappa);
 }
 
+// Whether a particle with this stray count takes steps (neither retired nor pinned).
+PAVER_FN bool particle_moves(uint32_t count) { return count < kPinned; }
+
 // New stray count of a particle after a lift that did (or did not) pull it back: +2 for a pull
 // back, -1 otherwise, so a particle pushed out every iteration retires after `stray_patience`
 // iterations and one that goes out every other iteration after about twice that, while an
 // occasional stray recovers.
 PAVER_FN uint32_t next_stray_count(PAVER_IN(SolverConstants) k, uint32_t count, bool pulled_back) {
-  if (count == kRetired) return kRetired;
+  if (count >= kPinned) return count;  // retired and pinned particles stay so
   if (!pulled_back) return count > 0u ? count - 1u : 0u;
   uint32_t next = count + 2u;
   return k.stray_patience != 0u && next >= 2u * k.stray_patience ? kRetired : next;

@@ -115,7 +115,7 @@ struct Move {
 inline Move move_particle(const SolverConstants& k, const SpringSystem& sys, int a,
                           const std::vector<glm::vec2>& position) {
   const glm::vec2 pa = position[a];
-  if (sys.stray_count[a] == kRetired) return {pa, 0.0f};
+  if (!particle_moves(sys.stray_count[a])) return {pa, 0.0f};
   SpringSums sums = no_spring_sums();
   for (int i = sys.neighbor_start[a]; i < sys.neighbor_start[a + 1]; ++i) {
     const int nb = sys.neighbor[i];

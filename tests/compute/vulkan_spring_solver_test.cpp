@@ -149,6 +149,60 @@ TEST(VulkanPipeline, SamePavementAsTheCpu) {
   EXPECT_EQ(gpu_or_null().context->validation_message_count(), 0);
 }
 
+// Pinned particles (the designer's, kPinned) never move on either backend, and the rest move the
+// same: bit-identical on lavapipe.
+TEST(VulkanParityPinned, PinnedParticlesStayPutOnBothBackends) {
+  REQUIRE_VULKAN();
+  const Case c = make_case("pendant_tri_gems.json");
+  const double d = c.initial.design.pattern.spacing;
+  SpringSystem cpu_system = make_spring_system(c.initial.pattern);
+  int pinned = 0;
+  for (int i = 0; i < cpu_system.particle_count(); i += 7, ++pinned) cpu_system.stray_count[std::size_t(i)] = kPinned;
+  SpringSystem gpu_system = cpu_system;
+  const std::vector<glm::vec2> start = cpu_system.position;
+  cpu_solver_factory(0)(c.surface, cpu_system, c.initial.design.solver, d)->solve();
+  gpu::vulkan_solver_factory(gpu_or_null().session)(c.surface, gpu_system, c.initial.design.solver, d)->solve();
+  ASSERT_GT(pinned, 10);
+  for (int i = 0; i < cpu_system.particle_count(); i += 7) {
+    EXPECT_EQ(cpu_system.position[std::size_t(i)], start[std::size_t(i)]) << "cpu moved pinned particle " << i;
+    EXPECT_EQ(gpu_system.position[std::size_t(i)], start[std::size_t(i)]) << "gpu moved pinned particle " << i;
+    EXPECT_EQ(gpu_system.stray_count[std::size_t(i)], kPinned);
+  }
+  EXPECT_GT(max_difference(cpu_system.position, start) / d, 0.01) << "nothing else moved either";
+  if (on_lavapipe()) EXPECT_EQ(gpu_system.position, cpu_system.position);
+  else EXPECT_LT(max_difference(gpu_system.position, cpu_system.position) / d, 1e-3);
+  EXPECT_EQ(gpu_or_null().context->validation_message_count(), 0);
+}
+
+// A design with the designer's edits (pin, drag, delete, add) paves the same on both backends.
+TEST(VulkanPipeline, EditedDesignPavesTheSame) {
+  REQUIRE_VULKAN();
+  const SurfaceMap& map = map_of("pendant");
+  Design design = load_design(test::source_dir() / "assets/designs/pendant_tri_gems.json");
+  design.pattern.topology = Topology::Lattice;
+  const Pavement base = make_pavement(map, design);
+  const double D = base.design.pattern.spacing;
+  // Three vertex elements well inside: pin one, drag one, delete one; and add one beside them.
+  std::vector<std::size_t> inner;
+  for (std::size_t i = 0; i < base.elements.size(); ++i)
+    if (base.elements.kind[i] == ElementKind::Vertex && glm::length(base.elements.uv[i]) < 3 * D) inner.push_back(i);
+  ASSERT_GE(inner.size(), 3u);
+  const Elements& e = base.elements;
+  design.edits.moved.push_back({e.id[inner[0]], e.uv[inner[0]], true});
+  design.edits.moved.push_back({e.id[inner[1]], e.uv[inner[1]] + glm::dvec2(0.3 * D, 0), true});
+  design.edits.deleted.push_back({e.id[inner[2]], e.uv[inner[2]]});
+  design.edits.added.push_back({kFirstAddedId, e.uv[inner[0]] + glm::dvec2(0, 0.5 * D)});
+  PavementOptions gpu_options;
+  gpu_options.solver = gpu::vulkan_solver_factory(gpu_or_null().session);
+  const Pavement cpu = make_pavement(map, design);
+  const Pavement gpu = make_pavement(map, design, gpu_options);
+  EXPECT_EQ(gpu.elements.id, cpu.elements.id);
+  EXPECT_EQ(gpu.after.contact_violations, 0);
+  EXPECT_GT(cpu.resolution.rounds, base.resolution.rounds) << "the edits' resolution ran";
+  if (on_lavapipe()) EXPECT_EQ(gpu.elements.position, cpu.elements.position);
+  EXPECT_EQ(gpu_or_null().context->validation_message_count(), 0);
+}
+
 TEST(VulkanSession, SurfaceBuffersAreReusedAcrossRuns) {
   REQUIRE_VULKAN();
   auto session = gpu::VulkanSolverSession::create(gpu_or_null().context).value();

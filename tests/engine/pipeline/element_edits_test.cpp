@@ -1,0 +1,197 @@
+// The designer's edits of single elements (design.edits): a pinned element stays where it was put,
+// a dragged one moves and its neighbours make room, a deleted one is gone and an added one is
+// there, each under its stable id; nothing else is lost, nothing far from an edit moves, no pair
+// violates the contact rule (counted over all pairs), and the same design gives the same pavement.
+#include "all_pairs.h"
+#include "input_error_assertions.h"
+#include "surface_maps.h"
+
+#include "elements/element_ids.h"
+#include "io/design_io.h"
+#include "pipeline/pavement.h"
+#include "solver/edit_relaxation.h"
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <map>
+#include <set>
+
+namespace paver {
+namespace {
+
+// The studio's starting design (hexagons, spheres of diameter D) on the pendant, as a lattice.
+Design pendant_design() {
+  Design design;
+  design.pattern.topology = Topology::Lattice;
+  return design;
+}
+
+std::map<int, std::size_t> index_by_id(const Elements& e) {
+  std::map<int, std::size_t> index;
+  for (std::size_t i = 0; i < e.size(); ++i) EXPECT_TRUE(index.emplace(e.id[i], i).second) << "id " << e.id[i] << " twice";
+  return index;
+}
+
+// The vertex element nearest to the map's centre of mass of the elements, and one `rings` spacings from it.
+struct Picked {
+  int centre = -1, other = -1;
+};
+Picked pick(const Pavement& p, double rings) {
+  glm::dvec2 mean(0);
+  for (const glm::dvec2 uv : p.elements.uv) mean += uv;
+  mean /= double(p.elements.size());
+  Picked out;
+  double best = 1e300, best_other = 1e300;
+  for (std::size_t i = 0; i < p.elements.size(); ++i)
+    if (p.elements.kind[i] == ElementKind::Vertex && glm::length(p.elements.uv[i] - mean) < best)
+      best = glm::length(p.elements.uv[i] - mean), out.centre = p.elements.id[i];
+  const glm::dvec2 c = p.elements.uv[index_by_id(p.elements).at(out.centre)];
+  for (std::size_t i = 0; i < p.elements.size(); ++i) {
+    const double off = std::abs(glm::length(p.elements.uv[i] - c) - rings * p.design.pattern.spacing);
+    if (p.elements.kind[i] == ElementKind::Vertex && off < best_other) best_other = off, out.other = p.elements.id[i];
+  }
+  return out;
+}
+
+class ElementEdits : public ::testing::Test {
+protected:
+  static void SetUpTestSuite() {
+    map_ = test::bundled_map("pendant");
+    base_ = new Pavement(make_pavement(*map_, pendant_design()));
+  }
+  static void TearDownTestSuite() { delete base_; }
+
+  static std::shared_ptr<const SurfaceMap> map_;
+  static Pavement* base_;
+};
+std::shared_ptr<const SurfaceMap> ElementEdits::map_;
+Pavement* ElementEdits::base_ = nullptr;
+
+TEST_F(ElementEdits, EveryElementHasAUniqueIdFromItsOrigin) {
+  const Pavement& p = *base_;
+  ASSERT_GT(p.elements.size(), 100u);
+  index_by_id(p.elements);
+  for (std::size_t i = 0; i < p.elements.size(); ++i) {
+    if (p.elements.kind[i] == ElementKind::Vertex && p.elements.source[i] >= 0)
+      EXPECT_EQ(p.elements.id[i], p.elements.source[i]);  // a pattern point's vertex element
+    else if (p.elements.kind[i] == ElementKind::Vertex)
+      EXPECT_GE(p.elements.id[i], first_refill_id(p.pattern));
+  }
+  // The same design again: the same ids in the same places.
+  const Pavement again = make_pavement(*map_, pendant_design());
+  EXPECT_EQ(again.elements.id, p.elements.id);
+  EXPECT_EQ(again.elements.uv, p.elements.uv);
+}
+
+TEST_F(ElementEdits, PinDragAndDeleteChangeOnlyWhatTheyName) {
+  const Pavement& base = *base_;
+  const double D = base.design.pattern.spacing;
+  const Picked picked = pick(base, 2);
+  const auto before = index_by_id(base.elements);
+  const glm::dvec2 wanted = base.elements.uv[before.at(picked.centre)] + glm::dvec2(0.4 * D, 0);
+
+  Design design = base.design;
+  design.edits.moved.push_back({picked.centre, wanted, true});
+  design.edits.deleted.push_back({picked.other, base.elements.uv[before.at(picked.other)]});
+  const Pavement edited = make_pavement(*map_, design);
+  const auto after = index_by_id(edited.elements);
+
+  ASSERT_TRUE(after.count(picked.centre));
+  EXPECT_LT(glm::length(edited.elements.uv[after.at(picked.centre)] - wanted), 1e-5 * D) << "the pinned one moved";
+  EXPECT_FALSE(after.count(picked.other)) << "the deleted one is still there";
+  for (const auto& [id, i] : before)
+    if (id != picked.other) EXPECT_TRUE(after.count(id)) << "element " << id << " was lost";
+  EXPECT_EQ(edited.elements.size() + 1, base.elements.size());
+  EXPECT_EQ(edited.deletions_missed, 0);
+
+  // Nothing beyond the edit's reach moved at all.
+  const glm::dvec2 from = base.elements.uv[before.at(picked.centre)];
+  int far = 0;
+  for (const auto& [id, i] : after) {
+    if (!before.count(id)) continue;
+    const glm::dvec2 was = base.elements.uv[before.at(id)];
+    if (std::min(glm::length(was - from), glm::length(was - wanted)) < (kEditReach + 1) * D) continue;
+    ++far;
+    EXPECT_EQ(edited.elements.uv[i], was) << "element " << id << " far from the edit moved";
+  }
+  EXPECT_GT(far, 100);
+
+  const test::AllPairs pairs = test::all_pairs(edited.elements, design.elements.gap);
+  EXPECT_EQ(pairs.violations, 0) << "min clearance " << pairs.min_clearance;
+  EXPECT_EQ(edited.after.contact_violations, 0);
+}
+
+TEST_F(ElementEdits, AnAddedElementStaysWhereItWasPutAndItsNeighboursMakeRoom) {
+  const Pavement& base = *base_;
+  const double D = base.design.pattern.spacing;
+  const Picked picked = pick(base, 1);
+  const glm::dvec2 centre = base.elements.uv[index_by_id(base.elements).at(picked.centre)];
+  const glm::dvec2 at = centre + glm::dvec2(0.5 * D, 0.1 * D);  // on top of its neighbour
+
+  Design design = base.design;
+  design.edits.added.push_back({design.edits.next_added_id(), at});
+  EXPECT_EQ(design.edits.added[0].id, kFirstAddedId);
+  const Pavement edited = make_pavement(*map_, design);
+  const auto after = index_by_id(edited.elements);
+  ASSERT_TRUE(after.count(kFirstAddedId));
+  EXPECT_LT(glm::length(edited.elements.uv[after.at(kFirstAddedId)] - at), 1e-5 * D);
+  EXPECT_EQ(test::all_pairs(edited.elements, 0).violations, 0);
+  // Where there was no room, the neighbours it displaced are counted as removed, not hidden.
+  EXPECT_EQ(edited.elements.size() + std::size_t(edited.resolution.removed), base.elements.size() + 1 +
+            std::size_t(base.resolution.removed));
+}
+
+TEST_F(ElementEdits, ASavedDesignReproducesTheEditedPavement) {
+  const Pavement& base = *base_;
+  const Picked picked = pick(base, 3);
+  Design design = base.design;
+  design.edits.moved.push_back({picked.centre, base.points[std::size_t(picked.centre)], true});
+  design.edits.deleted.push_back({picked.other, {0, 0}});
+  const Design read = design_from_json(design_to_json(design), "saved");
+  ASSERT_EQ(read.edits.moved.size(), 1u);
+  EXPECT_EQ(read.edits.moved[0].uv, design.edits.moved[0].uv);
+  EXPECT_EQ(read.edits.deleted[0].id, picked.other);
+  const Pavement a = make_pavement(*map_, design), b = make_pavement(*map_, read);
+  EXPECT_EQ(a.elements.id, b.elements.id);
+  EXPECT_EQ(a.elements.uv, b.elements.uv);
+}
+
+TEST_F(ElementEdits, EditsForAnotherPatternOrAnAutoTopologyAreRefused) {
+  Design design = base_->design;
+  design.edits.moved.push_back({base_->pattern.point_count() + 5, {0, 0}, true});
+  EXPECT_TRUE(test::Contains(test::error_of([&] { make_pavement(*map_, design); }), "edits.moved[0]: particle"));
+  design.edits.moved.clear();
+  design.edits.deleted.push_back({3, {0, 0}});
+  design.pattern.topology = Topology::Auto;
+  EXPECT_TRUE(test::Contains(test::error_of([&] { make_pavement(*map_, design); }), "pattern.topology is \"auto\""));
+}
+
+TEST(ElementEditsDesign, IdsAndPointsAreChecked) {
+  Design design;
+  design.edits.added.push_back({5, {0, 0}});
+  EXPECT_TRUE(test::Contains(test::error_of([&] { validate_design(design, "d"); }), "edits.added[0].id"));
+  design.edits.added = {{kFirstAddedId, {0, 0}}, {kFirstAddedId, {1, 1}}};
+  EXPECT_TRUE(test::Contains(test::error_of([&] { validate_design(design, "d"); }), "twice"));
+  design.edits.added = {};
+  design.edits.moved = {{4, {std::nan(""), 0}, true}};
+  EXPECT_TRUE(test::Contains(test::error_of([&] { validate_design(design, "d"); }), "edits.moved[0].uv[0]"));
+  design.edits.moved = {{4, {0, 0}, true}, {4, {1, 0}, false}};
+  EXPECT_TRUE(test::Contains(test::error_of([&] { validate_design(design, "d"); }), "twice"));
+  design.edits.moved = {};
+  design.edits.added = {{kFirstAddedId, {0, 0}}};
+  design.elements.vertex.enabled = false;
+  EXPECT_TRUE(test::Contains(test::error_of([&] { validate_design(design, "d"); }), "elements.vertex.enabled"));
+  // An id once handed out is not handed out again, even when its element was deleted.
+  design.elements.vertex.enabled = true;
+  design.edits.deleted = {{kFirstAddedId + 7, {0, 0}}};
+  EXPECT_EQ(design.edits.next_added_id(), kFirstAddedId + 8);
+  const std::string missing_id = R"({"version": 1, "edits": {"moved": [{"uv": [0, 0]}]}})";
+  EXPECT_TRUE(test::Contains(test::error_of([&] { design_from_text(missing_id, "f.json"); }),
+                             "missing key 'edits.moved[0].id'"));
+}
+
+}  // namespace
+}  // namespace paver
