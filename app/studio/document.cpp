@@ -1,5 +1,7 @@
 #include "document.h"
 
+#include "element_editing.h"
+
 #include "io/output_guard.h"
 #include "io/design_io.h"
 #include "elements/element_proximity.h"
@@ -32,9 +34,17 @@ bool change_design(Document& doc, const Design& next, bool dragging) {
   }
   // Design has no operator==; its JSON form is complete and small.
   if (design_to_json(next) == design_to_json(doc.design)) return true;  // nothing to undo or re-run
+  // Element ids name the elements of one pattern layout: another layout would give the edits to
+  // other elements.
+  Design changed = next;
+  if (!changed.edits.empty() && changes_pattern_layout(doc.design, changed)) {
+    changed.edits = {};
+    report_status(doc, "element edits cleared: they named elements of the pattern before this change (undo brings "
+                       "them back)");
+  }
   if (!doc.gesture_open) doc.history.record(doc.design);
   doc.gesture_open = dragging;
-  doc.design = next;
+  doc.design = std::move(changed);
   doc.dirty = true;
   new_revision(doc, dragging);
   return true;

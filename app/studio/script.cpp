@@ -11,6 +11,7 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <type_traits>
 #include <utility>
 
 namespace paver::studio {
@@ -23,7 +24,9 @@ constexpr std::pair<std::string_view, Kind> kCommands[] = {
     {"spacing", Kind::Spacing}, {"set", Kind::Set},       {"optimize", Kind::Optimize},
     {"undo", Kind::Undo},       {"redo", Kind::Redo},     {"export", Kind::Export}, {"cut", Kind::Cut},
     {"screenshot", Kind::Screenshot}, {"view3d", Kind::View3d}, {"view2d", Kind::View2d},
-    {"panel", Kind::Panel},     {"wait", Kind::Wait},     {"quit", Kind::Quit}};
+    {"panel", Kind::Panel},     {"wait", Kind::Wait},     {"quit", Kind::Quit},
+    {"select", Kind::Select},   {"pin", Kind::Pin},       {"unpin", Kind::Unpin},   {"drag", Kind::Drag},
+    {"delete", Kind::Delete},   {"add", Kind::Add}};
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
 
@@ -38,6 +41,15 @@ std::string_view strip_comment(std::string_view line) {
   for (std::size_t i = 0; i < line.size(); ++i)
     if (line[i] == '#' && (i == 0 || is_space(line[i - 1]))) return line.substr(0, i);
   return line;
+}
+
+// Reads all of `text` as one number of type T; false when it is not exactly that.
+template <class T>
+bool parse_number(std::string_view text, T& out) {
+  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), out);
+  if (ec != std::errc() || ptr != text.data() + text.size()) return false;
+  if constexpr (std::is_floating_point_v<T>) return std::isfinite(out);
+  return true;
 }
 
 // Splits off the first word: {word, rest (trimmed)}.
@@ -137,6 +149,32 @@ bool parse_script_line(std::string_view line, int line_number, const std::string
       const auto [ptr, ec] = std::from_chars(rest.data(), rest.data() + rest.size(), out.frames);
       if (ec != std::errc() || ptr != rest.data() + rest.size() || out.frames < 0)
         throw InputError(where + "wait '" + std::string(rest) + "': must be a whole number of frames >= 0");
+      break;
+    }
+    case Kind::Select:
+    case Kind::Pin:
+    case Kind::Unpin:
+    case Kind::Delete:
+    case Kind::Drag: {
+      const bool drag = *kind == Kind::Drag;
+      need_argument(drag ? "an element id and a move in spacings, e.g. drag 42 0.4 0" : "an element id (placements.csv's id)");
+      const auto [id, move] = first_word(rest);
+      if (!parse_number(id, out.id) || out.id < 0)
+        throw InputError(where + name + " '" + std::string(id) + "': an element id is a whole number >= 0");
+      if (!drag && !move.empty()) throw InputError(where + name + " takes one element id, got '" + std::string(rest) + "'");
+      if (drag) {
+        const auto [du, dv] = first_word(move);
+        if (!parse_number(du, out.u) || !parse_number(dv, out.v))
+          throw InputError(where + "drag " + std::string(id) + " needs the move as two numbers of spacings D, e.g. drag " +
+                           std::string(id) + " 0.4 0");
+      }
+      break;
+    }
+    case Kind::Add: {
+      need_argument("a map point U V (as placements.csv's u and v), e.g. add 1.5 -2");
+      const auto [u, v] = first_word(rest);
+      if (!parse_number(u, out.u) || !parse_number(v, out.v))
+        throw InputError(where + "add '" + std::string(rest) + "': give the map point as two numbers U V");
       break;
     }
     default:

@@ -2,6 +2,7 @@
 
 #include "design_edits.h"
 #include "design_keys.h"
+#include "element_editing.h"
 
 #include "core/input_error.h"
 
@@ -15,7 +16,15 @@ using Kind = ScriptCommand::Kind;
 // Long enough for a dense surface's map on a slow machine; a hang still ends the session.
 constexpr auto kTimeout = std::chrono::minutes(10);
 
-bool needs_final_pavement(Kind kind) { return kind == Kind::Optimize || kind == Kind::Export || kind == Kind::Cut; }
+bool needs_final_pavement(Kind kind) {
+  switch (kind) {
+    case Kind::Optimize: case Kind::Export: case Kind::Cut: case Kind::Select: case Kind::Pin: case Kind::Unpin:
+    case Kind::Drag: case Kind::Delete: case Kind::Add:
+      return true;
+    default:
+      return false;
+  }
+}
 
 std::string describe(const ScriptCommand& c) {
   std::string text(command_name(c.kind));
@@ -25,6 +34,12 @@ std::string describe(const ScriptCommand& c) {
     return text + number;
   }
   if (c.kind == Kind::Wait) return text + " " + std::to_string(c.frames);
+  if (c.kind == Kind::Drag || c.kind == Kind::Add) {
+    char numbers[64];
+    std::snprintf(numbers, sizeof numbers, " %g %g", c.u, c.v);
+    return text + (c.kind == Kind::Drag ? " " + std::to_string(c.id) : std::string()) + numbers;
+  }
+  if (c.id >= 0) return text + " " + std::to_string(c.id);
   if (c.kind == Kind::Cut) {
     char number[32];
     std::snprintf(number, sizeof number, " %g ", c.number);
@@ -33,6 +48,35 @@ std::string describe(const ScriptCommand& c) {
   if (!c.text.empty()) text += " " + c.text;
   if (!c.value.empty()) text += " " + c.value;
   return text;
+}
+
+// The element commands, on the pavement on screen (ready() waited for it to be final).
+void edit_element(Studio& s, const ScriptCommand& c) {
+  Document& doc = s.doc;
+  const Pavement& pavement = *doc.result.pavement;
+  switch (c.kind) {
+    case Kind::Select: select_element(s, c.id); break;
+    case Kind::Pin: change_design(doc, with_pinned(doc.design, pavement, c.id, true)); select_element(s, c.id); break;
+    case Kind::Unpin: change_design(doc, with_pinned(doc.design, pavement, c.id, false)); break;
+    case Kind::Drag: {
+      const double spacing = pavement.design.pattern.spacing;
+      change_design(doc, with_dragged(doc.design, pavement, c.id, glm::dvec2(c.u, c.v) * spacing));
+      select_element(s, c.id);
+      break;
+    }
+    case Kind::Delete:
+      change_design(doc, without_element(doc.design, pavement, c.id));
+      if (s.ui.selected_element == c.id) s.ui.selected_element = -1;
+      break;
+    case Kind::Add: {
+      int id = -1;
+      change_design(doc, with_added_element(doc.design, pavement, glm::dvec2(c.u, c.v), &id));
+      s.ui.selected_element = id;
+      report_status(doc, "added element " + std::to_string(id));
+      break;
+    }
+    default: break;
+  }
 }
 
 }  // namespace
@@ -77,6 +121,12 @@ void ScriptRunner::act(Studio& s, const ScriptCommand& c) {
     case Kind::Panel: s.ui.select_panel = c.text; break;
     case Kind::Wait: frames_left_ = c.frames; break;
     case Kind::Quit: s.quit = true; break;
+    case Kind::Select:
+    case Kind::Pin:
+    case Kind::Unpin:
+    case Kind::Drag:
+    case Kind::Delete:
+    case Kind::Add: edit_element(s, c); break;
   }
 }
 

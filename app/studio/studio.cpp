@@ -1,6 +1,8 @@
 #include "pipeline/pavement.h"
 #include "studio.h"
 
+#include "element_editing.h"
+
 #include "io/output_guard.h"
 #include "panels/panels.h"
 #include "recent_files.h"
@@ -118,6 +120,13 @@ void set_backend(Studio& s, const std::string& name) {
   } catch (const std::exception& e) {
     report_error(s.doc, e.what());
   }
+}
+
+void select_element(Studio& s, int id) {
+  if (!s.doc.result.pavement) throw InputError("select: there is no pavement on screen yet");
+  const std::string line = describe_element(s.doc.design, *s.doc.result.pavement, id);
+  s.ui.selected_element = id;
+  report_status(s.doc, line);
 }
 
 bool result_is_final(const Studio& s) {

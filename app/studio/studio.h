@@ -49,6 +49,7 @@ struct UiState {
   std::string select_panel;            // a script's `panel NAME`: selected on the next frame
   double cut_thickness = 1;            // Cut metal: the metal's thickness, surface units
   CutAxis cut_axis = CutAxis::Auto;    // the plane a closed surface is cut across (paver run --cut)
+  int selected_element = -1;           // the element id selected in the views or by `select`; -1 = none
 };
 
 struct Studio {
@@ -95,6 +96,10 @@ void run_now(Studio& s, bool paused = false, int step = 0);
 void toggle_pause(Studio& s);
 void step_run(Studio& s);
 void reset_run(Studio& s);
+
+// Selects element `id` of the pavement on screen and says what it is in the status line. Throws
+// InputError when there is no such element.
+void select_element(Studio& s, int id);
 
 // Whether the pavement on screen is final for the current design.
 bool result_is_final(const Studio& s);

@@ -92,6 +92,25 @@ TEST(Script, ErrorsNameTheLineAndTheFix) {
   EXPECT_EQ(error_of("\n\n  optimize extra").rfind("s.txt:3:", 0), 0u);
 }
 
+TEST(Script, ElementCommandsTakeAnIdAndNumbers) {
+  const auto commands = parse_script("select 4\npin 12\nunpin 12\ndrag 12 0.4 -0.1\ndelete 7\nadd 1.5 -2\n", "s.txt");
+  ASSERT_EQ(commands.size(), 6u);
+  const Kind kinds[] = {Kind::Select, Kind::Pin, Kind::Unpin, Kind::Drag, Kind::Delete, Kind::Add};
+  for (std::size_t i = 0; i < commands.size(); ++i) EXPECT_EQ(commands[i].kind, kinds[i]) << i;
+  EXPECT_EQ(commands[0].id, 4);
+  EXPECT_EQ(commands[3].id, 12);
+  EXPECT_EQ(commands[3].u, 0.4);
+  EXPECT_EQ(commands[3].v, -0.1);
+  EXPECT_EQ(commands[4].id, 7);
+  EXPECT_EQ(commands[5].u, 1.5);
+  EXPECT_EQ(commands[5].v, -2);
+  EXPECT_NE(error_of("pin").find("pin needs an element id"), std::string::npos);
+  EXPECT_NE(error_of("pin -3").find("whole number >= 0"), std::string::npos);
+  EXPECT_NE(error_of("delete 3 4").find("takes one element id"), std::string::npos);
+  EXPECT_NE(error_of("drag 3 0.4").find("two numbers of spacings D"), std::string::npos);
+  EXPECT_NE(error_of("add 1 nan").find("two numbers U V"), std::string::npos);
+}
+
 TEST(Script, MissingFileIsAnInputError) {
   EXPECT_THROW(load_script("/nonexistent/session.txt"), InputError);
 }

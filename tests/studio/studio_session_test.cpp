@@ -12,6 +12,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <cmath>
+#include <iterator>
 #include <set>
 #include <sstream>
 #include <string>
@@ -164,6 +167,106 @@ TEST_F(StudioSession, ScriptedEditExportsWhatTheCliWritesAndScreenshotShowsThePa
 
   // The surface went into the recent files, kept in the config folder.
   EXPECT_NE(read_text(dir_ / "config/paver/recent.txt").find("dome.obj"), std::string::npos);
+}
+
+// placements.csv as id -> (u, v, x, y, z, diameter).
+struct Row {
+  double u, v, x, y, z, diameter;
+  char kind;
+};
+std::map<long, Row> placements_by_id(const fs::path& csv) {
+  std::map<long, Row> rows;
+  std::istringstream in(read_text(csv));
+  std::string line;
+  std::getline(in, line);  // header: id,kind,x,y,z,nx,ny,nz,diameter,u,v
+  while (std::getline(in, line)) {
+    std::istringstream fields(line);
+    std::vector<std::string> f;
+    for (std::string field; std::getline(fields, field, ',');) f.push_back(field);
+    if (f.size() != 11) continue;
+    rows[std::stol(f[0])] = {std::stod(f[9]), std::stod(f[10]), std::stod(f[2]), std::stod(f[3]), std::stod(f[4]),
+                             std::stod(f[8]), f[1][0]};
+  }
+  return rows;
+}
+
+// The issue's session: open the pendant, pin one element, drag it by 0.4 D, delete another,
+// re-optimize and export: the pinned one moved, the deleted one is gone, nothing else is lost,
+// no pair violates the contact rule, and `paver run` on the saved design writes the same file.
+TEST_F(StudioSession, PinDragAndDeleteSingleElementsAndTheCliReproducesThem) {
+  // The studio's starting design, as a lattice: its ids from a CLI run first.
+  const fs::path design = dir_ / "start.json", base = dir_ / "base";
+  std::ofstream(design) << R"({"version": 1, "pattern": {"topology": "lattice"}})";
+  const Outcome first = run_in_source(quote(PAVER_CLI) + " run assets/surfaces/pendant.obj --design " +
+                                          quote(design.string()) + " --backend cpu --out " + quote(base.string()),
+                                      dir_);
+  ASSERT_EQ(first.exit_code, 0) << describe(first);
+  const std::map<long, Row> before = placements_by_id(base / "placements.csv");
+  ASSERT_GT(before.size(), 500u);
+  const double D = nlohmann::json::parse(read_text(base / "design.json"))["pattern"]["spacing"].get<double>();
+  // The vertex element nearest the middle, and one two spacings from it.
+  long pinned = -1, deleted = -1;
+  double nearest = 1e300, off = 1e300;
+  for (const auto& [id, row] : before)
+    if (row.kind == 'V' && std::hypot(row.u, row.v) < nearest) nearest = std::hypot(row.u, row.v), pinned = id;
+  const Row centre = before.at(pinned);
+  for (const auto& [id, row] : before) {
+    const double o = std::abs(std::hypot(row.u - centre.u, row.v - centre.v) - 2 * D);
+    if (row.kind == 'V' && o < off) off = o, deleted = id;
+  }
+
+  const fs::path edited = dir_ / "edited", script = dir_ / "edit.txt";
+  std::ofstream(script) << "open assets/surfaces/pendant.obj\n"
+                           "set pattern.topology lattice\n"
+                           "optimize\n"
+                        << "select " << pinned << "\n"
+                        << "pin " << pinned << "\n"
+                        << "drag " << pinned << " 0.4 0\n"
+                        << "delete " << deleted << "\n"
+                        << "undo\n"
+                        << "redo\n"
+                        << "optimize\n"
+                        << "export " << edited.string() << "\n";
+  const Outcome r = studio("--script " + quote(script.string()) + " --backend cpu --width 1280 --height 800", dir_);
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const std::map<long, Row> after = placements_by_id(edited / "placements.csv");
+  ASSERT_TRUE(after.count(pinned));
+  EXPECT_NEAR(after.at(pinned).u, centre.u + 0.4 * D, 1e-5 * D) << "the dragged element is not where it was put";
+  EXPECT_NEAR(after.at(pinned).v, centre.v, 1e-5 * D);
+  EXPECT_FALSE(after.count(deleted)) << "the deleted element is still there";
+  for (const auto& [id, row] : before)
+    if (id != deleted) EXPECT_TRUE(after.count(id)) << "element " << id << " was lost";
+  EXPECT_EQ(after.size() + 1, before.size());
+  // The contact rule over all pairs, from the file.
+  long violations = 0;
+  for (auto a = after.begin(); a != after.end(); ++a)
+    for (auto b = std::next(a); b != after.end(); ++b) {
+      const Row &p = a->second, &q = b->second;
+      if (std::hypot(p.x - q.x, p.y - q.y, p.z - q.z) < 0.5 * (p.diameter + q.diameter)) ++violations;
+    }
+  EXPECT_EQ(violations, 0);
+  const nlohmann::json saved = nlohmann::json::parse(read_text(edited / "design.json"));
+  EXPECT_EQ(saved["edits"]["moved"].size(), 1u);
+  EXPECT_EQ(saved["edits"]["deleted"].size(), 1u);
+
+  // The saved design reproduces the edited pavement on the CLI, byte for byte.
+  const fs::path cli_out = dir_ / "cli";
+  const Outcome cli = run_in_source(quote(PAVER_CLI) + " run assets/surfaces/pendant.obj --design " +
+                                        quote((edited / "design.json").string()) + " --backend cpu --out " +
+                                        quote(cli_out.string()),
+                                    dir_);
+  ASSERT_EQ(cli.exit_code, 0) << describe(cli);
+  EXPECT_NE(cli.out.find("edits    1 moved (1 pinned), 0 added, 1 deleted"), std::string::npos) << cli.out;
+  EXPECT_TRUE(read_text(edited / "placements.csv") == read_text(cli_out / "placements.csv"));
+}
+
+// An element command on an element that is not there stops the script with a clear error.
+TEST_F(StudioSession, AnElementCommandOnAMissingIdFails) {
+  const fs::path script = dir_ / "missing.txt";
+  std::ofstream(script) << "open assets/surfaces/pendant.obj\npin 99999999\n";
+  const Outcome r = studio("--script " + quote(script.string()) + " --backend cpu --width 640 --height 480", dir_);
+  EXPECT_EQ(r.exit_code, 2) << describe(r);
+  EXPECT_NE(r.err.find("element 99999999 is not in the pavement on screen"), std::string::npos) << describe(r);
 }
 
 #ifdef PAVER_WITH_CGAL

@@ -1,0 +1,130 @@
+// The studio's single-element edits, as the views and the script call them: what each records in
+// design.edits, what it refuses and why, and that a new pattern layout clears edits that would
+// otherwise name other elements.
+#include "element_editing.h"
+#include "document.h"
+
+#include "core/input_error.h"
+#include "elements/element_ids.h"
+#include "io/design_io.h"
+#include "surface_maps.h"
+#include "test_meshes.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace paver::studio {
+namespace {
+
+const Pavement& gems() {
+  static const Pavement pavement = [] {
+    Design design = load_design(test::source_dir() / "assets/designs/pendant_tri_gems.json");
+    return make_pavement(*test::bundled_map("pendant"), design);
+  }();
+  return pavement;
+}
+
+std::size_t first_of(const Pavement& p, ElementKind kind, bool from_pattern) {
+  for (std::size_t i = 0; i < p.elements.size(); ++i)
+    if (p.elements.kind[i] == kind && (p.elements.source[i] >= 0) == from_pattern) return i;
+  ADD_FAILURE() << "no such element";
+  return 0;
+}
+
+std::string message(const std::function<void()>& call) {
+  try {
+    call();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(ElementEditing, PinningAnEdgeElementPinsBothEndsOfItsEdge) {
+  const Pavement& p = gems();
+  const std::size_t e = first_of(p, ElementKind::Edge, true);
+  const Design pinned = with_pinned(p.design, p, p.elements.id[e], true);
+  ASSERT_EQ(pinned.edits.moved.size(), 2u);
+  const int edge = p.elements.source[e];
+  EXPECT_EQ(pinned.edits.moved[0].id, p.pattern.edge_a[std::size_t(edge)]);
+  EXPECT_EQ(pinned.edits.moved[1].id, p.pattern.edge_b[std::size_t(edge)]);
+  EXPECT_EQ(pinned.edits.moved[0].uv, p.points[std::size_t(pinned.edits.moved[0].id)]);
+  EXPECT_NE(pinned.pattern.topology, Topology::Auto) << "ids name one pattern: the topology is fixed";
+  // Unpinning keeps where it was put and lets it relax.
+  const Design unpinned = with_pinned(pinned, p, p.elements.id[e], false);
+  EXPECT_FALSE(unpinned.edits.moved[0].pinned);
+}
+
+TEST(ElementEditing, DragMovesByTheOffsetAndHolds) {
+  const Pavement& p = gems();
+  const std::size_t v = first_of(p, ElementKind::Vertex, true);
+  const int id = p.elements.id[v];
+  const Design dragged = with_dragged(p.design, p, id, {0.5, -0.25});
+  ASSERT_EQ(dragged.edits.moved.size(), 1u);
+  EXPECT_EQ(dragged.edits.moved[0].id, id);
+  EXPECT_EQ(dragged.edits.moved[0].uv, p.points[std::size_t(id)] + glm::dvec2(0.5, -0.25));
+  EXPECT_TRUE(dragged.edits.moved[0].pinned);
+  // Dragging again moves the same entry.
+  const Design twice = with_dragged(dragged, p, id, {0.5, 0});
+  EXPECT_EQ(twice.edits.moved.size(), 1u);
+}
+
+TEST(ElementEditing, AddAndDeleteRecordIdsThatAreNeverReused) {
+  const Pavement& p = gems();
+  int first = -1, second = -1;
+  Design design = with_added_element(p.design, p, {1, 2}, &first);
+  EXPECT_EQ(first, kFirstAddedId);
+  design = with_added_element(design, p, {3, 4}, &second);
+  EXPECT_EQ(second, kFirstAddedId + 1);
+  const std::size_t v = first_of(p, ElementKind::Vertex, true);
+  design = without_element(design, p, p.elements.id[v]);
+  ASSERT_EQ(design.edits.deleted.size(), 1u);
+  EXPECT_EQ(design.edits.deleted[0].uv, p.elements.uv[v]);
+}
+
+TEST(ElementEditing, RefusalsSayWhatToDoInstead) {
+  const Pavement& p = gems();
+  EXPECT_NE(message([&] { with_pinned(p.design, p, 99999999, true); }).find("is not in the pavement on screen"),
+            std::string::npos);
+  // A refilled element is placed anew on every run: it cannot be held by id. (The pendant needs no
+  // refill, so one of its vertex elements is made one.)
+  Pavement refilled = p;
+  const std::size_t v = first_of(p, ElementKind::Vertex, true);
+  refilled.elements.source[v] = -1;
+  refilled.elements.id[v] = first_refill_id(p.pattern) + 3;
+  EXPECT_NE(message([&] { with_dragged(p.design, refilled, refilled.elements.id[v], {1, 0}); })
+                .find("placed by the refill, which places anew on every run"),
+            std::string::npos);
+  // ... but it can be deleted (by where it is).
+  EXPECT_EQ(without_element(p.design, refilled, refilled.elements.id[v]).edits.deleted.size(), 1u);
+  Design adaptive = p.design;
+  adaptive.pattern.topology = Topology::Adaptive;
+  EXPECT_NE(message([&] { with_added_element(adaptive, p, {0, 0}); }).find("adaptive"), std::string::npos);
+  Design no_vertices = p.design;
+  no_vertices.elements.vertex.enabled = false;
+  EXPECT_NE(message([&] { with_added_element(no_vertices, p, {0, 0}); }).find("vertex elements are off"),
+            std::string::npos);
+}
+
+TEST(ElementEditing, ANewPatternLayoutClearsTheEditsAndUndoBringsThemBack) {
+  const Pavement& p = gems();
+  Document doc;
+  doc.design = p.design;
+  ASSERT_TRUE(change_design(doc, with_pinned(doc.design, p, p.elements.id[first_of(p, ElementKind::Vertex, true)], true)));
+  ASSERT_FALSE(doc.design.edits.empty());
+  Design finer = doc.design;
+  finer.pattern.spacing *= 0.9;
+  ASSERT_TRUE(change_design(doc, finer));
+  EXPECT_TRUE(doc.design.edits.empty());
+  EXPECT_NE(doc.messages.status.find("element edits cleared"), std::string::npos);
+  // A change that keeps the layout keeps them.
+  ASSERT_TRUE(undo(doc));
+  Design smaller = doc.design;
+  smaller.elements.vertex.scale = 0.5;
+  ASSERT_TRUE(change_design(doc, smaller));
+  EXPECT_FALSE(doc.design.edits.empty());
+}
+
+}  // namespace
+}  // namespace paver::studio
