@@ -65,7 +65,7 @@ void PreviewImages::write(const std::filesystem::path& folder, const SurfaceMap&
   const bool marks_defects = !pavement.pattern.defects.empty();
   if (marks_defects)
     r.set_elements(pavement.elements, defect_marked_colours(pavement, stone_colours), custom);
-  r.render_2d(size.width, size.height, render::frame_map(points_map), style);
+  r.render_2d(size.width, size.height, render::frame_map(points_map, double(size.width) / double(size.height)), style);
   render::Image param = r.read_back(1);
   if (marks_defects) render::draw_defect_legend(param, kFewer, kMore);
   render::write_png(folder / "param.png", param);

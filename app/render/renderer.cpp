@@ -245,12 +245,12 @@ glm::mat4 MapView::projection(float aspect) const {
                     centre.y + half_height, -1.0f, 1.0f);
 }
 
-MapView frame_map(const SurfaceMap& map) {
+MapView frame_map(const SurfaceMap& map, double aspect) {
   MapView v;
   v.centre = glm::vec2(0.5 * (map.uv_min + map.uv_max));
   const glm::dvec2 extent = map.uv_max - map.uv_min;
-  // Fit the taller side with a margin; render_2d widens by the aspect ratio.
-  v.half_height = float(0.55 * std::max(extent.y, extent.x / 1.6));
+  // Fit both sides with a margin; render_2d widens by the aspect ratio.
+  v.half_height = float(0.55 * std::max(extent.y, extent.x / std::max(aspect, 1e-3)));
   return v;
 }
 

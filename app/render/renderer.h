@@ -44,7 +44,8 @@ struct MapView {
   float half_height = 1;
   glm::mat4 projection(float aspect) const;
 };
-MapView frame_map(const SurfaceMap& map);
+// The whole map with a margin, in a view `aspect` (width / height) wide.
+MapView frame_map(const SurfaceMap& map, double aspect = 1.6);
 
 enum class ColourMode { NeighbourRatio, ElementType };
 

@@ -97,13 +97,30 @@ std::string describe_element(const Design& design, const Pavement& pavement, int
     origin = ", placed by the refill";
   else if (e.kind[i] == ElementKind::Edge && e.source[i] < 0)
     origin = ", placed by the boundary filling";
-  bool pinned = id >= kFirstAddedId;
-  if (e.kind[i] == ElementKind::Vertex && e.source[i] >= 0 && id < kFirstAddedId)
-    for (const MovedParticle& m : design.edits.moved) pinned = pinned || (m.id == id && m.pinned);
+  const bool pinned = is_pinned(design, pavement, id);
   char text[256];
   std::snprintf(text, sizeof text, "%s: %s element, diameter %.4g, at u %.4g v %.4g%s%s", id_text(id).c_str(), kind,
                 e.diameter[i], e.uv[i].x, e.uv[i].y, origin.c_str(), pinned ? ", pinned" : "");
   return text;
+}
+
+bool is_pinned(const Design& design, const Pavement& pavement, int id) {
+  if (id >= kFirstAddedId) return true;
+  const std::optional<std::size_t> index = find_element(pavement, id);
+  if (!index) return false;
+  const Elements& e = pavement.elements;
+  const Pattern& pattern = pavement.pattern;
+  std::vector<int> particles;
+  if (e.kind[*index] == ElementKind::Vertex && e.source[*index] >= 0) particles = {e.source[*index]};
+  if (e.kind[*index] == ElementKind::Edge && e.source[*index] >= 0)
+    particles = {pattern.edge_a[std::size_t(e.source[*index])], pattern.edge_b[std::size_t(e.source[*index])]};
+  if (particles.empty()) return false;
+  for (const int particle : particles) {
+    const auto m = std::find_if(design.edits.moved.begin(), design.edits.moved.end(),
+                                [&](const MovedParticle& x) { return x.id == particle; });
+    if (m == design.edits.moved.end() || !m->pinned) return false;
+  }
+  return true;
 }
 
 Design with_pinned(Design design, const Pavement& pavement, int id, bool pinned) {

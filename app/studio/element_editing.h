@@ -24,6 +24,10 @@ std::optional<int> element_at(const Pavement& pavement, glm::dvec2 uv);
 // One line about element `id`: kind, where it is, whether it is pinned or the designer's.
 std::string describe_element(const Design& design, const Pavement& pavement, int id);
 
+// Whether element `id` is held where it is: pinned (a vertex element's particle, both ends of an
+// edge element's edge) or one the designer added.
+bool is_pinned(const Design& design, const Pavement& pavement, int id);
+
 // Holds element `id` where it is (pinned) or lets it relax again. A vertex element pins its
 // particle, an edge element the two ends of its edge.
 Design with_pinned(Design design, const Pavement& pavement, int id, bool pinned);

@@ -2,6 +2,7 @@
 #include "shortcuts.h"
 
 #include "studio.h"
+#include "element_editing.h"
 
 #include "core/input_error.h"
 
@@ -28,6 +29,10 @@ const std::vector<Shortcut>& shortcut_list() {
       {"Wheel", "zoom"},
       {"Left drag (2D)", "move the pattern over the map (placement.offset)"},
       {"Drag the handles (2D)", "rotate (round) and scale (square) the placement"},
+      {"E", "edit stones: clicks in the views select, drag (2D) and add (Ctrl+click, 2D) single elements"},
+      {"Del", "delete the selected element"},
+      {"P", "pin / unpin the selected element (it stays where it is while the rest relaxes)"},
+      {"Esc", "deselect"},
       {"Drop a file", "a surface opens, a .json design loads"},
   };
   return list;
@@ -61,9 +66,14 @@ void handle_shortcuts(Studio& s) {
   if (pressed(GLFW_KEY_N)) step_run(s);
   if (pressed(GLFW_KEY_R) && s.doc.surface.map) {
     s.views.camera = render::frame_surface(s.doc.surface.map->mesh);
-    s.views.map_view = render::frame_map(map_for_topology(*s.doc.surface.map, s.doc.design.pattern.topology));
+    s.views.map_view = render::frame_map(map_for_topology(*s.doc.surface.map, s.doc.design.pattern.topology), s.views.map_aspect);
   }
   if (pressed(GLFW_KEY_V)) s.views.large_3d = !s.views.large_3d;
+  if (pressed(GLFW_KEY_E)) s.ui.edit_elements = !s.ui.edit_elements;
+  if (pressed(GLFW_KEY_ESCAPE)) s.ui.selected_element = -1;
+  if (pressed(GLFW_KEY_DELETE) && s.ui.selected_element >= 0) delete_selected(s);
+  if (pressed(GLFW_KEY_P) && s.ui.selected_element >= 0 && s.doc.result.pavement)
+    pin_selected(s, !is_pinned(s.doc.design, *s.doc.result.pavement, s.ui.selected_element));
   if (pressed(GLFW_KEY_L)) s.views.style.show_lattice = !s.views.style.show_lattice;
   if (pressed(GLFW_KEY_C))
     s.views.colour_mode = s.views.colour_mode == render::ColourMode::NeighbourRatio ? render::ColourMode::ElementType

@@ -46,7 +46,7 @@ void take_loaded_surface(Studio& s) {
   OpenedSurface& opened = *outcome->surface;
   const SurfaceMap& map = *opened.map;
   s.views.camera = render::frame_surface(map.mesh);
-  s.views.map_view = render::frame_map(map_for_topology(map, s.doc.design.pattern.topology));
+  s.views.map_view = render::frame_map(map_for_topology(map, s.doc.design.pattern.topology), s.views.map_aspect);
   remember(s, opened.path);
   std::string status = "opened " + opened.path.string() + ": " + std::to_string(map.mesh.vertex_count()) +
                        " vertices, " + std::to_string(map.mesh.face_count()) + " faces";
@@ -127,6 +127,46 @@ void select_element(Studio& s, int id) {
   const std::string line = describe_element(s.doc.design, *s.doc.result.pavement, id);
   s.ui.selected_element = id;
   report_status(s.doc, line);
+}
+
+namespace {
+
+// An edit of the pavement on screen: refused (and said why) while there is none or it is stale.
+template <class Edit>
+void edit_on_screen(Studio& s, const Edit& edit) {
+  if (!s.doc.result.pavement) return report_status(s.doc, "wait for the pavement before editing its elements");
+  try {
+    change_design(s.doc, edit(*s.doc.result.pavement));
+  } catch (const InputError& e) {
+    report_error(s.doc, e.what());
+  }
+}
+
+}  // namespace
+
+void pin_selected(Studio& s, bool pinned) {
+  const int id = s.ui.selected_element;
+  if (id < 0) return report_status(s.doc, "select an element first (edit stones, then click one)");
+  edit_on_screen(s, [&](const Pavement& p) { return with_pinned(s.doc.design, p, id, pinned); });
+}
+
+void delete_selected(Studio& s) {
+  const int id = s.ui.selected_element;
+  if (id < 0) return report_status(s.doc, "select an element first (edit stones, then click one)");
+  edit_on_screen(s, [&](const Pavement& p) { return without_element(s.doc.design, p, id); });
+  s.ui.selected_element = -1;
+}
+
+void move_selected(Studio& s, glm::dvec2 offset) {
+  const int id = s.ui.selected_element;
+  if (id < 0) return report_status(s.doc, "select an element first (edit stones, then click one)");
+  edit_on_screen(s, [&](const Pavement& p) { return with_dragged(s.doc.design, p, id, offset); });
+}
+
+void add_element_at(Studio& s, glm::dvec2 uv) {
+  int id = -1;
+  edit_on_screen(s, [&](const Pavement& p) { return with_added_element(s.doc.design, p, uv, &id); });
+  if (id >= 0) s.ui.selected_element = id;
 }
 
 bool result_is_final(const Studio& s) {

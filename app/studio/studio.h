@@ -50,7 +50,13 @@ struct UiState {
   double cut_thickness = 1;            // Cut metal: the metal's thickness, surface units
   CutAxis cut_axis = CutAxis::Auto;    // the plane a closed surface is cut across (paver run --cut)
   int selected_element = -1;           // the element id selected in the views or by `select`; -1 = none
+  bool edit_elements = false;          // the views' left button selects, drags and adds single elements
+  bool dragging_element = false;       // the selected element is being dragged in the 2D view
+  glm::dvec2 drag_from{0};             // where that drag started, map units
+  glm::dvec2 move_by{0};               // the elements panel's move, in spacings D
 };
+
+
 
 struct Studio {
   Studio(AppWindow& w, render::Renderer& r) : window(w), renderer(r) {}
@@ -100,6 +106,12 @@ void reset_run(Studio& s);
 // Selects element `id` of the pavement on screen and says what it is in the status line. Throws
 // InputError when there is no such element.
 void select_element(Studio& s, int id);
+
+// The edits the views, the elements panel and the shortcuts make on the selected element.
+void pin_selected(Studio& s, bool pinned);
+void delete_selected(Studio& s);
+void move_selected(Studio& s, glm::dvec2 offset);  // map units
+void add_element_at(Studio& s, glm::dvec2 uv);
 
 // Whether the pavement on screen is final for the current design.
 bool result_is_final(const Studio& s);

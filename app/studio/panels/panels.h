@@ -12,6 +12,7 @@ struct UiState;
 void side_panels(Studio& s, ImVec2 pos, ImVec2 size);  // the tabbed column of the panels below
 void pattern_panel(Document& doc, UiState& ui);        // tessellation, D, operators, unit-cell editor
 void elements_panel(Document& doc, UiState& ui);       // V- and E-elements, custom shape
+void single_elements_panel(Studio& s);                 // the selected stone, pin / delete / move, the edits
 void optimization_panel(Studio& s);                    // solver parameters, backend, run control
 void report_panel(const Studio& s);                    // quality figures, iterations, timings, histogram
 void file_panel(Studio& s);                            // open, recent, design, export, undo/redo

@@ -44,7 +44,10 @@ void side_panels(Studio& s, ImVec2 pos, ImVec2 size) {
     };
     tab("File", [&] { file_panel(s); });
     tab("Pattern", [&] { pattern_panel(s.doc, s.ui); });
-    tab("Elements", [&] { elements_panel(s.doc, s.ui); });
+    tab("Elements", [&] {
+      elements_panel(s.doc, s.ui);
+      single_elements_panel(s);
+    });
     tab("Optimize", [&] { optimization_panel(s); });
     tab("Report", [&] { report_panel(s); });
     tab("Help", [] { help_panel(); });

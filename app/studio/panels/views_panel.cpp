@@ -1,13 +1,17 @@
 // The views: the 3D view (orbit with a left drag, pan with a right or middle drag, zoom with the
 // wheel) and the 2D map view (pan, zoom; a left drag moves the pattern over the map, the round
-// handle turns it, the square one scales it), one large and the other as an inset. Each view is
-// rendered only when what it shows or how it is looked at changed.
+// handle turns it, the square one scales it), one large and the other as an inset. With "edit
+// stones" on, a left click selects the element under it (both views), a left drag in the 2D view
+// moves it, and Ctrl+click there adds one. Each view is rendered only when what it shows or how it
+// is looked at changed.
 #include "panels.h"
 
 #include "../studio.h"
 #include "../view_images.h"
+#include "../element_editing.h"
 
 #include "pipeline/pavement.h"
+#include "core/input_error.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
@@ -18,6 +22,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <utility>
 
 namespace paver::studio {
@@ -51,6 +56,41 @@ void render_if_changed(Studio& s, int view, int width, int height) {
 }
 
 // --- 3D ---------------------------------------------------------------------------------------
+
+// Where a surface point shows in the 3D view (nullopt behind the camera).
+std::optional<ImVec2> project(const glm::mat4& vp, ImVec2 origin, ImVec2 size, glm::dvec3 p) {
+  const glm::vec4 clip = vp * glm::vec4(glm::vec3(p), 1);
+  if (clip.w <= 0) return std::nullopt;
+  return ImVec2(origin.x + (clip.x / clip.w + 1) * 0.5f * size.x, origin.y + (1 - clip.y / clip.w) * 0.5f * size.y);
+}
+
+// A click (a press and release without a drag) on the 3D view: the element nearest the cursor
+// among those whose projected footprint it is in, nearest the camera first.
+void pick_3d(Studio& s, ImVec2 origin, ImVec2 size) {
+  if (!s.doc.result.pavement) return;
+  const Elements& e = s.doc.result.pavement->elements;
+  const render::OrbitCamera& camera = s.views.camera;
+  const glm::mat4 vp = camera.view_projection(size.x / size.y);
+  const ImVec2 mouse = ImGui::GetIO().MousePos;
+  int best = -1;
+  double nearest = 1e300;
+  for (std::size_t i = 0; i < e.size(); ++i) {
+    const std::optional<ImVec2> centre = project(vp, origin, size, e.position[i]);
+    if (!centre) continue;
+    // The footprint's projected radius, from a point half a diameter across the view.
+    const glm::dvec3 side = glm::normalize(glm::cross(glm::dvec3(camera.eye()) - e.position[i], e.normal[i]));
+    const std::optional<ImVec2> edge = project(vp, origin, size, e.position[i] + 0.5 * e.diameter[i] * side);
+    const float radius = edge ? std::hypot(edge->x - centre->x, edge->y - centre->y) : 4.0f;
+    const float off = std::hypot(mouse.x - centre->x, mouse.y - centre->y);
+    const double depth = glm::length(glm::dvec3(camera.eye()) - e.position[i]);
+    if (off <= std::max(radius, 4.0f) && depth < nearest) nearest = depth, best = int(i);
+  }
+  if (best < 0) {
+    s.ui.selected_element = -1;
+    return;
+  }
+  select_element(s, e.id[std::size_t(best)]);
+}
 
 void interact_3d(render::OrbitCamera& camera, ImVec2 size) {
   const ImGuiIO& io = ImGui::GetIO();
@@ -162,10 +202,78 @@ void lattice_preview(ImDrawList* draw, const MapFrame& f, const Design& design, 
       }
 }
 
+// Edit stones in the 2D view: a click selects (or, with Ctrl, adds), a drag moves the selected
+// element, dropped where the button is let go.
+void interact_elements_2d(Studio& s, const MapFrame& f) {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (!s.doc.result.pavement) return;
+  if (ImGui::IsItemActivated() && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+    const glm::dvec2 at = f.to_map(io.MousePos);
+    if (io.KeyCtrl) return add_element_at(s, at);
+    const std::optional<int> id = element_at(*s.doc.result.pavement, at);
+    if (!id) {
+      s.ui.selected_element = -1;
+      return;
+    }
+    try {
+      select_element(s, *id);
+    } catch (const InputError& e) {
+      report_error(s.doc, e.what());
+      return;
+    }
+    s.ui.dragging_element = true;
+    s.ui.drag_from = at;
+  }
+  if (s.ui.dragging_element && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+    s.ui.dragging_element = false;
+    const glm::dvec2 offset = f.to_map(io.MousePos) - s.ui.drag_from;
+    // A click that barely moved is a selection, not a move.
+    if (glm::length(offset) * f.size.y / (2 * f.view.half_height) > 3) move_selected(s, offset);
+  }
+}
+
+// The selected element: a ring around it, and while it is dragged its footprint at the cursor.
+void draw_selection_2d(Studio& s, ImDrawList* draw, const MapFrame& f) {
+  if (s.ui.selected_element < 0 || !s.doc.result.pavement) return;
+  const Pavement& p = *s.doc.result.pavement;
+  const std::optional<std::size_t> i = find_element(p, s.ui.selected_element);
+  if (!i) return;
+  const float pixels_per_unit = float(f.size.y / (2 * f.view.half_height));
+  const float radius = float(0.5 * p.elements.diameter[*i]) * pixels_per_unit;
+  const ImVec2 c = f.to_screen(p.elements.uv[*i]);
+  draw->AddCircle(c, radius + 3, IM_COL32(0, 0, 0, 200), 48, 4);
+  draw->AddCircle(c, radius + 3, IM_COL32(90, 200, 250, 255), 48, 2);
+  if (s.ui.dragging_element) {
+    const ImVec2 m = ImGui::GetIO().MousePos;
+    const ImVec2 at(c.x + m.x - f.to_screen(s.ui.drag_from).x, c.y + m.y - f.to_screen(s.ui.drag_from).y);
+    draw->AddCircleFilled(at, radius, IM_COL32(90, 200, 250, 110), 48);
+    draw->AddLine(c, at, IM_COL32(90, 200, 250, 200), 1.5f);
+  }
+}
+
+void draw_selection_3d(Studio& s, ImDrawList* draw, ImVec2 origin, ImVec2 size) {
+  if (s.ui.selected_element < 0 || !s.doc.result.pavement) return;
+  const Pavement& p = *s.doc.result.pavement;
+  const std::optional<std::size_t> i = find_element(p, s.ui.selected_element);
+  if (!i) return;
+  const render::OrbitCamera& camera = s.views.camera;
+  const glm::mat4 vp = camera.view_projection(size.x / size.y);
+  const glm::dvec3 at = p.elements.position[*i];
+  const std::optional<ImVec2> c = project(vp, origin, size, at);
+  if (!c) return;
+  const glm::dvec3 side = glm::normalize(glm::cross(glm::dvec3(camera.eye()) - at, p.elements.normal[*i]));
+  const std::optional<ImVec2> edge = project(vp, origin, size, at + 0.5 * p.elements.diameter[*i] * side);
+  const float radius = edge ? std::hypot(edge->x - c->x, edge->y - c->y) : 6.0f;
+  draw->AddCircle(*c, radius + 3, IM_COL32(0, 0, 0, 200), 48, 4);
+  draw->AddCircle(*c, radius + 3, IM_COL32(90, 200, 250, 255), 48, 2);
+}
+
 void interact_2d(Studio& s, const MapFrame& f, const Handles& h, bool with_handles) {
   const ImGuiIO& io = ImGui::GetIO();
   render::MapView& view = s.views.map_view;
-  if (ImGui::IsItemActivated() && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+  if (s.ui.edit_elements && with_handles) {
+    interact_elements_2d(s, f);
+  } else if (ImGui::IsItemActivated() && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
     const auto near = [&](ImVec2 handle) { return with_handles && distance(io.MousePos, handle) < kHandleRadius + 3; };
     s.ui.map_drag = near(h.rotation) ? MapDrag::Rotation : near(h.scale) ? MapDrag::Scale : MapDrag::Offset;
   }
@@ -236,6 +344,13 @@ void view(Studio& s, int which, ImVec2 size, bool large) {
   ImDrawList* draw = ImGui::GetWindowDrawList();
   if (which == 0) {
     interact_3d(s.views.camera, size);
+    // A click without a drag selects in edit-stones mode; a drag still orbits.
+    if (s.ui.edit_elements && ImGui::IsItemDeactivated() &&
+        ImGui::GetIO().MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] < 9)
+      pick_3d(s, origin, size);
+    draw->PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
+    draw_selection_3d(s, draw, origin, size);
+    draw->PopClipRect();
     if (large && s.views.show_legend && s.views.colour_mode == render::ColourMode::NeighbourRatio)
       ratio_legend(draw, origin, size);
   } else {
@@ -250,7 +365,9 @@ void view(Studio& s, int which, ImVec2 size, bool large) {
                                                         : 0;
         if (spacing > 0) lattice_preview(draw, frame, s.doc.design, spacing);
       }
-      draw_handles(draw, placement_handles(frame, *s.doc.surface.map, s.doc.design.placement), s.ui.map_drag);
+      if (!s.ui.edit_elements)
+        draw_handles(draw, placement_handles(frame, *s.doc.surface.map, s.doc.design.placement), s.ui.map_drag);
+      draw_selection_2d(s, draw, frame);
       draw->PopClipRect();
     }
   }
@@ -274,11 +391,17 @@ void toolbar(Studio& s) {
   ImGui::SameLine();
   ImGui::Checkbox("legend", &s.views.show_legend);
   ImGui::SameLine();
+  ImGui::Checkbox("edit stones (E)", &s.ui.edit_elements);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Click a stone to select it (either view); in the 2D map drag it to move it (it stays where you "
+                      "drop it, its neighbours make room), Ctrl+click to add one. Del deletes the selected stone, P "
+                      "pins or unpins it. Every edit is undoable and saved with the design.");
+  ImGui::SameLine();
   if (ImGui::Button("swap views (V)")) s.views.large_3d = !s.views.large_3d;
   ImGui::SameLine();
   if (ImGui::Button("reset view (R)") && s.doc.surface.map) {
     s.views.camera = render::frame_surface(s.doc.surface.map->mesh);
-    s.views.map_view = render::frame_map(map_for_topology(*s.doc.surface.map, s.doc.design.pattern.topology));
+    s.views.map_view = render::frame_map(map_for_topology(*s.doc.surface.map, s.doc.design.pattern.topology), s.views.map_aspect);
   }
 }
 
@@ -294,6 +417,7 @@ void views_area(Studio& s, ImVec2 pos, ImVec2 size) {
   ImGui::PopStyleVar();
   toolbar(s);
   const ImVec2 area = ImGui::GetContentRegionAvail();
+  if (area.x >= 16 && area.y >= 16) s.views.map_aspect = area.x / area.y;
   if (!s.doc.surface.map || area.x < 16 || area.y < 16) {
     const char* text = s.loader.busy() ? "opening the surface..." : "Open a surface (File), or drop one on the window.";
     ImGui::SetCursorPos(ImVec2(ImGui::GetCursorPosX() + area.x * 0.5f - ImGui::CalcTextSize(text).x * 0.5f,
