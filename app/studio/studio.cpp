@@ -212,11 +212,55 @@ void save_view_png(Studio& s, const fs::path& path) {
   report_status(s.doc, "saved " + path.string());
 }
 
+bool within_budget(Studio& s) {
+  const std::uint64_t revision = s.doc.revision;
+  if (s.run.budget_granted == revision) return true;
+  if (s.run.budget_asked == revision) return false;  // asked already; waiting for the answer
+  const Design& d = s.doc.design;
+  if (d.pattern.spacing <= 0) return true;  // derived from the surface: a sane size
+  double points = 0;
+  try {
+    const UnitCell cell = make_design_cell(d.pattern);
+    points = estimate_point_count(map_for_topology(*s.doc.surface.map, d.pattern.topology), cell, d.placement);
+  } catch (const std::exception&) {
+    return true;  // the run reports what is wrong with the design
+  }
+  if (!(points > s.run.point_budget)) return true;
+  s.run.budget_asked = revision;
+  s.run.budget_points = points;
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "D = %.4g would place about %.3g elements, above the studio's budget of %.3g: about %.1f GB of "
+                "memory and %.0f s to solve on 2 cores",
+                d.pattern.spacing, points, s.run.point_budget, points * kStudioBytesPerPoint / 1e9,
+                points * kStudioSecondsPerPoint);
+  if (s.script_mode)
+    report_error(s.doc, std::string(text) + "; a script does not ask: use a larger spacing, or `paver run` for the "
+                                            "full design");
+  else
+    report_status(s.doc, text);
+  return false;
+}
+
+void grant_budget(Studio& s) {
+  s.run.budget_granted = s.doc.revision;
+  run_now(s);
+}
+
+void decline_budget(Studio& s) {
+  s.run.budget_asked = s.doc.revision;  // not asked again for this revision
+  if (undo(s.doc))
+    report_status(s.doc, "not run: the design is back to before that change");
+  else
+    report_status(s.doc, "not run: use a larger spacing");
+}
+
 void run_now(Studio& s, bool paused, int step) {
   if (!s.doc.surface.map) {
     report_status(s.doc, "open a surface first");
     return;
   }
+  if (!within_budget(s)) return;
   // Run again for the same design (Run, Step, another backend): the latency counts from now.
   if (s.live.revision() == s.doc.revision) s.doc.changed_at = Clock::now();
   RunRequest request;

@@ -15,6 +15,7 @@
 
 #include <glm/vec2.hpp>
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -30,7 +31,19 @@ struct RunSettings {
   app::BackendChoice choice;
   int step_iterations = 10;       // iterations per press of Step
   bool auto_run = true;           // every design change re-runs the pavement
+  // A design predicted to place more particles than this asks before it runs (the studio keeps
+  // every particle, element and instance in memory and the UI waits on none of them, but a
+  // 2.7M-element pendant still takes 5 GB and minutes).
+  double point_budget = 300000;
+  std::uint64_t budget_granted = 0;   // the document revision the designer said "run anyway" for
+  std::uint64_t budget_asked = 0;     // the revision the question is (or was) asked for
+  double budget_points = 0;           // and the points it predicted
 };
+
+// The measured cost of a particle in the studio (docs/benchmarks.md: the lily at 1M, 2 cores):
+// memory and solve time, for the question asked above the budget.
+inline constexpr double kStudioBytesPerPoint = 2000;
+inline constexpr double kStudioSecondsPerPoint = 7e-5;
 
 // The unit-cell editor's mode: what a click does.
 enum class CellEditMode { Flip, Remove, Add };
@@ -96,6 +109,13 @@ void export_outputs(Studio& s, const std::filesystem::path& folder);
 void cut_metal(Studio& s, const std::filesystem::path& folder, double thickness);
 // The 3D view as a PNG, at its current size. Throws InputError.
 void save_view_png(Studio& s, const std::filesystem::path& path);
+
+// Whether the current design may run: within RunSettings::point_budget, or granted. Above it, the
+// question is asked once per revision (a script stops with an error instead).
+bool within_budget(Studio& s);
+// The designer's answer: run it anyway, or go back to the design before.
+void grant_budget(Studio& s);
+void decline_budget(Studio& s);
 
 // Run control for the optimization panel and the shortcuts.
 void run_now(Studio& s, bool paused = false, int step = 0);

@@ -269,6 +269,19 @@ TEST_F(StudioSession, AnElementCommandOnAMissingIdFails) {
   EXPECT_NE(r.err.find("element 99999999 is not in the pavement on screen"), std::string::npos) << describe(r);
 }
 
+// The smallest spacing the pattern stage accepts on the pendant (2.7M elements) is beyond the
+// studio's budget: a script stops at once with the figures instead of taking gigabytes and
+// minutes (the window asks "run anyway?" instead).
+TEST_F(StudioSession, ADesignBeyondTheBudgetIsRefusedBeforeItRuns) {
+  const fs::path script = dir_ / "huge.txt";
+  std::ofstream(script) << "open assets/surfaces/pendant.obj\nspacing 0.0162\noptimize\n";
+  const Outcome r = studio("--script " + quote(script.string()) + " --backend cpu --width 640 --height 480", dir_);
+  EXPECT_EQ(r.exit_code, 1) << describe(r);
+  EXPECT_NE(r.err.find("would place about 2.67e+06 elements, above the studio's budget"), std::string::npos)
+      << describe(r);
+  EXPECT_EQ(r.out.find("latency_ms", r.out.find("spacing 0.0162")), std::string::npos) << "it ran: " << describe(r);
+}
+
 #ifdef PAVER_WITH_CGAL
 // A closed bead cut across x (the script's cut_axis, the file panel's "cut across") exports what
 // `paver run --cut x` writes: the same placements.

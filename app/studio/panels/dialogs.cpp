@@ -49,6 +49,28 @@ void dialogs(Studio& s) {
     ImGui::EndPopup();
   }
 
+  // A design above the run budget: run it anyway, or go back.
+  const bool over_budget = !s.script_mode && s.run.budget_asked == doc.revision && s.run.budget_granted != doc.revision;
+  if (over_budget && doc.messages.error.empty() && !ImGui::IsPopupOpen("Large design")) ImGui::OpenPopup("Large design");
+  ImGui::SetNextWindowSize(ImVec2(520, 0));
+  if (ImGui::BeginPopupModal("Large design", nullptr, ImGuiWindowFlags_NoSavedSettings)) {
+    ImGui::TextWrapped("This design would place about %.3g elements: about %.1f GB of memory and %.0f s of solving "
+                       "on this machine (the studio's budget is %.3g). The studio stays responsive and Stop ends the "
+                       "run, but the views will be slow.",
+                       s.run.budget_points, s.run.budget_points * kStudioBytesPerPoint / 1e9,
+                       s.run.budget_points * kStudioSecondsPerPoint, s.run.point_budget);
+    if (ImGui::Button("Run anyway", ImVec2(140, 0))) {
+      ImGui::CloseCurrentPopup();
+      grant_budget(s);
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Go back", ImVec2(140, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
+      ImGui::CloseCurrentPopup();
+      decline_budget(s);
+    }
+    ImGui::EndPopup();
+  }
+
   if (s.ui.quit_dialog && doc.messages.error.empty() && !ImGui::IsPopupOpen("Quit")) ImGui::OpenPopup("Quit");
   ImGui::SetNextWindowSize(ImVec2(460, 0));
   if (ImGui::BeginPopupModal("Quit", nullptr, ImGuiWindowFlags_NoSavedSettings)) {

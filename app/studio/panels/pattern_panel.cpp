@@ -163,13 +163,16 @@ void pattern_panel(Document& doc, UiState& ui) {
   help_marker("The regular tessellation of section 4.1. Changing it clears the edge operators and the "
               "E-elements' cell edges, which name the old cell's edges.");
 
+  // Applies on Enter, never per keystroke: typing 0.5 must not pave at 0 first (nor ask about it).
   double spacing = d.pattern.spacing;
-  if (ImGui::InputDouble("D (spacing)", &spacing, 0.1, 1.0, "%.4g") && spacing >= 0) {
+  if (ImGui::InputDouble("D (spacing)", &spacing, 0, 0, "%.4g", ImGuiInputTextFlags_EnterReturnsTrue) &&
+      std::isfinite(spacing) && spacing >= 0 && spacing != d.pattern.spacing) {
     d.pattern.spacing = spacing;
-    change_design(doc, d, ImGui::IsItemActive());
+    change_design(doc, d);
   }
-  help_marker("Edge length of the tessellation in surface units. 0 = derived from the surface "
-              "(about 1000 points).");
+  help_marker("Edge length of the tessellation in surface units; type it and press Enter. 0 = derived from the "
+              "surface (about 1000 points). A spacing that would place more elements than the studio's budget "
+              "asks before it runs.");
   if (doc.result.pavement && d.pattern.spacing <= 0)
     ImGui::TextDisabled("derived: D = %.4g", doc.result.pavement->design.pattern.spacing);
 
