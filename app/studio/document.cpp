@@ -34,10 +34,11 @@ bool change_design(Document& doc, const Design& next, bool dragging) {
   }
   // Design has no operator==; its JSON form is complete and small.
   if (design_to_json(next) == design_to_json(doc.design)) return true;  // nothing to undo or re-run
-  // Element ids name the elements of one pattern layout: another layout would give the edits to
-  // other elements.
+  // Element ids name the elements of one pattern layout: edits carried over to another layout
+  // would go to other elements. (A design that brings its own edits, a loaded file, keeps them.)
   Design changed = next;
-  if (!changed.edits.empty() && changes_pattern_layout(doc.design, changed)) {
+  if (!changed.edits.empty() && design_to_json(changed)["edits"] == design_to_json(doc.design)["edits"] &&
+      changes_pattern_layout(doc.design, changed)) {
     changed.edits = {};
     report_status(doc, "element edits cleared: they named elements of the pattern before this change (undo brings "
                        "them back)");

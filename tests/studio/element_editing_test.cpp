@@ -118,6 +118,13 @@ TEST(ElementEditing, ANewPatternLayoutClearsTheEditsAndUndoBringsThemBack) {
   ASSERT_TRUE(change_design(doc, finer));
   EXPECT_TRUE(doc.design.edits.empty());
   EXPECT_NE(doc.messages.status.find("element edits cleared"), std::string::npos);
+  // A design that brings its own edits (a file opened) keeps them, whatever its layout.
+  Document other;
+  Design loaded = p.design;
+  loaded.pattern.spacing *= 1.1;
+  loaded.edits.deleted.push_back({3, {0, 0}});
+  ASSERT_TRUE(change_design(other, loaded));
+  EXPECT_EQ(other.design.edits.deleted.size(), 1u);
   // A change that keeps the layout keeps them.
   ASSERT_TRUE(undo(doc));
   Design smaller = doc.design;
