@@ -23,6 +23,12 @@ void new_revision(Document& doc, bool dragging) {
                                            : Clock::duration::zero());
 }
 
+// Unsaved means different from what was last loaded or saved, so undoing back to it is saved again.
+void refresh_dirty(Document& doc) {
+  const std::string now = design_to_json(doc.design).dump();
+  doc.dirty = now != (doc.saved_json.empty() ? design_to_json(Design{}).dump() : doc.saved_json);
+}
+
 }  // namespace
 
 bool change_design(Document& doc, const Design& next, bool dragging) {
@@ -30,6 +36,7 @@ bool change_design(Document& doc, const Design& next, bool dragging) {
     validate_design(next, "design");
   } catch (const InputError& e) {
     report_error(doc, e.what());
+    doc.messages.error_kept_design = true;
     return false;
   }
   // Design has no operator==; its JSON form is complete and small.
@@ -46,7 +53,7 @@ bool change_design(Document& doc, const Design& next, bool dragging) {
   if (!doc.gesture_open) doc.history.record(doc.design);
   doc.gesture_open = dragging;
   doc.design = std::move(changed);
-  doc.dirty = true;
+  refresh_dirty(doc);
   new_revision(doc, dragging);
   return true;
 }
@@ -58,7 +65,7 @@ bool undo(Document& doc) {
   std::optional<Design> previous = doc.history.undo(doc.design);
   if (!previous) return false;
   doc.design = std::move(*previous);
-  doc.dirty = true;
+  refresh_dirty(doc);
   new_revision(doc, false);
   report_status(doc, "undone");
   return true;
@@ -69,7 +76,7 @@ bool redo(Document& doc) {
   std::optional<Design> next = doc.history.redo(doc.design);
   if (!next) return false;
   doc.design = std::move(*next);
-  doc.dirty = true;
+  refresh_dirty(doc);
   new_revision(doc, false);
   report_status(doc, "redone");
   return true;
@@ -103,7 +110,8 @@ bool open_design_file(Document& doc, const std::filesystem::path& path) {
     end_gesture(doc);
     if (!change_design(doc, loaded)) return false;
     doc.design_path = path;
-    doc.dirty = false;
+    doc.saved_json = design_to_json(doc.design).dump();
+    refresh_dirty(doc);
     report_status(doc, "loaded design " + path.string());
     return true;
   } catch (const std::exception& e) {
@@ -121,10 +129,14 @@ void prepare_output(const Document& doc, const std::filesystem::path& path, bool
 
 bool save_design_file(Document& doc, const std::filesystem::path& path) {
   try {
+    if (is_bundled_design(path))
+      throw InputError(path.string() + " is a design bundled with Paver: save yours under another name (File, design "
+                                       "file, Save)");
     prepare_output(doc, path, true);
     save_design(path, doc.design);
     doc.design_path = path;
-    doc.dirty = false;
+    doc.saved_json = design_to_json(doc.design).dump();
+    refresh_dirty(doc);
     report_status(doc, "saved design " + path.string());
     return true;
   } catch (const std::exception& e) {
@@ -155,7 +167,17 @@ void report_status(Document& doc, std::string text) { doc.messages.status = std:
 void report_error(Document& doc, std::string text) {
   doc.messages.status = "error: " + text;
   doc.messages.error = std::move(text);
+  doc.messages.error_kept_design = false;
   ++doc.messages.error_count;
+}
+
+bool is_bundled_design(const std::filesystem::path& path) {
+  std::error_code error;
+  const std::filesystem::path full = std::filesystem::weakly_canonical(path, error);
+  if (error) return false;
+  const std::filesystem::path folder = full.parent_path();
+  return folder.filename() == "designs" && folder.parent_path().filename() == "assets" &&
+         std::filesystem::is_directory(folder.parent_path() / "surfaces", error);
 }
 
 }  // namespace paver::studio

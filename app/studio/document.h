@@ -47,13 +47,15 @@ struct Messages {
   std::string status;                     // the status line
   std::string error;                      // the error dialog's text; empty when none is open
   int error_count = 0;                    // errors reported so far (a script stops on a new one)
+  bool error_kept_design = false;         // the error refused a design change (so the design is unchanged)
 };
 
 struct Document {
   Surface surface;
   Design design;
   std::filesystem::path design_path;      // where the design was last loaded from or saved to
-  bool dirty = false;                     // changed since it was loaded or saved
+  bool dirty = false;                     // differs from the design last loaded or saved (or the default)
+  std::string saved_json;                 // that design, as JSON text; empty = the default design
   UndoHistory history;
 
   std::uint64_t revision = 1;             // bumps whenever the design or the surface changes
@@ -100,5 +102,9 @@ void prepare_output(const Document& doc, const std::filesystem::path& path, bool
 
 void report_status(Document& doc, std::string text);
 void report_error(Document& doc, std::string text);  // status line and the error dialog
+
+// Whether `path` is one of the designs bundled with Paver (assets/designs/ beside assets/surfaces/):
+// Save refuses to overwrite one.
+bool is_bundled_design(const std::filesystem::path& path);
 
 }  // namespace paver::studio

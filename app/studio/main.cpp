@@ -45,7 +45,11 @@ int main(int argc, char** argv) {
     s.recent = load_recent_files(recent_files_path());
     set_backend(s, backend);
     if (!surface.empty()) open_surface(s, surface);
-    if (!design.empty()) open_any(s, design);
+    if (!design.empty()) {
+      open_any(s, design);
+      // The design the studio starts with is where undo stops, not the built-in default.
+      s.doc.history.clear();
+    }
 
     while (!s.quit) {
       handle_close_request(s);

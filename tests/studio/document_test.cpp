@@ -10,6 +10,8 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <iterator>
+#include <fstream>
 #include <numeric>
 
 namespace paver::studio {
@@ -72,6 +74,38 @@ TEST(Document, AnInvalidDesignIsReportedAndTheDesignKept) {
   EXPECT_EQ(doc.messages.error_count, 1);
   EXPECT_NE(doc.messages.error.find("solver.dt"), std::string::npos) << doc.messages.error;
   EXPECT_TRUE(doc.messages.status.starts_with("error: "));
+  EXPECT_TRUE(doc.messages.error_kept_design) << "the dialog may say the design is unchanged";
+  report_error(doc, "a run failed");
+  EXPECT_FALSE(doc.messages.error_kept_design) << "a run's error comes after the design changed";
+}
+
+TEST(Document, UnsavedMeansDifferentFromWhatWasLoadedOrSaved) {
+  Document doc;
+  EXPECT_FALSE(doc.dirty);
+  ASSERT_TRUE(change_design(doc, with_dt(0.25)));
+  EXPECT_TRUE(doc.dirty);
+  ASSERT_TRUE(undo(doc));
+  EXPECT_FALSE(doc.dirty) << "undone back to the default design: nothing to save";
+  ASSERT_TRUE(redo(doc));
+  EXPECT_TRUE(doc.dirty);
+}
+
+TEST(Document, SaveRefusesToOverwriteABundledDesign) {
+  const std::filesystem::path bundled = test::source_dir() / "assets/designs/dome_hex_d6.json";
+  const std::string before = [&] {
+    std::ifstream in(bundled);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  }();
+  Document doc;
+  ASSERT_TRUE(open_design_file(doc, bundled));
+  Design d = doc.design;
+  d.solver.dt = 0.123;
+  ASSERT_TRUE(change_design(doc, d));
+  EXPECT_FALSE(save_design_file(doc, bundled));
+  EXPECT_NE(doc.messages.error.find("is a design bundled with Paver"), std::string::npos) << doc.messages.error;
+  std::ifstream in(bundled);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), before);
+  EXPECT_TRUE(doc.dirty);
 }
 
 TEST(Document, DesignFilesRoundTripAndABadOneChangesNothing) {

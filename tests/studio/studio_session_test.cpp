@@ -283,6 +283,18 @@ TEST_F(StudioSession, ADesignBeyondTheBudgetIsRefusedBeforeItRuns) {
   EXPECT_EQ(r.out.find("script 3: optimize"), std::string::npos) << "it ran: " << describe(r);
 }
 
+// The design given at launch is where undo stops: undo right after launch has nothing to undo
+// (it used to swap in the built-in default).
+TEST_F(StudioSession, UndoAfterLaunchKeepsTheLaunchDesign) {
+  const fs::path script = dir_ / "undo.txt";
+  std::ofstream(script) << "undo\n";
+  const Outcome r = studio("assets/surfaces/dome.obj --design assets/designs/dome_hex_d6.json --script " +
+                               quote(script.string()) + " --backend cpu --width 640 --height 480",
+                           dir_);
+  EXPECT_EQ(r.exit_code, 2) << describe(r);
+  EXPECT_NE(r.err.find("undo: there is nothing to undo"), std::string::npos) << describe(r);
+}
+
 #ifdef PAVER_WITH_CGAL
 // A closed bead cut across x (the script's cut_axis, the file panel's "cut across") exports what
 // `paver run --cut x` writes: the same placements.

@@ -18,8 +18,10 @@ void status_bar(Studio& s, ImVec2 pos, ImVec2 size) {
     ImGui::Text("[%s %.0f%%]", s.loader.stage().c_str(), 100 * s.loader.progress());
   else if (state == RunState::Running || state == RunState::Paused)
     ImGui::Text("[%s: iteration %d]", state == RunState::Running ? "optimizing" : "paused", s.live.iteration());
-  else if (result_is_final(s))
+  else if (result_is_final(s) && s.doc.result.latency_ms >= 0)
     ImGui::Text("[final, %.0f ms from the edit]", s.doc.result.latency_ms);
+  else if (result_is_final(s))
+    ImGui::TextUnformatted("[final]");
   else
     ImGui::TextUnformatted("[ ]");
   ImGui::SameLine();
@@ -41,7 +43,9 @@ void dialogs(Studio& s) {
   if (ImGui::BeginPopupModal("Error", nullptr, ImGuiWindowFlags_NoSavedSettings)) {
     ImGui::TextWrapped("%s", doc.messages.error.c_str());
     ImGui::Spacing();
-    ImGui::TextDisabled("The design is unchanged.");
+    ImGui::TextDisabled("%s", doc.messages.error_kept_design
+                                  ? "The design is unchanged."
+                                  : "The views keep the last pavement that could be made; Ctrl+Z undoes the last change.");
     if (ImGui::Button("OK", ImVec2(120, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter))) {
       doc.messages.error.clear();
       ImGui::CloseCurrentPopup();
