@@ -29,6 +29,8 @@ bool sync_scene(Scene& scene, render::Renderer& renderer, Document& doc, const L
   // they move. Otherwise the final pavement.
   const RunState state = live.state();
   if ((state == RunState::Running || state == RunState::Paused) && live.revision() == doc.revision) {
+    const auto now = std::chrono::steady_clock::now();
+    if (!recolour && scene.live_sequence != 0 && now - scene.live_uploaded < kLiveInterval) return false;
     const std::optional<LiveSnapshot> snapshot = live.snapshot_since(recolour ? 0 : scene.live_sequence);
     if (!snapshot || snapshot->revision != doc.revision) return false;
     // Post-processing is left out while the particles move: it is the slow part, and only the
@@ -42,6 +44,7 @@ bool sync_scene(Scene& scene, render::Renderer& renderer, Document& doc, const L
     renderer.set_pattern(*scene.map_2d, *snapshot->pattern, snapshot->points);
     scene.pavement = nullptr;
     scene.live_sequence = snapshot->sequence;
+    scene.live_uploaded = now;
     ++scene.generation;
     return false;
   }

@@ -9,6 +9,7 @@
 #include "renderer.h"
 
 #include <array>
+#include <chrono>
 #include <cstdint>
 #include <vector>
 
@@ -19,10 +20,15 @@ struct Scene {
   const SurfaceMap* map_2d = nullptr;     // the map drawn (a band's seamless map when its points are on it)
   const Pavement* pavement = nullptr;     // the final pavement last uploaded; null while live
   std::uint64_t live_sequence = 0;        // the live snapshot last uploaded
+  std::chrono::steady_clock::time_point live_uploaded{};  // when: live snapshots are shown at most kLiveInterval apart
   render::ColourMode colour_mode = render::ColourMode::NeighbourRatio;
   std::uint64_t generation = 0;
   std::array<std::vector<double>, 2> rendered;  // per view: the inputs its image was drawn with
 };
+
+// Placing, colouring and drawing a live snapshot takes the UI thread tens of milliseconds on a
+// software renderer with the solver on the other cores: the frames in between stay light.
+inline constexpr auto kLiveInterval = std::chrono::milliseconds(150);
 
 // Returns true when the document's final pavement was uploaded this frame: once it is presented,
 // the edit-to-result latency is known.

@@ -320,6 +320,22 @@ void draw_studio(Studio& s) {
 }
 
 void after_present(Studio& s, const std::optional<render::Image>& frame) {
+  SolvingFrames& f = s.solving_frames;
+  const auto now = std::chrono::steady_clock::now();
+  if (s.live.state() == RunState::Running) {
+    if (f.last != std::chrono::steady_clock::time_point{}) {
+      const double ms = std::chrono::duration<double, std::milli>(now - f.last).count();
+      ++f.frames, f.total_ms += ms, f.slowest_ms = std::max(f.slowest_ms, ms);
+    }
+    f.last = now;
+  } else if (f.last != std::chrono::steady_clock::time_point{}) {
+    if (s.script_mode && f.frames > 0) {
+      std::printf("frames_while_solving %d, %.1f fps mean, slowest %.1f ms\n", f.frames, 1000.0 * f.frames / f.total_ms,
+                  f.slowest_ms);
+      std::fflush(stdout);
+    }
+    f = {};
+  }
   if (s.result_shown && s.doc.result.latency_ms < 0) {
     s.doc.result.latency_ms = ms_since(s.doc.changed_at);
     if (s.script_mode) {

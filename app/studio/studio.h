@@ -15,6 +15,7 @@
 
 #include <glm/vec2.hpp>
 
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -71,6 +72,14 @@ struct UiState {
 
 
 
+// Frame times while a run is solving in the background: the UI must keep its pace meanwhile. A
+// script session prints them when the run ends ("frames_while_solving").
+struct SolvingFrames {
+  int frames = 0;
+  double total_ms = 0, slowest_ms = 0;
+  std::chrono::steady_clock::time_point last{};
+};
+
 struct Studio {
   Studio(AppWindow& w, render::Renderer& r) : window(w), renderer(r) {}
 
@@ -88,6 +97,7 @@ struct Studio {
   bool script_mode = false;  // quitting does not ask; results are logged to stdout
   bool quit = false;
   bool result_shown = false; // the final pavement was uploaded this frame
+  SolvingFrames solving_frames;
 };
 
 // Starts loading a surface in the background; the design stays.
