@@ -215,6 +215,15 @@ void validate_design(const Design& design, const std::string& source) {
   validate_placement(v, design.placement);
   validate_solver(v, design.solver);
   validate_edits(v, design.edits, design.elements);
+  for (size_t i = 0; i < design.guidance.size(); ++i) {
+    const GuidanceDab& d = design.guidance[i];
+    const std::string key = "guidance[" + std::to_string(i) + "]";
+    v.finite(d.uv.x, key + ".uv[0]");
+    v.finite(d.uv.y, key + ".uv[1]");
+    v.require(std::isfinite(d.radius) && d.radius > 0, key + ".radius", "finite and > 0 (surface units)", d.radius);
+    v.require(d.strength >= -0.5 && d.strength <= 1, key + ".strength",
+              "in [-0.5, 1] (-0.5 = half the spacing, +1 = twice it)", d.strength);
+  }
 }
 
 }  // namespace paver

@@ -5,6 +5,7 @@
 #include "pattern/placement.h"
 #include "pattern/unit_cell.h"
 #include "design/element_edits.h"
+#include "design/guidance.h"
 #include "design/solver_parameters.h"
 
 #include <algorithm>
@@ -87,6 +88,7 @@ struct Design {
   Placement placement;
   SolverParams solver;
   ElementEdits edits;                     // single elements pinned, moved, deleted, added
+  std::vector<GuidanceDab> guidance;      // painted looser / denser (design/guidance.h)
 };
 
 // Paves stones of diameter `stone` (surface units, > 0) with the design's gap between neighbours:

@@ -252,6 +252,13 @@ public:
     required(value, path, "uv", out.uv);
   }
 
+  void read(const json& value, const std::string& path, GuidanceDab& out) const {
+    check_object(value, path, {"uv", "radius", "strength"});
+    required(value, path, "uv", out.uv);
+    required(value, path, "radius", out.radius);
+    required(value, path, "strength", out.strength);
+  }
+
   void read(const json& value, const std::string& path, ElementEdits& out) const {
     check_object(value, path, {"moved", "deleted", "added"});
     field(value, path, "moved", out.moved);
@@ -410,6 +417,10 @@ Json to_json(const Design& design) {
   root["placement"] = std::move(placement);
   root["solver"] = std::move(solver);
   root["edits"] = std::move(edits);
+  Json guidance = Json::array();
+  for (const GuidanceDab& d : design.guidance)
+    guidance.push_back(Json{{"uv", Json::array({d.uv.x, d.uv.y})}, {"radius", d.radius}, {"strength", d.strength}});
+  root["guidance"] = std::move(guidance);
   return root;
 }
 
@@ -472,7 +483,7 @@ Design design_from_json(const nlohmann::json& json, const std::string& source) {
     reader.fail("'version' is " + std::to_string(number) + ", but this build reads only version " +
                 std::to_string(Design::kVersion));
 
-  reader.check_object(json, "", {"version", "units", "pattern", "elements", "placement", "solver", "edits"});
+  reader.check_object(json, "", {"version", "units", "pattern", "elements", "placement", "solver", "edits", "guidance"});
   Design design;
   reader.field(json, "", "units", design.units);
   reader.field(json, "", "pattern", design.pattern);
@@ -480,6 +491,7 @@ Design design_from_json(const nlohmann::json& json, const std::string& source) {
   reader.field(json, "", "placement", design.placement);
   reader.field(json, "", "solver", design.solver);
   reader.field(json, "", "edits", design.edits);
+  reader.field(json, "", "guidance", design.guidance);
   validate_design(design, source);
   return design;
 }

@@ -4,6 +4,7 @@
 #include "elements/boundary_postprocess.h"
 #include "pattern/adaptive_pattern.h"
 #include "solver/edit_relaxation.h"
+#include "solver/guidance_field.h"
 #include "solver/surface_spring_relaxation.h"
 #include "pattern/default_spacing.h"
 #include "pattern/design_overlap.h"
@@ -149,7 +150,7 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
   pavement.cell = check_design_cell(design);
   if (pavement.seamless)
     design.placement.offset = best_offset_across(map, pavement.cell, design, pavement.band_closure->step);
-  const QualityBasis basis = quality_basis(map, pavement.cell, design.elements, design.solver);
+  const QualityBasis basis = quality_basis(map, pavement.cell, design.elements, design.solver, design.guidance);
   // The adaptive pattern is grown instead of the lattice (docs/topology.md).
   if (adaptive) {
     AdaptivePattern grown = build_adaptive_pattern(map, pavement.cell, design, options.stop);
@@ -200,6 +201,7 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
     t0 = start("optimize");
     const SolverSurface surface = make_solver_surface(map);
     SpringSystem system = make_spring_system(pavement.pattern);
+    apply_guidance(system, pavement.pattern, design.guidance);
     set_aside_added(system, edited);
     const SolverFactory factory = options.solver ? options.solver : cpu_solver_factory(options.threads);
     const PatternAtSpacing pattern_at = [&](double spacing) {
@@ -351,10 +353,19 @@ const SurfaceMap& pavement_map(const SurfaceMap& map, const Pavement& pavement) 
 
 Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptions& options) {
   check_edits_topology(design);
+  if (!design.guidance.empty() && design.pattern.topology == Topology::Adaptive)
+    throw InputError("guidance: the adaptive pattern cannot follow a guidance field yet; use pattern.topology "
+                     "\"lattice\" (or \"auto\", which keeps the lattice when a field is painted)");
   // A band's lattice closes on its seamless map; the adaptive pattern grows on its annulus map.
   const SurfaceMap& lattice_map = map_for_topology(map, Topology::Lattice);
   if (design.pattern.topology == Topology::Lattice) return pave_with_topology(lattice_map, std::move(design), options);
   if (design.pattern.topology == Topology::Adaptive) return pave_with_topology(map, std::move(design), options);
+  if (!design.guidance.empty()) {  // only the lattice follows a painted field
+    design.pattern.topology = Topology::Lattice;
+    Pavement p = pave_with_topology(lattice_map, std::move(design), options);
+    p.topology_choice = "auto: lattice (a guidance field is painted, which only the lattice follows)";
+    return p;
+  }
   Design lattice = design;
   lattice.pattern.topology = Topology::Lattice;
   Pavement first = pave_with_topology(lattice_map, lattice, options);

@@ -118,8 +118,8 @@ double spacing_curvature_correlation(const SurfaceMap& map, const Elements& elem
 // Mean over the surface (vertex weights: a third of each triangle's area) of the squared spacing
 // factor of eq. 5, 1 + c + m * normalised |H|: a curvature-aware design asks for that much more
 // area per element. 1 for a uniform design.
-double mean_area_factor(const SurfaceMap& map, const SolverParams& params) {
-  if (params.c == 0 && params.m == 0) return 1;
+double mean_area_factor(const SurfaceMap& map, const SolverParams& params, const std::vector<GuidanceDab>& guidance) {
+  if (params.c == 0 && params.m == 0 && guidance.empty()) return 1;
   const SurfaceMesh& mesh = map.mesh;
   std::vector<double> weight(mesh.positions.size(), 0.0);
   for (const glm::ivec3& t : mesh.triangles) {
@@ -129,7 +129,9 @@ double mean_area_factor(const SurfaceMap& map, const SolverParams& params) {
   }
   double sum = 0, total = 0;
   for (size_t v = 0; v < weight.size() && v < map.curvature.size(); ++v) {
-    const double factor = 1 + params.c + params.m * normalised_curvature(map, map.curvature[v]);
+    // The painted field scales the spacing on top of the curvature's (solver/guidance_field.h).
+    const double painted = guidance.empty() || v >= map.uv.size() ? 1.0 : guidance_factor(guidance, map.uv[v]);
+    const double factor = (1 + params.c + params.m * normalised_curvature(map, map.curvature[v])) * painted;
     sum += weight[v] * factor * factor, total += weight[v];
   }
   return total > 0 ? sum / total : 1;
@@ -139,13 +141,14 @@ double ideal_element_count(const SurfaceMap& map, const QualityBasis& basis) {
   if (!(basis.area_per_element > 0)) return 0;
   // A closed surface has no boundary: its atlas's seams are not forgiven a strip.
   const double area = surface_area(map.mesh) - basis.boundary_strip * (is_atlas(map) ? 0.0 : boundary_length(map.mesh));
-  return std::max(area, 0.0) / (basis.area_per_element * mean_area_factor(map, basis.solver));
+  return std::max(area, 0.0) / (basis.area_per_element * mean_area_factor(map, basis.solver, basis.guidance));
 }
 
 QualityBasis quality_basis(const SurfaceMap& map, const UnitCell& cell, const ElementsDesign& elements,
-                           const SolverParams& solver) {
+                           const SolverParams& solver, const std::vector<GuidanceDab>& guidance) {
   QualityBasis basis;
   basis.solver = solver;
+  basis.guidance = guidance;
   basis.gap = elements.gap;
   basis.margin = boundary_margin(map, elements.margin, elements.gap);
   double per_cell = 0, largest = 0;

@@ -2,6 +2,7 @@
 // The quality of a pavement, as numbers: collisions over all pairs, nearest-neighbour spacing,
 // spring lengths against their targets, boundary crossings, coverage, and (for curvature-aware
 // designs) how spacing follows curvature.
+#include "design/guidance.h"
 #include "design/design.h"
 #include "elements/elements.h"
 #include "pattern/pattern.h"
@@ -36,6 +37,7 @@ struct QualityBasis {
   double vertex_share = 0;          // V-elements' share of the ideal count (1 per cell vertex)
   int regular_valence = 0;          // V-neighbours of a lattice vertex: 6 tri, 4 grid, 3 hex; 0 = no V
   double spacing = 0;               // D: interior elements lie kInteriorDepth D from the boundary
+  std::vector<GuidanceDab> guidance;  // the painted field: the ideal count follows it (design/guidance.h)
 };
 
 // Elements at least this many D from the boundary count as interior for the valence share.
@@ -86,7 +88,7 @@ double ideal_element_count(const SurfaceMap& map, const QualityBasis& basis);
 // the cell's area over the elements one cell carries, the V-element's (else the largest) radius,
 // and the ideal count they give (computed once here, for every measure of the run).
 QualityBasis quality_basis(const SurfaceMap& map, const UnitCell& cell, const ElementsDesign& elements,
-                           const SolverParams& solver);
+                           const SolverParams& solver, const std::vector<GuidanceDab>& guidance = {});
 
 PavementQuality measure_pavement(const SurfaceMap& map, const Pattern& pattern,
                                  const std::vector<glm::dvec2>& points, const Elements& elements,
