@@ -26,7 +26,7 @@ constexpr std::pair<std::string_view, Kind> kCommands[] = {
     {"screenshot", Kind::Screenshot}, {"view3d", Kind::View3d}, {"view2d", Kind::View2d},
     {"panel", Kind::Panel},     {"wait", Kind::Wait},     {"quit", Kind::Quit},
     {"select", Kind::Select},   {"pin", Kind::Pin},       {"unpin", Kind::Unpin},   {"drag", Kind::Drag},
-    {"delete", Kind::Delete},   {"add", Kind::Add}};
+    {"delete", Kind::Delete},   {"add", Kind::Add},       {"brush", Kind::Brush}};
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
 
@@ -175,6 +175,17 @@ bool parse_script_line(std::string_view line, int line_number, const std::string
       const auto [u, v] = first_word(rest);
       if (!parse_number(u, out.u) || !parse_number(v, out.v))
         throw InputError(where + "add '" + std::string(rest) + "': give the map point as two numbers U V");
+      break;
+    }
+    case Kind::Brush: {
+      need_argument("a map point, a radius in spacings and a strength, e.g. brush 0 0 4 0.3");
+      const auto [u, after_u] = first_word(rest);
+      const auto [v, after_v] = first_word(after_u);
+      const auto [radius, strength] = first_word(after_v);
+      if (!parse_number(u, out.u) || !parse_number(v, out.v) || !parse_number(radius, out.radius) ||
+          !parse_number(strength, out.strength) || !(out.radius > 0) || out.strength < -0.5 || out.strength > 1)
+        throw InputError(where + "brush '" + std::string(rest) +
+                         "': give U V RADIUS STRENGTH, the radius > 0 spacings, the strength in [-0.5, 1]");
       break;
     }
     default:

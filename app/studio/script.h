@@ -2,9 +2,10 @@
 // The studio's scripted session (--script FILE): one command per line, `#` starts a comment.
 //   open PATH | cut_axis auto|x|y|z | design PATH | pattern tri|grid|hex | spacing D | set KEY VALUE | optimize |
 //   undo | redo | export DIR | cut THICKNESS DIR | screenshot FILE.png | view3d | view2d | panel NAME | wait N | quit |
-//   select ID | pin ID | unpin ID | drag ID DU DV | delete ID | add U V
+//   select ID | pin ID | unpin ID | drag ID DU DV | delete ID | add U V | brush U V RADIUS STRENGTH
 // (element commands name elements by the ids placements.csv lists; drag moves by DU, DV spacings D
-// in the map, add puts a vertex element at map coordinates U, V, placements.csv's u and v)
+// in the map, add puts a vertex element at map coordinates U, V, placements.csv's u and v; brush
+// paints a guidance dab there, RADIUS in spacings D, STRENGTH in [-0.5, 1]: > 0 looser, < 0 denser)
 // (panel shows a side panel: file, pattern, elements, optimize, report or help; cut_axis picks the
 // plane a closed surface is cut across, and opens an open closed surface again with it)
 // Parsing is separate from running so that a typo fails before anything is done.
@@ -16,14 +17,15 @@ namespace paver::studio {
 
 struct ScriptCommand {
   enum class Kind { Open, CutAxis, Design, Pattern, Spacing, Set, Optimize, Undo, Redo, Export, Cut, Screenshot, View3d,
-                    View2d, Panel, Wait, Quit, Select, Pin, Unpin, Drag, Delete, Add };
+                    View2d, Panel, Wait, Quit, Select, Pin, Unpin, Drag, Delete, Add, Brush };
   Kind kind = Kind::Quit;
   std::string text;    // open/design/export/cut/screenshot: the path; pattern, panel, cut_axis: the name; set: the key
   std::string value;   // set: the value as written
   double number = 0;   // spacing: D; cut: the metal's thickness
   int frames = 0;      // wait: N
   int id = -1;         // select, pin, unpin, drag, delete: the element
-  double u = 0, v = 0; // drag: the move in spacings D; add: the map point
+  double u = 0, v = 0; // drag: the move in spacings D; add, brush: the map point
+  double radius = 0, strength = 0;  // brush
   int line = 0;        // 1-based line in the script, for messages
 };
 

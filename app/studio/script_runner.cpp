@@ -19,7 +19,7 @@ constexpr auto kTimeout = std::chrono::minutes(10);
 bool needs_final_pavement(Kind kind) {
   switch (kind) {
     case Kind::Optimize: case Kind::Export: case Kind::Cut: case Kind::Select: case Kind::Pin: case Kind::Unpin:
-    case Kind::Drag: case Kind::Delete: case Kind::Add:
+    case Kind::Drag: case Kind::Delete: case Kind::Add: case Kind::Brush:
       return true;
     default:
       return false;
@@ -34,6 +34,11 @@ std::string describe(const ScriptCommand& c) {
     return text + number;
   }
   if (c.kind == Kind::Wait) return text + " " + std::to_string(c.frames);
+  if (c.kind == Kind::Brush) {
+    char numbers[96];
+    std::snprintf(numbers, sizeof numbers, " %g %g %g %g", c.u, c.v, c.radius, c.strength);
+    return text + numbers;
+  }
   if (c.kind == Kind::Drag || c.kind == Kind::Add) {
     char numbers[64];
     std::snprintf(numbers, sizeof numbers, " %g %g", c.u, c.v);
@@ -127,6 +132,7 @@ void ScriptRunner::act(Studio& s, const ScriptCommand& c) {
     case Kind::Drag:
     case Kind::Delete:
     case Kind::Add: edit_element(s, c); break;
+    case Kind::Brush: paint_guidance(s, glm::dvec2(c.u, c.v), c.radius, c.strength); break;
   }
 }
 

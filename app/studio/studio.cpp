@@ -169,6 +169,16 @@ void add_element_at(Studio& s, glm::dvec2 uv) {
   if (id >= 0) s.ui.selected_element = id;
 }
 
+void paint_guidance(Studio& s, glm::dvec2 uv, double radius, double strength, bool stroke) {
+  const double spacing = s.doc.result.pavement ? s.doc.result.pavement->design.pattern.spacing : s.doc.design.pattern.spacing;
+  if (!(spacing > 0)) return report_status(s.doc, "wait for the pavement before painting guidance");
+  Design d = s.doc.design;
+  // Only the lattice follows a painted field: an auto design keeps it.
+  if (d.pattern.topology == Topology::Auto) d.pattern.topology = Topology::Lattice;
+  d.guidance.push_back({uv, radius * spacing, strength});
+  change_design(s.doc, d, stroke);
+}
+
 bool result_is_final(const Studio& s) {
   return s.doc.result.pavement && s.doc.result.revision == s.doc.revision && !s.loader.busy();
 }

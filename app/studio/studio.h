@@ -50,6 +50,8 @@ inline constexpr double kStudioSecondsPerPoint = 7e-5;
 enum class CellEditMode { Flip, Remove, Add };
 // What a left drag in the 2D view changes.
 enum class MapDrag { None, Offset, Rotation, Scale };
+// The guidance brush (design/guidance.h): off, or painting the pattern looser or denser.
+enum class Brush { Off, Looser, Denser };
 
 struct UiState {
   std::string surface_path, design_path, export_dir = "out", png_path = "view3d.png", custom_shape_path;
@@ -68,6 +70,10 @@ struct UiState {
   bool dragging_element = false;       // the selected element is being dragged in the 2D view
   glm::dvec2 drag_from{0};             // where that drag started, map units
   glm::dvec2 move_by{0};               // the elements panel's move, in spacings D
+  Brush brush = Brush::Off;            // a left drag in the 2D map paints guidance
+  double brush_radius = 3;             // x D
+  double brush_strength = 0.2;         // the spacing's change at a dab's centre
+  std::optional<glm::dvec2> last_dab;  // where the stroke being painted put its last dab
 };
 
 
@@ -142,6 +148,9 @@ void pin_selected(Studio& s, bool pinned);
 void delete_selected(Studio& s);
 void move_selected(Studio& s, glm::dvec2 offset);  // map units
 void add_element_at(Studio& s, glm::dvec2 uv);
+// One dab of the guidance brush at `uv` (radius in spacings D, strength as GuidanceDab's);
+// `stroke`: part of a drag, so one undo step for the whole stroke.
+void paint_guidance(Studio& s, glm::dvec2 uv, double radius, double strength, bool stroke = false);
 
 // Whether the pavement on screen is final for the current design.
 bool result_is_final(const Studio& s);

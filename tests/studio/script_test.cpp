@@ -109,6 +109,13 @@ TEST(Script, ElementCommandsTakeAnIdAndNumbers) {
   EXPECT_NE(error_of("delete 3 4").find("takes one element id"), std::string::npos);
   EXPECT_NE(error_of("drag 3 0.4").find("two numbers of spacings D"), std::string::npos);
   EXPECT_NE(error_of("add 1 nan").find("two numbers U V"), std::string::npos);
+  const auto brush = parse_script("brush 1 -2 4 0.3\n", "s.txt");
+  ASSERT_EQ(brush.size(), 1u);
+  EXPECT_EQ(brush[0].kind, Kind::Brush);
+  EXPECT_EQ(brush[0].radius, 4);
+  EXPECT_EQ(brush[0].strength, 0.3);
+  EXPECT_NE(error_of("brush 1 2 0 0.3").find("radius > 0"), std::string::npos);
+  EXPECT_NE(error_of("brush 1 2 3 -0.9").find("[-0.5, 1]"), std::string::npos);
 }
 
 TEST(Script, MissingFileIsAnInputError) {

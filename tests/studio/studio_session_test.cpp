@@ -295,6 +295,33 @@ TEST_F(StudioSession, UndoAfterLaunchKeepsTheLaunchDesign) {
   EXPECT_NE(r.err.find("undo: there is nothing to undo"), std::string::npos) << describe(r);
 }
 
+// The guidance brush: a dab painted looser in the middle of the pendant is saved with the design,
+// thins the pattern there, and `paver run` on the saved design writes the same placements.
+TEST_F(StudioSession, AGuidanceDabIsSavedAndTheCliReproducesIt) {
+  const fs::path plain = dir_ / "plain", painted = dir_ / "painted", script = dir_ / "brush.txt";
+  std::ofstream(script) << "open assets/surfaces/pendant.obj\n"
+                           "design assets/designs/pendant_tri_gems.json\n"
+                           "optimize\n"
+                           "export " << plain.string() << "\n"
+                        << "brush 0 0 5 0.4\n"
+                           "optimize\n"
+                           "export " << painted.string() << "\n";
+  const Outcome r = studio("--script " + quote(script.string()) + " --backend cpu --width 1280 --height 800", dir_);
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const nlohmann::json saved = nlohmann::json::parse(read_text(painted / "design.json"));
+  ASSERT_EQ(saved["guidance"].size(), 1u);
+  EXPECT_EQ(saved["guidance"][0]["strength"].get<double>(), 0.4);
+  EXPECT_EQ(saved["pattern"]["topology"], "lattice");
+  EXPECT_LT(placements_by_id(painted / "placements.csv").size(), placements_by_id(plain / "placements.csv").size());
+  const fs::path cli_out = dir_ / "cli";
+  const Outcome cli = run_in_source(quote(PAVER_CLI) + " run assets/surfaces/pendant.obj --design " +
+                                        quote((painted / "design.json").string()) + " --backend cpu --out " +
+                                        quote(cli_out.string()),
+                                    dir_);
+  ASSERT_EQ(cli.exit_code, 0) << describe(cli);
+  EXPECT_TRUE(read_text(painted / "placements.csv") == read_text(cli_out / "placements.csv"));
+}
+
 #ifdef PAVER_WITH_CGAL
 // A closed bead cut across x (the script's cut_axis, the file panel's "cut across") exports what
 // `paver run --cut x` writes: the same placements.

@@ -149,6 +149,8 @@ void unit_cell_editor(Document& doc, UiState& ui) {
   }
 }
 
+constexpr double kBrushRadiusMin = 1, kBrushRadiusMax = 15, kBrushStrengthMin = 0.05, kBrushStrengthMax = 0.5;
+
 }  // namespace
 
 void pattern_panel(Document& doc, UiState& ui) {
@@ -231,6 +233,31 @@ void pattern_panel(Document& doc, UiState& ui) {
     ImGui::Text("%d. %s %d->%d @ (%d,%d)%s", i, std::string(operator_name(op.kind)).c_str(), op.from, op.to,
                 op.offset.x, op.offset.y, op.is_virtual ? " virtual" : "");
     ImGui::PopID();
+  }
+
+  section("Guidance brush");
+  int brush = int(ui.brush);
+  ImGui::RadioButton("off", &brush, int(Brush::Off));
+  ImGui::SameLine();
+  ImGui::RadioButton("paint looser", &brush, int(Brush::Looser));
+  ImGui::SameLine();
+  ImGui::RadioButton("paint denser", &brush, int(Brush::Denser));
+  ui.brush = Brush(brush);
+  help_marker("Drag in the 2D map to paint where the pattern should be looser (stones farther apart) or denser. "
+              "Each dab changes the spacing by up to the strength at its centre, fading to nothing at its radius; "
+              "dabs add up, from half to twice D. Denser stops where the stones touch. Only the lattice follows "
+              "a painted field. Undo takes back a whole stroke.");
+  ImGui::SliderScalar("radius (x D)", ImGuiDataType_Double, &ui.brush_radius, &kBrushRadiusMin, &kBrushRadiusMax, "%.1f");
+  ImGui::SliderScalar("strength", ImGuiDataType_Double, &ui.brush_strength, &kBrushStrengthMin, &kBrushStrengthMax,
+                      "%.2f");
+  help_marker("How much one dab changes the spacing at its centre: 0.2 = 20% looser (or denser).");
+  ImGui::Text("dabs painted: %zu", d.guidance.size());
+  if (!d.guidance.empty()) {
+    ImGui::SameLine();
+    if (ImGui::SmallButton("clear guidance")) {
+      d.guidance.clear();
+      change_design(doc, d);
+    }
   }
 }
 

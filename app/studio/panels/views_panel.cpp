@@ -268,10 +268,38 @@ void draw_selection_3d(Studio& s, ImDrawList* draw, ImVec2 origin, ImVec2 size) 
   draw->AddCircle(*c, radius + 3, IM_COL32(90, 200, 250, 255), 48, 2);
 }
 
+// The guidance brush: a left drag lays dabs a third of the brush apart, one undo step per stroke.
+void interact_brush_2d(Studio& s, const MapFrame& f) {
+  const ImGuiIO& io = ImGui::GetIO();
+  const double spacing = s.doc.result.pavement ? s.doc.result.pavement->design.pattern.spacing : 0;
+  if (!(spacing > 0)) return;
+  if (ImGui::IsItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+    const glm::dvec2 at = f.to_map(io.MousePos);
+    if (!s.ui.last_dab || glm::length(at - *s.ui.last_dab) > s.ui.brush_radius * spacing / 3) {
+      const double strength = s.ui.brush == Brush::Looser ? s.ui.brush_strength : -s.ui.brush_strength;
+      paint_guidance(s, at, s.ui.brush_radius, strength, true);
+      s.ui.last_dab = at;
+    }
+  } else {
+    s.ui.last_dab.reset();
+  }
+}
+
+void draw_brush_2d(const Studio& s, ImDrawList* draw, const MapFrame& f) {
+  const double spacing = s.doc.result.pavement ? s.doc.result.pavement->design.pattern.spacing : 0;
+  if (!(spacing > 0) || !ImGui::IsItemHovered()) return;
+  const float radius = float(s.ui.brush_radius * spacing * f.size.y / (2 * f.view.half_height));
+  const ImU32 colour = s.ui.brush == Brush::Looser ? IM_COL32(120, 220, 120, 220) : IM_COL32(240, 150, 90, 220);
+  draw->AddCircle(ImGui::GetIO().MousePos, radius, IM_COL32(0, 0, 0, 160), 64, 3);
+  draw->AddCircle(ImGui::GetIO().MousePos, radius, colour, 64, 1.5f);
+}
+
 void interact_2d(Studio& s, const MapFrame& f, const Handles& h, bool with_handles) {
   const ImGuiIO& io = ImGui::GetIO();
   render::MapView& view = s.views.map_view;
-  if (s.ui.edit_elements && with_handles) {
+  if (s.ui.brush != Brush::Off && with_handles) {
+    interact_brush_2d(s, f);
+  } else if (s.ui.edit_elements && with_handles) {
     interact_elements_2d(s, f);
   } else if (ImGui::IsItemActivated() && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
     const auto near = [&](ImVec2 handle) { return with_handles && distance(io.MousePos, handle) < kHandleRadius + 3; };
@@ -365,7 +393,8 @@ void view(Studio& s, int which, ImVec2 size, bool large) {
                                                         : 0;
         if (spacing > 0) lattice_preview(draw, frame, s.doc.design, spacing);
       }
-      if (!s.ui.edit_elements)
+      if (s.ui.brush != Brush::Off) draw_brush_2d(s, draw, frame);
+      if (!s.ui.edit_elements && s.ui.brush == Brush::Off)
         draw_handles(draw, placement_handles(frame, *s.doc.surface.map, s.doc.design.placement), s.ui.map_drag);
       draw_selection_2d(s, draw, frame);
       draw->PopClipRect();
