@@ -63,7 +63,29 @@ PlacedElements place_all_elements(const SurfaceMap& map, const Pattern& pattern,
   return placed;
 }
 
+namespace {
+// Element ids name the elements of one pattern, and only the lattice's solver holds particles or
+// follows a painted field.
+void check_edits_topology(const Design& design) {
+  const Topology topology = design.pattern.topology;
+  if (!design.guidance.empty() && topology == Topology::Adaptive)
+    throw InputError("guidance: the adaptive pattern cannot follow a guidance field yet; use pattern.topology "
+                     "\"lattice\" (or \"auto\", which keeps the lattice when a field is painted)");
+  const ElementEdits& edits = design.edits;
+  if (edits.empty()) return;
+  if (topology == Topology::Auto)
+    throw InputError("edits: element edits name the elements of one pattern, but pattern.topology is \"auto\"; "
+                     "set it to \"lattice\" or \"adaptive\" (the one the edits were made on)");
+  if (topology == Topology::Adaptive && !(edits.moved.empty() && edits.added.empty()))
+    throw InputError(std::string("edits.") + (edits.moved.empty() ? "added" : "moved") +
+                     ": the adaptive pattern's relaxation cannot hold elements in place yet; use pattern.topology "
+                     "\"lattice\" to pin, move or add elements (deleting works on both)");
+}
+
+}  // namespace
+
 UnitCell check_design_cell(const Design& design) {
+  check_edits_topology(design);
   // The checks run on the cell at D = 1: they are scale-free, and a spacing far from the surface's
   // size (or still 0, to be derived) must not make lengths underflow into false overlaps.
   PatternDesign unit = design.pattern;
@@ -299,19 +321,6 @@ std::string three_digits(double value) {
   return text;
 }
 
-// Element ids name the elements of one pattern, and only the lattice's solver holds particles.
-void check_edits_topology(const Design& design) {
-  const ElementEdits& edits = design.edits;
-  if (edits.empty()) return;
-  if (design.pattern.topology == Topology::Auto)
-    throw InputError("edits: element edits name the elements of one pattern, but pattern.topology is \"auto\"; "
-                     "set it to \"lattice\" or \"adaptive\" (the one the edits were made on)");
-  if (design.pattern.topology == Topology::Adaptive && !(edits.moved.empty() && edits.added.empty()))
-    throw InputError(std::string("edits.") + (edits.moved.empty() ? "added" : "moved") +
-                     ": the adaptive pattern's relaxation cannot hold elements in place yet; use pattern.topology "
-                     "\"lattice\" to pin, move or add elements (deleting works on both)");
-}
-
 // Why a lattice pavement calls for the adaptive pattern: it tore or left bare patches (the
 // verdict's own bounds), which is what a map distorting the lattice does. Empty when it did not.
 std::string lattice_failure(const PavementQuality& q) {
@@ -352,10 +361,7 @@ const SurfaceMap& pavement_map(const SurfaceMap& map, const Pavement& pavement) 
 }
 
 Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptions& options) {
-  check_edits_topology(design);
-  if (!design.guidance.empty() && design.pattern.topology == Topology::Adaptive)
-    throw InputError("guidance: the adaptive pattern cannot follow a guidance field yet; use pattern.topology "
-                     "\"lattice\" (or \"auto\", which keeps the lattice when a field is painted)");
+  check_edits_topology(design);  // before any work (check_design_cell repeats it per topology)
   // A band's lattice closes on its seamless map; the adaptive pattern grows on its annulus map.
   const SurfaceMap& lattice_map = map_for_topology(map, Topology::Lattice);
   if (design.pattern.topology == Topology::Lattice) return pave_with_topology(lattice_map, std::move(design), options);

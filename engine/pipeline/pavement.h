@@ -98,7 +98,8 @@ const SurfaceMap& pavement_map(const SurfaceMap& map, const Pavement& pavement);
 UnitCell make_design_cell(const PatternDesign& pattern);
 
 // The design's checks that need no surface: its operators apply to the unit cell, E-elements name
-// cell edges that exist, and (unless allowed) no two elements overlap in the regular lattice.
+// cell edges that exist, (unless allowed) no two elements overlap in the regular lattice, and
+// element edits and a guidance field have a topology that takes them.
 // Scale-free, so a design whose spacing is still 0 (derived later) is checked at D = 1; a gap
 // (surface units) is checked once the spacing is known. Throws InputError naming the key.
 UnitCell check_design_cell(const Design& design);

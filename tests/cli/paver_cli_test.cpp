@@ -422,6 +422,26 @@ TEST_F(PaverRunErrors, SpacingOffsetAndNumbersOutOfAnyUse) {
   expect_input_error(number, out, {"overflow.json: number overflow parsing '1e999'", "numbers must be finite"});
 }
 
+// Element edits and guidance that the design's topology cannot take are refused before the map
+// is built and before anything is written; so are edits naming particles the pattern lacks.
+TEST_F(PaverRunErrors, EditsAndGuidanceTheTopologyCannotTakeAreRefused) {
+  const fs::path out = dir() / "out";
+  const fs::path auto_edits = dir() / "auto_edits.json";
+  write_file_text(auto_edits, R"({"version": 1, "edits": {"deleted": [{"id": 3, "uv": [0, 0]}]}})");
+  expect_input_error(paver({"run", "assets/surfaces/dome.obj", "--design", auto_edits.string(), "--out", out.string()}),
+                     out, {"pattern.topology is \"auto\"", "set it to \"lattice\""});
+  const fs::path adaptive = dir() / "adaptive_guidance.json";
+  write_file_text(adaptive, R"({"version": 1, "pattern": {"topology": "adaptive"},
+                                "guidance": [{"uv": [0, 0], "radius": 5, "strength": 0.3}]})");
+  expect_input_error(paver({"run", "assets/surfaces/dome.obj", "--design", adaptive.string(), "--out", out.string()}),
+                     out, {"guidance: the adaptive pattern cannot follow a guidance field yet"});
+  const fs::path stale = dir() / "stale.json";
+  write_file_text(stale, R"({"version": 1, "pattern": {"topology": "lattice"},
+                             "edits": {"moved": [{"id": 99999999, "uv": [0, 0]}]}})");
+  expect_input_error(paver({"run", "assets/surfaces/dome.obj", "--design", stale.string(), "--out", out.string()}),
+                     out, {"edits.moved[0]: particle 99999999 is not in this pattern", "remove them"});
+}
+
 // A file name with an escape sequence is shown escaped, never sent raw to the terminal.
 TEST_F(PaverRunErrors, ControlCharactersInMessagesAreEscaped) {
   const fs::path out = dir() / "out";
