@@ -26,7 +26,8 @@ constexpr std::pair<std::string_view, Kind> kCommands[] = {
     {"screenshot", Kind::Screenshot}, {"view3d", Kind::View3d}, {"view2d", Kind::View2d},
     {"panel", Kind::Panel},     {"wait", Kind::Wait},     {"quit", Kind::Quit},
     {"select", Kind::Select},   {"pin", Kind::Pin},       {"unpin", Kind::Unpin},   {"drag", Kind::Drag},
-    {"delete", Kind::Delete},   {"add", Kind::Add},       {"brush", Kind::Brush}};
+    {"delete", Kind::Delete},   {"add", Kind::Add},       {"brush", Kind::Brush},
+    {"colour", Kind::Colour}};
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
 
@@ -109,6 +110,11 @@ bool parse_script_line(std::string_view line, int line_number, const std::string
       need_argument("auto, x, y or z");
       if (!cut_axis_from_name(rest))
         throw InputError(where + "cut_axis '" + std::string(rest) + "': use auto, x, y or z");
+      out.text = std::string(rest);
+      break;
+    case Kind::Colour:
+      need_argument("ratio or type");
+      if (rest != "ratio" && rest != "type") throw InputError(where + "colour '" + std::string(rest) + "': use ratio or type");
       out.text = std::string(rest);
       break;
     case Kind::Panel: {

@@ -133,6 +133,9 @@ void ScriptRunner::act(Studio& s, const ScriptCommand& c) {
     case Kind::Delete:
     case Kind::Add: edit_element(s, c); break;
     case Kind::Brush: paint_guidance(s, glm::dvec2(c.u, c.v), c.radius, c.strength); break;
+    case Kind::Colour:
+      s.views.colour_mode = c.text == "type" ? render::ColourMode::ElementType : render::ColourMode::NeighbourRatio;
+      break;
   }
 }
 

@@ -302,7 +302,7 @@ void step_run(Studio& s) {
 
 void reset_run(Studio& s) {
   s.live.reset();
-  report_status(s.doc, "run reset: the result was dropped; Run starts again");
+  report_status(s.doc, "run reset: Run starts the optimization again; the last result stays on screen until then");
 }
 
 void update_studio(Studio& s) {

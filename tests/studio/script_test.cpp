@@ -115,6 +115,8 @@ TEST(Script, ElementCommandsTakeAnIdAndNumbers) {
   EXPECT_EQ(brush[0].radius, 4);
   EXPECT_EQ(brush[0].strength, 0.3);
   EXPECT_NE(error_of("brush 1 2 0 0.3").find("radius > 0"), std::string::npos);
+  EXPECT_EQ(parse_script("colour type\n", "s.txt")[0].kind, Kind::Colour);
+  EXPECT_NE(error_of("colour blue").find("use ratio or type"), std::string::npos);
   EXPECT_NE(error_of("brush 1 2 3 -0.9").find("[-0.5, 1]"), std::string::npos);
 }
 

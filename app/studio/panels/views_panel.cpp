@@ -20,6 +20,7 @@
 #include <glm/matrix.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -130,6 +131,20 @@ void ratio_legend(ImDrawList* draw, ImVec2 origin, ImVec2 size) {
     char label[16];
     std::snprintf(label, sizeof label, "%.2f", stops[i].ratio);
     draw->AddText(ImVec2(at.x + step * i - 8, at.y + height + 2), IM_COL32(230, 230, 230, 255), label);
+  }
+}
+
+// The element-type colours (the paper's figure 4), the ones kind_colour gives the renderer.
+void type_legend(ImDrawList* draw, ImVec2 origin, ImVec2 size) {
+  const std::pair<ElementKind, const char*> kinds[] = {
+      {ElementKind::Vertex, "vertex element (V)"}, {ElementKind::Edge, "edge element (E)"}, {ElementKind::Bead, "bead"}};
+  const ImVec2 at(origin.x + 12, origin.y + size.y - 70);
+  draw->AddRectFilled(ImVec2(at.x - 6, at.y - 6), ImVec2(at.x + 170, at.y + 60), IM_COL32(0, 0, 0, 150), 4);
+  for (int i = 0; i < 3; ++i) {
+    const std::array<std::uint8_t, 3> c = kind_colour(kinds[i].first);
+    const ImVec2 row(at.x, at.y + 18.0f * float(i));
+    draw->AddCircleFilled(ImVec2(row.x + 6, row.y + 7), 6, IM_COL32(c[0], c[1], c[2], 255));
+    draw->AddText(ImVec2(row.x + 18, row.y), IM_COL32(230, 230, 230, 255), kinds[i].second);
   }
 }
 
@@ -381,6 +396,8 @@ void view(Studio& s, int which, ImVec2 size, bool large) {
     draw->PopClipRect();
     if (large && s.views.show_legend && s.views.colour_mode == render::ColourMode::NeighbourRatio)
       ratio_legend(draw, origin, size);
+    if (large && s.views.show_legend && s.views.colour_mode == render::ColourMode::ElementType)
+      type_legend(draw, origin, size);
   } else {
     const MapFrame frame{origin, size, s.views.map_view};
     const Handles handles = placement_handles(frame, *s.doc.surface.map, s.doc.design.placement);
