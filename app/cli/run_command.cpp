@@ -274,9 +274,7 @@ int run_run(const RunArgs& args) {
   if (pavement.resolution.retired > 0)
     std::printf("         %d vacancies where contact springs stalled\n", pavement.resolution.retired);
   if (const ElementEdits& edits = pavement.design.edits; !edits.empty()) {
-    int pinned = 0;
-    for (const MovedParticle& m : edits.moved) pinned += m.pinned ? 1 : 0;
-    std::printf("edits    %zu moved (%d pinned), %zu added, %zu deleted", edits.moved.size(), pinned, edits.added.size(),
+    std::printf("edits    %zu moved (%d pinned), %zu added, %zu deleted", edits.moved.size(), edits.pinned_count(), edits.added.size(),
                 edits.deleted.size() - std::size_t(pavement.deletions_missed));
     if (pavement.deletions_missed > 0)
       std::printf("; %d deletions found no element (a refilled one the edits moved away)", pavement.deletions_missed);

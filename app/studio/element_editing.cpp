@@ -39,16 +39,23 @@ AddedElement* added_entry(Design& design, int id) {
   return nullptr;
 }
 
-// The pattern particles that carry element `index`: its point, or both ends of its edge. Throws
-// for elements that no particle of the design carries.
-std::vector<int> carriers(const Design& design, const Pavement& pavement, std::size_t index, const char* action) {
-  const int id = pavement.elements.id[index];
-  const int source = pavement.elements.source[index];
+// The pattern particles that carry element `index`: its point, or both ends of its edge; none
+// for elements no particle of the design carries (refill, boundary filling, added, beads).
+std::vector<int> pattern_particles(const Pavement& pavement, std::size_t index) {
+  const Elements& e = pavement.elements;
   const Pattern& pattern = pavement.pattern;
-  if (pavement.elements.kind[index] == ElementKind::Vertex && source >= 0 && source < pattern.designed_point_count())
-    return {source};
-  if (pavement.elements.kind[index] == ElementKind::Edge && source >= 0)
+  const int source = e.source[index];
+  if (e.kind[index] == ElementKind::Vertex && source >= 0 && source < pattern.designed_point_count()) return {source};
+  if (e.kind[index] == ElementKind::Edge && source >= 0)
     return {pattern.edge_a[std::size_t(source)], pattern.edge_b[std::size_t(source)]};
+  return {};
+}
+
+// The same, for an edit that needs them: throws saying why an element has none.
+std::vector<int> carriers(const Design& design, const Pavement& pavement, std::size_t index, const char* action) {
+  std::vector<int> particles = pattern_particles(pavement, index);
+  if (!particles.empty()) return particles;
+  const int id = pavement.elements.id[index];
   if (pavement.elements.kind[index] == ElementKind::Edge)
     throw InputError(id_text(id) + " was added by the boundary filling, which places anew on every run; " + action +
                      " a pattern element, or add one there");
@@ -108,19 +115,11 @@ bool is_pinned(const Design& design, const Pavement& pavement, int id) {
   if (id >= kFirstAddedId) return true;
   const std::optional<std::size_t> index = find_element(pavement, id);
   if (!index) return false;
-  const Elements& e = pavement.elements;
-  const Pattern& pattern = pavement.pattern;
-  std::vector<int> particles;
-  if (e.kind[*index] == ElementKind::Vertex && e.source[*index] >= 0) particles = {e.source[*index]};
-  if (e.kind[*index] == ElementKind::Edge && e.source[*index] >= 0)
-    particles = {pattern.edge_a[std::size_t(e.source[*index])], pattern.edge_b[std::size_t(e.source[*index])]};
-  if (particles.empty()) return false;
-  for (const int particle : particles) {
-    const auto m = std::find_if(design.edits.moved.begin(), design.edits.moved.end(),
-                                [&](const MovedParticle& x) { return x.id == particle; });
-    if (m == design.edits.moved.end() || !m->pinned) return false;
-  }
-  return true;
+  const std::vector<int> particles = pattern_particles(pavement, *index);
+  return !particles.empty() && std::all_of(particles.begin(), particles.end(), [&](int particle) {
+    return std::any_of(design.edits.moved.begin(), design.edits.moved.end(),
+                       [&](const MovedParticle& m) { return m.id == particle && m.pinned; });
+  });
 }
 
 Design with_pinned(Design design, const Pavement& pavement, int id, bool pinned) {

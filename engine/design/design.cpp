@@ -6,6 +6,7 @@
 #include "core/input_error.h"
 
 #include <cmath>
+#include <optional>
 #include <string>
 
 namespace paver {
@@ -169,32 +170,36 @@ void validate_solver(const Validator& v, const SolverParams& s) {
            number_text(s.c) + ", m = " + number_text(s.m));
 }
 
+// An id that `items` (anything with an `id`) lists twice, if any.
+template <class Items>
+std::optional<int> repeated_id(const Items& items) {
+  std::vector<int> ids;
+  for (const auto& item : items) ids.push_back(item.id);
+  std::sort(ids.begin(), ids.end());
+  const auto twice = std::adjacent_find(ids.begin(), ids.end());
+  return twice == ids.end() ? std::nullopt : std::optional<int>(*twice);
+}
+
 void validate_edits(const Validator& v, const ElementEdits& edits, const ElementsDesign& elements) {
   const auto check_uv = [&](glm::dvec2 uv, const std::string& key) {
     v.finite(uv.x, key + ".uv[0]");
     v.finite(uv.y, key + ".uv[1]");
   };
-  std::vector<int> seen;
   for (size_t i = 0; i < edits.moved.size(); ++i) {
     const std::string key = "edits.moved[" + std::to_string(i) + "]";
     v.require(edits.moved[i].id >= 0 && edits.moved[i].id < kFirstAddedId, key + ".id",
               "a pattern particle's id (>= 0, below " + std::to_string(kFirstAddedId) + ")", edits.moved[i].id);
     check_uv(edits.moved[i].uv, key);
-    seen.push_back(edits.moved[i].id);
   }
-  std::sort(seen.begin(), seen.end());
-  if (const auto twice = std::adjacent_find(seen.begin(), seen.end()); twice != seen.end())
+  if (const auto twice = repeated_id(edits.moved))
     v.fail("'edits.moved' names particle " + std::to_string(*twice) + " twice; keep one entry per particle");
-  seen.clear();
   for (size_t i = 0; i < edits.added.size(); ++i) {
     const std::string key = "edits.added[" + std::to_string(i) + "]";
     v.require(edits.added[i].id >= kFirstAddedId, key + ".id",
               ">= " + std::to_string(kFirstAddedId) + " (the designer's own ids)", edits.added[i].id);
     check_uv(edits.added[i].uv, key);
-    seen.push_back(edits.added[i].id);
   }
-  std::sort(seen.begin(), seen.end());
-  if (const auto twice = std::adjacent_find(seen.begin(), seen.end()); twice != seen.end())
+  if (const auto twice = repeated_id(edits.added))
     v.fail("'edits.added' uses id " + std::to_string(*twice) + " twice; every added element needs its own id");
   if (!edits.added.empty() && !elements.vertex.enabled)
     v.fail("'edits.added' adds vertex elements, but 'elements.vertex.enabled' is false; enable vertex elements or "

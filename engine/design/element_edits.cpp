@@ -4,6 +4,10 @@
 
 namespace paver {
 
+int ElementEdits::pinned_count() const {
+  return int(std::count_if(moved.begin(), moved.end(), [](const MovedParticle& m) { return m.pinned; }));
+}
+
 int ElementEdits::next_added_id() const {
   int next = kFirstAddedId;
   for (const AddedElement& a : added) next = std::max(next, a.id + 1);

@@ -40,6 +40,7 @@ struct ElementEdits {
   std::vector<AddedElement> added;
 
   bool empty() const { return moved.empty() && deleted.empty() && added.empty(); }
+  int pinned_count() const;  // moved particles held where they were put
   // The id the next added element gets: ids are never reused, even after an added one is deleted.
   int next_added_id() const;
 };

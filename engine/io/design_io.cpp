@@ -240,13 +240,10 @@ public:
     field(value, path, "pinned", out.pinned);
   }
 
-  void read(const json& value, const std::string& path, DeletedElement& out) const {
-    check_object(value, path, {"id", "uv"});
-    required(value, path, "id", out.id);
-    required(value, path, "uv", out.uv);
-  }
-
-  void read(const json& value, const std::string& path, AddedElement& out) const {
+  // An element named by id and map point: a deletion or an addition.
+  template <class IdAndPoint>
+    requires std::is_same_v<IdAndPoint, DeletedElement> || std::is_same_v<IdAndPoint, AddedElement>
+  void read(const json& value, const std::string& path, IdAndPoint& out) const {
     check_object(value, path, {"id", "uv"});
     required(value, path, "id", out.id);
     required(value, path, "uv", out.uv);

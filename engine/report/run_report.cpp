@@ -27,11 +27,9 @@ std::string_view start_name(ArapStart s) {
 // The designer's edits of single elements (design.edits) and what became of them.
 nlohmann::json edits_json(const Pavement& pavement) {
   const ElementEdits& edits = pavement.design.edits;
-  int pinned = 0;
-  for (const MovedParticle& m : edits.moved) pinned += m.pinned ? 1 : 0;
   const int deleted = int(edits.deleted.size());
   return {{"moved", edits.moved.size()},
-          {"pinned", pinned},
+          {"pinned", edits.pinned_count()},
           {"added", edits.added.size()},
           {"deleted", deleted - pavement.deletions_missed},
           {"deletions_that_found_no_element", pavement.deletions_missed}};

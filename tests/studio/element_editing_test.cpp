@@ -7,6 +7,7 @@
 #include "core/input_error.h"
 #include "elements/element_ids.h"
 #include "io/design_io.h"
+#include "input_error_assertions.h"
 #include "surface_maps.h"
 #include "test_meshes.h"
 
@@ -30,15 +31,6 @@ std::size_t first_of(const Pavement& p, ElementKind kind, bool from_pattern) {
     if (p.elements.kind[i] == kind && (p.elements.source[i] >= 0) == from_pattern) return i;
   ADD_FAILURE() << "no such element";
   return 0;
-}
-
-std::string message(const std::function<void()>& call) {
-  try {
-    call();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
 }
 
 TEST(ElementEditing, PinningAnEdgeElementPinsBothEndsOfItsEdge) {
@@ -85,7 +77,7 @@ TEST(ElementEditing, AddAndDeleteRecordIdsThatAreNeverReused) {
 
 TEST(ElementEditing, RefusalsSayWhatToDoInstead) {
   const Pavement& p = gems();
-  EXPECT_NE(message([&] { with_pinned(p.design, p, 99999999, true); }).find("is not in the pavement on screen"),
+  EXPECT_NE(test::error_of([&] { with_pinned(p.design, p, 99999999, true); }).find("is not in the pavement on screen"),
             std::string::npos);
   // A refilled element is placed anew on every run: it cannot be held by id. (The pendant needs no
   // refill, so one of its vertex elements is made one.)
@@ -93,17 +85,17 @@ TEST(ElementEditing, RefusalsSayWhatToDoInstead) {
   const std::size_t v = first_of(p, ElementKind::Vertex, true);
   refilled.elements.source[v] = -1;
   refilled.elements.id[v] = first_refill_id(p.pattern) + 3;
-  EXPECT_NE(message([&] { with_dragged(p.design, refilled, refilled.elements.id[v], {1, 0}); })
+  EXPECT_NE(test::error_of([&] { with_dragged(p.design, refilled, refilled.elements.id[v], {1, 0}); })
                 .find("placed by the refill, which places anew on every run"),
             std::string::npos);
   // ... but it can be deleted (by where it is).
   EXPECT_EQ(without_element(p.design, refilled, refilled.elements.id[v]).edits.deleted.size(), 1u);
   Design adaptive = p.design;
   adaptive.pattern.topology = Topology::Adaptive;
-  EXPECT_NE(message([&] { with_added_element(adaptive, p, {0, 0}); }).find("adaptive"), std::string::npos);
+  EXPECT_NE(test::error_of([&] { with_added_element(adaptive, p, {0, 0}); }).find("adaptive"), std::string::npos);
   Design no_vertices = p.design;
   no_vertices.elements.vertex.enabled = false;
-  EXPECT_NE(message([&] { with_added_element(no_vertices, p, {0, 0}); }).find("vertex elements are off"),
+  EXPECT_NE(test::error_of([&] { with_added_element(no_vertices, p, {0, 0}); }).find("vertex elements are off"),
             std::string::npos);
 }
 

@@ -37,9 +37,7 @@ void single_elements_panel(Studio& s) {
     ImGui::TextDisabled("no stone selected");
   }
   const ElementEdits& edits = s.doc.design.edits;
-  int pinned = 0;
-  for (const MovedParticle& m : edits.moved) pinned += m.pinned ? 1 : 0;
-  ImGui::Text("edits: %zu moved (%d pinned), %zu added, %zu deleted", edits.moved.size(), pinned, edits.added.size(),
+  ImGui::Text("edits: %zu moved (%d pinned), %zu added, %zu deleted", edits.moved.size(), edits.pinned_count(), edits.added.size(),
               edits.deleted.size());
   if (pavement && pavement->deletions_missed > 0)
     ImGui::TextWrapped("%d deletions found no element: refilled stones that an edit moved away", pavement->deletions_missed);

@@ -75,10 +75,11 @@ TEST_F(ElementEdits, EveryElementHasAUniqueIdFromItsOrigin) {
   ASSERT_GT(p.elements.size(), 100u);
   index_by_id(p.elements);
   for (std::size_t i = 0; i < p.elements.size(); ++i) {
-    if (p.elements.kind[i] == ElementKind::Vertex && p.elements.source[i] >= 0)
+    if (p.elements.kind[i] == ElementKind::Vertex && p.elements.source[i] >= 0) {
       EXPECT_EQ(p.elements.id[i], p.elements.source[i]);  // a pattern point's vertex element
-    else if (p.elements.kind[i] == ElementKind::Vertex)
+    } else if (p.elements.kind[i] == ElementKind::Vertex) {
       EXPECT_GE(p.elements.id[i], first_refill_id(p.pattern));
+    }
   }
   // The same design again: the same ids in the same places.
   const Pavement again = make_pavement(*map_, pendant_design());
@@ -103,7 +104,9 @@ TEST_F(ElementEdits, PinDragAndDeleteChangeOnlyWhatTheyName) {
   EXPECT_LT(glm::length(edited.elements.uv[after.at(picked.centre)] - wanted), 1e-5 * D) << "the pinned one moved";
   EXPECT_FALSE(after.count(picked.other)) << "the deleted one is still there";
   for (const auto& [id, i] : before)
-    if (id != picked.other) EXPECT_TRUE(after.count(id)) << "element " << id << " was lost";
+    if (id != picked.other) {
+      EXPECT_TRUE(after.count(id)) << "element " << id << " was lost";
+    }
   EXPECT_EQ(edited.elements.size() + 1, base.elements.size());
   EXPECT_EQ(edited.deletions_missed, 0);
 
