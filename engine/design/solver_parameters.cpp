@@ -22,8 +22,8 @@ struct Table {
   std::vector<SolverParameter> rows;
 
   Table() {
-#define PAVER_SOLVER_ROW(type, name, default_value, range, slider, unit, help) \
-  rows.push_back({#name, {}, &SolverParams::name, range, slider, unit, help});
+#define PAVER_SOLVER_ROW(type, name, label, default_value, range, slider, unit, help) \
+  rows.push_back({#name, {}, label, &SolverParams::name, range, slider, unit, help});
     PAVER_SOLVER_PARAMETERS(PAVER_SOLVER_ROW)
 #undef PAVER_SOLVER_ROW
     flags.reserve(rows.size());
@@ -106,13 +106,13 @@ std::optional<std::string> set_solver_parameter(SolverParams& params, const Solv
 
 std::string solver_parameters_markdown() {
   std::string out =
-      "| design.json key | CLI flag | default | valid | unit | what it does |\n"
-      "|---|---|---|---|---|---|\n";
+      "| design.json key | CLI flag | studio field | default | valid | unit | what it does |\n"
+      "|---|---|---|---|---|---|---|\n";
   for (const SolverParameter& p : solver_parameters()) {
     const bool is_choice = std::holds_alternative<FilterBase SolverParams::*>(p.member);
     const std::string valid = is_choice ? "\"current\" or \"initial\"" : p.range.describe();
-    out += "| `solver." + std::string(p.name) + "` | `--" + std::string(p.flag) + "` | " + default_text(p) + " | " +
-           valid + " | " + std::string(p.unit.empty() ? "-" : p.unit) + " | " + std::string(p.help) + " |\n";
+    out += "| `solver." + std::string(p.name) + "` | `--" + std::string(p.flag) + "` | " + std::string(p.label) + " | " + default_text(p) + " | " +
+           valid + " | " + std::string(p.unit) + " | " + std::string(p.help) + " |\n";
   }
   return out;
 }

@@ -1,7 +1,7 @@
 #pragma once
 // The section 5 solver parameters, each described once. PAVER_SOLVER_PARAMETERS below is the
 // table: one row per parameter with its type, name (design.json key "solver.<name>", CLI flag
-// --<name with '-' for '_'>), default, valid range, slider range, unit and help. From it come the
+// --<name with '-' for '_'>), plain-word label, default, valid range, slider range, unit and help. From it come the
 // SolverParams struct, the design.json reader and writer, validation, the CLI flags, the studio's
 // panel, the script's `set solver.<name>` and the docs table (docs/parameters.md, checked by a test).
 // Adding a parameter is adding a row (and using it in the solver).
@@ -45,50 +45,67 @@ struct SliderRange {
 
 constexpr double kNoLimit = std::numeric_limits<double>::infinity();
 
-// X(type, name, default, valid range, slider range, unit, help). The paper's defaults for c, m,
-// alpha, beta, gamma, the lambdas, the mu's and filter_max; dt, threshold, filter_base,
-// stray_patience and coarse_levels are our measured choices where the paper is silent or ambiguous (docs/solver.md).
+// X(type, name, label, default, valid range, slider range, unit, help). The label and the help say
+// in plain words what a designer changes (the studio's field and tooltip); the paper's symbol and
+// equation follow in brackets. The paper's defaults for c, m, alpha, beta, gamma, the lambdas, the
+// mu's and filter_max; dt, threshold, filter_base, stray_patience and coarse_levels are our
+// measured choices where the paper is silent or ambiguous (docs/solver.md).
 #define PAVER_SOLVER_PARAMETERS(X)                                                                              \
-  X(double, c, 0.0, ValueRange::at_least(0), SliderRange({0, 1}), "x D_ab",                                    \
-    "Uniform margin: every target length grows by c D_ab (eq. 5). c + m >= 0.")                                \
-  X(double, m, 0.0, ValueRange::any(), SliderRange({-1, 1}), "x D_ab",                                         \
-    "Curvature-adaptive margin: target lengths grow by m D_ab where the surface is most curved (eq. 5); "      \
-    "negative: denser where curved.")                                                                          \
-  X(double, alpha, 10.0, ValueRange::above(0), SliderRange({0.1, 50}), "",                                     \
-    "Spring stiffening at short range: k_c(r) = alpha / r^12 - beta / r^6 + gamma (eq. 8).")                    \
-  X(double, beta, 5.0, ValueRange::any(), SliderRange({0, 50}), "", "The r^6 term of k_c(r) (eq. 8).")          \
-  X(double, gamma, 1.0, ValueRange::any(), SliderRange({0, 10}), "", "The base spring stiffness in k_c(r) (eq. 8).") \
-  X(double, lambda_r, 0.94, ValueRange::at_least(0), SliderRange({0, 1}), "",                                  \
-    "Weight of the restoring (spring) force (eq. 13).")                                                        \
-  X(double, lambda_l, 0.04, ValueRange::at_least(0), SliderRange({0, 1}), "",                                  \
-    "Weight of the force towards the neighbours' centre (eqs. 10-11, 13).")                                    \
-  X(double, lambda_g, 0.02, ValueRange::at_least(0), SliderRange({0, 1}), "",                                  \
-    "Weight of the global pull towards the map's centre (eqs. 12-13); 0.001 for curvature-aware designs.")     \
-  X(double, dt, 0.3, ValueRange::open_closed(0, 1), SliderRange({0.001, 1}), "",                               \
-    "Step size (eq. 14). The paper uses 0.01 to 0.6 (0.5 on flat surfaces); 0.3 is the largest that measured " \
-    "stable here (docs/solver.md).")                                                                           \
-  X(int, iterations, 200, ValueRange::closed(0, 1000000), SliderRange({0, 100000}), "iterations",              \
-    "The iteration limit of the solver.")                                                                      \
-  X(double, threshold, 1e-3, ValueRange::above(0), SliderRange({1e-6, 0.1}), "x D",                            \
-    "Convergence: stop when every settled particle moves less than threshold D in an iteration.")              \
-  X(double, mu_compressed, 1.0, ValueRange::closed(0, 1), SliderRange({0, 1}), "",                             \
-    "Learning rate of the adaptive filter for compressed springs (eq. 16).")                                   \
-  X(double, mu_stretched, 0.5, ValueRange::closed(0, 1), SliderRange({0, 1}), "",                              \
-    "Learning rate of the adaptive filter for stretched springs (eq. 16).")                                    \
-  X(double, filter_max, 1.5, ValueRange::at_least(1), SliderRange({1, 4}), "x l_ab",                           \
-    "The filter keeps a spring's target in [l_ab, filter_max l_ab] (eq. 15).")                                 \
-  X(FilterBase, filter_base, FilterBase::Current, ValueRange::any(), SliderRange({0, 0}), "",                  \
-    "Which l_ab the filter's clamp uses: \"current\" (recomputed every iteration from the distortion) or "     \
-    "\"initial\" (fixed at initialisation); the paper is ambiguous (docs/solver.md).")                         \
-  X(int, stray_patience, 10, ValueRange::closed(0, 1000000), SliderRange({0, 1000}), "iterations",             \
-    "A particle pulled back onto the map this many iterations in a row is retired (0 = never).")              \
-  X(int, coarse_levels, 8, ValueRange::closed(0, 16), SliderRange({0, 8}), "levels",                            \
+  X(double, c, "extra spacing", 0.0, ValueRange::at_least(0), SliderRange({0, 1}), "x spacing D",              \
+    "Extra room between neighbouring elements everywhere, as a fraction of the spacing D: 0.1 sets every "     \
+    "pair 10% of D farther apart (the paper's c, eq. 5). c + m must stay >= 0.")                               \
+  X(double, m, "extra spacing where curved", 0.0, ValueRange::any(), SliderRange({-1, 1}), "x spacing D",      \
+    "Extra room where the surface bends most, fading to none where it is flat, as a fraction of D; "            \
+    "negative packs elements closer where it is curved (the paper's m, eq. 5).")                               \
+  X(double, alpha, "close-range stiffness", 10.0, ValueRange::above(0), SliderRange({0.1, 50}), "no unit",     \
+    "How hard a spring pushes back when two elements come much closer than their target (alpha in the "       \
+    "spring stiffness k_c(r) = alpha / r^12 - beta / r^6 + gamma, eq. 8).")                                    \
+  X(double, beta, "near-range softening", 5.0, ValueRange::any(), SliderRange({0, 50}), "no unit",             \
+    "How much a spring softens just inside its target length (beta, the r^6 term of eq. 8).")                 \
+  X(double, gamma, "base stiffness", 1.0, ValueRange::any(), SliderRange({0, 10}), "no unit",                  \
+    "The springs' stiffness at their target length (gamma in eq. 8).")                                         \
+  X(double, lambda_r, "keep the spacing", 0.94, ValueRange::at_least(0), SliderRange({0, 1}), "weight",        \
+    "How strongly each element keeps its distance to its pattern neighbours, against the two pulls below "    \
+    "(the restoring force's weight lambda_r, eq. 13).")                                                        \
+  X(double, lambda_l, "even out", 0.04, ValueRange::at_least(0), SliderRange({0, 1}), "weight",                \
+    "How strongly each element moves towards the middle of its neighbours, evening the pattern out "          \
+    "(lambda_l, eqs. 10-11, 13).")                                                                             \
+  X(double, lambda_g, "hold together", 0.02, ValueRange::at_least(0), SliderRange({0, 1}), "weight",           \
+    "How strongly the whole pattern is pulled towards the map's centre, so that it neither drifts nor "       \
+    "spreads off the surface (lambda_g, eqs. 12-13); 0.001 for curvature-aware designs.")                      \
+  X(double, dt, "step size", 0.3, ValueRange::open_closed(0, 1), SliderRange({0.001, 1}), "no unit",          \
+    "How far the elements move in one iteration: larger settles sooner but can overshoot (dt, eq. 14). "      \
+    "The paper uses 0.01 to 0.6 (0.5 on flat surfaces); 0.3 is the largest that measured stable here "       \
+    "(docs/solver.md).")                                                                                       \
+  X(int, iterations, "iteration limit", 200, ValueRange::closed(0, 1000000), SliderRange({0, 100000}),         \
+    "iterations", "The most iterations a run takes; it stops sooner once settled (below).")                    \
+  X(double, threshold, "settled below", 1e-3, ValueRange::above(0), SliderRange({1e-6, 0.1}), "x spacing D",   \
+    "The run stops when every settled element moves less than this fraction of D in an iteration.")            \
+  X(double, mu_compressed, "squeezed springs adapt", 1.0, ValueRange::closed(0, 1), SliderRange({0, 1}),       \
+    "rate, 0 to 1",                                                                                             \
+    "How fast a spring pressed shorter than its target lets the target follow, where the map squeezes the "   \
+    "surface: 1 at once, 0 never (the adaptive filter's mu, eq. 16).")                                         \
+  X(double, mu_stretched, "stretched springs adapt", 0.5, ValueRange::closed(0, 1), SliderRange({0, 1}),       \
+    "rate, 0 to 1",                                                                                             \
+    "How fast a spring pulled longer than its target lets the target follow, where the map stretches the "    \
+    "surface: 1 at once, 0 never (the adaptive filter's mu, eq. 16).")                                         \
+  X(double, filter_max, "most a spring adapts", 1.5, ValueRange::at_least(1), SliderRange({1, 4}),             \
+    "x rest length", "A spring's target may follow the map up to this many times its rest length l_ab, and "   \
+    "never below it (eq. 15).")                                                                                \
+  X(FilterBase, filter_base, "rest length from", FilterBase::Current, ValueRange::any(), SliderRange({0, 0}),  \
+    "choice",                                                                                                   \
+    "Which rest length l_ab the limit above uses: \"current\" (recomputed every iteration from the "           \
+    "distortion) or \"initial\" (fixed at the start); the paper is ambiguous (docs/solver.md).")               \
+  X(int, stray_patience, "drop strays after", 10, ValueRange::closed(0, 1000000), SliderRange({0, 1000}),     \
+    "iterations", "An element pushed off the map and pulled back this many iterations in a row is dropped "    \
+    "(0 = never).")                                                                                            \
+  X(int, coarse_levels, "coarse start levels", 8, ValueRange::closed(0, 16), SliderRange({0, 8}), "levels",   \
     "Multilevel start: a large lattice first takes the shape of the same design relaxed at 2x, 4x, ... its "    \
     "spacing (at most this many levels, each of 1,000 points or more), so that it relaxes within the "          \
     "iteration limit; 0 = the paper's start from the regular lattice (docs/solver.md).")
 
 struct SolverParams {
-#define PAVER_SOLVER_FIELD(type, name, default_value, range, slider, unit, help) type name = default_value;
+#define PAVER_SOLVER_FIELD(type, name, label, default_value, range, slider, unit, help) type name = default_value;
   PAVER_SOLVER_PARAMETERS(PAVER_SOLVER_FIELD)
 #undef PAVER_SOLVER_FIELD
 };
@@ -97,10 +114,11 @@ struct SolverParams {
 struct SolverParameter {
   std::string_view name;   // design.json "solver.<name>"
   std::string_view flag;   // CLI "--<flag>"
+  std::string_view label;  // plain words, the studio's field
   std::variant<double SolverParams::*, int SolverParams::*, FilterBase SolverParams::*> member;
   ValueRange range;
   SliderRange slider;
-  std::string_view unit;   // "" for dimensionless
+  std::string_view unit;   // what the number counts or is a multiple of
   std::string_view help;
 };
 

@@ -11,18 +11,19 @@
 namespace paver::studio {
 namespace {
 
-// The tooltip: what it does, its unit and its default, all from the parameter table.
+// The tooltip: what it does in words, its unit, its default and its design.json key, all from
+// the parameter table.
 std::string tooltip(const SolverParameter& p) {
-  std::string text(p.help);
-  if (!p.unit.empty()) text += "\nUnit: " + std::string(p.unit);
-  return text + "\nDefault: " + default_text(p);
+  return std::string(p.help) + "\nUnit: " + std::string(p.unit) + "\nDefault: " + default_text(p) +
+         "\nIn design.json: solver." + std::string(p.name);
 }
 
 // One widget for a parameter of the table; true when the user changed it. Dragging stays in the
 // slider's range (inside the valid range, tested); Ctrl+click can type any value, which
 // change_design validates like a design file.
 bool parameter_widget(const SolverParameter& p, SolverParams& solver) {
-  const std::string label(p.name);
+  // Words first, the paper's symbol after, so that a designer and a reader of the paper both find it.
+  const std::string label = std::string(p.label) + " (" + std::string(p.name) + ")";
   if (const auto* real = std::get_if<double SolverParams::*>(&p.member)) {
     double& value = solver.**real;
     double lo = p.slider.min;

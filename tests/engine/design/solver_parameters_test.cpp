@@ -57,6 +57,11 @@ TEST(SolverParameters, EveryRowIsConsistent) {
     SCOPED_TRACE(std::string(p.name));
     EXPECT_TRUE(names.insert(p.name).second) << "duplicate name";
     EXPECT_FALSE(p.help.empty());
+    // A designer reads the studio's field in words and its tooltip with a unit; the symbol stays
+    // for the reader of the paper, so a label is not the symbol again.
+    EXPECT_FALSE(p.unit.empty());
+    EXPECT_GE(p.label.size(), 5u);
+    EXPECT_NE(p.label, p.name);
     EXPECT_EQ(p.flag.find('_'), std::string_view::npos);
     EXPECT_EQ(find_solver_parameter(p.name), &p);
     if (is_choice(p)) continue;
