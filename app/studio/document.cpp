@@ -1,5 +1,7 @@
 #include "document.h"
 
+#include "field_names.h"
+
 #include "element_editing.h"
 
 #include "io/output_guard.h"
@@ -33,9 +35,9 @@ void refresh_dirty(Document& doc) {
 
 bool change_design(Document& doc, const Design& next, bool dragging) {
   try {
-    validate_design(next, "design");
+    validate_design(next, "this change");
   } catch (const InputError& e) {
-    report_error(doc, e.what());
+    report_error(doc, in_studio_words(e.what()));  // the panel and field to fix, then the key
     doc.messages.error_kept_design = true;
     return false;
   }

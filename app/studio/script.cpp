@@ -27,7 +27,7 @@ constexpr std::pair<std::string_view, Kind> kCommands[] = {
     {"panel", Kind::Panel},     {"wait", Kind::Wait},     {"quit", Kind::Quit},
     {"select", Kind::Select},   {"pin", Kind::Pin},       {"unpin", Kind::Unpin},   {"drag", Kind::Drag},
     {"delete", Kind::Delete},   {"add", Kind::Add},       {"brush", Kind::Brush},
-    {"colour", Kind::Colour}};
+    {"colour", Kind::Colour}, {"save", Kind::Save}};
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
 
@@ -93,6 +93,7 @@ bool parse_script_line(std::string_view line, int line_number, const std::string
   switch (*kind) {
     case Kind::Open:
     case Kind::Design:
+    case Kind::Save:
     case Kind::Export:
     case Kind::Screenshot:
       need_argument(*kind == Kind::Export ? "a folder" : "a file path");

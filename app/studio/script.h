@@ -1,7 +1,7 @@
 #pragma once
 // The studio's scripted session (--script FILE): one command per line, `#` starts a comment.
 //   open PATH | cut_axis auto|x|y|z | design PATH | pattern tri|grid|hex | spacing D | set KEY VALUE | optimize |
-//   undo | redo | export DIR | cut THICKNESS DIR | screenshot FILE.png | view3d | view2d | panel NAME | wait N | quit |
+//   undo | redo | save FILE.json | export DIR | cut THICKNESS DIR | screenshot FILE.png | view3d | view2d | panel NAME | wait N | quit |
 //   select ID | pin ID | unpin ID | drag ID DU DV | delete ID | add U V | brush U V RADIUS STRENGTH |
 //   colour ratio|type
 // (element commands name elements by the ids placements.csv lists; drag moves by DU, DV spacings D
@@ -18,9 +18,9 @@ namespace paver::studio {
 
 struct ScriptCommand {
   enum class Kind { Open, CutAxis, Design, Pattern, Spacing, Set, Optimize, Undo, Redo, Export, Cut, Screenshot, View3d,
-                    View2d, Panel, Wait, Quit, Select, Pin, Unpin, Drag, Delete, Add, Brush, Colour };
+                    View2d, Panel, Wait, Quit, Select, Pin, Unpin, Drag, Delete, Add, Brush, Colour, Save };
   Kind kind = Kind::Quit;
-  std::string text;    // open/design/export/cut/screenshot: the path; pattern, panel, cut_axis, colour: the name; set: the key
+  std::string text;    // open/design/save/export/cut/screenshot: the path; pattern, panel, cut_axis, colour: the name; set: the key
   std::string value;   // set: the value as written
   double number = 0;   // spacing: D; cut: the metal's thickness
   int frames = 0;      // wait: N

@@ -118,6 +118,12 @@ void ScriptRunner::act(Studio& s, const ScriptCommand& c) {
     case Kind::Redo:
       if (!redo(doc)) throw InputError("redo: there is nothing to redo");
       break;
+    case Kind::Save:  // as Save as: never onto a bundled design or an input (it fails the script)
+      if (save_design_file(doc, c.text)) {
+        s.ui.design_path = c.text;
+        remember_file(s, c.text);
+      }
+      break;
     case Kind::Export: export_outputs(s, c.text); break;
     case Kind::Cut: cut_metal(s, c.text, c.number); break;
     case Kind::Screenshot: s.ui.screenshot = c.text; break;

@@ -27,15 +27,6 @@ namespace fs = std::filesystem;
 
 double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
-void remember(Studio& s, const fs::path& path) {
-  remember_recent_file(s.recent, path);
-  try {
-    save_recent_files(recent_files_path(), s.recent);
-  } catch (const std::exception& e) {
-    report_status(s.doc, std::string("could not save the recent files: ") + e.what());  // not worth a dialog
-  }
-}
-
 void take_loaded_surface(Studio& s) {
   std::optional<SurfaceLoadOutcome> outcome = s.loader.take_outcome();
   if (!outcome) return;
@@ -47,7 +38,7 @@ void take_loaded_surface(Studio& s) {
   const SurfaceMap& map = *opened.map;
   s.views.camera = render::frame_surface(map.mesh);
   s.views.map_view = render::frame_map(map_for_topology(map, s.doc.design.pattern.topology), s.views.map_aspect);
-  remember(s, opened.path);
+  remember_file(s, opened.path);
   std::string status = "opened " + opened.path.string() + ": " + std::to_string(map.mesh.vertex_count()) +
                        " vertices, " + std::to_string(map.mesh.face_count()) + " faces";
   for (const auto& warning : opened.warnings) status += "; warning: " + warning;
@@ -80,6 +71,16 @@ void take_run_outcome(Studio& s) {
 
 }  // namespace
 
+void remember_file(Studio& s, const fs::path& path) {
+  remember_recent_file(s.recent, path);
+  try {
+    save_recent_files(recent_files_path(), s.recent);
+  } catch (const std::exception& e) {
+    report_status(s.doc, std::string("could not save the recent files: ") + e.what());  // not worth a dialog
+  }
+}
+
+
 void open_surface(Studio& s, const fs::path& path) {
   s.loader.start(path, s.ui.cut_axis);
   s.ui.surface_path = path.string();
@@ -103,7 +104,7 @@ void open_any(Studio& s, const fs::path& path) {
   if (extension == ".json") {
     if (open_design_file(s.doc, path)) {
       s.ui.design_path = path.string();
-      remember(s, path);
+      remember_file(s, path);
     }
   } else {
     open_surface(s, path);
@@ -327,6 +328,7 @@ void draw_studio(Studio& s) {
   views_area(s, ImVec2(origin.x + side_width, origin.y), ImVec2(size.x - side_width, size.y - status_height));
   status_bar(s, ImVec2(origin.x, origin.y + size.y - status_height), ImVec2(size.x, status_height));
   dialogs(s);
+  file_dialog(s);
 }
 
 void after_present(Studio& s, const std::optional<render::Image>& frame) {

@@ -5,6 +5,7 @@
 #include "app_window.h"
 #include "backend_choice.h"
 #include "document.h"
+#include "file_browser.h"
 #include "live_pavement.h"
 #include "scene.h"
 #include "surface_loader.h"
@@ -74,6 +75,8 @@ struct UiState {
   double brush_radius = 3;             // x D
   double brush_strength = 0.2;         // the spacing's change at a dab's centre
   std::optional<glm::dvec2> last_dab;  // where the stroke being painted put its last dab
+  FileBrowser browser;                 // the file dialog (open, load, save as, export folder, shape)
+  std::optional<std::filesystem::path> confirm_replace;  // Save as onto this existing file: asking
 };
 
 
@@ -111,6 +114,8 @@ void open_surface(Studio& s, const std::filesystem::path& path);
 // Sets the plane a closed surface is cut across; the surface being opened, or the closed surface
 // on screen, is opened again with it.
 void set_cut_axis(Studio& s, CutAxis axis);
+// Puts a file opened or saved at the top of the recent files (and saves the list).
+void remember_file(Studio& s, const std::filesystem::path& path);
 // A dropped or recent file: a .json design is loaded, anything else opened as a surface.
 void open_any(Studio& s, const std::filesystem::path& path);
 // Chooses the solver backend (cpu, vulkan, auto); reports when it cannot.

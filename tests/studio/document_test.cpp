@@ -72,7 +72,9 @@ TEST(Document, AnInvalidDesignIsReportedAndTheDesignKept) {
   EXPECT_EQ(doc.design.solver.dt, 0.25);
   EXPECT_EQ(doc.revision, revision);
   EXPECT_EQ(doc.messages.error_count, 1);
-  EXPECT_NE(doc.messages.error.find("solver.dt"), std::string::npos) << doc.messages.error;
+  // The field a designer sees, then the key a design file has.
+  EXPECT_NE(doc.messages.error.find("Optimize > step size (dt) (solver.dt) must be"), std::string::npos)
+      << doc.messages.error;
   EXPECT_TRUE(doc.messages.status.starts_with("error: "));
   EXPECT_TRUE(doc.messages.error_kept_design) << "the dialog may say the design is unchanged";
   report_error(doc, "a run failed");

@@ -322,6 +322,85 @@ TEST_F(StudioSession, AGuidanceDabIsSavedAndTheCliReproducesIt) {
   EXPECT_TRUE(read_text(painted / "placements.csv") == read_text(cli_out / "placements.csv"));
 }
 
+// Add puts a vertex element at a map point (its id from 1e9 up), the stones around it make room,
+// and pin then unpin leaves the element free again; both are undoable and saved in the design.
+TEST_F(StudioSession, AddAndUnpinAreUndoableAndSaved) {
+  const fs::path design = dir_ / "start.json", base = dir_ / "base";
+  std::ofstream(design) << R"({"version": 1, "pattern": {"topology": "lattice"}})";
+  const Outcome first = run_in_source(quote(PAVER_CLI) + " run assets/surfaces/pendant.obj --design " +
+                                          quote(design.string()) + " --backend cpu --out " + quote(base.string()),
+                                      dir_);
+  ASSERT_EQ(first.exit_code, 0) << describe(first);
+  const long some_id = placements_by_id(base / "placements.csv").rbegin()->first;
+  const fs::path exported = dir_ / "added", script = dir_ / "add.txt";
+  std::ofstream(script) << "open assets/surfaces/pendant.obj\n"
+                           "set pattern.topology lattice\n"
+                           "optimize\n"
+                           "add 0.3 0.2\n"
+                           "undo\n"
+                           "redo\n"
+                        << "pin " << some_id << "\n"
+                        << "unpin " << some_id << "\n"
+                           "optimize\n"
+                           "export " << exported.string() << "\n";
+  const Outcome r = studio("--script " + quote(script.string()) + " --backend cpu --width 1280 --height 800", dir_);
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const std::map<long, Row> after = placements_by_id(exported / "placements.csv");
+  ASSERT_TRUE(after.count(1000000000)) << "the added element is missing";
+  EXPECT_NEAR(after.at(1000000000).u, 0.3, 1e-6);  // placements.csv keeps float precision
+  EXPECT_NEAR(after.at(1000000000).v, 0.2, 1e-6);
+  long violations = 0;
+  for (auto a = after.begin(); a != after.end(); ++a)
+    for (auto b = std::next(a); b != after.end(); ++b) {
+      const Row &p = a->second, &q = b->second;
+      if (std::hypot(p.x - q.x, p.y - q.y, p.z - q.z) < 0.5 * (p.diameter + q.diameter)) ++violations;
+    }
+  EXPECT_EQ(violations, 0);
+  const nlohmann::json saved = nlohmann::json::parse(read_text(exported / "design.json"));
+  ASSERT_EQ(saved["edits"]["added"].size(), 1u);
+  EXPECT_EQ(saved["edits"]["added"][0]["id"].get<long>(), 1000000000);
+  for (const auto& moved : saved["edits"]["moved"]) EXPECT_FALSE(moved["pinned"].get<bool>()) << moved.dump();
+}
+
+// Save (the file dialog's Save as) writes the design where asked, and never over a design bundled
+// with Paver: the session stops with the reason and the bundled file is unchanged.
+TEST_F(StudioSession, SaveAsWritesTheDesignAndNeverOverABundledOne) {
+  const fs::path bundled = fs::path(PAVER_SOURCE_DIR) / "assets/designs/dome_hex_d6.json";
+  const std::string before = read_text(bundled);
+  const fs::path refused = dir_ / "refused.txt";
+  std::ofstream(refused) << "design assets/designs/dome_hex_d6.json\n"
+                            "set solver.dt 0.25\n"
+                            "save assets/designs/dome_hex_d6.json\n";
+  const Outcome no = studio("assets/surfaces/dome.obj --script " + quote(refused.string()) + " --backend cpu", dir_);
+  EXPECT_NE(no.exit_code, 0) << describe(no);
+  EXPECT_NE(no.err.find("is a design bundled with Paver"), std::string::npos) << describe(no);
+  EXPECT_EQ(read_text(bundled), before);
+
+  const fs::path mine = dir_ / "mine.json", script = dir_ / "save.txt";
+  std::ofstream(script) << "design assets/designs/dome_hex_d6.json\n"
+                           "set solver.dt 0.25\n"
+                           "save " << mine.string() << "\n"
+                        << "set solver.dt 0.5\n"
+                           "design " << mine.string() << "\n";
+  const Outcome r = studio("assets/surfaces/dome.obj --script " + quote(script.string()) + " --backend cpu", dir_);
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const nlohmann::json saved = nlohmann::json::parse(read_text(mine));
+  EXPECT_EQ(saved["solver"]["dt"].get<double>(), 0.25);
+  EXPECT_EQ(saved["pattern"]["spacing"].get<double>(), 6.0) << "the loaded design, not the default";
+  EXPECT_NE(read_text(dir_ / "config/paver/recent.txt").find(mine.string()), std::string::npos)
+      << "a saved design is a recent file";
+}
+
+// A spacing larger than the part places nothing: the session says so and what to do, instead of
+// showing 0 elements.
+TEST_F(StudioSession, ASpacingLargerThanThePartSaysWhatToDo) {
+  const fs::path script = dir_ / "large.txt";
+  std::ofstream(script) << "open assets/surfaces/pendant.obj\nspacing 1000\noptimize\n";
+  const Outcome r = studio("--script " + quote(script.string()) + " --backend cpu --width 640 --height 480", dir_);
+  EXPECT_NE(r.exit_code, 0) << describe(r);
+  EXPECT_NE(r.err.find("use a spacing below"), std::string::npos) << describe(r);
+}
+
 #ifdef PAVER_WITH_CGAL
 // A closed bead cut across x (the script's cut_axis, the file panel's "cut across") exports what
 // `paver run --cut x` writes: the same placements.

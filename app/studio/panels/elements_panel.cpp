@@ -42,17 +42,11 @@ bool fraction_slider(Document& doc, Design& d, const char* label, double& value,
 // A length typed in the surface's unit that applies on Enter or when the field loses focus
 // (never on every keystroke: typing 1.5 must not pave at 1 first).
 bool length_field(const char* label, double& value, const char* unit) {
-  double typed = value;
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8);
-  const bool entered = ImGui::InputDouble(label, &typed, 0, 0, "%.4g", ImGuiInputTextFlags_EnterReturnsTrue);
-  const bool left = ImGui::IsItemDeactivatedAfterEdit();
+  const bool changed = typed_number(label, value);
   ImGui::SameLine();
   ImGui::TextUnformatted(unit);
-  if ((entered || left) && std::isfinite(typed) && typed >= 0 && typed != value) {
-    value = typed;
-    return true;
-  }
-  return false;
+  return changed;
 }
 
 void jewellery_section(Document& doc, Design& d) {
@@ -165,6 +159,8 @@ void elements_panel(Document& doc, UiState& ui) {
   section("Custom shape");
   if (ui.custom_shape_path.empty()) ui.custom_shape_path = d.elements.custom_shape;
   ImGui::InputText("OBJ / OFF / PLY / STL", &ui.custom_shape_path);
+  if (ImGui::Button("Browse...##shape")) start_browsing(ui.browser, BrowsePurpose::CustomShape, ui.custom_shape_path);
+  ImGui::SameLine();
   if (ImGui::Button("use this mesh")) {
     try {
       load_custom_shape(ui.custom_shape_path);  // refuse a bad file here, not at the next run

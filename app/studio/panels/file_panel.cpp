@@ -52,6 +52,8 @@ void file_panel(Studio& s) {
   ImGui::InputText("##surface", &s.ui.surface_path);
   ImGui::SameLine();
   if (ImGui::Button("Open") && !s.ui.surface_path.empty()) open_surface(s, s.ui.surface_path);
+  ImGui::SameLine();
+  if (ImGui::Button("Browse...##surface")) start_browsing(s.ui.browser, BrowsePurpose::OpenSurface, s.ui.surface_path);
   if (s.loader.busy()) ImGui::ProgressBar(s.loader.progress(), ImVec2(-1, 0), s.loader.stage().c_str());
   if (doc.surface.map) {
     // A closed surface is counted as loaded, not as its atlas (split faces, seams twice).
@@ -84,6 +86,12 @@ void file_panel(Studio& s) {
   if (ImGui::Button("Load") && !s.ui.design_path.empty()) open_any(s, s.ui.design_path);
   ImGui::SameLine();
   if (ImGui::Button("Save") && !s.ui.design_path.empty()) save_design_file(doc, s.ui.design_path);
+  if (ImGui::Button("Load...")) start_browsing(s.ui.browser, BrowsePurpose::LoadDesign, s.ui.design_path);
+  ImGui::SameLine();
+  if (ImGui::Button("Save as...")) start_browsing(s.ui.browser, BrowsePurpose::SaveDesign, s.ui.design_path);
+  help_marker("Save as never replaces a design bundled with Paver, nor the surface or shape the design "
+              "uses, and asks before it replaces any other file.");
+  ImGui::SameLine();
   ImGui::TextDisabled("%s", doc.dirty ? "unsaved changes" : "saved");
   ImGui::BeginDisabled(!doc.history.can_undo());
   if (ImGui::Button("Undo")) undo(doc);
@@ -96,7 +104,9 @@ void file_panel(Studio& s) {
   ImGui::TextDisabled("%zu / %zu steps", doc.history.undo_count(), doc.history.redo_count());
 
   section("Export");
-  ImGui::InputText("folder", &s.ui.export_dir);
+  ImGui::InputText("##export", &s.ui.export_dir);
+  ImGui::SameLine();
+  if (ImGui::Button("Browse...##export")) start_browsing(s.ui.browser, BrowsePurpose::ExportFolder, s.ui.export_dir);
   ImGui::BeginDisabled(!result_is_final(s));
   if (ImGui::Button("Export all")) guarded(doc, [&] { export_outputs(s, s.ui.export_dir); });
   help_marker("placements.csv, stones.csv, elements.ply/.obj/.stl/.glb, paved.3mf, design.json, report.json "

@@ -21,9 +21,13 @@ void help_panel();                                     // shortcuts
 void views_area(Studio& s, ImVec2 pos, ImVec2 size);   // the 3D and 2D views with their controls
 void status_bar(Studio& s, ImVec2 pos, ImVec2 size);
 void dialogs(Studio& s);                               // the error dialog, quit with unsaved changes
+void file_dialog(Studio& s);                           // the file browser, and Save as's replace question
 
 // A "(?)" after the last item, with `text` as its tooltip.
 void help_marker(const char* text);
+// A number field that applies when it lets go (Enter, Tab, a click elsewhere), never on every
+// keystroke (typing 0.5 must not pave at 0 first); true when the value changed.
+bool typed_number(const char* label, double& value, const char* format = "%.4g");
 // A separator with a title under it.
 void section(const char* title);
 

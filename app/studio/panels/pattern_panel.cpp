@@ -151,6 +151,23 @@ void unit_cell_editor(Document& doc, UiState& ui) {
 
 constexpr double kBrushRadiusMin = 1, kBrushRadiusMax = 15, kBrushStrengthMin = 0.05, kBrushStrengthMax = 0.5;
 
+// Number fields for what the 2D view's handles do (section 4.2: p = R(rotation) (scale q) + offset),
+// applied on Enter or focus loss like every typed value.
+void placement_section(Document& doc, Design& d) {
+  section("Placement (the pattern over the map)");
+  Placement& p = d.placement;
+  bool changed = typed_number("offset u", p.offset.x);
+  changed |= typed_number("offset v", p.offset.y);
+  help_marker("Moves the pattern over the map, in surface units (the left drag in the 2D view).");
+  changed |= typed_number("rotation (degrees)", p.rotation_deg);
+  help_marker("Turns the pattern counter-clockwise over the map (the round handle in the 2D view). On a band "
+              "the band sets the rows' direction instead.");
+  changed |= typed_number("scale", p.scale);
+  help_marker("Scales the map under the pattern, no unit: above 1 the map grows and more elements fit at the same "
+              "D (the square handle). It must stay above 0.");
+  if (changed) change_design(doc, d);  // validates: a scale <= 0 is refused with the field named
+}
+
 }  // namespace
 
 void pattern_panel(Document& doc, UiState& ui) {
@@ -165,14 +182,9 @@ void pattern_panel(Document& doc, UiState& ui) {
   help_marker("The regular tessellation of section 4.1. Changing it clears the edge operators and the "
               "E-elements' cell edges, which name the old cell's edges.");
 
-  // Applies on Enter, never per keystroke: typing 0.5 must not pave at 0 first (nor ask about it).
-  double spacing = d.pattern.spacing;
-  if (ImGui::InputDouble("D (spacing)", &spacing, 0, 0, "%.4g", ImGuiInputTextFlags_EnterReturnsTrue) &&
-      std::isfinite(spacing) && spacing >= 0 && spacing != d.pattern.spacing) {
-    d.pattern.spacing = spacing;
-    change_design(doc, d);
-  }
-  help_marker("Edge length of the tessellation in surface units; type it and press Enter. 0 = derived from the "
+  // Typing 0.5 must not pave at 0 first (nor ask about it): the value applies when the field lets go.
+  if (typed_number("D (spacing)", d.pattern.spacing)) change_design(doc, d);
+  help_marker("Edge length of the tessellation in surface units; type it and press Enter (or Tab). 0 = derived from the "
               "surface (about 1000 points). A spacing that would place more elements than the studio's budget "
               "asks before it runs.");
   if (doc.result.pavement && d.pattern.spacing <= 0)
@@ -198,6 +210,8 @@ void pattern_panel(Document& doc, UiState& ui) {
     help_marker("On a ring or bangle the lattice closes around the band: a whole number of stones goes "
                 "round (D changes a little to make it so). Rows across the band (the default) or along it.");
   }
+
+  placement_section(doc, d);
 
   bool bracing = d.pattern.bracing;
   if (ImGui::Checkbox("bracing (virtual edges across faces)", &bracing)) {

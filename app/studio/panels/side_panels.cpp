@@ -3,6 +3,7 @@
 #include "../studio.h"
 
 #include <cctype>
+#include <map>
 #include <string>
 
 namespace paver::studio {
@@ -17,6 +18,24 @@ void help_marker(const char* text) {
     ImGui::PopTextWrapPos();
     ImGui::EndTooltip();
   }
+}
+
+bool typed_number(const char* label, double& value, const char* format) {
+  // What is being typed, per field, while it has the focus: ImGui writes it on every keystroke,
+  // and the design only takes it when the field lets go (Enter, Tab or a click elsewhere).
+  static std::map<ImGuiID, double> typing;
+  const ImGuiID id = ImGui::GetID(label);
+  const auto it = typing.find(id);
+  double typed = it != typing.end() ? it->second : value;
+  ImGui::InputDouble(label, &typed, 0, 0, format);
+  if (ImGui::IsItemActive()) {
+    typing[id] = typed;
+    return false;
+  }
+  typing.erase(id);
+  if (!ImGui::IsItemDeactivatedAfterEdit() || typed == value) return false;
+  value = typed;
+  return true;
 }
 
 void section(const char* title) {
