@@ -1,5 +1,7 @@
 #include "renderer.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <string>
@@ -40,6 +42,16 @@ const std::map<char, std::array<const char*, 7>>& glyphs() {
       {'r', {"     ", "     ", "# ## ", "##  #", "#    ", "#    ", "#    "}},
       {'s', {"     ", "     ", " ####", "#    ", " ### ", "    #", "#### "}},
       {'t', {" #   ", " #   ", "###  ", " #   ", " #   ", " #  #", "  ## "}},
+      {'b', {"#    ", "#    ", "# ## ", "##  #", "#   #", "#   #", "#### "}},
+      {'g', {"     ", " ####", "#   #", "#   #", " ####", "    #", " ### "}},
+      {'h', {"#    ", "#    ", "# ## ", "##  #", "#   #", "#   #", "#   #"}},
+      {'u', {"     ", "     ", "#   #", "#   #", "#   #", "#  ##", " ## #"}},
+      {'v', {"     ", "     ", "#   #", "#   #", "#   #", " # # ", "  #  "}},
+      {'x', {"     ", "     ", "#   #", " # # ", "  #  ", " # # ", "#   #"}},
+      {'E', {"#####", "#    ", "#    ", "#### ", "#    ", "#    ", "#####"}},
+      {'V', {"#   #", "#   #", "#   #", "#   #", "#   #", " # # ", "  #  "}},
+      {'(', {"   # ", "  #  ", " #   ", " #   ", " #   ", "  #  ", "   # "}},
+      {')', {" #   ", "  #  ", "   # ", "   # ", "   # ", "  #  ", " #   "}},
   };
   return font;
 }
@@ -66,31 +78,44 @@ void text(Image& image, int x, int y, const std::string& s, int scale, std::arra
 }  // namespace
 
 void draw_ratio_legend(Image& image) {
-  const auto stops = neighbour_ratio_legend();
   const int scale = image.height >= 600 ? 2 : 1;
   const int bar_w = 260 * scale / 2 + 40, bar_h = 14 * scale;
   const int x0 = 16 * scale, y0 = image.height - 40 * scale - bar_h;
-  const double lo = stops.front().ratio, hi = stops.back().ratio;
+  const std::string title = kRatioLegendTitle;
+  const int panel_w = std::max(bar_w, int(title.size()) * 6 * scale);
   // Panel behind the legend so it reads on any background.
   for (int y = y0 - 22 * scale; y < y0 + bar_h + 22 * scale; ++y)
-    for (int x = x0 - 8 * scale; x < x0 + bar_w + 8 * scale; ++x) put(image, x, y, {28, 30, 34});
+    for (int x = x0 - 8 * scale; x < x0 + panel_w + 8 * scale; ++x) put(image, x, y, {28, 30, 34});
   for (int x = 0; x < bar_w; ++x) {
-    const double r = lo + (hi - lo) * x / (bar_w - 1);
-    size_t k = 1;
-    while (k + 1 < stops.size() && stops[k].ratio < r) ++k;
-    const double t = std::clamp((r - stops[k - 1].ratio) / (stops[k].ratio - stops[k - 1].ratio), 0.0, 1.0);
-    std::array<std::uint8_t, 3> c;
-    for (int i = 0; i < 3; ++i) c[i] = std::uint8_t(stops[k - 1].rgb[i] + t * (stops[k].rgb[i] - stops[k - 1].rgb[i]));
+    const double r = kRatioLegendMin + (kRatioLegendMax - kRatioLegendMin) * x / (bar_w - 1);
+    const std::array<std::uint8_t, 3> c = ratio_legend_colour(r);
     for (int y = 0; y < bar_h; ++y) put(image, x0 + x, y0 + y, c);
   }
   const std::array<std::uint8_t, 3> white{235, 235, 235};
-  text(image, x0, y0 - 12 * scale, "NN distance / diameter", scale, white);
-  for (double tick : {0.90, 1.00, 1.10, 1.20, 1.30}) {
-    const int x = x0 + int((tick - lo) / (hi - lo) * (bar_w - 1));
+  text(image, x0, y0 - 12 * scale, title, scale, white);
+  for (const double tick : ratio_legend_ticks()) {
+    const int x = x0 + int(std::lround(ratio_legend_position(tick) * (bar_w - 1)));
     for (int y = 0; y < 4 * scale; ++y) put(image, x, y0 + bar_h + y, white);
     char label[16];
     std::snprintf(label, sizeof label, "%.1f", tick);
     text(image, x - 8 * scale, y0 + bar_h + 6 * scale, label, scale, white);
+  }
+}
+
+void draw_type_legend(Image& image) {
+  const int scale = image.height >= 600 ? 2 : 1;
+  const std::vector<TypeLegendEntry> entries = element_type_legend();
+  const int rows = int(entries.size());
+  const int x0 = 16 * scale, y0 = image.height - (16 + 14 * rows) * scale;
+  for (int y = y0 - 8 * scale; y < y0 + 14 * rows * scale; ++y)
+    for (int x = x0 - 8 * scale; x < x0 + 130 * scale; ++x) put(image, x, y, {28, 30, 34});
+  const std::array<std::uint8_t, 3> white{235, 235, 235};
+  int row = y0;
+  for (const TypeLegendEntry& entry : entries) {
+    for (int y = 0; y < 9 * scale; ++y)
+      for (int x = 0; x < 9 * scale; ++x) put(image, x0 + x, row + y, entry.rgb);
+    text(image, x0 + 16 * scale, row + scale, entry.label, scale, white);
+    row += 14 * scale;
   }
 }
 

@@ -206,7 +206,7 @@ struct Renderer::Impl {
 glm::mat4 OrbitCamera::view_projection(float aspect) const {
   const glm::mat4 view = glm::lookAt(eye(), target, glm::vec3(0, 0, 1));
   const glm::mat4 proj = glm::perspective(glm::radians(fov_deg), aspect, 0.01f * distance, 100.0f * distance);
-  return proj * view;
+  return glm::translate(glm::mat4(1), glm::vec3(screen_shift_x, 0, 0)) * proj * view;
 }
 
 glm::vec3 OrbitCamera::eye() const {
@@ -214,7 +214,7 @@ glm::vec3 OrbitCamera::eye() const {
   return target + distance * glm::vec3(std::cos(p) * std::cos(yaw), std::cos(p) * std::sin(yaw), std::sin(p));
 }
 
-OrbitCamera frame_surface(const SurfaceMesh& mesh) {
+OrbitCamera frame_surface(const SurfaceMesh& mesh, double aspect, double right_share) {
   glm::dvec3 lo(1e300), hi(-1e300), normal_sum(0);
   for (const auto& p : mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
   double area = 0;
@@ -229,6 +229,11 @@ OrbitCamera frame_surface(const SurfaceMesh& mesh) {
   double radius = 0;
   for (const auto& p : mesh.positions) radius = std::max(radius, glm::length(p - glm::dvec3(c.target)));
   c.distance = float(radius) / std::sin(glm::radians(c.fov_deg) * 0.5f);
+  // The fov is vertical: a free part narrower than high moves the camera back until it fits across.
+  const double share = std::clamp(right_share, 0.0, 0.9);
+  const double free_aspect = aspect * (1 - share);
+  if (free_aspect < 1) c.distance /= float(std::max(free_aspect, 0.1));
+  c.screen_shift_x = float(-share);
   // Look from the side the surface faces (its mean normal), turned a little for a 3/4 view;
   // surfaces that face every way (a vase) get the default view.
   if (glm::length(normal_sum) > 0.3 * area) {
@@ -245,21 +250,30 @@ glm::mat4 MapView::projection(float aspect) const {
                     centre.y + half_height, -1.0f, 1.0f);
 }
 
-MapView frame_map(const SurfaceMap& map, double aspect) {
+MapView frame_map(const SurfaceMap& map, double aspect, double right_share) {
   MapView v;
   v.centre = glm::vec2(0.5 * (map.uv_min + map.uv_max));
   const glm::dvec2 extent = map.uv_max - map.uv_min;
-  // Fit both sides with a margin; render_2d widens by the aspect ratio.
-  v.half_height = float(0.55 * std::max(extent.y, extent.x / std::max(aspect, 1e-3)));
+  // Fit both sides with a margin in the free part of the width; render_2d widens by the aspect.
+  const double free_aspect = std::max(aspect * (1 - std::clamp(right_share, 0.0, 0.9)), 1e-3);
+  v.half_height = float(0.55 * std::max(extent.y, extent.x / free_aspect));
+  // The free part's middle is right_share of the half width left of the view's centre.
+  v.centre.x += float(right_share * v.half_height * aspect);
   return v;
 }
 
-std::vector<LegendStop> neighbour_ratio_legend() {
-  const std::vector<double> ratios = {0.90, 0.95, 0.99, 1.00, 1.02, 1.10, 1.20, 1.30};
-  const auto colours = neighbor_ratio_colours(ratios);
-  std::vector<LegendStop> out;
-  for (size_t i = 0; i < ratios.size(); ++i) out.push_back({ratios[i], colours[i]});
-  return out;
+std::vector<double> ratio_legend_ticks() { return {0.9, 1.0, 1.1, 1.2, 1.3}; }
+
+std::array<std::uint8_t, 3> ratio_legend_colour(double ratio) { return neighbor_ratio_colours({ratio})[0]; }
+
+double ratio_legend_position(double ratio) {
+  return std::clamp((ratio - kRatioLegendMin) / (kRatioLegendMax - kRatioLegendMin), 0.0, 1.0);
+}
+
+std::vector<TypeLegendEntry> element_type_legend() {
+  return {{"vertex element (V)", kind_colour(ElementKind::Vertex)},
+          {"edge element (E)", kind_colour(ElementKind::Edge)},
+          {"bead", kind_colour(ElementKind::Bead)}};
 }
 
 std::vector<std::array<std::uint8_t, 3>> element_colours(const Elements& elements, ColourMode mode, double gap) {

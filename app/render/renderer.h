@@ -32,11 +32,15 @@ struct OrbitCamera {
   float distance = 1;
   float yaw = 0.6f, pitch = 0.5f;
   float fov_deg = 35;
+  // The target drawn this far right of the image's centre, in clip units (-1 to 1 across): the
+  // studio moves the model left of its inset so; orbiting still turns about the target.
+  float screen_shift_x = 0;
   glm::mat4 view_projection(float aspect) const;
   glm::vec3 eye() const;
 };
-// A camera that frames the whole surface from above its mean normal, a little to the side.
-OrbitCamera frame_surface(const SurfaceMesh& mesh);
+// A camera that frames the whole surface from above its mean normal, a little to the side, in an
+// image `aspect` (width / height) wide whose right `right_share` of the width is kept free.
+OrbitCamera frame_surface(const SurfaceMesh& mesh, double aspect = 1.6, double right_share = 0);
 
 // 2D view: the map point at the image centre and the half height of the visible region.
 struct MapView {
@@ -44,8 +48,9 @@ struct MapView {
   float half_height = 1;
   glm::mat4 projection(float aspect) const;
 };
-// The whole map with a margin, in a view `aspect` (width / height) wide.
-MapView frame_map(const SurfaceMap& map, double aspect = 1.6);
+// The whole map with a margin, in a view `aspect` (width / height) wide, leaving the right
+// `right_share` of the width free (where the studio's inset sits).
+MapView frame_map(const SurfaceMap& map, double aspect = 1.6, double right_share = 0);
 
 enum class ColourMode { NeighbourRatio, ElementType };
 
@@ -57,12 +62,20 @@ struct SceneStyle {
   std::array<float, 3> background{0.13f, 0.14f, 0.16f};
 };
 
-// Colours of the paper's scale for the legend: (ratio, rgb) stops, red (too close) to green.
-struct LegendStop {
-  double ratio;
+// The legends, laid out once for the studio's screen and every PNG (CLI and studio): the title,
+// the span of the ratio bar (linear in the ratio), its labelled ticks, the colour at a ratio (the
+// elements' own colour), and the element-type entries.
+inline constexpr const char* kRatioLegendTitle = "NN distance / contact distance";
+inline constexpr double kRatioLegendMin = 0.9, kRatioLegendMax = 1.3;
+std::vector<double> ratio_legend_ticks();
+std::array<std::uint8_t, 3> ratio_legend_colour(double ratio);
+// Where `ratio` sits along the bar, 0 (left) to 1 (right).
+double ratio_legend_position(double ratio);
+struct TypeLegendEntry {
+  const char* label;
   std::array<std::uint8_t, 3> rgb;
 };
-std::vector<LegendStop> neighbour_ratio_legend();
+std::vector<TypeLegendEntry> element_type_legend();
 
 // Per element colours for a mode: nearest-neighbour ratio scale, or V blue / E orange.
 std::vector<std::array<std::uint8_t, 3>> element_colours(const Elements& elements, ColourMode mode, double gap = 0);
@@ -111,6 +124,8 @@ void write_png(const std::filesystem::path& path, const Image& image);
 // Draws a colour legend for the nearest-neighbour ratio into the image (bottom left), with
 // numbers in a small built-in bitmap font: the CLI's preview carries its own legend.
 void draw_ratio_legend(Image& image);
+// The element-type colours (V, E, bead), for a picture coloured by type.
+void draw_type_legend(Image& image);
 
 // The legend of the point-defect markers (param.png of an adaptive pattern): the colours of
 // particles or faces with fewer than 6 neighbours or sides, and with more.

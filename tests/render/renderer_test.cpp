@@ -4,6 +4,7 @@
 #include "mesh/mesh_loader.h"
 #include "pipeline/pavement.h"
 #include "renderer.h"
+#include "report/pavement_quality.h"
 #include "surface_maps.h"
 #include "test_meshes.h"
 
@@ -158,6 +159,47 @@ TEST(Renderer, LegendIsDrawnIntoTheImage) {
   const Counts c = count(image);
   EXPECT_GT(c.green, 100);
   EXPECT_GT(c.red, 20);
+}
+
+// The 2D view frames the whole map, and beside the studio's inset keeps it in the free part.
+TEST(Renderer, TheMapIsFramedWholeAndLeftOfTheInset) {
+  const SurfaceMap& map = dome_map();
+  for (const double share : {0.0, 0.32}) {
+    const double aspect = 1.6;
+    const render::MapView v = render::frame_map(map, aspect, share);
+    const double half_width = v.half_height * aspect;
+    SCOPED_TRACE(share);
+    EXPECT_GE(map.uv_min.x, v.centre.x - half_width);
+    EXPECT_LE(map.uv_max.x, v.centre.x + half_width * (1 - 2 * share)) << "under the inset";
+    EXPECT_GE(map.uv_min.y, v.centre.y - v.half_height);
+    EXPECT_LE(map.uv_max.y, v.centre.y + v.half_height);
+  }
+}
+
+// The bar is the elements' own colour scale, linear in the ratio, its ticks where their ratios sit.
+TEST(Renderer, TheRatioLegendIsTheElementsScaleWithTicksAtTheirRatios) {
+  EXPECT_EQ(render::ratio_legend_colour(0.9), neighbor_ratio_colours({0.9})[0]);
+  EXPECT_EQ(render::ratio_legend_colour(1.25), neighbor_ratio_colours({1.25})[0]);
+  EXPECT_NE(render::ratio_legend_colour(0.9), render::ratio_legend_colour(1.3)) << "red to green";
+  const std::vector<double> ticks = render::ratio_legend_ticks();
+  ASSERT_GE(ticks.size(), 3u);
+  EXPECT_EQ(render::ratio_legend_position(render::kRatioLegendMin), 0.0);
+  EXPECT_EQ(render::ratio_legend_position(render::kRatioLegendMax), 1.0);
+  EXPECT_NEAR(render::ratio_legend_position(1.1), 0.5, 1e-12) << "linear in the ratio";
+  for (double tick : ticks) EXPECT_TRUE(tick >= render::kRatioLegendMin && tick <= render::kRatioLegendMax);
+}
+
+TEST(Renderer, TheTypeLegendShowsEveryTypeColour) {
+  render::Image image;
+  image.width = 800, image.height = 600;
+  image.rgba.assign(size_t(800) * 600 * 4, 0);
+  render::draw_type_legend(image);
+  for (const render::TypeLegendEntry& entry : render::element_type_legend()) {
+    long pixels = 0;
+    for (size_t i = 0; i < image.rgba.size(); i += 4)
+      if (image.rgba[i] == entry.rgb[0] && image.rgba[i + 1] == entry.rgb[1] && image.rgba[i + 2] == entry.rgb[2]) ++pixels;
+    EXPECT_GE(pixels, 81) << entry.label << ": its swatch is missing";
+  }
 }
 
 class NoValidationMessages : public ::testing::Environment {
