@@ -21,6 +21,7 @@ namespace {
 void new_revision(Document& doc, bool dragging) {
   ++doc.revision;
   doc.changed_at = Clock::now();
+  doc.edit_clock.restart(doc.changed_at);
   doc.run_due = doc.changed_at + (dragging ? std::chrono::duration_cast<Clock::duration>(kDragDebounce)
                                            : Clock::duration::zero());
 }
@@ -180,6 +181,12 @@ bool is_bundled_design(const std::filesystem::path& path) {
   const std::filesystem::path folder = full.parent_path();
   return folder.filename() == "designs" && folder.parent_path().filename() == "assets" &&
          std::filesystem::is_directory(folder.parent_path() / "surfaces", error);
+}
+
+std::filesystem::path save_as_start(const std::filesystem::path& current) {
+  if (!is_bundled_design(current)) return current;
+  std::error_code error;
+  return std::filesystem::current_path(error) / (current.stem().string() + "_mine.json");
 }
 
 }  // namespace paver::studio

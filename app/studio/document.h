@@ -3,6 +3,7 @@
 // is derived from them (the last final pavement and its report figures). A plain struct: panels
 // read it and change the design only through change_design, so every change is undoable, marks
 // the design unsaved and re-runs the pavement.
+#include "edit_clock.h"
 #include "undo_history.h"
 
 #include "design/design.h"
@@ -59,7 +60,8 @@ struct Document {
   UndoHistory history;
 
   std::uint64_t revision = 1;             // bumps whenever the design or the surface changes
-  Clock::time_point changed_at = Clock::now();  // when it last did: the latency's start
+  Clock::time_point changed_at = Clock::now();  // when it last did
+  EditClock edit_clock;                   // from that change to its result on screen, pauses left out
   Clock::time_point run_due = Clock::now();     // debounce: the run for this revision starts then
   bool gesture_open = false;              // a drag is changing the design: one undo step for it all
 
@@ -106,5 +108,8 @@ void report_error(Document& doc, std::string text);  // status line and the erro
 // Whether `path` is one of the designs bundled with Paver (assets/designs/ beside assets/surfaces/):
 // Save refuses to overwrite one.
 bool is_bundled_design(const std::filesystem::path& path);
+// Where Save as starts: the design's own file, or for a bundled design a new name in the working
+// folder (<name>_mine.json), since the bundled file itself is refused.
+std::filesystem::path save_as_start(const std::filesystem::path& current);
 
 }  // namespace paver::studio

@@ -93,6 +93,15 @@ std::optional<int> element_at(const Pavement& pavement, glm::dvec2 uv) {
   return best;
 }
 
+std::vector<int> elements_in_box(const Pavement& pavement, glm::dvec2 a, glm::dvec2 b) {
+  const glm::dvec2 lo = glm::min(a, b), hi = glm::max(a, b);
+  const Elements& e = pavement.elements;
+  std::vector<int> ids;
+  for (std::size_t i = 0; i < e.size(); ++i)
+    if (e.uv[i].x >= lo.x && e.uv[i].x <= hi.x && e.uv[i].y >= lo.y && e.uv[i].y <= hi.y) ids.push_back(e.id[i]);
+  return ids;
+}
+
 std::string describe_element(const Design& design, const Pavement& pavement, int id) {
   const std::size_t i = require_element(pavement, id);
   const Elements& e = pavement.elements;

@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace paver::studio {
 
@@ -20,6 +21,10 @@ std::optional<std::size_t> find_element(const Pavement& pavement, int id);
 
 // The element nearest to `uv` (map units) whose footprint covers it, or none.
 std::optional<int> element_at(const Pavement& pavement, glm::dvec2 uv);
+
+// The ids of the elements whose centres lie in the box with corners `a` and `b` (map units, any
+// order), in the pavement's order: a box selection.
+std::vector<int> elements_in_box(const Pavement& pavement, glm::dvec2 a, glm::dvec2 b);
 
 // One line about element `id`: kind, where it is, whether it is pinned or the designer's.
 std::string describe_element(const Design& design, const Pavement& pavement, int id);

@@ -41,6 +41,15 @@ const char* browse_title(BrowsePurpose purpose) {
   return "Choose a file";
 }
 
+std::optional<BrowsePurpose> browse_purpose_from_name(std::string_view name) {
+  if (name == "surface") return BrowsePurpose::OpenSurface;
+  if (name == "design") return BrowsePurpose::LoadDesign;
+  if (name == "save") return BrowsePurpose::SaveDesign;
+  if (name == "export") return BrowsePurpose::ExportFolder;
+  if (name == "shape") return BrowsePurpose::CustomShape;
+  return std::nullopt;
+}
+
 std::vector<BrowserEntry> list_folder(const fs::path& folder, const std::vector<std::string>& extensions,
                                       bool show_hidden) {
   std::error_code error;

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace paver::studio {
@@ -32,6 +33,8 @@ struct FileBrowser {
 // The file extensions a purpose lists (lower case, with the dot); empty for folders.
 std::vector<std::string> browse_extensions(BrowsePurpose purpose);
 const char* browse_title(BrowsePurpose purpose);
+// "surface", "design", "save", "export", "shape" (the script's `browse` names); none for others.
+std::optional<BrowsePurpose> browse_purpose_from_name(std::string_view name);
 
 // A folder's entries that the purpose can use: sub-folders, then files with one of `extensions`
 // (any case), each group sorted by name without regard to case; dot-files only when asked.

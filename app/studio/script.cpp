@@ -3,6 +3,7 @@
 #include "map/surface_charts.h"
 
 #include "core/input_error.h"
+#include "file_browser.h"
 #include "pattern/unit_cell.h"
 
 #include <algorithm>
@@ -27,7 +28,7 @@ constexpr std::pair<std::string_view, Kind> kCommands[] = {
     {"panel", Kind::Panel},     {"wait", Kind::Wait},     {"quit", Kind::Quit},
     {"select", Kind::Select},   {"pin", Kind::Pin},       {"unpin", Kind::Unpin},   {"drag", Kind::Drag},
     {"delete", Kind::Delete},   {"add", Kind::Add},       {"brush", Kind::Brush},
-    {"colour", Kind::Colour}, {"save", Kind::Save}};
+    {"colour", Kind::Colour}, {"save", Kind::Save}, {"select_box", Kind::SelectBox}, {"browse", Kind::Browse}};
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
 
@@ -113,6 +114,12 @@ bool parse_script_line(std::string_view line, int line_number, const std::string
         throw InputError(where + "cut_axis '" + std::string(rest) + "': use auto, x, y or z");
       out.text = std::string(rest);
       break;
+    case Kind::Browse:
+      need_argument("what for: surface, design, save, export or shape");
+      if (!browse_purpose_from_name(rest))
+        throw InputError(where + "browse '" + std::string(rest) + "': use surface, design, save, export or shape");
+      out.text = std::string(rest);
+      break;
     case Kind::Colour:
       need_argument("ratio or type");
       if (rest != "ratio" && rest != "type") throw InputError(where + "colour '" + std::string(rest) + "': use ratio or type");
@@ -166,6 +173,10 @@ bool parse_script_line(std::string_view line, int line_number, const std::string
       const bool drag = *kind == Kind::Drag;
       need_argument(drag ? "an element id and a move in spacings, e.g. drag 42 0.4 0" : "an element id (placements.csv's id)");
       const auto [id, move] = first_word(rest);
+      if (id == "selection" && move.empty() && (*kind == Kind::Pin || *kind == Kind::Unpin || *kind == Kind::Delete)) {
+        out.id = ScriptCommand::kSelection;
+        break;
+      }
       if (!parse_number(id, out.id) || out.id < 0)
         throw InputError(where + name + " '" + std::string(id) + "': an element id is a whole number >= 0");
       if (!drag && !move.empty()) throw InputError(where + name + " takes one element id, got '" + std::string(rest) + "'");
@@ -175,6 +186,15 @@ bool parse_script_line(std::string_view line, int line_number, const std::string
           throw InputError(where + "drag " + std::string(id) + " needs the move as two numbers of spacings D, e.g. drag " +
                            std::string(id) + " 0.4 0");
       }
+      break;
+    }
+    case Kind::SelectBox: {
+      need_argument("two map corners U0 V0 U1 V1, e.g. select_box -1 -1 1 1");
+      const auto [u0, after_u0] = first_word(rest);
+      const auto [v0, after_v0] = first_word(after_u0);
+      const auto [u1, v1] = first_word(after_v0);
+      if (!parse_number(u0, out.u) || !parse_number(v0, out.v) || !parse_number(u1, out.u1) || !parse_number(v1, out.v1))
+        throw InputError(where + "select_box '" + std::string(rest) + "': give two map corners as four numbers U0 V0 U1 V1");
       break;
     }
     case Kind::Add: {

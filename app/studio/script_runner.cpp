@@ -19,7 +19,7 @@ constexpr auto kTimeout = std::chrono::minutes(10);
 bool needs_final_pavement(Kind kind) {
   switch (kind) {
     case Kind::Optimize: case Kind::Export: case Kind::Cut: case Kind::Select: case Kind::Pin: case Kind::Unpin:
-    case Kind::Drag: case Kind::Delete: case Kind::Add: case Kind::Brush:
+    case Kind::Drag: case Kind::Delete: case Kind::Add: case Kind::Brush: case Kind::SelectBox:
       return true;
     default:
       return false;
@@ -44,6 +44,12 @@ std::string describe(const ScriptCommand& c) {
     std::snprintf(numbers, sizeof numbers, " %g %g", c.u, c.v);
     return text + (c.kind == Kind::Drag ? " " + std::to_string(c.id) : std::string()) + numbers;
   }
+  if (c.kind == Kind::SelectBox) {
+    char numbers[96];
+    std::snprintf(numbers, sizeof numbers, " %g %g %g %g", c.u, c.v, c.u1, c.v1);
+    return text + numbers;
+  }
+  if (c.id == ScriptCommand::kSelection) return text + " selection";
   if (c.id >= 0) return text + " " + std::to_string(c.id);
   if (c.kind == Kind::Cut) {
     char number[32];
@@ -59,8 +65,20 @@ std::string describe(const ScriptCommand& c) {
 void edit_element(Studio& s, const ScriptCommand& c) {
   Document& doc = s.doc;
   const Pavement& pavement = *doc.result.pavement;
+  if (c.id == ScriptCommand::kSelection) {  // pin, unpin or delete what is selected, as the keys do
+    if (selection(s.ui).empty()) throw InputError(describe(c) + ": nothing is selected");
+    if (c.kind == Kind::Delete)
+      delete_selected(s);
+    else
+      pin_selected(s, c.kind == Kind::Pin);
+    return;
+  }
   switch (c.kind) {
     case Kind::Select: select_element(s, c.id); break;
+    case Kind::SelectBox:
+      select_box(s, glm::dvec2(c.u, c.v), glm::dvec2(c.u1, c.v1));
+      std::printf("selected %zu\n", selection(s.ui).size());  // the session's log: what the box took
+      break;
     case Kind::Pin: change_design(doc, with_pinned(doc.design, pavement, c.id, true)); select_element(s, c.id); break;
     case Kind::Unpin: change_design(doc, with_pinned(doc.design, pavement, c.id, false)); break;
     case Kind::Drag: {
@@ -71,7 +89,7 @@ void edit_element(Studio& s, const ScriptCommand& c) {
     }
     case Kind::Delete:
       change_design(doc, without_element(doc.design, pavement, c.id));
-      if (s.ui.selected_element == c.id) s.ui.selected_element = -1;
+      if (s.ui.selected_element == c.id) clear_selection(s.ui);
       break;
     case Kind::Add: {
       int id = -1;
@@ -127,8 +145,12 @@ void ScriptRunner::act(Studio& s, const ScriptCommand& c) {
     case Kind::Export: export_outputs(s, c.text); break;
     case Kind::Cut: cut_metal(s, c.text, c.number); break;
     case Kind::Screenshot: s.ui.screenshot = c.text; break;
-    case Kind::View3d: s.views.large_3d = true; break;
-    case Kind::View2d: s.views.large_3d = false; break;
+    case Kind::View3d:
+      if (!s.views.large_3d) swap_views(s);
+      break;
+    case Kind::View2d:
+      if (s.views.large_3d) swap_views(s);
+      break;
     case Kind::Panel: s.ui.select_panel = c.text; break;
     case Kind::Wait: frames_left_ = c.frames; break;
     case Kind::Quit: s.quit = true; break;
@@ -137,8 +159,17 @@ void ScriptRunner::act(Studio& s, const ScriptCommand& c) {
     case Kind::Unpin:
     case Kind::Drag:
     case Kind::Delete:
-    case Kind::Add: edit_element(s, c); break;
+    case Kind::Add:
+    case Kind::SelectBox: edit_element(s, c); break;
     case Kind::Brush: paint_guidance(s, glm::dvec2(c.u, c.v), c.radius, c.strength); break;
+    case Kind::Browse: {
+      const BrowsePurpose purpose = *browse_purpose_from_name(c.text);
+      const std::string current = purpose == BrowsePurpose::OpenSurface ? s.doc.surface.path.string()
+                                  : purpose == BrowsePurpose::ExportFolder ? s.ui.export_dir
+                                                                           : s.ui.design_path;
+      start_browsing(s.ui.browser, purpose, purpose == BrowsePurpose::SaveDesign ? save_as_start(current) : std::filesystem::path(current));
+      break;
+    }
     case Kind::Colour:
       s.views.colour_mode = c.text == "type" ? render::ColourMode::ElementType : render::ColourMode::NeighbourRatio;
       break;

@@ -22,6 +22,7 @@ const std::vector<Shortcut>& shortcut_list() {
       {"N", "step: let the set number of iterations through"},
       {"R", "reset both views' cameras"},
       {"V", "swap the large and the small view"},
+      {"I", "show / hide the small view (the inset)"},
       {"L", "show / hide the lattice"},
       {"C", "colour by nearest-neighbour ratio / element type"},
       {"Left drag (3D)", "orbit"},
@@ -30,8 +31,9 @@ const std::vector<Shortcut>& shortcut_list() {
       {"Left drag (2D)", "move the pattern over the map (placement.offset)"},
       {"Drag the handles (2D)", "rotate (round) and scale (square) the placement"},
       {"E", "edit stones: clicks in the views select, drag (2D) and add (Ctrl+click, 2D) single elements"},
-      {"Del", "delete the selected element"},
-      {"P", "pin / unpin the selected element (it stays where it is while the rest relaxes)"},
+      {"Shift+drag (2D, edit stones)", "select every element in a box"},
+      {"Del", "delete the selected elements"},
+      {"P", "pin / unpin the selected elements (they stay where they are while the rest relaxes)"},
       {"Esc", "deselect"},
       {"Drop a file", "a surface opens, a .json design loads"},
   };
@@ -64,14 +66,16 @@ void handle_shortcuts(Studio& s) {
   }
   if (pressed(GLFW_KEY_SPACE)) toggle_pause(s);
   if (pressed(GLFW_KEY_N)) step_run(s);
-  if (pressed(GLFW_KEY_R) && s.doc.surface.map) {
-    s.views.camera = render::frame_surface(s.doc.surface.map->mesh);
-    s.views.map_view = render::frame_map(map_for_topology(*s.doc.surface.map, s.doc.design.pattern.topology), s.views.map_aspect);
+  if (pressed(GLFW_KEY_R) && s.doc.surface.map) frame_views(s);
+  if (pressed(GLFW_KEY_V)) swap_views(s);
+  if (pressed(GLFW_KEY_I)) {
+    s.views.show_inset = !s.views.show_inset;
+    fit_views_to_inset(s);
   }
-  if (pressed(GLFW_KEY_V)) s.views.large_3d = !s.views.large_3d;
   if (pressed(GLFW_KEY_E)) s.ui.edit_elements = !s.ui.edit_elements;
-  if (pressed(GLFW_KEY_ESCAPE)) s.ui.selected_element = -1;
+  if (pressed(GLFW_KEY_ESCAPE)) clear_selection(s.ui);
   if (pressed(GLFW_KEY_DELETE) && s.ui.selected_element >= 0) delete_selected(s);
+  // P toggles the clicked element's pin; a box follows it (all pinned, or all let go).
   if (pressed(GLFW_KEY_P) && s.ui.selected_element >= 0 && s.doc.result.pavement)
     pin_selected(s, !is_pinned(s.doc.design, *s.doc.result.pavement, s.ui.selected_element));
   if (pressed(GLFW_KEY_L)) s.views.style.show_lattice = !s.views.style.show_lattice;

@@ -25,7 +25,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
 void take_loaded_surface(Studio& s) {
   std::optional<SurfaceLoadOutcome> outcome = s.loader.take_outcome();
@@ -36,13 +35,12 @@ void take_loaded_surface(Studio& s) {
   }
   OpenedSurface& opened = *outcome->surface;
   const SurfaceMap& map = *opened.map;
-  s.views.camera = render::frame_surface(map.mesh);
-  s.views.map_view = render::frame_map(map_for_topology(map, s.doc.design.pattern.topology), s.views.map_aspect);
   remember_file(s, opened.path);
   std::string status = "opened " + opened.path.string() + ": " + std::to_string(map.mesh.vertex_count()) +
                        " vertices, " + std::to_string(map.mesh.face_count()) + " faces";
   for (const auto& warning : opened.warnings) status += "; warning: " + warning;
   set_surface(s.doc, Surface{opened.path, opened.map, std::move(opened.warnings), std::move(opened.timings)});
+  frame_views(s);
   report_status(s.doc, status);
 }
 
@@ -70,6 +68,30 @@ void take_run_outcome(Studio& s) {
 }
 
 }  // namespace
+
+namespace {
+// The right share of the large view that the inset covers, kept free when the views are framed.
+double inset_share(const Studio& s) { return s.views.show_inset ? kInsetFraction : 0; }
+}  // namespace
+
+void fit_views_to_inset(Studio& s) {
+  s.views.camera.screen_shift_x = s.views.large_3d ? float(-inset_share(s)) : 0;
+  if (!s.doc.surface.map) return;
+  s.views.map_view = render::frame_map(map_for_topology(*s.doc.surface.map, s.doc.design.pattern.topology),
+                                       s.views.map_aspect, s.views.large_3d ? 0 : inset_share(s));
+}
+
+void frame_views(Studio& s) {
+  if (!s.doc.surface.map) return;
+  s.views.camera =
+      render::frame_surface(s.doc.surface.map->mesh, s.views.map_aspect, s.views.large_3d ? inset_share(s) : 0);
+  fit_views_to_inset(s);
+}
+
+void swap_views(Studio& s) {
+  s.views.large_3d = !s.views.large_3d;
+  fit_views_to_inset(s);
+}
 
 void remember_file(Studio& s, const fs::path& path) {
   remember_recent_file(s.recent, path);
@@ -126,8 +148,31 @@ void set_backend(Studio& s, const std::string& name) {
 void select_element(Studio& s, int id) {
   if (!s.doc.result.pavement) throw InputError("select: there is no pavement on screen yet");
   const std::string line = describe_element(s.doc.design, *s.doc.result.pavement, id);
+  clear_selection(s.ui);
   s.ui.selected_element = id;
   report_status(s.doc, line);
+}
+
+void select_box(Studio& s, glm::dvec2 a, glm::dvec2 b) {
+  if (!s.doc.result.pavement) throw InputError("select: there is no pavement on screen yet");
+  std::vector<int> ids = elements_in_box(*s.doc.result.pavement, a, b);
+  clear_selection(s.ui);
+  if (ids.empty()) return report_status(s.doc, "no element in the box");
+  s.ui.selected_element = ids.front();
+  s.ui.box_selected.assign(ids.begin() + 1, ids.end());
+  report_status(s.doc, std::to_string(ids.size()) + " elements selected: Del deletes them, P pins them");
+}
+
+std::vector<int> selection(const UiState& ui) {
+  std::vector<int> ids;
+  if (ui.selected_element >= 0) ids.push_back(ui.selected_element);
+  ids.insert(ids.end(), ui.box_selected.begin(), ui.box_selected.end());
+  return ids;
+}
+
+void clear_selection(UiState& ui) {
+  ui.selected_element = -1;
+  ui.box_selected.clear();
 }
 
 namespace {
@@ -145,17 +190,40 @@ void edit_on_screen(Studio& s, const Edit& edit) {
 
 }  // namespace
 
+// An edit of every selected element, one undo step. A single element that cannot take it says why;
+// in a box, those that cannot (a bead, a stone the refill places anew) are left as they are and
+// counted in the status line.
+template <class EditOne>
+void edit_selection(Studio& s, const char* done, const EditOne& edit_one) {
+  const std::vector<int> ids = selection(s.ui);
+  if (ids.empty()) return report_status(s.doc, "select an element first (edit stones, then click one)");
+  int skipped = 0;
+  edit_on_screen(s, [&](const Pavement& p) {
+    Design d = s.doc.design;
+    for (const int id : ids) {
+      if (ids.size() == 1) return edit_one(d, p, id);
+      try {
+        d = edit_one(d, p, id);
+      } catch (const InputError&) {
+        ++skipped;
+      }
+    }
+    return d;
+  });
+  if (ids.size() > 1)
+    report_status(s.doc, std::string(done) + " " + std::to_string(ids.size() - std::size_t(skipped)) + " elements" +
+                             (skipped ? ", left " + std::to_string(skipped) + " that cannot take it (beads, refill)" : ""));
+}
+
 void pin_selected(Studio& s, bool pinned) {
-  const int id = s.ui.selected_element;
-  if (id < 0) return report_status(s.doc, "select an element first (edit stones, then click one)");
-  edit_on_screen(s, [&](const Pavement& p) { return with_pinned(s.doc.design, p, id, pinned); });
+  edit_selection(s, pinned ? "pinned" : "unpinned", [&](const Design& d, const Pavement& p, int id) {
+    return with_pinned(d, p, id, pinned);
+  });
 }
 
 void delete_selected(Studio& s) {
-  const int id = s.ui.selected_element;
-  if (id < 0) return report_status(s.doc, "select an element first (edit stones, then click one)");
-  edit_on_screen(s, [&](const Pavement& p) { return without_element(s.doc.design, p, id); });
-  s.ui.selected_element = -1;
+  edit_selection(s, "deleted", [](const Design& d, const Pavement& p, int id) { return without_element(d, p, id); });
+  clear_selection(s.ui);
 }
 
 void move_selected(Studio& s, glm::dvec2 offset) {
@@ -216,8 +284,21 @@ void cut_metal(Studio& s, const fs::path& folder, double thickness) {
 
 void save_view_png(Studio& s, const fs::path& path) {
   if (!s.doc.surface.map) throw InputError("nothing to save yet: open a surface first");
+  // The 3D view at its size on screen, but centred: the PNG has no inset to make room for.
+  const std::vector<double>& shown = s.scene.rendered[0];
+  const int width = shown.size() >= 2 ? int(shown[0]) : 1280, height = shown.size() >= 2 ? int(shown[1]) : 800;
+  render::OrbitCamera centred = s.views.camera;
+  centred.screen_shift_x = 0;
+  s.renderer.render_3d(width, height, centred, s.views.style);
+  s.scene.rendered[0].clear();  // the screen's view is drawn again next frame
   render::Image image = s.renderer.read_back(0);
-  if (s.views.colour_mode == render::ColourMode::NeighbourRatio) render::draw_ratio_legend(image);
+  // The legend of the colouring on screen, as the screen draws it.
+  if (s.views.show_legend && s.views.style.show_elements) {
+    if (s.views.colour_mode == render::ColourMode::NeighbourRatio)
+      render::draw_ratio_legend(image);
+    else
+      render::draw_type_legend(image);
+  }
   prepare_output(s.doc, path);
   render::write_png(path, image);
   report_status(s.doc, "saved " + path.string());
@@ -273,7 +354,8 @@ void run_now(Studio& s, bool paused, int step) {
   }
   if (!within_budget(s)) return;
   // Run again for the same design (Run, Step, another backend): the latency counts from now.
-  if (s.live.revision() == s.doc.revision) s.doc.changed_at = Clock::now();
+  if (s.live.revision() == s.doc.revision) s.doc.edit_clock.restart(Clock::now());
+  if (paused) s.doc.edit_clock.pause(Clock::now());  // a Step waits for the next press
   RunRequest request;
   request.map = s.doc.surface.map;
   request.design = s.doc.design;
@@ -287,8 +369,14 @@ void run_now(Studio& s, bool paused, int step) {
 
 void toggle_pause(Studio& s) {
   switch (s.live.state()) {
-    case RunState::Running: s.live.pause(); break;
-    case RunState::Paused: s.live.resume(); break;
+    case RunState::Running:
+      s.live.pause();
+      s.doc.edit_clock.pause(Clock::now());
+      break;
+    case RunState::Paused:
+      s.live.resume();
+      s.doc.edit_clock.resume(Clock::now());
+      break;
     default: run_now(s);
   }
 }
@@ -349,7 +437,7 @@ void after_present(Studio& s, const std::optional<render::Image>& frame) {
     f = {};
   }
   if (s.result_shown && s.doc.result.latency_ms < 0) {
-    s.doc.result.latency_ms = ms_since(s.doc.changed_at);
+    s.doc.result.latency_ms = s.doc.edit_clock.ms(Clock::now());
     if (s.script_mode) {
       std::printf("latency_ms %.1f\n", s.doc.result.latency_ms);
       std::fflush(stdout);

@@ -67,6 +67,8 @@ struct UiState {
   double cut_thickness = 1;            // Cut metal: the metal's thickness, surface units
   CutAxis cut_axis = CutAxis::Auto;    // the plane a closed surface is cut across (paver run --cut)
   int selected_element = -1;           // the element id selected in the views or by `select`; -1 = none
+  std::vector<int> box_selected;       // more elements, from a Shift+drag box (or `select_box`): Del and P take all
+  std::optional<glm::dvec2> box_from;  // the corner where a box selection's drag started, map units
   bool edit_elements = false;          // the views' left button selects, drags and adds single elements
   bool dragging_element = false;       // the selected element is being dragged in the 2D view
   glm::dvec2 drag_from{0};             // where that drag started, map units
@@ -109,6 +111,13 @@ struct Studio {
   SolvingFrames solving_frames;
 };
 
+// Frames both views on the surface: the whole map in the 2D view and the whole surface in the 3D
+// view; with the inset shown, a large 2D view keeps the map left of it.
+void frame_views(Studio& s);
+// The views made room for the inset (or not) after a swap or a toggle: the 2D view framed again,
+// the 3D view's target moved left of it (the camera stays where the designer put it).
+void fit_views_to_inset(Studio& s);
+void swap_views(Studio& s);      // the large view and the inset trade places; the map is framed again
 // Starts loading a surface in the background; the design stays.
 void open_surface(Studio& s, const std::filesystem::path& path);
 // Sets the plane a closed surface is cut across; the surface being opened, or the closed surface
@@ -147,8 +156,14 @@ void reset_run(Studio& s);
 // Selects element `id` of the pavement on screen and says what it is in the status line. Throws
 // InputError when there is no such element.
 void select_element(Studio& s, int id);
+// Selects every element in the box with map corners `a` and `b` (none: the selection is cleared).
+void select_box(Studio& s, glm::dvec2 a, glm::dvec2 b);
+// The selected elements: the one clicked, then the box's.
+std::vector<int> selection(const UiState& ui);
+void clear_selection(UiState& ui);
 
-// The edits the views, the elements panel and the shortcuts make on the selected element.
+// The edits the views, the elements panel and the shortcuts make on the selected elements (pin
+// and delete take the whole selection, as one undo step; a move takes the one clicked).
 void pin_selected(Studio& s, bool pinned);
 void delete_selected(Studio& s);
 void move_selected(Studio& s, glm::dvec2 offset);  // map units

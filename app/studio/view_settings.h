@@ -11,8 +11,12 @@ struct ViewSettings {
   render::SceneStyle style;
   render::ColourMode colour_mode = render::ColourMode::NeighbourRatio;
   bool large_3d = true;      // the 3D view fills the main area, the 2D view is the inset (or the reverse)
-  bool show_legend = true;   // the ratio colours' legend over the 3D view
+  bool show_legend = true;   // the legend of the colouring, over the large view
+  bool show_inset = true;    // the other view in the large view's bottom-right corner
   double map_aspect = 1.6;   // width / height of the views' area, last drawn: the 2D view frames the whole map in it
 };
+
+// The share of the views' area that the inset takes, across and down.
+inline constexpr float kInsetFraction = 0.32f;
 
 }  // namespace paver::studio

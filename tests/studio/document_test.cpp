@@ -92,6 +92,12 @@ TEST(Document, UnsavedMeansDifferentFromWhatWasLoadedOrSaved) {
   EXPECT_TRUE(doc.dirty);
 }
 
+TEST(Document, SaveAsFromABundledDesignStartsUnderANewNameInTheWorkingFolder) {
+  const std::filesystem::path bundled = test::source_dir() / "assets/designs/dome_hex_d6.json";
+  EXPECT_EQ(save_as_start(bundled), std::filesystem::current_path() / "dome_hex_d6_mine.json");
+  EXPECT_EQ(save_as_start("/tmp/mine.json"), "/tmp/mine.json") << "any other design starts at its own file";
+}
+
 TEST(Document, SaveRefusesToOverwriteABundledDesign) {
   const std::filesystem::path bundled = test::source_dir() / "assets/designs/dome_hex_d6.json";
   const std::string before = [&] {

@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 namespace paver::studio {
@@ -73,6 +74,24 @@ TEST(ElementEditing, AddAndDeleteRecordIdsThatAreNeverReused) {
   design = without_element(design, p, p.elements.id[v]);
   ASSERT_EQ(design.edits.deleted.size(), 1u);
   EXPECT_EQ(design.edits.deleted[0].uv, p.elements.uv[v]);
+}
+
+// A box takes the elements whose centres it holds, whichever way it was drawn.
+TEST(ElementEditing, ABoxSelectsTheElementsWhoseCentresItHolds) {
+  const Pavement& p = gems();
+  const glm::dvec2 a(-3.0, -2.5), b(2.5, 3.0);
+  const std::vector<int> ids = elements_in_box(p, a, b);
+  std::size_t inside = 0;
+  for (std::size_t i = 0; i < p.elements.size(); ++i) {
+    const glm::dvec2 uv = p.elements.uv[i];
+    const bool in = uv.x >= a.x && uv.x <= b.x && uv.y >= a.y && uv.y <= b.y;
+    inside += in;
+    EXPECT_EQ(std::find(ids.begin(), ids.end(), p.elements.id[i]) != ids.end(), in) << "element " << p.elements.id[i];
+  }
+  EXPECT_GT(inside, 10u) << "a box that holds a few";
+  EXPECT_EQ(ids.size(), inside);
+  EXPECT_EQ(elements_in_box(p, b, a), ids) << "corners in any order";
+  EXPECT_TRUE(elements_in_box(p, {100, 100}, {101, 101}).empty());
 }
 
 TEST(ElementEditing, RefusalsSayWhatToDoInstead) {

@@ -120,6 +120,23 @@ TEST(Script, ElementCommandsTakeAnIdAndNumbers) {
   EXPECT_NE(error_of("brush 1 2 3 -0.9").find("[-0.5, 1]"), std::string::npos);
 }
 
+TEST(Script, ABoxSelectsAndTheSelectionIsPinnedOrDeleted) {
+  const auto commands = parse_script("select_box -1 -2 3 4\npin selection\nunpin selection\ndelete selection\n", "s.txt");
+  ASSERT_EQ(commands.size(), 4u);
+  EXPECT_EQ(commands[0].kind, Kind::SelectBox);
+  EXPECT_EQ(commands[0].u, -1);
+  EXPECT_EQ(commands[0].v, -2);
+  EXPECT_EQ(commands[0].u1, 3);
+  EXPECT_EQ(commands[0].v1, 4);
+  for (std::size_t i = 1; i < 4; ++i) EXPECT_EQ(commands[i].id, ScriptCommand::kSelection) << i;
+  EXPECT_EQ(commands[3].kind, Kind::Delete);
+  EXPECT_NE(error_of("select_box 1 2 3").find("four numbers"), std::string::npos);
+  EXPECT_EQ(parse_script("browse save\n", "s.txt")[0].kind, Kind::Browse);
+  EXPECT_NE(error_of("browse everything").find("use surface, design, save, export or shape"), std::string::npos);
+  EXPECT_NE(error_of("drag selection 1 0").find("whole number >= 0"), std::string::npos) << "a drag takes one element";
+  EXPECT_NE(error_of("select selection").find("whole number >= 0"), std::string::npos);
+}
+
 TEST(Script, MissingFileIsAnInputError) {
   EXPECT_THROW(load_script("/nonexistent/session.txt"), InputError);
 }

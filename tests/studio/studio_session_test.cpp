@@ -362,6 +362,35 @@ TEST_F(StudioSession, AddAndUnpinAreUndoableAndSaved) {
   for (const auto& moved : saved["edits"]["moved"]) EXPECT_FALSE(moved["pinned"].get<bool>()) << moved.dump();
 }
 
+// A box selection (Shift+drag in the 2D map; the script's select_box) takes every element in it,
+// and Del deletes them all in one undo step: exactly those go, nothing else is lost.
+TEST_F(StudioSession, ABoxSelectionIsDeletedInOneStep) {
+  const fs::path before_dir = dir_ / "before", after_dir = dir_ / "after", script = dir_ / "box.txt";
+  std::ofstream(script) << "open assets/surfaces/pendant.obj\n"
+                           "set pattern.topology lattice\n"
+                           "optimize\n"
+                           "export " << before_dir.string() << "\n"
+                        << "select_box -1.5 -1.5 1.5 1.5\n"
+                           "delete selection\n"
+                           "undo\n"
+                           "redo\n"
+                           "optimize\n"
+                           "export " << after_dir.string() << "\n";
+  const Outcome r = studio("--script " + quote(script.string()) + " --backend cpu --width 1280 --height 800", dir_);
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const std::map<long, Row> before = placements_by_id(before_dir / "placements.csv");
+  const std::map<long, Row> after = placements_by_id(after_dir / "placements.csv");
+  std::set<long> boxed;
+  for (const auto& [id, row] : before)
+    if (row.u >= -1.5 && row.u <= 1.5 && row.v >= -1.5 && row.v <= 1.5) boxed.insert(id);
+  ASSERT_GE(boxed.size(), 3u);
+  EXPECT_NE(r.out.find("selected " + std::to_string(boxed.size()) + "\n"), std::string::npos) << describe(r);
+  for (const auto& [id, row] : before) EXPECT_EQ(after.count(id), boxed.count(id) ? 0u : 1u) << "element " << id;
+  EXPECT_EQ(after.size() + boxed.size(), before.size());
+  const nlohmann::json saved = nlohmann::json::parse(read_text(after_dir / "design.json"));
+  EXPECT_EQ(saved["edits"]["deleted"].size(), boxed.size());
+}
+
 // Save (the file dialog's Save as) writes the design where asked, and never over a design bundled
 // with Paver: the session stops with the reason and the bundled file is unchanged.
 TEST_F(StudioSession, SaveAsWritesTheDesignAndNeverOverABundledOne) {

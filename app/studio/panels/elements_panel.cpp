@@ -158,7 +158,7 @@ void elements_panel(Document& doc, UiState& ui) {
 
   section("Custom shape");
   if (ui.custom_shape_path.empty()) ui.custom_shape_path = d.elements.custom_shape;
-  ImGui::InputText("OBJ / OFF / PLY / STL", &ui.custom_shape_path);
+  ImGui::InputText("shape file", &ui.custom_shape_path);
   if (ImGui::Button("Browse...##shape")) start_browsing(ui.browser, BrowsePurpose::CustomShape, ui.custom_shape_path);
   ImGui::SameLine();
   if (ImGui::Button("use this mesh")) {
@@ -170,7 +170,7 @@ void elements_panel(Document& doc, UiState& ui) {
       report_error(doc, e.what());
     }
   }
-  help_marker("Elements whose shape is 'custom' use this mesh, normalised to unit width.");
+  help_marker("Elements whose shape is 'custom' use this mesh (OBJ, OFF, PLY or STL), normalised to unit width.");
   if (ImGui::Checkbox("allow overlapping elements", &d.elements.allow_overlap)) change_design(doc, d);
   help_marker("Designs whose elements intersect on purpose (paper Fig. 15): no overlap check, no "
               "collision resolution.");

@@ -11,7 +11,9 @@
 
 #include <imgui_stdlib.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <initializer_list>
 #include <functional>
 #include <string>
 
@@ -44,12 +46,22 @@ void export_one(Studio& s, const char* name,
   });
 }
 
+// A path field as wide as the panel leaves beside the buttons that follow it on its line.
+void path_field(const char* id, std::string& path, std::initializer_list<const char*> buttons) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  float room = 0;
+  for (const char* b : buttons)
+    room += ImGui::CalcTextSize(b, nullptr, true).x + 2 * style.FramePadding.x + style.ItemSpacing.x;
+  ImGui::SetNextItemWidth(std::max(ImGui::GetFontSize() * 6, ImGui::GetContentRegionAvail().x - room));
+  ImGui::InputText(id, &path);
+}
+
 }  // namespace
 
 void file_panel(Studio& s) {
   Document& doc = s.doc;
   section("Surface");
-  ImGui::InputText("##surface", &s.ui.surface_path);
+  path_field("##surface", s.ui.surface_path, {"Open", "Browse..."});
   ImGui::SameLine();
   if (ImGui::Button("Open") && !s.ui.surface_path.empty()) open_surface(s, s.ui.surface_path);
   ImGui::SameLine();
@@ -81,14 +93,14 @@ void file_panel(Studio& s) {
 
   section("Design");
   if (s.ui.design_path.empty()) s.ui.design_path = doc.design_path.string();
-  ImGui::InputText("##design", &s.ui.design_path);
+  path_field("##design", s.ui.design_path, {"Load", "Save"});
   ImGui::SameLine();
   if (ImGui::Button("Load") && !s.ui.design_path.empty()) open_any(s, s.ui.design_path);
   ImGui::SameLine();
   if (ImGui::Button("Save") && !s.ui.design_path.empty()) save_design_file(doc, s.ui.design_path);
   if (ImGui::Button("Load...")) start_browsing(s.ui.browser, BrowsePurpose::LoadDesign, s.ui.design_path);
   ImGui::SameLine();
-  if (ImGui::Button("Save as...")) start_browsing(s.ui.browser, BrowsePurpose::SaveDesign, s.ui.design_path);
+  if (ImGui::Button("Save as...")) start_browsing(s.ui.browser, BrowsePurpose::SaveDesign, save_as_start(s.ui.design_path.empty() ? doc.design_path : fs::path(s.ui.design_path)));
   help_marker("Save as never replaces a design bundled with Paver, nor the surface or shape the design "
               "uses, and asks before it replaces any other file.");
   ImGui::SameLine();
@@ -104,7 +116,7 @@ void file_panel(Studio& s) {
   ImGui::TextDisabled("%zu / %zu steps", doc.history.undo_count(), doc.history.redo_count());
 
   section("Export");
-  ImGui::InputText("##export", &s.ui.export_dir);
+  path_field("##export", s.ui.export_dir, {"Browse..."});
   ImGui::SameLine();
   if (ImGui::Button("Browse...##export")) start_browsing(s.ui.browser, BrowsePurpose::ExportFolder, s.ui.export_dir);
   ImGui::BeginDisabled(!result_is_final(s));
@@ -134,7 +146,7 @@ void file_panel(Studio& s) {
                     "cut for each stone and the beads joined: cut.stl and cut.3mf in the folder above, as `paver "
                     "run --subtract` writes them. It runs in the background."
                   : "This studio was built without CGAL (-DPAVER_WITH_CGAL=OFF): no cut.");
-  ImGui::InputText("##png", &s.ui.png_path);
+  path_field("##png", s.ui.png_path, {"3D view PNG"});
   ImGui::SameLine();
   if (ImGui::Button("3D view PNG")) guarded(doc, [&] { save_view_png(s, s.ui.png_path); });
 }

@@ -10,13 +10,16 @@ void help_panel() {
                      "pattern and the elements, and the optimizer (section 5) makes it regular and "
                      "collision-free. Every change re-runs it; the views show it moving.");
   section("Shortcuts");
-  if (ImGui::BeginTable("shortcuts", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
+  // Both columns wrap inside the side panel (a long action used to run off its edge).
+  if (ImGui::BeginTable("shortcuts", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
+    ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthStretch, 0.35f);
+    ImGui::TableSetupColumn("action", ImGuiTableColumnFlags_WidthStretch, 0.65f);
     for (const Shortcut& shortcut : shortcut_list()) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
-      ImGui::TextUnformatted(shortcut.keys);
+      ImGui::TextWrapped("%s", shortcut.keys);
       ImGui::TableNextColumn();
-      ImGui::TextUnformatted(shortcut.action);
+      ImGui::TextWrapped("%s", shortcut.action);
     }
     ImGui::EndTable();
   }

@@ -81,7 +81,7 @@ void optimization_panel(Studio& s) {
   section("Parameters (section 5)");
   Document& doc = s.doc;
   Design d = doc.design;
-  ImGui::PushItemWidth(160);
+  ImGui::PushItemWidth(ImGui::GetFontSize() * 7);  // room for the labels in words
   for (const SolverParameter& p : solver_parameters()) {
     if (parameter_widget(p, d.solver)) change_design(doc, d, ImGui::IsItemActive());
     help_marker(tooltip(p).c_str());

@@ -19,9 +19,18 @@ void single_elements_panel(Studio& s) {
               "it and its neighbours within three spacings make room; Ctrl+click adds a stone of the vertex size. "
               "Del deletes the selected stone (its place stays empty), P pins or unpins it (a pinned stone stays "
               "put while the rest relaxes). Edits are undoable, saved in the design file, and `paver run` repeats "
-              "them.");
+              "them. Shift+drag in the 2D map selects every stone in a box: Del and P then take them all.");
   const Pavement* pavement = s.doc.result.pavement.get();
-  if (s.ui.selected_element >= 0 && pavement && find_element(*pavement, s.ui.selected_element)) {
+  if (!s.ui.box_selected.empty()) {
+    ImGui::Text("%zu stones selected (a box)", selection(s.ui).size());
+    if (ImGui::Button("pin all (P)")) pin_selected(s, true);
+    ImGui::SameLine();
+    if (ImGui::Button("unpin all")) pin_selected(s, false);
+    ImGui::SameLine();
+    if (ImGui::Button("delete all (Del)")) delete_selected(s);
+    ImGui::SameLine();
+    if (ImGui::Button("deselect (Esc)")) clear_selection(s.ui);
+  } else if (s.ui.selected_element >= 0 && pavement && find_element(*pavement, s.ui.selected_element)) {
     const int id = s.ui.selected_element;
     ImGui::TextWrapped("%s", describe_element(s.doc.design, *pavement, id).c_str());
     const bool pinned = is_pinned(s.doc.design, *pavement, id);
@@ -45,7 +54,7 @@ void single_elements_panel(Studio& s) {
     Design d = s.doc.design;
     d.edits = {};
     change_design(s.doc, d);
-    s.ui.selected_element = -1;
+    clear_selection(s.ui);
   }
 }
 

@@ -41,7 +41,8 @@ void render_if_changed(Studio& s, int view, int width, int height) {
   std::vector<double> inputs = {double(width), double(height), double(s.scene.generation)};
   if (view == 0) {
     const render::OrbitCamera& c = s.views.camera;
-    inputs.insert(inputs.end(), {c.target.x, c.target.y, c.target.z, c.distance, c.yaw, c.pitch, c.fov_deg});
+    inputs.insert(inputs.end(),
+                  {c.target.x, c.target.y, c.target.z, c.distance, c.yaw, c.pitch, c.fov_deg, c.screen_shift_x});
   } else {
     const render::MapView& m = s.views.map_view;
     inputs.insert(inputs.end(), {m.centre.x, m.centre.y, m.half_height});
@@ -87,7 +88,7 @@ void pick_3d(Studio& s, ImVec2 origin, ImVec2 size) {
     if (off <= std::max(radius, 4.0f) && depth < nearest) nearest = depth, best = int(i);
   }
   if (best < 0) {
-    s.ui.selected_element = -1;
+    clear_selection(s.ui);
     return;
   }
   select_element(s, e.id[std::size_t(best)]);
@@ -113,38 +114,41 @@ void interact_3d(render::OrbitCamera& camera, ImVec2 size) {
     camera.distance *= std::pow(0.88f, io.MouseWheel);
 }
 
+// The legends as the PNGs draw them (render::draw_ratio_legend, draw_type_legend): one title,
+// one linear bar with the same ticks, the same type entries.
 void ratio_legend(ImDrawList* draw, ImVec2 origin, ImVec2 size) {
-  const std::vector<render::LegendStop> stops = render::neighbour_ratio_legend();
-  if (stops.size() < 2) return;
   const float width = std::min(300.0f, size.x - 24), height = 12;
   const ImVec2 at(origin.x + 12, origin.y + size.y - 44);
   draw->AddRectFilled(ImVec2(at.x - 6, at.y - 20), ImVec2(at.x + width + 14, at.y + height + 22),
                       IM_COL32(0, 0, 0, 150), 4);
-  draw->AddText(ImVec2(at.x, at.y - 17), IM_COL32(230, 230, 230, 255), "nearest-neighbour distance / (r_i + r_j)");
-  const float step = width / float(stops.size() - 1);
-  const auto colour = [](const render::LegendStop& s) { return IM_COL32(s.rgb[0], s.rgb[1], s.rgb[2], 255); };
-  for (std::size_t i = 0; i + 1 < stops.size(); ++i) {
-    const ImU32 a = colour(stops[i]), b = colour(stops[i + 1]);
-    draw->AddRectFilledMultiColor(ImVec2(at.x + step * i, at.y), ImVec2(at.x + step * (i + 1), at.y + height), a, b, b, a);
+  draw->AddText(ImVec2(at.x, at.y - 17), IM_COL32(230, 230, 230, 255), render::kRatioLegendTitle);
+  constexpr int kSegments = 60;
+  const float step = width / kSegments;
+  for (int i = 0; i < kSegments; ++i) {
+    const double r = render::kRatioLegendMin + (render::kRatioLegendMax - render::kRatioLegendMin) * (i + 0.5) / kSegments;
+    const std::array<std::uint8_t, 3> c = render::ratio_legend_colour(r);
+    draw->AddRectFilled(ImVec2(at.x + step * i, at.y), ImVec2(at.x + step * (i + 1) + 0.5f, at.y + height),
+                        IM_COL32(c[0], c[1], c[2], 255));
   }
-  for (std::size_t i = 0; i < stops.size(); i += 2) {
+  for (const double tick : render::ratio_legend_ticks()) {
+    const float x = at.x + width * float(render::ratio_legend_position(tick));
+    draw->AddLine(ImVec2(x, at.y + height), ImVec2(x, at.y + height + 3), IM_COL32(230, 230, 230, 255));
     char label[16];
-    std::snprintf(label, sizeof label, "%.2f", stops[i].ratio);
-    draw->AddText(ImVec2(at.x + step * i - 8, at.y + height + 2), IM_COL32(230, 230, 230, 255), label);
+    std::snprintf(label, sizeof label, "%.1f", tick);
+    draw->AddText(ImVec2(x - 8, at.y + height + 3), IM_COL32(230, 230, 230, 255), label);
   }
 }
 
-// The element-type colours (the paper's figure 4), the ones kind_colour gives the renderer.
 void type_legend(ImDrawList* draw, ImVec2 origin, ImVec2 size) {
-  const std::pair<ElementKind, const char*> kinds[] = {
-      {ElementKind::Vertex, "vertex element (V)"}, {ElementKind::Edge, "edge element (E)"}, {ElementKind::Bead, "bead"}};
-  const ImVec2 at(origin.x + 12, origin.y + size.y - 70);
-  draw->AddRectFilled(ImVec2(at.x - 6, at.y - 6), ImVec2(at.x + 170, at.y + 60), IM_COL32(0, 0, 0, 150), 4);
-  for (int i = 0; i < 3; ++i) {
-    const std::array<std::uint8_t, 3> c = kind_colour(kinds[i].first);
+  const std::vector<render::TypeLegendEntry> entries = render::element_type_legend();
+  const float rows = float(entries.size());
+  const ImVec2 at(origin.x + 12, origin.y + size.y - 12 - 18 * rows);
+  draw->AddRectFilled(ImVec2(at.x - 6, at.y - 6), ImVec2(at.x + 170, at.y + 18 * rows), IM_COL32(0, 0, 0, 150), 4);
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const std::array<std::uint8_t, 3> c = entries[i].rgb;
     const ImVec2 row(at.x, at.y + 18.0f * float(i));
     draw->AddCircleFilled(ImVec2(row.x + 6, row.y + 7), 6, IM_COL32(c[0], c[1], c[2], 255));
-    draw->AddText(ImVec2(row.x + 18, row.y), IM_COL32(230, 230, 230, 255), kinds[i].second);
+    draw->AddText(ImVec2(row.x + 18, row.y), IM_COL32(230, 230, 230, 255), entries[i].label);
   }
 }
 
@@ -225,9 +229,13 @@ void interact_elements_2d(Studio& s, const MapFrame& f) {
   if (ImGui::IsItemActivated() && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
     const glm::dvec2 at = f.to_map(io.MousePos);
     if (io.KeyCtrl) return add_element_at(s, at);
+    if (io.KeyShift) {  // a box selection, made when the button is let go
+      s.ui.box_from = at;
+      return;
+    }
     const std::optional<int> id = element_at(*s.doc.result.pavement, at);
     if (!id) {
-      s.ui.selected_element = -1;
+      clear_selection(s.ui);
       return;
     }
     try {
@@ -239,6 +247,15 @@ void interact_elements_2d(Studio& s, const MapFrame& f) {
     s.ui.dragging_element = true;
     s.ui.drag_from = at;
   }
+  if (s.ui.box_from && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+    const glm::dvec2 from = *s.ui.box_from;
+    s.ui.box_from.reset();
+    try {
+      select_box(s, from, f.to_map(io.MousePos));
+    } catch (const InputError& e) {
+      report_error(s.doc, e.what());
+    }
+  }
   if (s.ui.dragging_element && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
     s.ui.dragging_element = false;
     const glm::dvec2 offset = f.to_map(io.MousePos) - s.ui.drag_from;
@@ -247,40 +264,51 @@ void interact_elements_2d(Studio& s, const MapFrame& f) {
   }
 }
 
-// The selected element: a ring around it, and while it is dragged its footprint at the cursor.
+// The selected elements: a ring around each, while the clicked one is dragged its footprint at the
+// cursor, and the box being drawn.
 void draw_selection_2d(Studio& s, ImDrawList* draw, const MapFrame& f) {
-  if (s.ui.selected_element < 0 || !s.doc.result.pavement) return;
+  if (s.ui.box_from) {
+    const ImVec2 a = f.to_screen(*s.ui.box_from), b = ImGui::GetIO().MousePos;
+    const ImVec2 lo(std::min(a.x, b.x), std::min(a.y, b.y)), hi(std::max(a.x, b.x), std::max(a.y, b.y));
+    draw->AddRectFilled(lo, hi, IM_COL32(90, 200, 250, 40));
+    draw->AddRect(lo, hi, IM_COL32(90, 200, 250, 220), 0, 0, 1.5f);
+  }
+  if (!s.doc.result.pavement) return;
   const Pavement& p = *s.doc.result.pavement;
-  const std::optional<std::size_t> i = find_element(p, s.ui.selected_element);
-  if (!i) return;
   const float pixels_per_unit = float(f.size.y / (2 * f.view.half_height));
-  const float radius = float(0.5 * p.elements.diameter[*i]) * pixels_per_unit;
-  const ImVec2 c = f.to_screen(p.elements.uv[*i]);
-  draw->AddCircle(c, radius + 3, IM_COL32(0, 0, 0, 200), 48, 4);
-  draw->AddCircle(c, radius + 3, IM_COL32(90, 200, 250, 255), 48, 2);
-  if (s.ui.dragging_element) {
-    const ImVec2 m = ImGui::GetIO().MousePos;
-    const ImVec2 at(c.x + m.x - f.to_screen(s.ui.drag_from).x, c.y + m.y - f.to_screen(s.ui.drag_from).y);
-    draw->AddCircleFilled(at, radius, IM_COL32(90, 200, 250, 110), 48);
-    draw->AddLine(c, at, IM_COL32(90, 200, 250, 200), 1.5f);
+  for (const int id : selection(s.ui)) {
+    const std::optional<std::size_t> i = find_element(p, id);
+    if (!i) continue;
+    const float radius = float(0.5 * p.elements.diameter[*i]) * pixels_per_unit;
+    const ImVec2 c = f.to_screen(p.elements.uv[*i]);
+    draw->AddCircle(c, radius + 3, IM_COL32(0, 0, 0, 200), 48, 4);
+    draw->AddCircle(c, radius + 3, IM_COL32(90, 200, 250, 255), 48, 2);
+    if (s.ui.dragging_element && id == s.ui.selected_element) {
+      const ImVec2 m = ImGui::GetIO().MousePos;
+      const ImVec2 at(c.x + m.x - f.to_screen(s.ui.drag_from).x, c.y + m.y - f.to_screen(s.ui.drag_from).y);
+      draw->AddCircleFilled(at, radius, IM_COL32(90, 200, 250, 110), 48);
+      draw->AddLine(c, at, IM_COL32(90, 200, 250, 200), 1.5f);
+    }
   }
 }
 
 void draw_selection_3d(Studio& s, ImDrawList* draw, ImVec2 origin, ImVec2 size) {
-  if (s.ui.selected_element < 0 || !s.doc.result.pavement) return;
+  if (!s.doc.result.pavement) return;
   const Pavement& p = *s.doc.result.pavement;
-  const std::optional<std::size_t> i = find_element(p, s.ui.selected_element);
-  if (!i) return;
   const render::OrbitCamera& camera = s.views.camera;
   const glm::mat4 vp = camera.view_projection(size.x / size.y);
-  const glm::dvec3 at = p.elements.position[*i];
-  const std::optional<ImVec2> c = project(vp, origin, size, at);
-  if (!c) return;
-  const glm::dvec3 side = glm::normalize(glm::cross(glm::dvec3(camera.eye()) - at, p.elements.normal[*i]));
-  const std::optional<ImVec2> edge = project(vp, origin, size, at + 0.5 * p.elements.diameter[*i] * side);
-  const float radius = edge ? std::hypot(edge->x - c->x, edge->y - c->y) : 6.0f;
-  draw->AddCircle(*c, radius + 3, IM_COL32(0, 0, 0, 200), 48, 4);
-  draw->AddCircle(*c, radius + 3, IM_COL32(90, 200, 250, 255), 48, 2);
+  for (const int id : selection(s.ui)) {
+    const std::optional<std::size_t> i = find_element(p, id);
+    if (!i) continue;
+    const glm::dvec3 at = p.elements.position[*i];
+    const std::optional<ImVec2> c = project(vp, origin, size, at);
+    if (!c) continue;
+    const glm::dvec3 side = glm::normalize(glm::cross(glm::dvec3(camera.eye()) - at, p.elements.normal[*i]));
+    const std::optional<ImVec2> edge = project(vp, origin, size, at + 0.5 * p.elements.diameter[*i] * side);
+    const float radius = edge ? std::hypot(edge->x - c->x, edge->y - c->y) : 6.0f;
+    draw->AddCircle(*c, radius + 3, IM_COL32(0, 0, 0, 200), 48, 4);
+    draw->AddCircle(*c, radius + 3, IM_COL32(90, 200, 250, 255), 48, 2);
+  }
 }
 
 // The guidance brush: a left drag lays dabs a third of the brush apart, one undo step per stroke.
@@ -394,10 +422,6 @@ void view(Studio& s, int which, ImVec2 size, bool large) {
     draw->PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
     draw_selection_3d(s, draw, origin, size);
     draw->PopClipRect();
-    if (large && s.views.show_legend && s.views.colour_mode == render::ColourMode::NeighbourRatio)
-      ratio_legend(draw, origin, size);
-    if (large && s.views.show_legend && s.views.colour_mode == render::ColourMode::ElementType)
-      type_legend(draw, origin, size);
   } else {
     const MapFrame frame{origin, size, s.views.map_view};
     const Handles handles = placement_handles(frame, *s.doc.surface.map, s.doc.design.placement);
@@ -417,38 +441,51 @@ void view(Studio& s, int which, ImVec2 size, bool large) {
       draw->PopClipRect();
     }
   }
+  if (large && s.views.show_legend && s.views.style.show_elements) {
+    if (s.views.colour_mode == render::ColourMode::NeighbourRatio)
+      ratio_legend(draw, origin, size);
+    else
+      type_legend(draw, origin, size);
+  }
   draw->AddText(ImVec2(origin.x + 8, origin.y + 6), IM_COL32(220, 220, 220, 200), which == 0 ? "3D" : "2D map");
+}
+
+// The next toolbar item on this line when it fits, else on the next (the toolbar wraps rather
+// than running off a narrow window).
+void next_item(const char* label, float extra = 0) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float width = ImGui::CalcTextSize(label, nullptr, true).x + ImGui::GetFrameHeight() + style.ItemInnerSpacing.x + extra;
+  ImGui::SameLine();
+  if (ImGui::GetContentRegionAvail().x < width) ImGui::NewLine();
 }
 
 void toolbar(Studio& s) {
   render::SceneStyle& st = s.views.style;
   ImGui::Checkbox("surface", &st.show_surface);
-  ImGui::SameLine();
+  next_item("elements");
   ImGui::Checkbox("elements", &st.show_elements);
-  ImGui::SameLine();
+  next_item("lattice (L)");
   ImGui::Checkbox("lattice (L)", &st.show_lattice);
-  ImGui::SameLine();
+  next_item("map mesh");
   ImGui::Checkbox("map mesh", &st.show_map_wireframe);
-  ImGui::SameLine();
+  next_item("", 170);
   int mode = int(s.views.colour_mode);
   ImGui::SetNextItemWidth(170);
   const char* modes[] = {"colour: NN ratio", "colour: element type"};
   if (ImGui::Combo("##colour", &mode, modes, 2)) s.views.colour_mode = render::ColourMode(mode);
-  ImGui::SameLine();
+  next_item("legend");
   ImGui::Checkbox("legend", &s.views.show_legend);
-  ImGui::SameLine();
+  next_item("edit stones (E) (?)");
   ImGui::Checkbox("edit stones (E)", &s.ui.edit_elements);
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("Click a stone to select it (either view); in the 2D map drag it to move it (it stays where you "
-                      "drop it, its neighbours make room), Ctrl+click to add one. Del deletes the selected stone, P "
-                      "pins or unpins it. Every edit is undoable and saved with the design.");
-  ImGui::SameLine();
-  if (ImGui::Button("swap views (V)")) s.views.large_3d = !s.views.large_3d;
-  ImGui::SameLine();
-  if (ImGui::Button("reset view (R)") && s.doc.surface.map) {
-    s.views.camera = render::frame_surface(s.doc.surface.map->mesh);
-    s.views.map_view = render::frame_map(map_for_topology(*s.doc.surface.map, s.doc.design.pattern.topology), s.views.map_aspect);
-  }
+  help_marker("Click a stone to select it (either view); in the 2D map drag it to move it (it stays where you "
+              "drop it, its neighbours make room), Ctrl+click to add one, Shift+drag a box to select many. Del "
+              "deletes the selected stones, P pins or unpins them. Every edit is undoable and saved with the design.");
+  next_item("swap views (V)");
+  if (ImGui::Button("swap views (V)")) swap_views(s);
+  next_item("inset (I)");
+  if (ImGui::Checkbox("inset (I)", &s.views.show_inset)) fit_views_to_inset(s);
+  next_item("reset view (R)");
+  if (ImGui::Button("reset view (R)") && s.doc.surface.map) frame_views(s);
 }
 
 }  // namespace
@@ -481,8 +518,12 @@ void views_area(Studio& s, ImVec2 pos, ImVec2 size) {
   view(s, large, area, true);
 
   // The other view as an inset in the bottom-right corner, in a child window so that the mouse
-  // over it does not reach the large view.
-  const ImVec2 inset(std::max(80.0f, area.x * 0.32f), std::max(60.0f, area.y * 0.32f));
+  // over it does not reach the large view; I hides it when it is in the way.
+  if (!s.views.show_inset) {
+    ImGui::End();
+    return;
+  }
+  const ImVec2 inset(std::max(80.0f, area.x * kInsetFraction), std::max(60.0f, area.y * kInsetFraction));
   ImGui::SetCursorScreenPos(ImVec2(corner.x + area.x - inset.x - 6, corner.y + area.y - inset.y - 6));
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
   ImGui::BeginChild("inset", inset, true, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
