@@ -229,7 +229,7 @@ void AppWindow::rebuild_swapchain() {
   s.stale = false;
 }
 
-bool AppWindow::begin_frame() {
+bool AppWindow::begin_frame(const InputFrame* input) {
   glfwPollEvents();
   int width = 0, height = 0;
   glfwGetFramebufferSize(window_, &width, &height);
@@ -245,6 +245,16 @@ bool AppWindow::begin_frame() {
   s.wait_idle();
   ImGui_ImplVulkan_NewFrame();
   ImGui_ImplGlfw_NewFrame();
+  ImGuiIO& io = ImGui::GetIO();
+  if (injected_key_ >= 0) io.KeysDown[injected_key_] = false;
+  injected_key_ = -1;
+  if (input) {  // after the backend, so that this frame's state is the script's
+    io.MousePos = ImVec2(input->mouse.x, input->mouse.y);
+    io.MouseDown[ImGuiMouseButton_Left] = input->left_down;
+    io.KeyShift = input->shift;
+    io.KeyCtrl = input->ctrl;
+    if (input->key >= 0) io.KeysDown[injected_key_ = input->key] = true;
+  }
   ImGui::NewFrame();
   return true;
 }

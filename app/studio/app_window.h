@@ -3,6 +3,7 @@
 // that can present (lent to the renderer and to ImGui), the window surface with a swapchain of
 // our own, the render pass ImGui draws in, and the frame loop. The swapchain images can be copied
 // out (TRANSFER_SRC), so a screenshot is exactly what was presented.
+#include "synthetic_input.h"
 #include "renderer.h"
 
 #include "paver/compute/vulkan_context.h"
@@ -41,7 +42,8 @@ public:
   bool can_capture() const;  // the swapchain images can be copied out (screenshots)
 
   // Polls events and starts an ImGui frame; false while the window is minimised (draw nothing).
-  bool begin_frame();
+  // With `input`, the frame sees that mouse and key state instead of the real one (a script's).
+  bool begin_frame(const InputFrame* input = nullptr);
   // Renders ImGui's frame and presents it. With `capture`, returns the presented image as RGBA.
   std::optional<render::Image> end_frame(bool capture);
 
@@ -58,6 +60,7 @@ private:
   std::unique_ptr<ViewImages> images_;
   std::vector<std::string> dropped_;
   bool imgui_ready_ = false;
+  int injected_key_ = -1;  // the key a script held down last frame, released this one
 };
 
 }  // namespace paver::studio

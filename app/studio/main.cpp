@@ -53,7 +53,12 @@ int main(int argc, char** argv) {
 
     while (!s.quit) {
       handle_close_request(s);
-      if (s.quit || !window.begin_frame()) continue;
+      std::optional<InputFrame> input;  // a script's mouse or key, one frame of it
+      if (!s.input_queue.empty()) {
+        input = s.input_queue.front();
+        s.input_queue.pop_front();
+      }
+      if (s.quit || !window.begin_frame(input ? &*input : nullptr)) continue;
       try {
         update_studio(s);
         if (runner) runner->frame(s);

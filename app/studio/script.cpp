@@ -4,6 +4,7 @@
 
 #include "core/input_error.h"
 #include "file_browser.h"
+#include "synthetic_input.h"
 #include "pattern/unit_cell.h"
 
 #include <algorithm>
@@ -28,7 +29,8 @@ constexpr std::pair<std::string_view, Kind> kCommands[] = {
     {"panel", Kind::Panel},     {"wait", Kind::Wait},     {"quit", Kind::Quit},
     {"select", Kind::Select},   {"pin", Kind::Pin},       {"unpin", Kind::Unpin},   {"drag", Kind::Drag},
     {"delete", Kind::Delete},   {"add", Kind::Add},       {"brush", Kind::Brush},
-    {"colour", Kind::Colour}, {"save", Kind::Save}, {"select_box", Kind::SelectBox}, {"browse", Kind::Browse}};
+    {"colour", Kind::Colour}, {"save", Kind::Save}, {"select_box", Kind::SelectBox}, {"browse", Kind::Browse},
+    {"click", Kind::Click}, {"mouse_drag", Kind::MouseDrag}, {"key", Kind::Key}};
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
 
@@ -114,6 +116,39 @@ bool parse_script_line(std::string_view line, int line_number, const std::string
         throw InputError(where + "cut_axis '" + std::string(rest) + "': use auto, x, y or z");
       out.text = std::string(rest);
       break;
+    case Kind::Click:
+    case Kind::MouseDrag: {
+      const bool drag = *kind == Kind::MouseDrag;
+      need_argument(drag ? "two map points U0 V0 U1 V1 (and shift or ctrl), e.g. mouse_drag 0 0 0.5 0"
+                         : "a map point U V (and shift or ctrl), e.g. click 0 0");
+      std::vector<std::string_view> words;
+      for (std::string_view left = rest; !left.empty();) {
+        const auto [word, after] = first_word(left);
+        words.push_back(word);
+        left = after;
+      }
+      const std::size_t numbers = drag ? 4 : 2;
+      const bool modifier = words.size() == numbers + 1;
+      if (modifier) {
+        out.shift = words.back() == "shift";
+        out.ctrl = words.back() == "ctrl";
+      }
+      double* targets[] = {&out.u, &out.v, &out.u1, &out.v1};
+      bool ok = (words.size() == numbers || (modifier && (out.shift || out.ctrl)));
+      for (std::size_t i = 0; ok && i < numbers; ++i) ok = parse_number(words[i], *targets[i]);
+      if (!ok)
+        throw InputError(where + name + " '" + std::string(rest) + "': give " + (drag ? "four" : "two") +
+                         " numbers (map points), then optionally shift or ctrl");
+      break;
+    }
+    case Kind::Key: {
+      need_argument("a key: E, P, I, V, L, C, R, N, Delete, Escape or Space");
+      const std::optional<int> key = key_from_name(rest);
+      if (!key) throw InputError(where + "key '" + std::string(rest) + "': use E, P, I, V, L, C, R, N, Delete, Escape or Space");
+      out.key = *key;
+      out.text = std::string(rest);
+      break;
+    }
     case Kind::Browse:
       need_argument("what for: surface, design, save, export or shape");
       if (!browse_purpose_from_name(rest))

@@ -4,10 +4,13 @@
 //   undo | redo | save FILE.json | export DIR | cut THICKNESS DIR | screenshot FILE.png | view3d | view2d | panel NAME | wait N | quit |
 //   select ID | select_box U0 V0 U1 V1 | pin ID|selection | unpin ID|selection | drag ID DU DV |
 //   delete ID|selection | add U V | brush U V RADIUS STRENGTH |
-//   colour ratio|type | browse surface|design|save|export|shape
+//   colour ratio|type | browse surface|design|save|export|shape |
+//   click U V [shift|ctrl] | mouse_drag U0 V0 U1 V1 [shift|ctrl] | key E|P|I|V|L|C|R|N|Delete|Escape|Space
 // (element commands name elements by the ids placements.csv lists; drag moves by DU, DV spacings D
 // in the map, add puts a vertex element at map coordinates U, V, placements.csv's u and v; brush
 // paints a guidance dab there, RADIUS in spacings D, STRENGTH in [-0.5, 1]: > 0 looser, < 0 denser)
+// (click and mouse_drag play the mouse into the large 2D view at map points, key presses a key:
+// the views' own mouse handling and the shortcuts run on them, as on a designer's hand)
 // (browse opens the file dialog for that button, as a click on it does: for screenshots)
 // (panel shows a side panel: file, pattern, elements, optimize, report or help; cut_axis picks the
 // plane a closed surface is cut across, and opens an open closed surface again with it)
@@ -20,7 +23,8 @@ namespace paver::studio {
 
 struct ScriptCommand {
   enum class Kind { Open, CutAxis, Design, Pattern, Spacing, Set, Optimize, Undo, Redo, Export, Cut, Screenshot, View3d,
-                    View2d, Panel, Wait, Quit, Select, Pin, Unpin, Drag, Delete, Add, Brush, Colour, Save, SelectBox, Browse };
+                    View2d, Panel, Wait, Quit, Select, Pin, Unpin, Drag, Delete, Add, Brush, Colour, Save, SelectBox, Browse,
+                    Click, MouseDrag, Key };
   Kind kind = Kind::Quit;
   std::string text;    // open/design/save/export/cut/screenshot: the path; pattern, panel, cut_axis, colour: the name; set: the key
   std::string value;   // set: the value as written
@@ -29,7 +33,9 @@ struct ScriptCommand {
   int id = -1;         // select, pin, unpin, drag, delete: the element (kSelection: the selection)
   double u = 0, v = 0; // drag: the move in spacings D; add, brush: the map point
   double radius = 0, strength = 0;  // brush
-  double u1 = 0, v1 = 0;             // select_box: the box's other corner (u, v the first)
+  double u1 = 0, v1 = 0;             // select_box, mouse_drag: the other corner / end (u, v the first)
+  bool shift = false, ctrl = false;  // click, mouse_drag: the modifier held
+  int key = -1;                      // key: the GLFW key
   static constexpr int kSelection = -2;  // pin/unpin/delete `selection`: every selected element
   int line = 0;        // 1-based line in the script, for messages
 };

@@ -20,6 +20,7 @@ bool needs_final_pavement(Kind kind) {
   switch (kind) {
     case Kind::Optimize: case Kind::Export: case Kind::Cut: case Kind::Select: case Kind::Pin: case Kind::Unpin:
     case Kind::Drag: case Kind::Delete: case Kind::Add: case Kind::Brush: case Kind::SelectBox:
+    case Kind::Click: case Kind::MouseDrag:
       return true;
     default:
       return false;
@@ -48,6 +49,14 @@ std::string describe(const ScriptCommand& c) {
     char numbers[96];
     std::snprintf(numbers, sizeof numbers, " %g %g %g %g", c.u, c.v, c.u1, c.v1);
     return text + numbers;
+  }
+  if (c.kind == Kind::Click || c.kind == Kind::MouseDrag) {
+    char numbers[96];
+    if (c.kind == Kind::Click)
+      std::snprintf(numbers, sizeof numbers, " %g %g", c.u, c.v);
+    else
+      std::snprintf(numbers, sizeof numbers, " %g %g %g %g", c.u, c.v, c.u1, c.v1);
+    return text + numbers + (c.shift ? " shift" : c.ctrl ? " ctrl" : "");
   }
   if (c.id == ScriptCommand::kSelection) return text + " selection";
   if (c.id >= 0) return text + " " + std::to_string(c.id);
@@ -170,6 +179,22 @@ void ScriptRunner::act(Studio& s, const ScriptCommand& c) {
       start_browsing(s.ui.browser, purpose, purpose == BrowsePurpose::SaveDesign ? save_as_start(current) : std::filesystem::path(current));
       break;
     }
+    case Kind::Click:
+    case Kind::MouseDrag: {
+      const glm::vec2 from = map_to_window(s, glm::dvec2(c.u, c.v));
+      const std::vector<InputFrame> frames = c.kind == Kind::Click
+                                                 ? click_frames(from, c.shift, c.ctrl)
+                                                 : drag_frames(from, map_to_window(s, glm::dvec2(c.u1, c.v1)), c.shift, c.ctrl);
+      s.input_queue.insert(s.input_queue.end(), frames.begin(), frames.end());
+      frames_left_ = 3;  // and a few frames for what it did to take effect
+      break;
+    }
+    case Kind::Key: {
+      const std::vector<InputFrame> frames = key_frames(c.key, map_to_window(s, glm::dvec2(0), false));
+      s.input_queue.insert(s.input_queue.end(), frames.begin(), frames.end());
+      frames_left_ = 3;
+      break;
+    }
     case Kind::Colour:
       s.views.colour_mode = c.text == "type" ? render::ColourMode::ElementType : render::ColourMode::NeighbourRatio;
       break;
@@ -182,6 +207,9 @@ bool ScriptRunner::settled(const Studio& s, const ScriptCommand& c) {
     case Kind::CutAxis: return !s.loader.busy();
     case Kind::Screenshot: return !s.ui.screenshot;  // after_present wrote it
     case Kind::Wait: return frames_left_-- <= 0;
+    case Kind::Click:
+    case Kind::MouseDrag:
+    case Kind::Key: return s.input_queue.empty() && frames_left_-- <= 0;
     case Kind::Cut: return !s.cutter.busy() && !s.cutter.has_outcome();  // and its outcome reported
     default: return true;
   }

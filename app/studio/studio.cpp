@@ -145,6 +145,18 @@ void set_backend(Studio& s, const std::string& name) {
   }
 }
 
+glm::vec2 map_to_window(const Studio& s, glm::dvec2 uv, bool strict) {
+  const glm::vec2 origin = s.views.large_origin, size = s.views.large_size;
+  if (s.views.large_3d || size.x < 16 || size.y < 16) {
+    if (strict) throw InputError("the 2D map is not the large view: use view2d first");
+    return origin + 0.5f * size;
+  }
+  const render::MapView& v = s.views.map_view;
+  const double half_width = double(v.half_height) * size.x / size.y;
+  return {origin.x + float((uv.x - v.centre.x) / half_width + 1) * 0.5f * size.x,
+          origin.y + float(1 - (uv.y - v.centre.y) / v.half_height) * 0.5f * size.y};
+}
+
 void select_element(Studio& s, int id) {
   if (!s.doc.result.pavement) throw InputError("select: there is no pavement on screen yet");
   const std::string line = describe_element(s.doc.design, *s.doc.result.pavement, id);

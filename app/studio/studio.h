@@ -17,6 +17,7 @@
 #include <glm/vec2.hpp>
 
 #include <chrono>
+#include <deque>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -109,6 +110,7 @@ struct Studio {
   bool quit = false;
   bool result_shown = false; // the final pavement was uploaded this frame
   SolvingFrames solving_frames;
+  std::deque<InputFrame> input_queue;  // a script's mouse and keys, played one per frame
 };
 
 // Frames both views on the surface: the whole map in the 2D view and the whole surface in the 3D
@@ -153,6 +155,9 @@ void toggle_pause(Studio& s);
 void step_run(Studio& s);
 void reset_run(Studio& s);
 
+// Where map point `uv` shows in the window, in the large 2D view as last drawn. Throws InputError
+// when the 2D view is not the large one (`strict`), else gives the large view's middle.
+glm::vec2 map_to_window(const Studio& s, glm::dvec2 uv, bool strict = true);
 // Selects element `id` of the pavement on screen and says what it is in the status line. Throws
 // InputError when there is no such element.
 void select_element(Studio& s, int id);

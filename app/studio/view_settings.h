@@ -3,6 +3,8 @@
 // are coloured, and which view is the large one.
 #include "renderer.h"
 
+#include <glm/vec2.hpp>
+
 namespace paver::studio {
 
 struct ViewSettings {
@@ -14,6 +16,8 @@ struct ViewSettings {
   bool show_legend = true;   // the legend of the colouring, over the large view
   bool show_inset = true;    // the other view in the large view's bottom-right corner
   double map_aspect = 1.6;   // width / height of the views' area, last drawn: the 2D view frames the whole map in it
+  // Where the large view was last drawn, window pixels: a script's clicks at map points land there.
+  glm::vec2 large_origin{0}, large_size{0};
 };
 
 // The share of the views' area that the inset takes, across and down.

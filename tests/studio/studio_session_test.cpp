@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <map>
 #include <cmath>
 #include <iterator>
@@ -234,8 +235,11 @@ TEST_F(StudioSession, PinDragAndDeleteSingleElementsAndTheCliReproducesThem) {
   EXPECT_NEAR(after.at(pinned).u, centre.u + 0.4 * D, 1e-5 * D) << "the dragged element is not where it was put";
   EXPECT_NEAR(after.at(pinned).v, centre.v, 1e-5 * D);
   EXPECT_FALSE(after.count(deleted)) << "the deleted element is still there";
-  for (const auto& [id, row] : before)
-    if (id != deleted) EXPECT_TRUE(after.count(id)) << "element " << id << " was lost";
+  for (const auto& [id, row] : before) {
+    if (id != deleted) {
+      EXPECT_TRUE(after.count(id)) << "element " << id << " was lost";
+    }
+  }
   EXPECT_EQ(after.size() + 1, before.size());
   // The contact rule over all pairs, from the file.
   long violations = 0;
@@ -389,6 +393,88 @@ TEST_F(StudioSession, ABoxSelectionIsDeletedInOneStep) {
   EXPECT_EQ(after.size() + boxed.size(), before.size());
   const nlohmann::json saved = nlohmann::json::parse(read_text(after_dir / "design.json"));
   EXPECT_EQ(saved["edits"]["deleted"].size(), boxed.size());
+}
+
+// The mouse and the keys, played into the window (not the script's element commands): E turns
+// on editing, a click selects, a drag moves, P pins, Del deletes, Ctrl+click adds, Shift+drag
+// selects a box; the exported pavement shows each.
+TEST_F(StudioSession, TheMouseAndKeysEditStones) {
+  const fs::path design = dir_ / "start.json", base = dir_ / "base";
+  std::ofstream(design) << R"({"version": 1, "pattern": {"topology": "lattice"}})";
+  const Outcome first = run_in_source(quote(PAVER_CLI) + " run assets/surfaces/pendant.obj --design " +
+                                          quote(design.string()) + " --backend cpu --out " + quote(base.string()),
+                                      dir_);
+  ASSERT_EQ(first.exit_code, 0) << describe(first);
+  const std::map<long, Row> before = placements_by_id(base / "placements.csv");
+  const double D = nlohmann::json::parse(read_text(base / "design.json"))["pattern"]["spacing"].get<double>();
+  // The vertex element nearest the map's middle is dragged; one three spacings left of it deleted.
+  long dragged = -1, deleted = -1;
+  double nearest = 1e300, off = 1e300;
+  for (const auto& [id, row] : before)
+    if (row.kind == 'V' && std::hypot(row.u, row.v) < nearest) nearest = std::hypot(row.u, row.v), dragged = id;
+  const Row centre = before.at(dragged);
+  for (const auto& [id, row] : before) {
+    const double o = std::hypot(row.u - (centre.u - 3 * D), row.v - centre.v);
+    if (row.kind == 'V' && o < off) off = o, deleted = id;
+  }
+  const Row gone = before.at(deleted);
+  const double add_u = centre.u + 0.5 * D, add_v = centre.v - 3 * D;
+  const fs::path exported = dir_ / "mouse", script = dir_ / "mouse.txt";
+  std::ofstream(script) << std::setprecision(17) << "open assets/surfaces/pendant.obj\n"
+                        << "set pattern.topology lattice\n"
+                        << "optimize\n"
+                        << "view2d\n"
+                        << "key I\n"
+                        << "key E\n"
+                        << "mouse_drag " << centre.u << " " << centre.v << " " << centre.u + 0.4 * D << " " << centre.v << "\n"
+                        << "optimize\n"
+                        << "click " << gone.u << " " << gone.v << "\n"
+                        << "key Delete\n"
+                        << "optimize\n"
+                        << "click " << add_u << " " << add_v << " ctrl\n"
+                        << "optimize\n"
+                        << "export " << exported.string() << "\n";
+  const Outcome r = studio("--script " + quote(script.string()) + " --backend cpu --width 1280 --height 800", dir_);
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const std::map<long, Row> after = placements_by_id(exported / "placements.csv");
+  // A pixel of the 2D view is about D / 10 on the pendant (ImGui floors the mouse to whole pixels).
+  ASSERT_TRUE(after.count(dragged));
+  EXPECT_NEAR(after.at(dragged).u, centre.u + 0.4 * D, 0.1 * D) << "the dragged stone is not where it was dropped";
+  EXPECT_NEAR(after.at(dragged).v, centre.v, 0.1 * D);
+  EXPECT_FALSE(after.count(deleted)) << "the stone clicked and deleted is still there";
+  EXPECT_TRUE(after.count(1000000000)) << "Ctrl+click added nothing";
+  const nlohmann::json saved = nlohmann::json::parse(read_text(exported / "design.json"));
+  EXPECT_EQ(saved["edits"]["moved"].size(), 1u);
+  EXPECT_TRUE(saved["edits"]["moved"][0]["pinned"].get<bool>()) << "a dropped stone is held";
+  EXPECT_EQ(saved["edits"]["deleted"].size(), 1u);
+  EXPECT_EQ(saved["edits"]["added"].size(), 1u);
+  long violations = 0;
+  for (auto a = after.begin(); a != after.end(); ++a)
+    for (auto b = std::next(a); b != after.end(); ++b) {
+      const Row &p = a->second, &q = b->second;
+      if (std::hypot(p.x - q.x, p.y - q.y, p.z - q.z) < 0.5 * (p.diameter + q.diameter)) ++violations;
+    }
+  EXPECT_EQ(violations, 0);
+
+  // A Shift+drag box around the middle, then Del: the box's stones go in one step.
+  const fs::path boxed_dir = dir_ / "boxed", box_script = dir_ / "box_mouse.txt";
+  std::ofstream(box_script) << std::setprecision(17) << "open assets/surfaces/pendant.obj\n"
+                            << "set pattern.topology lattice\n"
+                            << "optimize\n"
+                            << "view2d\n"
+                            << "key E\n"
+                            << "mouse_drag -1.5 -1.5 1.5 1.5 shift\n"
+                            << "key Delete\n"
+                            << "optimize\n"
+                            << "export " << boxed_dir.string() << "\n";
+  const Outcome box = studio("--script " + quote(box_script.string()) + " --backend cpu --width 1280 --height 800", dir_);
+  ASSERT_EQ(box.exit_code, 0) << describe(box);
+  std::size_t inside = 0;
+  for (const auto& [id, row] : before) inside += row.u >= -1.5 && row.u <= 1.5 && row.v >= -1.5 && row.v <= 1.5;
+  const nlohmann::json box_design = nlohmann::json::parse(read_text(boxed_dir / "design.json"));
+  // The box's corners land within a pixel of the map points: a stone on its edge may fall either way.
+  EXPECT_NEAR(double(box_design["edits"]["deleted"].size()), double(inside), 2.0);
+  EXPECT_GE(box_design["edits"]["deleted"].size(), 3u);
 }
 
 // Save (the file dialog's Save as) writes the design where asked, and never over a design bundled

@@ -515,6 +515,8 @@ void views_area(Studio& s, ImVec2 pos, ImVec2 size) {
   }
   const int large = s.views.large_3d ? 0 : 1;
   const ImVec2 corner = ImGui::GetCursorScreenPos();
+  s.views.large_origin = {corner.x, corner.y};
+  s.views.large_size = {area.x, area.y};
   view(s, large, area, true);
 
   // The other view as an inset in the bottom-right corner, in a child window so that the mouse

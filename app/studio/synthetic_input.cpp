@@ -1,0 +1,44 @@
+#include "synthetic_input.h"
+
+#include <GLFW/glfw3.h>
+
+#include <array>
+#include <utility>
+
+namespace paver::studio {
+
+std::vector<InputFrame> click_frames(glm::vec2 at, bool shift, bool ctrl) {
+  return {{at, false, shift, ctrl}, {at, true, shift, ctrl}, {at, false, shift, ctrl}};
+}
+
+std::vector<InputFrame> drag_frames(glm::vec2 from, glm::vec2 to, bool shift, bool ctrl, int steps) {
+  std::vector<InputFrame> frames = {{from, false, shift, ctrl}, {from, true, shift, ctrl}};
+  for (int i = 1; i <= steps; ++i) frames.push_back({from + (to - from) * (float(i) / float(steps)), true, shift, ctrl});
+  frames.push_back({to, false, shift, ctrl});
+  return frames;
+}
+
+std::vector<InputFrame> key_frames(int key, glm::vec2 at) {
+  InputFrame down{at};
+  down.key = key;
+  return {down, InputFrame{at}};
+}
+
+std::optional<int> key_from_name(std::string_view name) {
+  constexpr std::array<std::pair<std::string_view, int>, 11> kKeys = {{{"E", GLFW_KEY_E},
+                                                                        {"P", GLFW_KEY_P},
+                                                                        {"I", GLFW_KEY_I},
+                                                                        {"V", GLFW_KEY_V},
+                                                                        {"L", GLFW_KEY_L},
+                                                                        {"C", GLFW_KEY_C},
+                                                                        {"R", GLFW_KEY_R},
+                                                                        {"N", GLFW_KEY_N},
+                                                                        {"Delete", GLFW_KEY_DELETE},
+                                                                        {"Escape", GLFW_KEY_ESCAPE},
+                                                                        {"Space", GLFW_KEY_SPACE}}};
+  for (const auto& [key_name, key] : kKeys)
+    if (key_name == name) return key;
+  return std::nullopt;
+}
+
+}  // namespace paver::studio
