@@ -62,9 +62,9 @@ struct SceneStyle {
   std::array<float, 3> background{0.13f, 0.14f, 0.16f};
 };
 
-// The legends, laid out once for the studio's screen and every PNG (CLI and studio): the title,
-// the span of the ratio bar (linear in the ratio), its labelled ticks, the colour at a ratio (the
-// elements' own colour), and the element-type entries.
+// What the legends say, written once for the studio's screen and every PNG (CLI and studio): the
+// title, the span of the ratio bar (linear in the ratio), its labelled ticks, the colour at a ratio
+// (the elements' own colour), and the element-type entries. Each side draws them its own way.
 inline constexpr const char* kRatioLegendTitle = "NN distance / contact distance";
 inline constexpr double kRatioLegendMin = 0.9, kRatioLegendMax = 1.3;
 std::vector<double> ratio_legend_ticks();

@@ -248,6 +248,13 @@ bool AppWindow::begin_frame(const InputFrame* input) {
   ImGuiIO& io = ImGui::GetIO();
   if (injected_key_ >= 0) io.KeysDown[injected_key_] = false;
   injected_key_ = -1;
+  if (!input && injected_) {
+    // The backend sets the modifiers only on key events: after a script's input they are the
+    // real keys' again, as its key callback would set them.
+    io.KeyCtrl = io.KeysDown[GLFW_KEY_LEFT_CONTROL] || io.KeysDown[GLFW_KEY_RIGHT_CONTROL];
+    io.KeyShift = io.KeysDown[GLFW_KEY_LEFT_SHIFT] || io.KeysDown[GLFW_KEY_RIGHT_SHIFT];
+  }
+  injected_ = input != nullptr;
   if (input) {  // after the backend, so that this frame's state is the script's
     io.MousePos = ImVec2(input->mouse.x, input->mouse.y);
     io.MouseDown[ImGuiMouseButton_Left] = input->left_down;

@@ -61,6 +61,7 @@ private:
   std::vector<std::string> dropped_;
   bool imgui_ready_ = false;
   int injected_key_ = -1;  // the key a script held down last frame, released this one
+  bool injected_ = false;  // last frame's input was a script's
 };
 
 }  // namespace paver::studio

@@ -141,7 +141,14 @@ std::optional<fs::path> chosen_path(FileBrowser& browser) {
     browser.problem = path.string() + " is a folder: double-click it to look inside";
     return std::nullopt;
   }
-  if (browser.purpose == BrowsePurpose::SaveDesign && !path.has_extension()) path += ".json";
+  if (browser.purpose == BrowsePurpose::SaveDesign) {
+    if (!path.has_extension()) path += ".json";
+    // A design is JSON: a name ending otherwise would write JSON over a mesh or an image.
+    if (path.extension() != ".json") {
+      browser.problem = path.filename().string() + ": a design file's name ends in .json";
+      return std::nullopt;
+    }
+  }
   if (browser.purpose != BrowsePurpose::SaveDesign && !fs::exists(path, error)) {
     browser.problem = path.string() + " does not exist";
     return std::nullopt;

@@ -53,12 +53,10 @@ int main(int argc, char** argv) {
 
     while (!s.quit) {
       handle_close_request(s);
-      std::optional<InputFrame> input;  // a script's mouse or key, one frame of it
-      if (!s.input_queue.empty()) {
-        input = s.input_queue.front();
-        s.input_queue.pop_front();
-      }
-      if (s.quit || !window.begin_frame(input ? &*input : nullptr)) continue;
+      // A script's mouse or key, one frame of it, taken only by a frame that is drawn.
+      const InputFrame* input = s.input_queue.empty() ? nullptr : &s.input_queue.front();
+      if (s.quit || !window.begin_frame(input)) continue;
+      if (input) s.input_queue.pop_front();
       try {
         update_studio(s);
         if (runner) runner->frame(s);

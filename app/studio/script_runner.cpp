@@ -43,7 +43,8 @@ std::string describe(const ScriptCommand& c) {
   if (c.kind == Kind::Drag || c.kind == Kind::Add) {
     char numbers[64];
     std::snprintf(numbers, sizeof numbers, " %g %g", c.u, c.v);
-    return text + (c.kind == Kind::Drag ? " " + std::to_string(c.id) : std::string()) + numbers;
+    if (c.kind == Kind::Drag) text.append(1, ' ').append(std::to_string(c.id));  // (no " " + string: GCC 12 -Wrestrict)
+    return text + numbers;
   }
   if (c.kind == Kind::SelectBox) {
     char numbers[96];
@@ -103,6 +104,7 @@ void edit_element(Studio& s, const ScriptCommand& c) {
     case Kind::Add: {
       int id = -1;
       change_design(doc, with_added_element(doc.design, pavement, glm::dvec2(c.u, c.v), &id));
+      clear_selection(s.ui);
       s.ui.selected_element = id;
       report_status(doc, "added element " + std::to_string(id));
       break;
@@ -146,10 +148,7 @@ void ScriptRunner::act(Studio& s, const ScriptCommand& c) {
       if (!redo(doc)) throw InputError("redo: there is nothing to redo");
       break;
     case Kind::Save:  // as Save as: never onto a bundled design or an input (it fails the script)
-      if (save_design_file(doc, c.text)) {
-        s.ui.design_path = c.text;
-        remember_file(s, c.text);
-      }
+      save_design_as(s, c.text);
       break;
     case Kind::Export: export_outputs(s, c.text); break;
     case Kind::Cut: cut_metal(s, c.text, c.number); break;
@@ -173,10 +172,7 @@ void ScriptRunner::act(Studio& s, const ScriptCommand& c) {
     case Kind::Brush: paint_guidance(s, glm::dvec2(c.u, c.v), c.radius, c.strength); break;
     case Kind::Browse: {
       const BrowsePurpose purpose = *browse_purpose_from_name(c.text);
-      const std::string current = purpose == BrowsePurpose::OpenSurface ? s.doc.surface.path.string()
-                                  : purpose == BrowsePurpose::ExportFolder ? s.ui.export_dir
-                                                                           : s.ui.design_path;
-      start_browsing(s.ui.browser, purpose, purpose == BrowsePurpose::SaveDesign ? save_as_start(current) : std::filesystem::path(current));
+      start_browsing(s.ui.browser, purpose, browse_start(s, purpose));
       break;
     }
     case Kind::Click:

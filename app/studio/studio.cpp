@@ -2,6 +2,7 @@
 #include "studio.h"
 
 #include "element_editing.h"
+#include "map_frame.h"
 
 #include "io/output_guard.h"
 #include "panels/panels.h"
@@ -61,7 +62,20 @@ void take_run_outcome(Studio& s) {
     return;
   }
   const Pavement& p = *outcome->pavement;
+  const std::shared_ptr<const Pavement> before = s.doc.result.pavement;
   set_result(s.doc, outcome->pavement, outcome->revision, outcome->milliseconds);
+  // Ids name the elements of one pattern layout: a new layout drops the selection, and an element
+  // an edit removed leaves it (Del must never reach an element the designer did not pick).
+  if (before && changes_pattern_layout(before->design, p.design)) {
+    clear_selection(s.ui);
+  } else {
+    if (s.ui.selected_element >= 0 && !find_element(p, s.ui.selected_element)) s.ui.selected_element = -1;
+    std::erase_if(s.ui.box_selected, [&](int id) { return !find_element(p, id); });
+    if (s.ui.selected_element < 0 && !s.ui.box_selected.empty()) {
+      s.ui.selected_element = s.ui.box_selected.front();
+      s.ui.box_selected.erase(s.ui.box_selected.begin());
+    }
+  }
   report_status(s.doc, std::to_string(p.elements.size()) + " elements, " + std::to_string(p.after.contact_violations) +
                            " collisions; " + std::to_string(p.solve.iterations) + " iterations (" +
                            std::string(stop_reason_name(p.solve.reason)) + ")");
@@ -79,6 +93,26 @@ void fit_views_to_inset(Studio& s) {
   if (!s.doc.surface.map) return;
   s.views.map_view = render::frame_map(map_for_topology(*s.doc.surface.map, s.doc.design.pattern.topology),
                                        s.views.map_aspect, s.views.large_3d ? 0 : inset_share(s));
+}
+
+bool save_design_as(Studio& s, const fs::path& path) {
+  if (!save_design_file(s.doc, path)) return false;
+  s.ui.design_path = path.string();
+  remember_file(s, path);
+  return true;
+}
+
+fs::path browse_start(const Studio& s, BrowsePurpose purpose) {
+  const fs::path design = s.ui.design_path.empty() ? s.doc.design_path : fs::path(s.ui.design_path);
+  switch (purpose) {
+    case BrowsePurpose::OpenSurface: return s.ui.surface_path.empty() ? s.doc.surface.path : fs::path(s.ui.surface_path);
+    case BrowsePurpose::LoadDesign: return design;
+    case BrowsePurpose::SaveDesign: return save_as_start(design);
+    case BrowsePurpose::ExportFolder: return s.ui.export_dir;
+    case BrowsePurpose::CustomShape:
+      return s.ui.custom_shape_path.empty() ? fs::path(s.doc.design.elements.custom_shape) : fs::path(s.ui.custom_shape_path);
+  }
+  return {};
 }
 
 void frame_views(Studio& s) {
@@ -151,10 +185,8 @@ glm::vec2 map_to_window(const Studio& s, glm::dvec2 uv, bool strict) {
     if (strict) throw InputError("the 2D map is not the large view: use view2d first");
     return origin + 0.5f * size;
   }
-  const render::MapView& v = s.views.map_view;
-  const double half_width = double(v.half_height) * size.x / size.y;
-  return {origin.x + float((uv.x - v.centre.x) / half_width + 1) * 0.5f * size.x,
-          origin.y + float(1 - (uv.y - v.centre.y) / v.half_height) * 0.5f * size.y};
+  const ImVec2 at = MapFrame{ImVec2(origin.x, origin.y), ImVec2(size.x, size.y), s.views.map_view}.to_screen(uv);
+  return {at.x, at.y};
 }
 
 void select_element(Studio& s, int id) {
@@ -191,12 +223,16 @@ namespace {
 
 // An edit of the pavement on screen: refused (and said why) while there is none or it is stale.
 template <class Edit>
-void edit_on_screen(Studio& s, const Edit& edit) {
-  if (!s.doc.result.pavement) return report_status(s.doc, "wait for the pavement before editing its elements");
+bool edit_on_screen(Studio& s, const Edit& edit) {
+  if (!s.doc.result.pavement) {
+    report_status(s.doc, "wait for the pavement before editing its elements");
+    return false;
+  }
   try {
-    change_design(s.doc, edit(*s.doc.result.pavement));
+    return change_design(s.doc, edit(*s.doc.result.pavement));
   } catch (const InputError& e) {
     report_error(s.doc, e.what());
+    return false;
   }
 }
 
@@ -206,11 +242,14 @@ void edit_on_screen(Studio& s, const Edit& edit) {
 // in a box, those that cannot (a bead, a stone the refill places anew) are left as they are and
 // counted in the status line.
 template <class EditOne>
-void edit_selection(Studio& s, const char* done, const EditOne& edit_one) {
+bool edit_selection(Studio& s, const char* done, const EditOne& edit_one) {
   const std::vector<int> ids = selection(s.ui);
-  if (ids.empty()) return report_status(s.doc, "select an element first (edit stones, then click one)");
+  if (ids.empty()) {
+    report_status(s.doc, "select an element first (edit stones, then click one)");
+    return false;
+  }
   int skipped = 0;
-  edit_on_screen(s, [&](const Pavement& p) {
+  const bool taken = edit_on_screen(s, [&](const Pavement& p) {
     Design d = s.doc.design;
     for (const int id : ids) {
       if (ids.size() == 1) return edit_one(d, p, id);
@@ -222,9 +261,10 @@ void edit_selection(Studio& s, const char* done, const EditOne& edit_one) {
     }
     return d;
   });
-  if (ids.size() > 1)
+  if (taken && ids.size() > 1)
     report_status(s.doc, std::string(done) + " " + std::to_string(ids.size() - std::size_t(skipped)) + " elements" +
                              (skipped ? ", left " + std::to_string(skipped) + " that cannot take it (beads, refill)" : ""));
+  return taken;
 }
 
 void pin_selected(Studio& s, bool pinned) {
@@ -234,8 +274,8 @@ void pin_selected(Studio& s, bool pinned) {
 }
 
 void delete_selected(Studio& s) {
-  edit_selection(s, "deleted", [](const Design& d, const Pavement& p, int id) { return without_element(d, p, id); });
-  clear_selection(s.ui);
+  if (edit_selection(s, "deleted", [](const Design& d, const Pavement& p, int id) { return without_element(d, p, id); }))
+    clear_selection(s.ui);
 }
 
 void move_selected(Studio& s, glm::dvec2 offset) {
@@ -247,7 +287,9 @@ void move_selected(Studio& s, glm::dvec2 offset) {
 void add_element_at(Studio& s, glm::dvec2 uv) {
   int id = -1;
   edit_on_screen(s, [&](const Pavement& p) { return with_added_element(s.doc.design, p, uv, &id); });
-  if (id >= 0) s.ui.selected_element = id;
+  if (id < 0) return;
+  clear_selection(s.ui);
+  s.ui.selected_element = id;
 }
 
 void paint_guidance(Studio& s, glm::dvec2 uv, double radius, double strength, bool stroke) {
@@ -367,7 +409,6 @@ void run_now(Studio& s, bool paused, int step) {
   if (!within_budget(s)) return;
   // Run again for the same design (Run, Step, another backend): the latency counts from now.
   if (s.live.revision() == s.doc.revision) s.doc.edit_clock.restart(Clock::now());
-  if (paused) s.doc.edit_clock.pause(Clock::now());  // a Step waits for the next press
   RunRequest request;
   request.map = s.doc.surface.map;
   request.design = s.doc.design;
@@ -381,14 +422,8 @@ void run_now(Studio& s, bool paused, int step) {
 
 void toggle_pause(Studio& s) {
   switch (s.live.state()) {
-    case RunState::Running:
-      s.live.pause();
-      s.doc.edit_clock.pause(Clock::now());
-      break;
-    case RunState::Paused:
-      s.live.resume();
-      s.doc.edit_clock.resume(Clock::now());
-      break;
+    case RunState::Running: s.live.pause(); break;
+    case RunState::Paused: s.live.resume(); break;
     default: run_now(s);
   }
 }
@@ -411,6 +446,11 @@ void update_studio(Studio& s) {
   take_loaded_surface(s);
   take_run_outcome(s);
   take_cut_outcome(s);
+  // The edit's clock stops while the run sits paused, whatever paused it (Space, a Step's end).
+  if (s.live.state() == RunState::Paused)
+    s.doc.edit_clock.pause(Clock::now());
+  else
+    s.doc.edit_clock.resume(Clock::now());
   if (!ImGui::IsAnyItemActive()) end_gesture(s.doc);
   if (s.run.auto_run && s.doc.surface.map && !s.loader.busy() && s.live.revision() != s.doc.revision &&
       Clock::now() >= s.doc.run_due)

@@ -125,6 +125,12 @@ void open_surface(Studio& s, const std::filesystem::path& path);
 // Sets the plane a closed surface is cut across; the surface being opened, or the closed surface
 // on screen, is opened again with it.
 void set_cut_axis(Studio& s, CutAxis axis);
+// Save as: the design written to `path` (never over a bundled design or an input: the error dialog
+// says so), then the design's path and a recent file. False when refused.
+bool save_design_as(Studio& s, const std::filesystem::path& path);
+// Where the file dialog opens for `purpose`: the surface's, the design's (a bundled design's Save
+// as under a new name in the working folder), the export folder's or the custom shape's path.
+std::filesystem::path browse_start(const Studio& s, BrowsePurpose purpose);
 // Puts a file opened or saved at the top of the recent files (and saves the list).
 void remember_file(Studio& s, const std::filesystem::path& path);
 // A dropped or recent file: a .json design is loaded, anything else opened as a surface.

@@ -51,12 +51,14 @@ constexpr double kNoLimit = std::numeric_limits<double>::infinity();
 // mu's and filter_max; dt, threshold, filter_base, stray_patience and coarse_levels are our
 // measured choices where the paper is silent or ambiguous (docs/solver.md).
 #define PAVER_SOLVER_PARAMETERS(X)                                                                              \
-  X(double, c, "extra spacing", 0.0, ValueRange::at_least(0), SliderRange({0, 1}), "x spacing D",              \
-    "Extra room between neighbouring elements everywhere, as a fraction of the spacing D: 0.1 sets every "     \
-    "pair 10% of D farther apart (the paper's c, eq. 5). c + m must stay >= 0.")                               \
-  X(double, m, "extra spacing where curved", 0.0, ValueRange::any(), SliderRange({-1, 1}), "x spacing D",      \
-    "Extra room where the surface bends most, fading to none where it is flat, as a fraction of D; "            \
-    "negative packs elements closer where it is curved (the paper's m, eq. 5).")                               \
+  X(double, c, "extra spacing", 0.0, ValueRange::at_least(0), SliderRange({0, 1}), "x pattern length D_ab",    \
+    "Extra room between neighbouring elements everywhere, as a fraction of their distance in the regular "    \
+    "pattern (D_ab: D along a tessellation edge): 0.1 sets every pair 10% farther apart (the paper's c, "     \
+    "eq. 5). c + m must stay >= 0.")                                                                          \
+  X(double, m, "extra spacing where curved", 0.0, ValueRange::any(), SliderRange({-1, 1}),                     \
+    "x pattern length D_ab",                                                                                  \
+    "Extra room where the surface bends most, fading to none where it is flat, as a fraction of the pair's "  \
+    "distance in the pattern; negative packs elements closer where it is curved (the paper's m, eq. 5).")    \
   X(double, alpha, "close-range stiffness", 10.0, ValueRange::above(0), SliderRange({0.1, 50}), "no unit",     \
     "How hard a spring pushes back when two elements come much closer than their target (alpha in the "       \
     "spring stiffness k_c(r) = alpha / r^12 - beta / r^6 + gamma, eq. 8).")                                    \

@@ -91,6 +91,9 @@ TEST_F(FileBrowserTest, OkNeedsAFileThatExistsToOpenAndAddsJsonToASave) {
   EXPECT_EQ(b.name, "pendant_v2.json") << "a save starts from the current name";
   b.name = "pendant_v3";
   EXPECT_EQ(chosen_path(b), fs::canonical(root_) / "pendant_v3.json") << "a new file, .json added";
+  b.name = "pendant.OBJ";
+  EXPECT_FALSE(chosen_path(b)) << "a design never goes over a mesh";
+  EXPECT_NE(b.problem.find("ends in .json"), std::string::npos) << b.problem;
 
   start_browsing(b, BrowsePurpose::ExportFolder, root_ / "rings");
   EXPECT_EQ(b.folder, fs::canonical(root_ / "rings"));

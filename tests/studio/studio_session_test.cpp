@@ -344,6 +344,8 @@ TEST_F(StudioSession, AddAndUnpinAreUndoableAndSaved) {
                            "undo\n"
                            "redo\n"
                         << "pin " << some_id << "\n"
+                        << "optimize\n"
+                        << "export " << (dir_ / "pinned").string() << "\n"
                         << "unpin " << some_id << "\n"
                            "optimize\n"
                            "export " << exported.string() << "\n";
@@ -363,13 +365,18 @@ TEST_F(StudioSession, AddAndUnpinAreUndoableAndSaved) {
   const nlohmann::json saved = nlohmann::json::parse(read_text(exported / "design.json"));
   ASSERT_EQ(saved["edits"]["added"].size(), 1u);
   EXPECT_EQ(saved["edits"]["added"][0]["id"].get<long>(), 1000000000);
+  const nlohmann::json pinned = nlohmann::json::parse(read_text(dir_ / "pinned" / "design.json"));
+  ASSERT_FALSE(pinned["edits"]["moved"].empty()) << "pin recorded nothing";
+  for (const auto& moved : pinned["edits"]["moved"]) EXPECT_TRUE(moved["pinned"].get<bool>()) << moved.dump();
+  ASSERT_EQ(saved["edits"]["moved"].size(), pinned["edits"]["moved"].size());
   for (const auto& moved : saved["edits"]["moved"]) EXPECT_FALSE(moved["pinned"].get<bool>()) << moved.dump();
 }
 
 // A box selection (Shift+drag in the 2D map; the script's select_box) takes every element in it,
 // and Del deletes them all in one undo step: exactly those go, nothing else is lost.
 TEST_F(StudioSession, ABoxSelectionIsDeletedInOneStep) {
-  const fs::path before_dir = dir_ / "before", after_dir = dir_ / "after", script = dir_ / "box.txt";
+  const fs::path before_dir = dir_ / "before", undone_dir = dir_ / "undone", after_dir = dir_ / "after",
+                 script = dir_ / "box.txt";
   std::ofstream(script) << "open assets/surfaces/pendant.obj\n"
                            "set pattern.topology lattice\n"
                            "optimize\n"
@@ -377,7 +384,9 @@ TEST_F(StudioSession, ABoxSelectionIsDeletedInOneStep) {
                         << "select_box -1.5 -1.5 1.5 1.5\n"
                            "delete selection\n"
                            "undo\n"
-                           "redo\n"
+                           "optimize\n"
+                           "export " << undone_dir.string() << "\n"
+                        << "redo\n"
                            "optimize\n"
                            "export " << after_dir.string() << "\n";
   const Outcome r = studio("--script " + quote(script.string()) + " --backend cpu --width 1280 --height 800", dir_);
@@ -393,6 +402,8 @@ TEST_F(StudioSession, ABoxSelectionIsDeletedInOneStep) {
   EXPECT_EQ(after.size() + boxed.size(), before.size());
   const nlohmann::json saved = nlohmann::json::parse(read_text(after_dir / "design.json"));
   EXPECT_EQ(saved["edits"]["deleted"].size(), boxed.size());
+  // One undo step brings every one of them back.
+  EXPECT_TRUE(read_text(undone_dir / "placements.csv") == read_text(before_dir / "placements.csv"));
 }
 
 // The mouse and the keys, played into the window (not the script's element commands): E turns
@@ -418,6 +429,14 @@ TEST_F(StudioSession, TheMouseAndKeysEditStones) {
     if (row.kind == 'V' && o < off) off = o, deleted = id;
   }
   const Row gone = before.at(deleted);
+  // And one three spacings right of it is pinned with P.
+  long pinned = -1;
+  off = 1e300;
+  for (const auto& [id, row] : before) {
+    const double o = std::hypot(row.u - (centre.u + 3 * D), row.v - centre.v);
+    if (row.kind == 'V' && o < off) off = o, pinned = id;
+  }
+  const Row held = before.at(pinned);
   const double add_u = centre.u + 0.5 * D, add_v = centre.v - 3 * D;
   const fs::path exported = dir_ / "mouse", script = dir_ / "mouse.txt";
   std::ofstream(script) << std::setprecision(17) << "open assets/surfaces/pendant.obj\n"
@@ -428,6 +447,8 @@ TEST_F(StudioSession, TheMouseAndKeysEditStones) {
                         << "key E\n"
                         << "mouse_drag " << centre.u << " " << centre.v << " " << centre.u + 0.4 * D << " " << centre.v << "\n"
                         << "optimize\n"
+                        << "click " << held.u << " " << held.v << "\n"
+                        << "key P\n"
                         << "click " << gone.u << " " << gone.v << "\n"
                         << "key Delete\n"
                         << "optimize\n"
@@ -444,8 +465,11 @@ TEST_F(StudioSession, TheMouseAndKeysEditStones) {
   EXPECT_FALSE(after.count(deleted)) << "the stone clicked and deleted is still there";
   EXPECT_TRUE(after.count(1000000000)) << "Ctrl+click added nothing";
   const nlohmann::json saved = nlohmann::json::parse(read_text(exported / "design.json"));
-  EXPECT_EQ(saved["edits"]["moved"].size(), 1u);
+  ASSERT_EQ(saved["edits"]["moved"].size(), 2u) << saved["edits"].dump();
+  EXPECT_EQ(saved["edits"]["moved"][0]["id"].get<long>(), dragged);
   EXPECT_TRUE(saved["edits"]["moved"][0]["pinned"].get<bool>()) << "a dropped stone is held";
+  EXPECT_EQ(saved["edits"]["moved"][1]["id"].get<long>(), pinned) << "P pinned another stone";
+  EXPECT_TRUE(saved["edits"]["moved"][1]["pinned"].get<bool>());
   EXPECT_EQ(saved["edits"]["deleted"].size(), 1u);
   EXPECT_EQ(saved["edits"]["added"].size(), 1u);
   long violations = 0;

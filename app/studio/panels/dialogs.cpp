@@ -38,7 +38,8 @@ void status_bar(Studio& s, ImVec2 pos, ImVec2 size) {
 
 void dialogs(Studio& s) {
   Document& doc = s.doc;
-  if (!doc.messages.error.empty() && !ImGui::IsPopupOpen("Error")) ImGui::OpenPopup("Error");
+  // One modal at a time: opening one while another is up makes them close each other every frame.
+  if (!doc.messages.error.empty() && !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) ImGui::OpenPopup("Error");
   ImGui::SetNextWindowSize(ImVec2(520, 0));
   if (ImGui::BeginPopupModal("Error", nullptr, ImGuiWindowFlags_NoSavedSettings)) {
     ImGui::TextWrapped("%s", doc.messages.error.c_str());
@@ -55,7 +56,8 @@ void dialogs(Studio& s) {
 
   // A design above the run budget: run it anyway, or go back.
   const bool over_budget = !s.script_mode && s.run.budget_asked == doc.revision && s.run.budget_granted != doc.revision;
-  if (over_budget && doc.messages.error.empty() && !ImGui::IsPopupOpen("Large design")) ImGui::OpenPopup("Large design");
+  if (over_budget && doc.messages.error.empty() && !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId))
+    ImGui::OpenPopup("Large design");
   ImGui::SetNextWindowSize(ImVec2(520, 0));
   if (ImGui::BeginPopupModal("Large design", nullptr, ImGuiWindowFlags_NoSavedSettings)) {
     ImGui::TextWrapped("This design would place about %.3g elements: about %.1f GB of memory and %.0f s of solving "
@@ -75,7 +77,8 @@ void dialogs(Studio& s) {
     ImGui::EndPopup();
   }
 
-  if (s.ui.quit_dialog && doc.messages.error.empty() && !ImGui::IsPopupOpen("Quit")) ImGui::OpenPopup("Quit");
+  if (s.ui.quit_dialog && doc.messages.error.empty() && !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId))
+    ImGui::OpenPopup("Quit");
   ImGui::SetNextWindowSize(ImVec2(460, 0));
   if (ImGui::BeginPopupModal("Quit", nullptr, ImGuiWindowFlags_NoSavedSettings)) {
     ImGui::TextWrapped("The design has changes that are not saved.");

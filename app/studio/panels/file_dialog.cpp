@@ -23,13 +23,6 @@ std::string size_text(std::uintmax_t bytes) {
   return text;
 }
 
-void save_as(Studio& s, const fs::path& path) {
-  if (save_design_file(s.doc, path)) {
-    s.ui.design_path = path.string();
-    remember_file(s, path);
-  }
-}
-
 // What OK does with the path chosen, by the purpose the dialog was opened for.
 void use_path(Studio& s, const fs::path& path) {
   UiState& ui = s.ui;
@@ -41,11 +34,13 @@ void use_path(Studio& s, const fs::path& path) {
     case BrowsePurpose::LoadDesign: open_any(s, path); break;
     case BrowsePurpose::SaveDesign: {
       std::error_code error;
-      // Replacing the design's own file is what Save does; any other file is asked about first.
-      if (fs::exists(path, error) && !fs::equivalent(path, s.doc.design_path, error))
+      // Replacing the design's own file is what Save does; any other file is asked about first
+      // (a bundled design or an input is refused outright, without asking).
+      const bool own = !s.doc.design_path.empty() && fs::equivalent(path, s.doc.design_path, error);
+      if (fs::exists(path, error) && !own && !is_bundled_design(path))
         ui.confirm_replace = path;
       else
-        save_as(s, path);
+        save_design_as(s, path);
       break;
     }
     case BrowsePurpose::ExportFolder: ui.export_dir = path.string(); break;
@@ -54,12 +49,12 @@ void use_path(Studio& s, const fs::path& path) {
 }
 
 void replace_question(Studio& s) {
-  if (s.ui.confirm_replace && !ImGui::IsPopupOpen("Replace file")) ImGui::OpenPopup("Replace file");
+  if (s.ui.confirm_replace && !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) ImGui::OpenPopup("Replace file");
   ImGui::SetNextWindowSize(ImVec2(460, 0));
   if (!ImGui::BeginPopupModal("Replace file", nullptr, ImGuiWindowFlags_NoSavedSettings)) return;
   ImGui::TextWrapped("%s already exists. Replace it with this design?", s.ui.confirm_replace->string().c_str());
   if (ImGui::Button("Replace", ImVec2(120, 0))) {
-    save_as(s, *s.ui.confirm_replace);
+    save_design_as(s, *s.ui.confirm_replace);
     s.ui.confirm_replace.reset();
     ImGui::CloseCurrentPopup();
   }
@@ -76,7 +71,7 @@ void replace_question(Studio& s) {
 void file_dialog(Studio& s) {
   FileBrowser& b = s.ui.browser;
   const char* title = browse_title(b.purpose);
-  if (b.open && !ImGui::IsPopupOpen(title)) ImGui::OpenPopup(title);
+  if (b.open && !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) ImGui::OpenPopup(title);
   const ImVec2 screen = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowSize(ImVec2(std::min(640.0f, screen.x * 0.9f), std::min(480.0f, screen.y * 0.8f)),
                            ImGuiCond_Appearing);

@@ -65,7 +65,7 @@ void file_panel(Studio& s) {
   ImGui::SameLine();
   if (ImGui::Button("Open") && !s.ui.surface_path.empty()) open_surface(s, s.ui.surface_path);
   ImGui::SameLine();
-  if (ImGui::Button("Browse...##surface")) start_browsing(s.ui.browser, BrowsePurpose::OpenSurface, s.ui.surface_path);
+  if (ImGui::Button("Browse...##surface")) start_browsing(s.ui.browser, BrowsePurpose::OpenSurface, browse_start(s, BrowsePurpose::OpenSurface));
   if (s.loader.busy()) ImGui::ProgressBar(s.loader.progress(), ImVec2(-1, 0), s.loader.stage().c_str());
   if (doc.surface.map) {
     // A closed surface is counted as loaded, not as its atlas (split faces, seams twice).
@@ -98,11 +98,11 @@ void file_panel(Studio& s) {
   if (ImGui::Button("Load") && !s.ui.design_path.empty()) open_any(s, s.ui.design_path);
   ImGui::SameLine();
   if (ImGui::Button("Save") && !s.ui.design_path.empty()) save_design_file(doc, s.ui.design_path);
-  if (ImGui::Button("Load...")) start_browsing(s.ui.browser, BrowsePurpose::LoadDesign, s.ui.design_path);
+  if (ImGui::Button("Load...")) start_browsing(s.ui.browser, BrowsePurpose::LoadDesign, browse_start(s, BrowsePurpose::LoadDesign));
   ImGui::SameLine();
-  if (ImGui::Button("Save as...")) start_browsing(s.ui.browser, BrowsePurpose::SaveDesign, save_as_start(s.ui.design_path.empty() ? doc.design_path : fs::path(s.ui.design_path)));
+  if (ImGui::Button("Save as...")) start_browsing(s.ui.browser, BrowsePurpose::SaveDesign, browse_start(s, BrowsePurpose::SaveDesign));
   help_marker("Save as never replaces a design bundled with Paver, nor the surface or shape the design "
-              "uses, and asks before it replaces any other file.");
+              "uses, and asks before it replaces any file but the design's own.");
   ImGui::SameLine();
   ImGui::TextDisabled("%s", doc.dirty ? "unsaved changes" : "saved");
   ImGui::BeginDisabled(!doc.history.can_undo());
@@ -118,7 +118,7 @@ void file_panel(Studio& s) {
   section("Export");
   path_field("##export", s.ui.export_dir, {"Browse..."});
   ImGui::SameLine();
-  if (ImGui::Button("Browse...##export")) start_browsing(s.ui.browser, BrowsePurpose::ExportFolder, s.ui.export_dir);
+  if (ImGui::Button("Browse...##export")) start_browsing(s.ui.browser, BrowsePurpose::ExportFolder, browse_start(s, BrowsePurpose::ExportFolder));
   ImGui::BeginDisabled(!result_is_final(s));
   if (ImGui::Button("Export all")) guarded(doc, [&] { export_outputs(s, s.ui.export_dir); });
   help_marker("placements.csv, stones.csv, elements.ply/.obj/.stl/.glb, paved.3mf, design.json, report.json "

@@ -3,6 +3,8 @@
 #include "../studio.h"
 
 #include <cctype>
+#include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <string>
 
@@ -22,18 +24,30 @@ void help_marker(const char* text) {
 
 bool typed_number(const char* label, double& value, const char* format) {
   // What is being typed, per field, while it has the focus: ImGui writes it on every keystroke,
-  // and the design only takes it when the field lets go (Enter, Tab or a click elsewhere).
-  static std::map<ImGuiID, double> typing;
+  // and the design only takes it when the field lets go (Enter, Tab or a click elsewhere). What the
+  // field showed when it took the focus is kept too: Escape restores that text, rounded by
+  // `format`, and that is no change.
+  struct Typing {
+    double shown, typed;
+  };
+  static std::map<ImGuiID, Typing> typing;
   const ImGuiID id = ImGui::GetID(label);
   const auto it = typing.find(id);
-  double typed = it != typing.end() ? it->second : value;
+  double typed = it != typing.end() ? it->second.typed : value;
   ImGui::InputDouble(label, &typed, 0, 0, format);
   if (ImGui::IsItemActive()) {
-    typing[id] = typed;
+    if (it == typing.end()) {
+      char text[64];
+      std::snprintf(text, sizeof text, format, value);
+      typing[id] = {std::strtod(text, nullptr), typed};
+    } else {
+      it->second.typed = typed;
+    }
     return false;
   }
-  typing.erase(id);
-  if (!ImGui::IsItemDeactivatedAfterEdit() || typed == value) return false;
+  const double shown = it != typing.end() ? it->second.shown : value;
+  if (it != typing.end()) typing.erase(it);
+  if (!ImGui::IsItemDeactivatedAfterEdit() || typed == shown || typed == value) return false;
   value = typed;
   return true;
 }

@@ -9,6 +9,7 @@
 #include "../studio.h"
 #include "../view_images.h"
 #include "../element_editing.h"
+#include "../map_frame.h"
 
 #include "pipeline/pavement.h"
 #include "core/input_error.h"
@@ -153,21 +154,6 @@ void type_legend(ImDrawList* draw, ImVec2 origin, ImVec2 size) {
 }
 
 // --- 2D ---------------------------------------------------------------------------------------
-
-struct MapFrame {  // the 2D view's image on screen and the map region it shows (y up)
-  ImVec2 origin, size;
-  render::MapView view;
-  glm::dvec2 to_map(ImVec2 p) const {
-    const double aspect = size.x / size.y;
-    return {view.centre.x + (2.0 * (p.x - origin.x) / size.x - 1) * view.half_height * aspect,
-            view.centre.y + (1 - 2.0 * (p.y - origin.y) / size.y) * view.half_height};
-  }
-  ImVec2 to_screen(glm::dvec2 q) const {
-    const double aspect = size.x / size.y;
-    return ImVec2(float(origin.x + ((q.x - view.centre.x) / (view.half_height * aspect) + 1) * 0.5 * size.x),
-                  float(origin.y + (1 - (q.y - view.centre.y) / view.half_height) * 0.5 * size.y));
-  }
-};
 
 struct Handles {
   ImVec2 centre, rotation, scale;
@@ -514,6 +500,7 @@ void views_area(Studio& s, ImVec2 pos, ImVec2 size) {
     return;
   }
   const int large = s.views.large_3d ? 0 : 1;
+  if (!s.ui.edit_elements || s.views.large_3d) s.ui.box_from.reset();  // a box is drawn in the large 2D view only
   const ImVec2 corner = ImGui::GetCursorScreenPos();
   s.views.large_origin = {corner.x, corner.y};
   s.views.large_size = {area.x, area.y};
