@@ -104,6 +104,7 @@ void set_result(Document& doc, std::shared_ptr<const Pavement> pavement, std::ui
     r.ratio_histogram[std::clamp(int(t * kHistogramBins), 0, kHistogramBins - 1)] += 1;
   }
   r.bill = bill_of_stones(pavement->elements, pavement->design.units);
+  r.verdict = judge_pavement(pavement->after);
   r.pavement = std::move(pavement);
 }
 

@@ -10,6 +10,7 @@
 #include "elements/element_shape.h"
 #include "pipeline/pavement.h"
 #include "report/bill_of_stones.h"
+#include "report/verdict.h"
 #include "map/surface_map.h"
 
 #include <chrono>
@@ -38,6 +39,7 @@ struct PavementResult {
   std::vector<double> neighbour_ratios;   // per element: nearest-neighbour distance / (r_i + r_j)
   std::vector<float> ratio_histogram;     // element counts per bin over [kHistogramMin, kHistogramMax]
   BillOfStones bill;                      // the report panel's bill of stones, made once per result
+  Verdict verdict;                        // fit to use, or the problems with their figures (report.json's)
   double run_ms = 0;                      // the background run, wall time
   double latency_ms = -1;                 // design change to this result on screen; -1 until shown
 };

@@ -76,8 +76,11 @@ void take_run_outcome(Studio& s) {
       s.ui.box_selected.erase(s.ui.box_selected.begin());
     }
   }
-  report_status(s.doc, std::to_string(p.elements.size()) + " elements, " + std::to_string(p.after.contact_violations) +
-                           " collisions; " + std::to_string(p.solve.iterations) + " iterations (" +
+  const Verdict& verdict = s.doc.result.verdict;
+  report_status(s.doc, std::string(verdict.ok ? "ok: " : "NOT OK (Report panel says why): ") +
+                           std::to_string(p.elements.size()) + " elements, " +
+                           std::to_string(p.after.contact_violations) + " contact violations; " +
+                           std::to_string(p.solve.iterations) + " iterations (" +
                            std::string(stop_reason_name(p.solve.reason)) + ")");
 }
 

@@ -149,6 +149,10 @@ TEST(Document, AResultCarriesItsRatiosAndHistogram) {
   ASSERT_EQ(r.ratio_histogram.size(), std::size_t(kHistogramBins));
   EXPECT_EQ(std::accumulate(r.ratio_histogram.begin(), r.ratio_histogram.end(), 0.0f), float(pavement->elements.size()));
   EXPECT_LT(r.latency_ms, 0) << "measured once it is on screen";
+  // The report panel's verdict is the one report.json carries.
+  EXPECT_EQ(r.verdict.ok, judge_pavement(pavement->after).ok);
+  EXPECT_EQ(r.verdict.problems, judge_pavement(pavement->after).problems);
+  EXPECT_TRUE(r.verdict.ok) << "the dome at D = 6 is fit to use";
 }
 
 }  // namespace

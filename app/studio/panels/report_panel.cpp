@@ -107,6 +107,18 @@ void report_panel(const Studio& s) {
   }
   const Pavement& p = *r.pavement;
   if (r.revision != s.doc.revision) ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "for an earlier design: re-running");
+  // The verdict first, as `paver run` prints it and report.json carries it (report/verdict.h).
+  if (r.verdict.ok) {
+    ImGui::TextColored(ImVec4(0.45f, 0.85f, 0.45f, 1), "verdict: ok");
+  } else {
+    ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "verdict: NOT OK");
+    for (const std::string& problem : r.verdict.problems) ImGui::BulletText("%s", problem.c_str());
+  }
+  help_marker("Ok when no pair of elements is closer than the sum of their radii plus the gap (checked over "
+              "all pairs), none crosses the surface's edge, the pattern is not torn and not mostly bare.");
+  ImGui::TextWrapped("contact: %ld violations; the closest pair has %.3g free between them (surface units; the gap "
+                     "asks for %.3g)",
+                     p.after.contact_violations, p.after.min_clearance, p.design.elements.gap);
   ImGui::TextWrapped("%zu elements: %ld V, %ld E; %d filled, %d eliminated at the boundary", p.elements.size(),
               p.after.vertex_elements, p.after.edge_elements, p.filled, p.eliminated);
   ImGui::Text("pattern: %d points, %d edges; D = %.4g", p.pattern.point_count(), p.pattern.edge_count(),
