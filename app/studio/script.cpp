@@ -30,7 +30,7 @@ constexpr std::pair<std::string_view, Kind> kCommands[] = {
     {"select", Kind::Select},   {"pin", Kind::Pin},       {"unpin", Kind::Unpin},   {"drag", Kind::Drag},
     {"delete", Kind::Delete},   {"add", Kind::Add},       {"brush", Kind::Brush},
     {"colour", Kind::Colour}, {"save", Kind::Save}, {"select_box", Kind::SelectBox}, {"browse", Kind::Browse},
-    {"click", Kind::Click}, {"mouse_drag", Kind::MouseDrag}, {"key", Kind::Key}};
+    {"click", Kind::Click}, {"mouse_drag", Kind::MouseDrag}, {"key", Kind::Key}, {"mouse_drag3d", Kind::MouseDrag3d}};
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
 
@@ -139,6 +139,14 @@ bool parse_script_line(std::string_view line, int line_number, const std::string
       if (!ok)
         throw InputError(where + name + " '" + std::string(rest) + "': give " + (drag ? "four" : "two") +
                          " numbers (map points), then optionally shift or ctrl");
+      break;
+    }
+    case Kind::MouseDrag3d: {
+      need_argument("an element id and the map point to drop it at, e.g. mouse_drag3d 42 0.5 0");
+      const auto [id, after_id] = first_word(rest);
+      const auto [u, v] = first_word(after_id);
+      if (!parse_number(id, out.id) || out.id < 0 || !parse_number(u, out.u) || !parse_number(v, out.v))
+        throw InputError(where + "mouse_drag3d '" + std::string(rest) + "': give an element id and a map point U V");
       break;
     }
     case Kind::Key: {

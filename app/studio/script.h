@@ -5,11 +5,13 @@
 //   select ID | select_box U0 V0 U1 V1 | pin ID|selection | unpin ID|selection | drag ID DU DV |
 //   delete ID|selection | add U V | brush U V RADIUS STRENGTH |
 //   colour ratio|type | browse surface|design|save|export|shape |
-//   click U V [shift|ctrl] | mouse_drag U0 V0 U1 V1 [shift|ctrl] | key E|P|I|V|L|C|R|N|Delete|Escape|Space
+//   click U V [shift|ctrl] | mouse_drag U0 V0 U1 V1 [shift|ctrl] | key E|P|I|V|L|C|R|N|Delete|Escape|Space |
+//   mouse_drag3d ID U V
 // (element commands name elements by the ids placements.csv lists; drag moves by DU, DV spacings D
 // in the map, add puts a vertex element at map coordinates U, V, placements.csv's u and v; brush
 // paints a guidance dab there, RADIUS in spacings D, STRENGTH in [-0.5, 1]: > 0 looser, < 0 denser)
-// (click and mouse_drag play the mouse into the large 2D view at map points, key presses a key:
+// (click and mouse_drag play the mouse into the large 2D view at map points, mouse_drag3d drags
+// element ID in the large 3D view to the surface point at map point U V, key presses a key:
 // the views' own mouse handling and the shortcuts run on them, as on a designer's hand)
 // (browse opens the file dialog for that button, as a click on it does: for screenshots)
 // (panel shows a side panel: file, pattern, elements, optimize, report or help; cut_axis picks the
@@ -24,7 +26,7 @@ namespace paver::studio {
 struct ScriptCommand {
   enum class Kind { Open, CutAxis, Design, Pattern, Spacing, Set, Optimize, Undo, Redo, Export, Cut, Screenshot, View3d,
                     View2d, Panel, Wait, Quit, Select, Pin, Unpin, Drag, Delete, Add, Brush, Colour, Save, SelectBox, Browse,
-                    Click, MouseDrag, Key };
+                    Click, MouseDrag, Key, MouseDrag3d };
   Kind kind = Kind::Quit;
   std::string text;    // open/design/save/export/cut/screenshot: the path; pattern, panel, cut_axis, colour: the name; set: the key
   std::string value;   // set: the value as written

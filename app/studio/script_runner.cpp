@@ -20,7 +20,7 @@ bool needs_final_pavement(Kind kind) {
   switch (kind) {
     case Kind::Optimize: case Kind::Export: case Kind::Cut: case Kind::Select: case Kind::Pin: case Kind::Unpin:
     case Kind::Drag: case Kind::Delete: case Kind::Add: case Kind::Brush: case Kind::SelectBox:
-    case Kind::Click: case Kind::MouseDrag:
+    case Kind::Click: case Kind::MouseDrag: case Kind::MouseDrag3d:
       return true;
     default:
       return false;
@@ -58,6 +58,12 @@ std::string describe(const ScriptCommand& c) {
     else
       std::snprintf(numbers, sizeof numbers, " %g %g %g %g", c.u, c.v, c.u1, c.v1);
     return text + numbers + (c.shift ? " shift" : c.ctrl ? " ctrl" : "");
+  }
+  if (c.kind == Kind::MouseDrag3d) {
+    char numbers[64];
+    std::snprintf(numbers, sizeof numbers, " %g %g", c.u, c.v);
+    text.append(1, ' ').append(std::to_string(c.id));
+    return text + numbers;
   }
   if (c.id == ScriptCommand::kSelection) return text + " selection";
   if (c.id >= 0) return text + " " + std::to_string(c.id);
@@ -185,6 +191,13 @@ void ScriptRunner::act(Studio& s, const ScriptCommand& c) {
       frames_left_ = 3;  // and a few frames for what it did to take effect
       break;
     }
+    case Kind::MouseDrag3d: {
+      const auto [from, to] = element_drag_3d(s, c.id, glm::dvec2(c.u, c.v));
+      const std::vector<InputFrame> frames = drag_frames(from, to, false, false);
+      s.input_queue.insert(s.input_queue.end(), frames.begin(), frames.end());
+      frames_left_ = 3;
+      break;
+    }
     case Kind::Key: {
       const std::vector<InputFrame> frames = key_frames(c.key, map_to_window(s, glm::dvec2(0), false));
       s.input_queue.insert(s.input_queue.end(), frames.begin(), frames.end());
@@ -205,6 +218,7 @@ bool ScriptRunner::settled(const Studio& s, const ScriptCommand& c) {
     case Kind::Wait: return frames_left_-- <= 0;
     case Kind::Click:
     case Kind::MouseDrag:
+    case Kind::MouseDrag3d:
     case Kind::Key: return s.input_queue.empty() && frames_left_-- <= 0;
     case Kind::Cut: return !s.cutter.busy() && !s.cutter.has_outcome();  // and its outcome reported
     default: return true;

@@ -30,7 +30,7 @@ const std::vector<Shortcut>& shortcut_list() {
       {"Wheel", "zoom"},
       {"Left drag (2D)", "move the pattern over the map (placement.offset)"},
       {"Drag the handles (2D)", "rotate (round) and scale (square) the placement"},
-      {"E", "edit stones: clicks in the views select, drag (2D) and add (Ctrl+click, 2D) single elements"},
+      {"E", "edit stones: clicks in the views select, drag (either view: in 3D start on the stone) and add (Ctrl+click, 2D) single elements"},
       {"Shift+drag (2D, edit stones)", "select every element in a box"},
       {"Del", "delete the selected elements"},
       {"P", "pin / unpin the selected elements (they stay where they are while the rest relaxes)"},

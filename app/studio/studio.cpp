@@ -3,6 +3,9 @@
 
 #include "element_editing.h"
 #include "map_frame.h"
+#include "view3d_frame.h"
+
+#include "map/lifting.h"
 
 #include "io/output_guard.h"
 #include "panels/panels.h"
@@ -190,6 +193,24 @@ glm::vec2 map_to_window(const Studio& s, glm::dvec2 uv, bool strict) {
   }
   const ImVec2 at = MapFrame{ImVec2(origin.x, origin.y), ImVec2(size.x, size.y), s.views.map_view}.to_screen(uv);
   return {at.x, at.y};
+}
+
+std::pair<glm::vec2, glm::vec2> element_drag_3d(const Studio& s, int id, glm::dvec2 to) {
+  const glm::vec2 origin = s.views.large_origin, size = s.views.large_size;
+  if (!s.views.large_3d || size.x < 16 || size.y < 16) throw InputError("the 3D view is not the large view: use view3d first");
+  if (!s.doc.result.pavement || !s.doc.surface.map) throw InputError("there is no pavement on screen yet");
+  const std::optional<std::size_t> i = find_element(*s.doc.result.pavement, id);
+  if (!i) throw InputError("element " + std::to_string(id) + " is not in the pavement on screen");
+  LiftedPoints lifted;
+  lifted.resize(1);
+  const glm::dvec2 target[] = {to};
+  if (lift_points(map_for_topology(*s.doc.surface.map, s.doc.design.pattern.topology), target, lifted) > 0)
+    throw InputError("map point (" + std::to_string(to.x) + ", " + std::to_string(to.y) + ") is off the surface");
+  const View3dFrame frame(ImVec2(origin.x, origin.y), ImVec2(size.x, size.y), s.views.camera);
+  const std::optional<ImVec2> a = frame.to_screen(s.doc.result.pavement->elements.position[*i]);
+  const std::optional<ImVec2> b = frame.to_screen(lifted.position[0]);
+  if (!a || !b) throw InputError("the drag is behind the camera");
+  return {{a->x, a->y}, {b->x, b->y}};
 }
 
 void select_element(Studio& s, int id) {

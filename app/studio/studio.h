@@ -22,6 +22,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace paver::studio {
@@ -72,6 +73,7 @@ struct UiState {
   std::optional<glm::dvec2> box_from;  // the corner where a box selection's drag started, map units
   bool edit_elements = false;          // the views' left button selects, drags and adds single elements
   bool dragging_element = false;       // the selected element is being dragged in the 2D view
+  bool dragging_element_3d = false;    // ... in the 3D view, along the surface
   glm::dvec2 drag_from{0};             // where that drag started, map units
   glm::dvec2 move_by{0};               // the elements panel's move, in spacings D
   Brush brush = Brush::Off;            // a left drag in the 2D map paints guidance
@@ -164,6 +166,10 @@ void reset_run(Studio& s);
 // Where map point `uv` shows in the window, in the large 2D view as last drawn. Throws InputError
 // when the 2D view is not the large one (`strict`), else gives the large view's middle.
 glm::vec2 map_to_window(const Studio& s, glm::dvec2 uv, bool strict = true);
+// A drag of element `id` in the large 3D view to the surface point at map point `to`: the window
+// pixels where it starts and ends. Throws InputError when the 3D view is not the large one, the
+// element is not on screen or `to` is off the map.
+std::pair<glm::vec2, glm::vec2> element_drag_3d(const Studio& s, int id, glm::dvec2 to);
 // Selects element `id` of the pavement on screen and says what it is in the status line. Throws
 // InputError when there is no such element.
 void select_element(Studio& s, int id);

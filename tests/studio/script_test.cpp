@@ -145,6 +145,12 @@ TEST(Script, ABoxSelectsAndTheSelectionIsPinnedOrDeleted) {
   EXPECT_NE(error_of("click 1 2 alt").find("then optionally shift or ctrl"), std::string::npos);
   EXPECT_NE(error_of("mouse_drag 1 2 3").find("four numbers"), std::string::npos);
   EXPECT_NE(error_of("key F13").find("use E, P"), std::string::npos);
+  const auto drag3d = parse_script("mouse_drag3d 42 0.5 -1\n", "s.txt");
+  ASSERT_EQ(drag3d.size(), 1u);
+  EXPECT_EQ(drag3d[0].kind, Kind::MouseDrag3d);
+  EXPECT_EQ(drag3d[0].id, 42);
+  EXPECT_EQ(drag3d[0].v, -1);
+  EXPECT_NE(error_of("mouse_drag3d 42 0.5").find("an element id and a map point"), std::string::npos);
   EXPECT_NE(error_of("browse everything").find("use surface, design, save, export or shape"), std::string::npos);
   EXPECT_NE(error_of("drag selection 1 0").find("whole number >= 0"), std::string::npos) << "a drag takes one element";
   EXPECT_NE(error_of("select selection").find("whole number >= 0"), std::string::npos);

@@ -480,6 +480,29 @@ TEST_F(StudioSession, TheMouseAndKeysEditStones) {
     }
   EXPECT_EQ(violations, 0);
 
+  // In the 3D view: the stone pressed on is dragged along the surface and dropped where the
+  // cursor's ray meets it (the drag ends at the pixel of the surface point at the target).
+  const fs::path dropped_dir = dir_ / "dropped3d", drop_script = dir_ / "drag3d.txt";
+  const double to_u = centre.u - 0.5 * D, to_v = centre.v + 0.5 * D;
+  std::ofstream(drop_script) << std::setprecision(17) << "open assets/surfaces/pendant.obj\n"
+                             << "set pattern.topology lattice\n"
+                             << "optimize\n"
+                             << "key E\n"
+                             << "mouse_drag3d " << dragged << " " << to_u << " " << to_v << "\n"
+                             << "optimize\n"
+                             << "export " << dropped_dir.string() << "\n";
+  const Outcome drop = studio("--script " + quote(drop_script.string()) + " --backend cpu --width 1280 --height 800", dir_);
+  ASSERT_EQ(drop.exit_code, 0) << describe(drop);
+  const std::map<long, Row> dropped = placements_by_id(dropped_dir / "placements.csv");
+  ASSERT_TRUE(dropped.count(dragged));
+  // A pixel of the 3D view is about D / 15 here; the drop lands within a few.
+  EXPECT_NEAR(dropped.at(dragged).u, to_u, 0.2 * D) << "the stone dragged in 3D is not where it was dropped";
+  EXPECT_NEAR(dropped.at(dragged).v, to_v, 0.2 * D);
+  EXPECT_GT(std::hypot(dropped.at(dragged).u - centre.u, dropped.at(dragged).v - centre.v), 0.4 * D) << "it did not move";
+  const nlohmann::json drop_design = nlohmann::json::parse(read_text(dropped_dir / "design.json"));
+  ASSERT_EQ(drop_design["edits"]["moved"].size(), 1u);
+  EXPECT_TRUE(drop_design["edits"]["moved"][0]["pinned"].get<bool>());
+
   // A Shift+drag box around the middle, then Del: the box's stones go in one step.
   const fs::path boxed_dir = dir_ / "boxed", box_script = dir_ / "box_mouse.txt";
   std::ofstream(box_script) << std::setprecision(17) << "open assets/surfaces/pendant.obj\n"

@@ -15,7 +15,8 @@ namespace paver::studio {
 void single_elements_panel(Studio& s) {
   section("Single stones");
   ImGui::Checkbox("edit stones in the views (E)", &s.ui.edit_elements);
-  help_marker("Click a stone to select it, in either view. In the 2D map, drag it to move it: it stays where you drop "
+  help_marker("Click a stone to select it, in either view. Drag it to move it (in the 3D view it slides along the "
+              "surface): it stays where you drop "
               "it and its neighbours within three spacings make room; Ctrl+click adds a stone of the vertex size. "
               "Del deletes the selected stone (its place stays empty), P pins or unpins it (a pinned stone stays "
               "put while the rest relaxes). Edits are undoable, saved in the design file, and `paver run` repeats "

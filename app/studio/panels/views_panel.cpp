@@ -10,6 +10,10 @@
 #include "../view_images.h"
 #include "../element_editing.h"
 #include "../map_frame.h"
+#include "../surface_pick.h"
+#include "../view3d_frame.h"
+
+#include "map/lifting.h"
 
 #include "pipeline/pavement.h"
 #include "core/input_error.h"
@@ -60,39 +64,49 @@ void render_if_changed(Studio& s, int view, int width, int height) {
 
 // --- 3D ---------------------------------------------------------------------------------------
 
-// Where a surface point shows in the 3D view (nullopt behind the camera).
-std::optional<ImVec2> project(const glm::mat4& vp, ImVec2 origin, ImVec2 size, glm::dvec3 p) {
-  const glm::vec4 clip = vp * glm::vec4(glm::vec3(p), 1);
-  if (clip.w <= 0) return std::nullopt;
-  return ImVec2(origin.x + (clip.x / clip.w + 1) * 0.5f * size.x, origin.y + (1 - clip.y / clip.w) * 0.5f * size.y);
-}
-
-// A click (a press and release without a drag) on the 3D view: the element nearest the cursor
-// among those whose projected footprint it is in, nearest the camera first.
-void pick_3d(Studio& s, ImVec2 origin, ImVec2 size) {
-  if (!s.doc.result.pavement) return;
+// The element under `mouse` in the 3D view: among those whose projected footprint holds it, the
+// nearest the camera; none when the cursor is over no element.
+std::optional<std::size_t> element_under_3d(const Studio& s, const View3dFrame& f, ImVec2 mouse) {
+  if (!s.doc.result.pavement) return std::nullopt;
   const Elements& e = s.doc.result.pavement->elements;
   const render::OrbitCamera& camera = s.views.camera;
-  const glm::mat4 vp = camera.view_projection(size.x / size.y);
-  const ImVec2 mouse = ImGui::GetIO().MousePos;
-  int best = -1;
+  std::optional<std::size_t> best;
   double nearest = 1e300;
   for (std::size_t i = 0; i < e.size(); ++i) {
-    const std::optional<ImVec2> centre = project(vp, origin, size, e.position[i]);
+    const std::optional<ImVec2> centre = f.to_screen(e.position[i]);
     if (!centre) continue;
     // The footprint's projected radius, from a point half a diameter across the view.
     const glm::dvec3 side = glm::normalize(glm::cross(glm::dvec3(camera.eye()) - e.position[i], e.normal[i]));
-    const std::optional<ImVec2> edge = project(vp, origin, size, e.position[i] + 0.5 * e.diameter[i] * side);
+    const std::optional<ImVec2> edge = f.to_screen(e.position[i] + 0.5 * e.diameter[i] * side);
     const float radius = edge ? std::hypot(edge->x - centre->x, edge->y - centre->y) : 4.0f;
     const float off = std::hypot(mouse.x - centre->x, mouse.y - centre->y);
     const double depth = glm::length(glm::dvec3(camera.eye()) - e.position[i]);
-    if (off <= std::max(radius, 4.0f) && depth < nearest) nearest = depth, best = int(i);
+    if (off <= std::max(radius, 4.0f) && depth < nearest) nearest = depth, best = i;
   }
-  if (best < 0) {
-    clear_selection(s.ui);
-    return;
-  }
-  select_element(s, e.id[std::size_t(best)]);
+  return best;
+}
+
+// A click (a press and release without a drag) on the 3D view selects the element under it, or
+// clears the selection over bare surface.
+void pick_3d(Studio& s, const View3dFrame& f) {
+  const std::optional<std::size_t> i = element_under_3d(s, f, ImGui::GetIO().MousePos);
+  if (!i) return clear_selection(s.ui);
+  select_element(s, s.doc.result.pavement->elements.id[*i]);
+}
+
+// A stone dragged in the 3D view is dropped where the cursor's ray meets the surface: the map
+// point there (eq. 1) less the stone's own is the move, as a drag in the 2D map makes it.
+void drop_3d(Studio& s, const View3dFrame& f) {
+  if (!s.doc.result.pavement || !s.doc.surface.map) return;
+  const std::optional<std::size_t> i = find_element(*s.doc.result.pavement, s.ui.selected_element);
+  if (!i) return;
+  const SurfaceMap& map = map_for_topology(*s.doc.surface.map, s.doc.design.pattern.topology);
+  const auto [origin, direction] = f.ray(ImGui::GetIO().MousePos);
+  const std::optional<SurfaceHit> hit = first_hit(map.mesh, origin, direction);
+  if (!hit) return report_status(s.doc, "dropped off the surface: the stone stays where it was");
+  glm::dvec2 offset = map_point(map, hit->triangle, hit->bary) - s.doc.result.pavement->elements.uv[*i];
+  if (map.period > 0) offset.x -= map.period * std::round(offset.x / map.period);  // a band: the short way round
+  move_selected(s, offset);
 }
 
 void interact_3d(render::OrbitCamera& camera, ImVec2 size) {
@@ -278,22 +292,26 @@ void draw_selection_2d(Studio& s, ImDrawList* draw, const MapFrame& f) {
   }
 }
 
-void draw_selection_3d(Studio& s, ImDrawList* draw, ImVec2 origin, ImVec2 size) {
+void draw_selection_3d(Studio& s, ImDrawList* draw, const View3dFrame& f) {
   if (!s.doc.result.pavement) return;
   const Pavement& p = *s.doc.result.pavement;
   const render::OrbitCamera& camera = s.views.camera;
-  const glm::mat4 vp = camera.view_projection(size.x / size.y);
   for (const int id : selection(s.ui)) {
     const std::optional<std::size_t> i = find_element(p, id);
     if (!i) continue;
     const glm::dvec3 at = p.elements.position[*i];
-    const std::optional<ImVec2> c = project(vp, origin, size, at);
+    const std::optional<ImVec2> c = f.to_screen(at);
     if (!c) continue;
     const glm::dvec3 side = glm::normalize(glm::cross(glm::dvec3(camera.eye()) - at, p.elements.normal[*i]));
-    const std::optional<ImVec2> edge = project(vp, origin, size, at + 0.5 * p.elements.diameter[*i] * side);
+    const std::optional<ImVec2> edge = f.to_screen(at + 0.5 * p.elements.diameter[*i] * side);
     const float radius = edge ? std::hypot(edge->x - c->x, edge->y - c->y) : 6.0f;
     draw->AddCircle(*c, radius + 3, IM_COL32(0, 0, 0, 200), 48, 4);
     draw->AddCircle(*c, radius + 3, IM_COL32(90, 200, 250, 255), 48, 2);
+    if (s.ui.dragging_element_3d && id == s.ui.selected_element) {  // where it goes: under the cursor
+      const ImVec2 m = ImGui::GetIO().MousePos;
+      draw->AddCircleFilled(m, radius, IM_COL32(90, 200, 250, 110), 48);
+      draw->AddLine(*c, m, IM_COL32(90, 200, 250, 200), 1.5f);
+    }
   }
 }
 
@@ -400,13 +418,26 @@ void view(Studio& s, int which, ImVec2 size, bool large) {
                              ImGuiButtonFlags_MouseButtonMiddle);
   ImDrawList* draw = ImGui::GetWindowDrawList();
   if (which == 0) {
-    interact_3d(s.views.camera, size);
-    // A click without a drag selects in edit-stones mode; a drag still orbits.
-    if (s.ui.edit_elements && ImGui::IsItemDeactivated() &&
-        ImGui::GetIO().MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] < 9)
-      pick_3d(s, origin, size);
+    const View3dFrame frame(origin, size, s.views.camera);
+    const ImGuiIO& io = ImGui::GetIO();
+    // Edit stones: a press on a stone selects it and drags it along the surface; elsewhere a drag
+    // orbits and a click clears the selection.
+    if (s.ui.edit_elements && large && ImGui::IsItemActivated() && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+      if (const std::optional<std::size_t> i = element_under_3d(s, frame, io.MousePos)) {
+        select_element(s, s.doc.result.pavement->elements.id[*i]);
+        s.ui.dragging_element_3d = true;
+      }
+    }
+    if (!s.ui.dragging_element_3d) interact_3d(s.views.camera, size);
+    const bool moved = io.MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] >= 9;
+    if (s.ui.dragging_element_3d && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+      s.ui.dragging_element_3d = false;
+      if (moved) drop_3d(s, frame);
+    } else if (s.ui.edit_elements && ImGui::IsItemDeactivated() && !moved) {
+      pick_3d(s, frame);
+    }
     draw->PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
-    draw_selection_3d(s, draw, origin, size);
+    draw_selection_3d(s, draw, frame);
     draw->PopClipRect();
   } else {
     const MapFrame frame{origin, size, s.views.map_view};
@@ -463,7 +494,7 @@ void toolbar(Studio& s) {
   ImGui::Checkbox("legend", &s.views.show_legend);
   next_item("edit stones (E) (?)");
   ImGui::Checkbox("edit stones (E)", &s.ui.edit_elements);
-  help_marker("Click a stone to select it (either view); in the 2D map drag it to move it (it stays where you "
+  help_marker("Click a stone to select it (either view); drag it to move it, in 3D along the surface (it stays where you "
               "drop it, its neighbours make room), Ctrl+click to add one, Shift+drag a box to select many. Del "
               "deletes the selected stones, P pins or unpins them. Every edit is undoable and saved with the design.");
   next_item("swap views (V)");
@@ -501,6 +532,7 @@ void views_area(Studio& s, ImVec2 pos, ImVec2 size) {
   }
   const int large = s.views.large_3d ? 0 : 1;
   if (!s.ui.edit_elements || s.views.large_3d) s.ui.box_from.reset();  // a box is drawn in the large 2D view only
+  if (!s.ui.edit_elements || !s.views.large_3d) s.ui.dragging_element_3d = false;
   const ImVec2 corner = ImGui::GetCursorScreenPos();
   s.views.large_origin = {corner.x, corner.y};
   s.views.large_size = {area.x, area.y};
