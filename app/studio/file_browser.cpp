@@ -1,6 +1,7 @@
 #include "file_browser.h"
 
 #include "core/input_error.h"
+#include "mesh/read_mesh_file.h"
 
 #include <algorithm>
 #include <cctype>
@@ -22,7 +23,10 @@ bool wants_file(BrowsePurpose purpose) { return purpose != BrowsePurpose::Export
 std::vector<std::string> browse_extensions(BrowsePurpose purpose) {
   switch (purpose) {
     case BrowsePurpose::OpenSurface:
-    case BrowsePurpose::CustomShape: return {".obj", ".off", ".ply", ".stl"};  // read_mesh_file's formats
+    case BrowsePurpose::CustomShape: {
+      const auto formats = mesh_file_extensions();  // what read_mesh_file reads
+      return {formats.begin(), formats.end()};
+    }
     case BrowsePurpose::LoadDesign:
     case BrowsePurpose::SaveDesign: return {".json"};
     case BrowsePurpose::ExportFolder: return {};

@@ -93,6 +93,12 @@ bool parse_script_line(std::string_view line, int line_number, const std::string
   const auto need_argument = [&](const char* what) {
     if (rest.empty()) throw InputError(where + name + " needs " + what);
   };
+  // A command that takes one name from a list: kept as written, or refused naming the list.
+  const auto need_choice = [&](bool known, const char* choices) {
+    need_argument(choices);
+    if (!known) throw InputError(where + name + " '" + std::string(rest) + "': use " + choices);
+    out.text = std::string(rest);
+  };
   switch (*kind) {
     case Kind::Open:
     case Kind::Design:
@@ -104,18 +110,8 @@ bool parse_script_line(std::string_view line, int line_number, const std::string
       if (*kind == Kind::Screenshot && !out.text.ends_with(".png"))
         throw InputError(where + "screenshot writes PNG: give a path ending in .png");
       break;
-    case Kind::Pattern:
-      need_argument("tri, grid or hex");
-      if (!tessellation_from_name(rest))
-        throw InputError(where + "pattern '" + std::string(rest) + "': use tri, grid or hex");
-      out.text = std::string(rest);
-      break;
-    case Kind::CutAxis:
-      need_argument("auto, x, y or z");
-      if (!cut_axis_from_name(rest))
-        throw InputError(where + "cut_axis '" + std::string(rest) + "': use auto, x, y or z");
-      out.text = std::string(rest);
-      break;
+    case Kind::Pattern: need_choice(tessellation_from_name(rest).has_value(), "tri, grid or hex"); break;
+    case Kind::CutAxis: need_choice(cut_axis_from_name(rest).has_value(), "auto, x, y or z"); break;
     case Kind::Click:
     case Kind::MouseDrag: {
       const bool drag = *kind == Kind::MouseDrag;
@@ -149,25 +145,12 @@ bool parse_script_line(std::string_view line, int line_number, const std::string
         throw InputError(where + "mouse_drag3d '" + std::string(rest) + "': give an element id and a map point U V");
       break;
     }
-    case Kind::Key: {
-      need_argument("a key: E, P, I, V, L, C, R, N, Delete, Escape or Space");
-      const std::optional<int> key = key_from_name(rest);
-      if (!key) throw InputError(where + "key '" + std::string(rest) + "': use E, P, I, V, L, C, R, N, Delete, Escape or Space");
-      out.key = *key;
-      out.text = std::string(rest);
+    case Kind::Key:
+      need_choice(key_from_name(rest).has_value(), "E, P, I, V, L, C, R, N, Delete, Escape or Space");
+      out.key = *key_from_name(rest);
       break;
-    }
-    case Kind::Browse:
-      need_argument("what for: surface, design, save, export or shape");
-      if (!browse_purpose_from_name(rest))
-        throw InputError(where + "browse '" + std::string(rest) + "': use surface, design, save, export or shape");
-      out.text = std::string(rest);
-      break;
-    case Kind::Colour:
-      need_argument("ratio or type");
-      if (rest != "ratio" && rest != "type") throw InputError(where + "colour '" + std::string(rest) + "': use ratio or type");
-      out.text = std::string(rest);
-      break;
+    case Kind::Browse: need_choice(browse_purpose_from_name(rest).has_value(), "surface, design, save, export or shape"); break;
+    case Kind::Colour: need_choice(rest == "ratio" || rest == "type", "ratio or type"); break;
     case Kind::Panel: {
       need_argument("a panel name: file, pattern, elements, optimize, report or help");
       if (std::find(std::begin(kPanelNames), std::end(kPanelNames), rest) == std::end(kPanelNames))

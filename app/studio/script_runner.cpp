@@ -7,6 +7,7 @@
 #include "core/input_error.h"
 
 #include <cstdio>
+#include <initializer_list>
 #include <utility>
 
 namespace paver::studio {
@@ -27,51 +28,37 @@ bool needs_final_pavement(Kind kind) {
   }
 }
 
+// " 1.5 -2 ..." for the log, each number as %g.
+std::string numbers_text(std::initializer_list<double> numbers) {
+  std::string text;
+  for (const double x : numbers) {
+    char number[32];
+    std::snprintf(number, sizeof number, " %g", x);
+    text += number;
+  }
+  return text;
+}
+
 std::string describe(const ScriptCommand& c) {
   std::string text(command_name(c.kind));
-  if (c.kind == Kind::Spacing) {
-    char number[32];
-    std::snprintf(number, sizeof number, " %g", c.number);
-    return text + number;
-  }
-  if (c.kind == Kind::Wait) return text + " " + std::to_string(c.frames);
-  if (c.kind == Kind::Brush) {
-    char numbers[96];
-    std::snprintf(numbers, sizeof numbers, " %g %g %g %g", c.u, c.v, c.radius, c.strength);
-    return text + numbers;
-  }
-  if (c.kind == Kind::Drag || c.kind == Kind::Add) {
-    char numbers[64];
-    std::snprintf(numbers, sizeof numbers, " %g %g", c.u, c.v);
-    if (c.kind == Kind::Drag) text.append(1, ' ').append(std::to_string(c.id));  // (no " " + string: GCC 12 -Wrestrict)
-    return text + numbers;
-  }
-  if (c.kind == Kind::SelectBox) {
-    char numbers[96];
-    std::snprintf(numbers, sizeof numbers, " %g %g %g %g", c.u, c.v, c.u1, c.v1);
-    return text + numbers;
-  }
-  if (c.kind == Kind::Click || c.kind == Kind::MouseDrag) {
-    char numbers[96];
-    if (c.kind == Kind::Click)
-      std::snprintf(numbers, sizeof numbers, " %g %g", c.u, c.v);
-    else
-      std::snprintf(numbers, sizeof numbers, " %g %g %g %g", c.u, c.v, c.u1, c.v1);
-    return text + numbers + (c.shift ? " shift" : c.ctrl ? " ctrl" : "");
-  }
-  if (c.kind == Kind::MouseDrag3d) {
-    char numbers[64];
-    std::snprintf(numbers, sizeof numbers, " %g %g", c.u, c.v);
-    text.append(1, ' ').append(std::to_string(c.id));
-    return text + numbers;
+  const std::string modifier = c.shift ? " shift" : c.ctrl ? " ctrl" : "";
+  switch (c.kind) {
+    case Kind::Spacing: return text + numbers_text({c.number});
+    case Kind::Wait: return text + " " + std::to_string(c.frames);
+    case Kind::Brush: return text + numbers_text({c.u, c.v, c.radius, c.strength});
+    case Kind::Add: return text + numbers_text({c.u, c.v});
+    case Kind::SelectBox: return text + numbers_text({c.u, c.v, c.u1, c.v1});
+    case Kind::Click: return text + numbers_text({c.u, c.v}) + modifier;
+    case Kind::MouseDrag: return text + numbers_text({c.u, c.v, c.u1, c.v1}) + modifier;
+    case Kind::Drag:
+    case Kind::MouseDrag3d:
+      text.append(1, ' ').append(std::to_string(c.id));  // (no " " + string: GCC 12 -Wrestrict)
+      return text + numbers_text({c.u, c.v});
+    case Kind::Cut: return text + numbers_text({c.number}) + " " + c.text;
+    default: break;
   }
   if (c.id == ScriptCommand::kSelection) return text + " selection";
   if (c.id >= 0) return text + " " + std::to_string(c.id);
-  if (c.kind == Kind::Cut) {
-    char number[32];
-    std::snprintf(number, sizeof number, " %g ", c.number);
-    return text + number + c.text;
-  }
   if (!c.text.empty()) text += " " + c.text;
   if (!c.value.empty()) text += " " + c.value;
   return text;

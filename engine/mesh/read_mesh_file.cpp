@@ -7,6 +7,7 @@
 #include "mesh/reader_support.h"
 #include "mesh/stl_reader.h"
 
+#include <algorithm>
 #include <fstream>
 #include <system_error>
 
@@ -41,9 +42,14 @@ std::string read_bytes(const std::filesystem::path& path, const std::string& sou
 
 }  // namespace
 
+std::span<const std::string_view> mesh_file_extensions() {
+  static constexpr std::string_view kExtensions[] = {".obj", ".off", ".ply", ".stl"};
+  return kExtensions;
+}
+
 PolygonSoup read_mesh_file(const std::filesystem::path& path, const std::string& source) {
   const std::string extension = lowercase(path.extension().string());
-  if (extension != ".obj" && extension != ".off" && extension != ".ply" && extension != ".stl")
+  if (std::ranges::find(mesh_file_extensions(), extension) == mesh_file_extensions().end())
     fail(source, (extension.empty() ? std::string("has no file extension")
                                     : "unsupported file type '" + path.extension().string() + "'") +
                      "; Paver reads surfaces in OBJ, OFF, PLY (ASCII or binary) and STL (ASCII or binary) format "

@@ -9,12 +9,17 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <span>
 #include <string>
+#include <string_view>
 
 namespace paver {
 
 // Larger files are refused before they are read: no surface Paver can pave needs more.
 constexpr std::uintmax_t kMaxMeshFileBytes = std::uintmax_t(1) << 30;  // 1 GiB
+
+// The file types read_mesh_file reads, lower case with the dot (".obj", ".off", ".ply", ".stl").
+std::span<const std::string_view> mesh_file_extensions();
 
 // `source` names the file in error messages (InputError "<source>: ..."), e.g. its path.
 PolygonSoup read_mesh_file(const std::filesystem::path& path, const std::string& source);

@@ -92,6 +92,20 @@ protected:
     std::error_code ignored;
     fs::remove_all(dir_, ignored);
   }
+  // A scripted session in a 1280x800 window on the CPU solver.
+  Outcome run_script(const fs::path& script) const {
+    return studio("--script " + quote(script.string()) + " --backend cpu --width 1280 --height 800", dir_);
+  }
+  // The pendant paved by `paver run` with the studio's starting design as a lattice, into
+  // dir_/base: the element ids a session's edits name.
+  void pave_lattice_pendant() const {
+    const fs::path design = dir_ / "start.json", base = dir_ / "base";
+    std::ofstream(design) << R"({"version": 1, "pattern": {"topology": "lattice"}})";
+    const Outcome first = run_in_source(quote(PAVER_CLI) + " run assets/surfaces/pendant.obj --design " +
+                                            quote(design.string()) + " --backend cpu --out " + quote(base.string()),
+                                        dir_);
+    ASSERT_EQ(first.exit_code, 0) << describe(first);
+  }
   fs::path dir_;
 };
 
@@ -109,7 +123,7 @@ TEST_F(StudioSession, ScriptedEditExportsWhatTheCliWritesAndScreenshotShowsThePa
                            "export " << exported.string() << "\n"
                         << "screenshot " << shot.string() << "\n"
                         << "quit\n";
-  const Outcome r = studio("--script " + quote(script.string()) + " --backend cpu --width 1280 --height 800", dir_);
+  const Outcome r = run_script(script);
   ASSERT_EQ(r.exit_code, 0) << describe(r);
   EXPECT_NE(r.out.find("latency_ms "), std::string::npos) << describe(r);
 
@@ -191,17 +205,24 @@ std::map<long, Row> placements_by_id(const fs::path& csv) {
   return rows;
 }
 
+// The contact rule over all pairs, from the file: pairs closer than the sum of their radii.
+long contact_violations(const std::map<long, Row>& rows) {
+  long violations = 0;
+  for (auto a = rows.begin(); a != rows.end(); ++a)
+    for (auto b = std::next(a); b != rows.end(); ++b) {
+      const Row &p = a->second, &q = b->second;
+      if (std::hypot(p.x - q.x, p.y - q.y, p.z - q.z) < 0.5 * (p.diameter + q.diameter)) ++violations;
+    }
+  return violations;
+}
+
 // The issue's session: open the pendant, pin one element, drag it by 0.4 D, delete another,
 // re-optimize and export: the pinned one moved, the deleted one is gone, nothing else is lost,
 // no pair violates the contact rule, and `paver run` on the saved design writes the same file.
 TEST_F(StudioSession, PinDragAndDeleteSingleElementsAndTheCliReproducesThem) {
   // The studio's starting design, as a lattice: its ids from a CLI run first.
-  const fs::path design = dir_ / "start.json", base = dir_ / "base";
-  std::ofstream(design) << R"({"version": 1, "pattern": {"topology": "lattice"}})";
-  const Outcome first = run_in_source(quote(PAVER_CLI) + " run assets/surfaces/pendant.obj --design " +
-                                          quote(design.string()) + " --backend cpu --out " + quote(base.string()),
-                                      dir_);
-  ASSERT_EQ(first.exit_code, 0) << describe(first);
+  ASSERT_NO_FATAL_FAILURE(pave_lattice_pendant());
+  const fs::path base = dir_ / "base";
   const std::map<long, Row> before = placements_by_id(base / "placements.csv");
   ASSERT_GT(before.size(), 500u);
   const double D = nlohmann::json::parse(read_text(base / "design.json"))["pattern"]["spacing"].get<double>();
@@ -228,7 +249,7 @@ TEST_F(StudioSession, PinDragAndDeleteSingleElementsAndTheCliReproducesThem) {
                         << "redo\n"
                         << "optimize\n"
                         << "export " << edited.string() << "\n";
-  const Outcome r = studio("--script " + quote(script.string()) + " --backend cpu --width 1280 --height 800", dir_);
+  const Outcome r = run_script(script);
   ASSERT_EQ(r.exit_code, 0) << describe(r);
   const std::map<long, Row> after = placements_by_id(edited / "placements.csv");
   ASSERT_TRUE(after.count(pinned));
@@ -242,13 +263,7 @@ TEST_F(StudioSession, PinDragAndDeleteSingleElementsAndTheCliReproducesThem) {
   }
   EXPECT_EQ(after.size() + 1, before.size());
   // The contact rule over all pairs, from the file.
-  long violations = 0;
-  for (auto a = after.begin(); a != after.end(); ++a)
-    for (auto b = std::next(a); b != after.end(); ++b) {
-      const Row &p = a->second, &q = b->second;
-      if (std::hypot(p.x - q.x, p.y - q.y, p.z - q.z) < 0.5 * (p.diameter + q.diameter)) ++violations;
-    }
-  EXPECT_EQ(violations, 0);
+  EXPECT_EQ(contact_violations(after), 0);
   const nlohmann::json saved = nlohmann::json::parse(read_text(edited / "design.json"));
   EXPECT_EQ(saved["edits"]["moved"].size(), 1u);
   EXPECT_EQ(saved["edits"]["deleted"].size(), 1u);
@@ -310,7 +325,7 @@ TEST_F(StudioSession, AGuidanceDabIsSavedAndTheCliReproducesIt) {
                         << "brush 0 0 5 0.4\n"
                            "optimize\n"
                            "export " << painted.string() << "\n";
-  const Outcome r = studio("--script " + quote(script.string()) + " --backend cpu --width 1280 --height 800", dir_);
+  const Outcome r = run_script(script);
   ASSERT_EQ(r.exit_code, 0) << describe(r);
   const nlohmann::json saved = nlohmann::json::parse(read_text(painted / "design.json"));
   ASSERT_EQ(saved["guidance"].size(), 1u);
@@ -329,12 +344,8 @@ TEST_F(StudioSession, AGuidanceDabIsSavedAndTheCliReproducesIt) {
 // Add puts a vertex element at a map point (its id from 1e9 up), the stones around it make room,
 // and pin then unpin leaves the element free again; both are undoable and saved in the design.
 TEST_F(StudioSession, AddAndUnpinAreUndoableAndSaved) {
-  const fs::path design = dir_ / "start.json", base = dir_ / "base";
-  std::ofstream(design) << R"({"version": 1, "pattern": {"topology": "lattice"}})";
-  const Outcome first = run_in_source(quote(PAVER_CLI) + " run assets/surfaces/pendant.obj --design " +
-                                          quote(design.string()) + " --backend cpu --out " + quote(base.string()),
-                                      dir_);
-  ASSERT_EQ(first.exit_code, 0) << describe(first);
+  ASSERT_NO_FATAL_FAILURE(pave_lattice_pendant());
+  const fs::path base = dir_ / "base";
   const long some_id = placements_by_id(base / "placements.csv").rbegin()->first;
   const fs::path exported = dir_ / "added", script = dir_ / "add.txt";
   std::ofstream(script) << "open assets/surfaces/pendant.obj\n"
@@ -349,19 +360,13 @@ TEST_F(StudioSession, AddAndUnpinAreUndoableAndSaved) {
                         << "unpin " << some_id << "\n"
                            "optimize\n"
                            "export " << exported.string() << "\n";
-  const Outcome r = studio("--script " + quote(script.string()) + " --backend cpu --width 1280 --height 800", dir_);
+  const Outcome r = run_script(script);
   ASSERT_EQ(r.exit_code, 0) << describe(r);
   const std::map<long, Row> after = placements_by_id(exported / "placements.csv");
   ASSERT_TRUE(after.count(1000000000)) << "the added element is missing";
   EXPECT_NEAR(after.at(1000000000).u, 0.3, 1e-6);  // placements.csv keeps float precision
   EXPECT_NEAR(after.at(1000000000).v, 0.2, 1e-6);
-  long violations = 0;
-  for (auto a = after.begin(); a != after.end(); ++a)
-    for (auto b = std::next(a); b != after.end(); ++b) {
-      const Row &p = a->second, &q = b->second;
-      if (std::hypot(p.x - q.x, p.y - q.y, p.z - q.z) < 0.5 * (p.diameter + q.diameter)) ++violations;
-    }
-  EXPECT_EQ(violations, 0);
+  EXPECT_EQ(contact_violations(after), 0);
   const nlohmann::json saved = nlohmann::json::parse(read_text(exported / "design.json"));
   ASSERT_EQ(saved["edits"]["added"].size(), 1u);
   EXPECT_EQ(saved["edits"]["added"][0]["id"].get<long>(), 1000000000);
@@ -389,7 +394,7 @@ TEST_F(StudioSession, ABoxSelectionIsDeletedInOneStep) {
                         << "redo\n"
                            "optimize\n"
                            "export " << after_dir.string() << "\n";
-  const Outcome r = studio("--script " + quote(script.string()) + " --backend cpu --width 1280 --height 800", dir_);
+  const Outcome r = run_script(script);
   ASSERT_EQ(r.exit_code, 0) << describe(r);
   const std::map<long, Row> before = placements_by_id(before_dir / "placements.csv");
   const std::map<long, Row> after = placements_by_id(after_dir / "placements.csv");
@@ -410,12 +415,8 @@ TEST_F(StudioSession, ABoxSelectionIsDeletedInOneStep) {
 // on editing, a click selects, a drag moves, P pins, Del deletes, Ctrl+click adds, Shift+drag
 // selects a box; the exported pavement shows each.
 TEST_F(StudioSession, TheMouseAndKeysEditStones) {
-  const fs::path design = dir_ / "start.json", base = dir_ / "base";
-  std::ofstream(design) << R"({"version": 1, "pattern": {"topology": "lattice"}})";
-  const Outcome first = run_in_source(quote(PAVER_CLI) + " run assets/surfaces/pendant.obj --design " +
-                                          quote(design.string()) + " --backend cpu --out " + quote(base.string()),
-                                      dir_);
-  ASSERT_EQ(first.exit_code, 0) << describe(first);
+  ASSERT_NO_FATAL_FAILURE(pave_lattice_pendant());
+  const fs::path base = dir_ / "base";
   const std::map<long, Row> before = placements_by_id(base / "placements.csv");
   const double D = nlohmann::json::parse(read_text(base / "design.json"))["pattern"]["spacing"].get<double>();
   // The vertex element nearest the map's middle is dragged; one three spacings left of it deleted.
@@ -455,7 +456,7 @@ TEST_F(StudioSession, TheMouseAndKeysEditStones) {
                         << "click " << add_u << " " << add_v << " ctrl\n"
                         << "optimize\n"
                         << "export " << exported.string() << "\n";
-  const Outcome r = studio("--script " + quote(script.string()) + " --backend cpu --width 1280 --height 800", dir_);
+  const Outcome r = run_script(script);
   ASSERT_EQ(r.exit_code, 0) << describe(r);
   const std::map<long, Row> after = placements_by_id(exported / "placements.csv");
   // A pixel of the 2D view is about D / 10 on the pendant (ImGui floors the mouse to whole pixels).
@@ -472,13 +473,7 @@ TEST_F(StudioSession, TheMouseAndKeysEditStones) {
   EXPECT_TRUE(saved["edits"]["moved"][1]["pinned"].get<bool>());
   EXPECT_EQ(saved["edits"]["deleted"].size(), 1u);
   EXPECT_EQ(saved["edits"]["added"].size(), 1u);
-  long violations = 0;
-  for (auto a = after.begin(); a != after.end(); ++a)
-    for (auto b = std::next(a); b != after.end(); ++b) {
-      const Row &p = a->second, &q = b->second;
-      if (std::hypot(p.x - q.x, p.y - q.y, p.z - q.z) < 0.5 * (p.diameter + q.diameter)) ++violations;
-    }
-  EXPECT_EQ(violations, 0);
+  EXPECT_EQ(contact_violations(after), 0);
 
   // In the 3D view: the stone pressed on is dragged along the surface and dropped where the
   // cursor's ray meets it (the drag ends at the pixel of the surface point at the target).
@@ -491,7 +486,7 @@ TEST_F(StudioSession, TheMouseAndKeysEditStones) {
                              << "mouse_drag3d " << dragged << " " << to_u << " " << to_v << "\n"
                              << "optimize\n"
                              << "export " << dropped_dir.string() << "\n";
-  const Outcome drop = studio("--script " + quote(drop_script.string()) + " --backend cpu --width 1280 --height 800", dir_);
+  const Outcome drop = run_script(drop_script);
   ASSERT_EQ(drop.exit_code, 0) << describe(drop);
   const std::map<long, Row> dropped = placements_by_id(dropped_dir / "placements.csv");
   ASSERT_TRUE(dropped.count(dragged));
@@ -514,7 +509,7 @@ TEST_F(StudioSession, TheMouseAndKeysEditStones) {
                             << "key Delete\n"
                             << "optimize\n"
                             << "export " << boxed_dir.string() << "\n";
-  const Outcome box = studio("--script " + quote(box_script.string()) + " --backend cpu --width 1280 --height 800", dir_);
+  const Outcome box = run_script(box_script);
   ASSERT_EQ(box.exit_code, 0) << describe(box);
   std::size_t inside = 0;
   for (const auto& [id, row] : before) inside += row.u >= -1.5 && row.u <= 1.5 && row.v >= -1.5 && row.v <= 1.5;
@@ -573,7 +568,7 @@ TEST_F(StudioSession, AClosedSurfaceCutAcrossAnAxisExportsWhatTheCliWrites) {
                            "optimize\n"
                            "export " << exported.string() << "\n"
                         << "quit\n";
-  const Outcome r = studio("--script " + quote(script.string()) + " --backend cpu --width 1280 --height 800", dir_);
+  const Outcome r = run_script(script);
   ASSERT_EQ(r.exit_code, 0) << describe(r);
   ASSERT_TRUE(fs::is_regular_file(exported / "placements.csv")) << describe(r);
   const fs::path cli_out = dir_ / "cli";
@@ -602,7 +597,7 @@ TEST_F(StudioSession, CutMetalWritesWhatTheCliSubtractWrites) {
                            "export " << exported.string() << "\n"
                         << "cut 1 " << cut.string() << "\n"
                         << "quit\n";
-  const Outcome r = studio("--script " + quote(script.string()) + " --backend cpu --width 1280 --height 800", dir_);
+  const Outcome r = run_script(script);
   ASSERT_EQ(r.exit_code, 0) << describe(r);
   ASSERT_TRUE(fs::is_regular_file(cut / "cut.stl")) << describe(r);
   ASSERT_TRUE(fs::is_regular_file(cut / "cut.3mf"));

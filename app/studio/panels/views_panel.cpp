@@ -69,18 +69,14 @@ void render_if_changed(Studio& s, int view, int width, int height) {
 std::optional<std::size_t> element_under_3d(const Studio& s, const View3dFrame& f, ImVec2 mouse) {
   if (!s.doc.result.pavement) return std::nullopt;
   const Elements& e = s.doc.result.pavement->elements;
-  const render::OrbitCamera& camera = s.views.camera;
   std::optional<std::size_t> best;
   double nearest = 1e300;
   for (std::size_t i = 0; i < e.size(); ++i) {
     const std::optional<ImVec2> centre = f.to_screen(e.position[i]);
     if (!centre) continue;
-    // The footprint's projected radius, from a point half a diameter across the view.
-    const glm::dvec3 side = glm::normalize(glm::cross(glm::dvec3(camera.eye()) - e.position[i], e.normal[i]));
-    const std::optional<ImVec2> edge = f.to_screen(e.position[i] + 0.5 * e.diameter[i] * side);
-    const float radius = edge ? std::hypot(edge->x - centre->x, edge->y - centre->y) : 4.0f;
+    const float radius = f.footprint_radius(e.position[i], e.normal[i], e.diameter[i], *centre);
     const float off = std::hypot(mouse.x - centre->x, mouse.y - centre->y);
-    const double depth = glm::length(glm::dvec3(camera.eye()) - e.position[i]);
+    const double depth = glm::length(f.eye - e.position[i]);
     if (off <= std::max(radius, 4.0f) && depth < nearest) nearest = depth, best = i;
   }
   return best;
@@ -264,8 +260,17 @@ void interact_elements_2d(Studio& s, const MapFrame& f) {
   }
 }
 
-// The selected elements: a ring around each, while the clicked one is dragged its footprint at the
-// cursor, and the box being drawn.
+// A selected element: a ring around its footprint and, while it is dragged, the footprint where
+// it would land and a line to it. The same in both views.
+void draw_selected(ImDrawList* draw, ImVec2 centre, float radius, std::optional<ImVec2> dragged_to) {
+  draw->AddCircle(centre, radius + 3, IM_COL32(0, 0, 0, 200), 48, 4);
+  draw->AddCircle(centre, radius + 3, IM_COL32(90, 200, 250, 255), 48, 2);
+  if (!dragged_to) return;
+  draw->AddCircleFilled(*dragged_to, radius, IM_COL32(90, 200, 250, 110), 48);
+  draw->AddLine(centre, *dragged_to, IM_COL32(90, 200, 250, 200), 1.5f);
+}
+
+// The selected elements (each as draw_selected shows it) and the box being drawn.
 void draw_selection_2d(Studio& s, ImDrawList* draw, const MapFrame& f) {
   if (s.ui.box_from) {
     const ImVec2 a = f.to_screen(*s.ui.box_from), b = ImGui::GetIO().MousePos;
@@ -281,37 +286,27 @@ void draw_selection_2d(Studio& s, ImDrawList* draw, const MapFrame& f) {
     if (!i) continue;
     const float radius = float(0.5 * p.elements.diameter[*i]) * pixels_per_unit;
     const ImVec2 c = f.to_screen(p.elements.uv[*i]);
-    draw->AddCircle(c, radius + 3, IM_COL32(0, 0, 0, 200), 48, 4);
-    draw->AddCircle(c, radius + 3, IM_COL32(90, 200, 250, 255), 48, 2);
+    std::optional<ImVec2> to;  // moved by the drag so far: the offset of the press, not the cursor itself
     if (s.ui.dragging_element && id == s.ui.selected_element) {
-      const ImVec2 m = ImGui::GetIO().MousePos;
-      const ImVec2 at(c.x + m.x - f.to_screen(s.ui.drag_from).x, c.y + m.y - f.to_screen(s.ui.drag_from).y);
-      draw->AddCircleFilled(at, radius, IM_COL32(90, 200, 250, 110), 48);
-      draw->AddLine(c, at, IM_COL32(90, 200, 250, 200), 1.5f);
+      const ImVec2 m = ImGui::GetIO().MousePos, from = f.to_screen(s.ui.drag_from);
+      to = ImVec2(c.x + m.x - from.x, c.y + m.y - from.y);
     }
+    draw_selected(draw, c, radius, to);
   }
 }
 
 void draw_selection_3d(Studio& s, ImDrawList* draw, const View3dFrame& f) {
   if (!s.doc.result.pavement) return;
   const Pavement& p = *s.doc.result.pavement;
-  const render::OrbitCamera& camera = s.views.camera;
   for (const int id : selection(s.ui)) {
     const std::optional<std::size_t> i = find_element(p, id);
     if (!i) continue;
-    const glm::dvec3 at = p.elements.position[*i];
-    const std::optional<ImVec2> c = f.to_screen(at);
+    const std::optional<ImVec2> c = f.to_screen(p.elements.position[*i]);
     if (!c) continue;
-    const glm::dvec3 side = glm::normalize(glm::cross(glm::dvec3(camera.eye()) - at, p.elements.normal[*i]));
-    const std::optional<ImVec2> edge = f.to_screen(at + 0.5 * p.elements.diameter[*i] * side);
-    const float radius = edge ? std::hypot(edge->x - c->x, edge->y - c->y) : 6.0f;
-    draw->AddCircle(*c, radius + 3, IM_COL32(0, 0, 0, 200), 48, 4);
-    draw->AddCircle(*c, radius + 3, IM_COL32(90, 200, 250, 255), 48, 2);
-    if (s.ui.dragging_element_3d && id == s.ui.selected_element) {  // where it goes: under the cursor
-      const ImVec2 m = ImGui::GetIO().MousePos;
-      draw->AddCircleFilled(m, radius, IM_COL32(90, 200, 250, 110), 48);
-      draw->AddLine(*c, m, IM_COL32(90, 200, 250, 200), 1.5f);
-    }
+    const float radius = f.footprint_radius(p.elements.position[*i], p.elements.normal[*i], p.elements.diameter[*i], *c);
+    // Where it goes: under the cursor, where its ray meets the surface.
+    const bool dragged = s.ui.dragging_element_3d && id == s.ui.selected_element;
+    draw_selected(draw, *c, radius, dragged ? std::optional<ImVec2>(ImGui::GetIO().MousePos) : std::nullopt);
   }
 }
 
