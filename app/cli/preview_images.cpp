@@ -67,6 +67,7 @@ void PreviewImages::write(const std::filesystem::path& folder, const SurfaceMap&
     r.set_elements(pavement.elements, defect_marked_colours(pavement, stone_colours), custom);
   r.render_2d(size.width, size.height, render::frame_map(points_map, double(size.width) / double(size.height)), style);
   render::Image param = r.read_back(1);
+  render::draw_ratio_legend(param);  // the stones are coloured by their ratio here too
   if (marks_defects) render::draw_defect_legend(param, kFewer, kMore);
   render::write_png(folder / "param.png", param);
 }

@@ -121,7 +121,8 @@ void draw_type_legend(Image& image) {
 
 void draw_defect_legend(Image& image, std::array<std::uint8_t, 3> fewer, std::array<std::uint8_t, 3> more) {
   const int scale = image.height >= 600 ? 2 : 1;
-  const int x0 = 16 * scale, y0 = image.height - 64 * scale;
+  // Above the ratio legend (draw_ratio_legend), which the same picture carries for the other stones.
+  const int x0 = 16 * scale, y0 = image.height - 140 * scale;
   for (int y = y0 - 8 * scale; y < y0 + 48 * scale; ++y)
     for (int x = x0 - 8 * scale; x < x0 + 110 * scale; ++x) put(image, x, y, {28, 30, 34});
   const std::array<std::uint8_t, 3> white{235, 235, 235};

@@ -129,6 +129,7 @@ void draw_type_legend(Image& image);
 
 // The legend of the point-defect markers (param.png of an adaptive pattern): the colours of
 // particles or faces with fewer than 6 neighbours or sides, and with more.
+// It sits above the ratio legend, which the same picture carries.
 void draw_defect_legend(Image& image, std::array<std::uint8_t, 3> fewer, std::array<std::uint8_t, 3> more);
 
 }  // namespace paver::render
