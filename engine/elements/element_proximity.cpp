@@ -5,6 +5,7 @@
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
@@ -40,11 +41,17 @@ double largest_diameter(const Elements& e) {
 
 namespace {
 
-// Calls found(collision) for every colliding pair, each once (i < j), in no particular order.
+// The proximity searches split the elements into chunks of consecutive indices searched in
+// parallel, each chunk's results kept apart and joined in chunk order: the same result on any
+// number of threads.
+constexpr int kChunk = 4096;
+
+int chunk_count(int n) { return (n + kChunk - 1) / kChunk; }
+
+// Calls found(collision) for every colliding pair (i < j) with i in [begin, end), in no particular order.
 template <class Found>
-void for_each_collision(const Elements& elements, double gap, Found&& found) {
-  const ElementHash hash = hash_over(elements, bounding_box(elements), largest_diameter(elements) + gap);
-  for (int i = 0; i < int(elements.size()); ++i) {
+void collisions_from(const ElementHash& hash, const Elements& elements, double gap, int begin, int end, Found&& found) {
+  for (int i = begin; i < end; ++i) {
     hash.for_each_near(elements.position[i], [&](int j) {
       if (j <= i) return;
       const double need = contact_distance(elements.diameter[i], elements.diameter[j], gap);
@@ -55,23 +62,46 @@ void for_each_collision(const Elements& elements, double gap, Found&& found) {
   }
 }
 
+// Any violating pair lies in the same or adjacent cells of this hash.
+ElementHash collision_hash(const Elements& elements, double gap) {
+  return hash_over(elements, bounding_box(elements), largest_diameter(elements) + gap);
+}
+
 }  // namespace
 
 CollisionTally count_collisions(const Elements& elements, double gap) {
-  CollisionTally tally;
-  for_each_collision(elements, gap, [&](const Collision& c) {
-    ++tally.pairs;
-    tally.worst_overlap = std::max(tally.worst_overlap, c.overlap);
+  const ElementHash hash = collision_hash(elements, gap);
+  const int n = int(elements.size());
+  std::vector<CollisionTally> tallies(std::size_t(chunk_count(n)));
+  tbb::parallel_for(0, chunk_count(n), [&](int chunk) {
+    CollisionTally& tally = tallies[std::size_t(chunk)];
+    collisions_from(hash, elements, gap, chunk * kChunk, std::min(n, (chunk + 1) * kChunk), [&](const Collision& c) {
+      ++tally.pairs;
+      tally.worst_overlap = std::max(tally.worst_overlap, c.overlap);
+    });
   });
-  return tally;
+  CollisionTally total;
+  for (const CollisionTally& t : tallies)
+    total.pairs += t.pairs, total.worst_overlap = std::max(total.worst_overlap, t.worst_overlap);
+  return total;
 }
 
 std::vector<Collision> find_collisions(const Elements& elements, double gap) {
-  std::vector<Collision> out;
-  for_each_collision(elements, gap, [&](const Collision& c) { out.push_back(c); });
-  std::sort(out.begin(), out.end(), [](const Collision& a, const Collision& b) {
-    return a.i != b.i ? a.i < b.i : a.j < b.j;
+  const ElementHash hash = collision_hash(elements, gap);
+  const int n = int(elements.size());
+  std::vector<std::vector<Collision>> parts(std::size_t(chunk_count(n)));
+  tbb::parallel_for(0, chunk_count(n), [&](int chunk) {
+    std::vector<Collision>& part = parts[std::size_t(chunk)];
+    collisions_from(hash, elements, gap, chunk * kChunk, std::min(n, (chunk + 1) * kChunk),
+                    [&](const Collision& c) { part.push_back(c); });
+    std::sort(part.begin(), part.end(),
+              [](const Collision& a, const Collision& b) { return a.i != b.i ? a.i < b.i : a.j < b.j; });
   });
+  std::size_t total = 0;
+  for (const auto& part : parts) total += part.size();
+  std::vector<Collision> out;
+  out.reserve(total);
+  for (const auto& part : parts) out.insert(out.end(), part.begin(), part.end());
   return out;
 }
 
@@ -96,15 +126,20 @@ std::vector<double> smallest_over_others(const Elements& elements, Score score, 
   for (double width = 2 * largest_diameter(elements); !pending.empty(); width *= 4) {
     const ElementHash hash = hash_over(elements, box, width);
     const bool spans_all = hash.cell() >= extent;
-    std::vector<int> unresolved;
-    for (int i : pending) {
-      hash.for_each_near(elements.position[i], [&](int j) {
-        if (j == i) return;
-        best[i] = std::min(best[i], score(i, j, glm::length(elements.position[i] - elements.position[j])));
-      });
-      if (!spans_all && !(best[i] <= floor(i, hash.cell()))) unresolved.push_back(i);
-    }
-    pending.swap(unresolved);
+    const int m = int(pending.size());
+    std::vector<std::vector<int>> unresolved(std::size_t(chunk_count(m)));
+    tbb::parallel_for(0, chunk_count(m), [&](int chunk) {
+      for (int k = chunk * kChunk; k < std::min(m, (chunk + 1) * kChunk); ++k) {
+        const int i = pending[std::size_t(k)];
+        hash.for_each_near(elements.position[i], [&](int j) {
+          if (j == i) return;
+          best[i] = std::min(best[i], score(i, j, glm::length(elements.position[i] - elements.position[j])));
+        });
+        if (!spans_all && !(best[i] <= floor(i, hash.cell()))) unresolved[std::size_t(chunk)].push_back(i);
+      }
+    });
+    pending.clear();
+    for (const auto& part : unresolved) pending.insert(pending.end(), part.begin(), part.end());
   }
   return best;
 }
@@ -146,15 +181,17 @@ std::vector<int> vertex_valences(const Elements& elements, double shell) {
   std::nth_element(finite.begin(), finite.begin() + finite.size() / 2, finite.end());
   const double reach = 1.5 * finite[finite.size() / 2];
   const ElementHash hash = hash_over(elements, bounding_box(elements), shell * reach);
-  for (int i = 0; i < n; ++i) {
-    if (!is_vertex(i)) continue;
-    valence[i] = 0;
-    if (!(nearest[i] <= reach)) continue;
-    hash.for_each_near(elements.position[i], [&](int j) {
-      if (j != i && is_vertex(j) && glm::length(elements.position[i] - elements.position[j]) <= shell * nearest[i])
-        ++valence[i];
-    });
-  }
+  tbb::parallel_for(0, chunk_count(n), [&](int chunk) {
+    for (int i = chunk * kChunk; i < std::min(n, (chunk + 1) * kChunk); ++i) {
+      if (!is_vertex(i)) continue;
+      valence[i] = 0;
+      if (!(nearest[i] <= reach)) continue;
+      hash.for_each_near(elements.position[i], [&](int j) {
+        if (j != i && is_vertex(j) && glm::length(elements.position[i] - elements.position[j]) <= shell * nearest[i])
+          ++valence[i];
+      });
+    }
+  });
   return valence;
 }
 

@@ -2,13 +2,15 @@
 // which use a spatial hash, give exactly what a plain all-pairs loop written here gives, on random
 // element sets with mixed diameters, pairs placed exactly at the collision threshold and elements
 // sharing a centre, at gap 0 and with a gap; and the rule itself is exact and strict
-// (d < r_i + r_j + gap, no tolerance). nearest_clearances likewise against all pairs.
+// (d < r_i + r_j + gap, no tolerance). nearest_clearances likewise against all pairs; a set of
+// several parallel chunks (count_collisions too) as well.
 #include "elements/element_proximity.h"
 
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -125,6 +127,24 @@ TEST(ElementProximityCollisions, MatchAllPairsOnRandomMixedSets) {
       expect_same_per_element(nearest_clearances(e), all_pairs_clearances(e), "nearest_clearances");
     }
   }
+}
+
+TEST(ElementProximityCollisions, ASetSearchedInManyParallelChunksGivesTheAllPairsResult) {
+  // The searches split the elements into chunks of 4,096 searched in parallel: more than two
+  // chunks here, so pairs across chunks, the join of their results and its order all count.
+  std::mt19937 rng(20261126);
+  const double gap = 0.1;
+  const Elements e = random_elements(rng, 10000, 40, {3, -2, 1}, gap);
+  const std::vector<Collision> want = all_pairs_collisions(e, gap);
+  ASSERT_GT(want.size(), 1000u) << "the set should have collisions in every chunk";
+  expect_same_collisions(find_collisions(e, gap), want);
+  const CollisionTally tally = count_collisions(e, gap);
+  EXPECT_EQ(tally.pairs, long(want.size()));
+  double worst = 0;
+  for (const Collision& c : want) worst = std::max(worst, c.overlap);
+  EXPECT_EQ(tally.worst_overlap, worst);
+  expect_same_per_element(nearest_clearances(e), all_pairs_clearances(e), "nearest_clearances");
+  expect_same_ratios(nearest_neighbor_ratios(e), all_pairs_ratios(e));
 }
 
 TEST(ElementProximityCollisions, TheRuleIsExactWithNoTolerance) {
