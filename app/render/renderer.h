@@ -80,6 +80,11 @@ std::vector<TypeLegendEntry> element_type_legend();
 // Per element colours for a mode: nearest-neighbour ratio scale, or V blue / E orange.
 std::vector<std::array<std::uint8_t, 3>> element_colours(const Elements& elements, ColourMode mode, double gap = 0);
 
+// How many elements the 3D view draws in each shape detail (ShapeDetail): Full up to
+// kCoarseShapesAbove, Coarse up to kMinimalShapesAbove, Minimal beyond.
+inline constexpr std::size_t kCoarseShapesAbove = 4000, kMinimalShapesAbove = 20000;
+ShapeDetail shape_detail_for(std::size_t element_count);
+
 struct Image {
   int width = 0, height = 0;
   std::vector<std::uint8_t> rgba;  // row-major, top row first

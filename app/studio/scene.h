@@ -20,6 +20,7 @@ struct Scene {
   const SurfaceMap* map_2d = nullptr;     // the map drawn (a band's seamless map when its points are on it)
   const Pavement* pavement = nullptr;     // the final pavement last uploaded; null while live
   std::uint64_t live_sequence = 0;        // the live snapshot last uploaded
+  bool lattice_uploaded = false;          // the pattern's lines match the elements uploaded
   std::chrono::steady_clock::time_point live_uploaded{};  // when: live snapshots are shown at most kLiveInterval apart
   render::ColourMode colour_mode = render::ColourMode::NeighbourRatio;
   std::uint64_t generation = 0;

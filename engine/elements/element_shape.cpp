@@ -83,6 +83,16 @@ ShapeMesh make_prism(int segments, double height) {
   return revolve({{0, h}, {kRadius, h}, {kRadius, -h}, {0, -h}}, segments);
 }
 
+// The brilliant's outline for drawing tens of thousands: its table, its crown down to the girdle
+// and its pavilion down to the culet, over 8 sides, at the brilliant's own heights.
+ShapeMesh make_gem_outline() {
+  return revolve({{0, kGemGirdleHalf + kGemCrownHeight},
+                  {kGemTableRadius, kGemGirdleHalf + kGemCrownHeight},
+                  {kRadius, 0},
+                  {0, -kGemGirdleHalf - kGemPavilionDepth}},
+                 8);
+}
+
 // Round brilliant with 8-fold symmetry: octagonal table, 8 star, 8 bezel (kite) and 16 upper
 // girdle facets on the crown; a 16-sided girdle band; 16 lower girdle and 8 main facets on the
 // pavilion down to a pointed culet. Proportions are those of a typical brilliant in units of the
@@ -170,12 +180,12 @@ bool has_repeated_corner(const std::vector<int>& polygon) {
 }  // namespace
 
 ShapeMesh make_builtin_shape(ShapeKind kind, ShapeDetail detail) {
-  const bool coarse = detail == ShapeDetail::Coarse;
+  const bool minimal = detail == ShapeDetail::Minimal, coarse = detail == ShapeDetail::Coarse;
   switch (kind) {
-    case ShapeKind::Sphere: return coarse ? make_sphere(8, 6) : make_sphere(16, 10);
-    case ShapeKind::Gem: return make_gem();
+    case ShapeKind::Sphere: return minimal ? make_sphere(6, 2) : coarse ? make_sphere(8, 6) : make_sphere(16, 10);
+    case ShapeKind::Gem: return minimal ? make_gem_outline() : make_gem();
     case ShapeKind::HexPrism: return make_prism(6, 0.5);
-    case ShapeKind::Disc: return make_prism(coarse ? 12 : 32, 0.2);
+    case ShapeKind::Disc: return make_prism(minimal ? 6 : coarse ? 12 : 32, 0.2);
     case ShapeKind::Custom: break;
   }
   throw InputError("the custom element shape is not built in; load it from a file with "

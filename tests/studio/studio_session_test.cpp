@@ -184,6 +184,37 @@ TEST_F(StudioSession, ScriptedEditExportsWhatTheCliWritesAndScreenshotShowsThePa
   EXPECT_NE(read_text(dir_ / "config/paver/recent.txt").find("dome.obj"), std::string::npos);
 }
 
+// Pixels of the pattern's blue lines (30, 90, 200) and their shades in a 1280x800 screenshot's
+// views (right of the side panels, below the toolbar, whose checkboxes are blue too).
+long lattice_blue_pixels(const fs::path& shot) {
+  int width = 0, height = 0, channels = 0;
+  unsigned char* pixels = stbi_load(shot.string().c_str(), &width, &height, &channels, 3);
+  if (!pixels) return -1;
+  long blue = 0;
+  for (int y = 60; y < height - 40; ++y)
+    for (int x = 440; x < width; ++x) {
+      const unsigned char* p = pixels + 3 * (long(y) * width + x);
+      if (p[2] > p[0] + 90 && p[2] > p[1] + 50) ++blue;
+    }
+  stbi_image_free(pixels);
+  return blue;
+}
+
+TEST_F(StudioSession, ThePatternsLinesAppearWhenShownAfterTheRun) {
+  // A run uploads the pattern's lines only while they are shown (they are most of a live
+  // upload's time); showing them afterwards (L) must draw the run's pattern all the same.
+  const fs::path hidden = dir_ / "hidden.png", shown = dir_ / "shown.png", script = dir_ / "session.txt";
+  // In the 2D map, large, where the lines show between the disks.
+  std::ofstream(script) << "open assets/surfaces/pendant.obj\noptimize\nview2d\nwait 2\n"
+                        << "screenshot " << hidden.string() << "\nkey L\nwait 2\n"
+                        << "screenshot " << shown.string() << "\nquit\n";
+  const Outcome r = run_script(script);
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const long before = lattice_blue_pixels(hidden), after = lattice_blue_pixels(shown);
+  ASSERT_GE(before, 0) << "cannot read " << hidden;
+  EXPECT_GT(after, before + 250) << "blue line pixels: " << before << " hidden, " << after << " shown";
+}
+
 // placements.csv as id -> (u, v, x, y, z, diameter).
 struct Row {
   double u, v, x, y, z, diameter;

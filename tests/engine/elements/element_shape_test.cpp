@@ -286,18 +286,40 @@ TEST(ElementShape, BadCustomShapeIsRefusedWithTheSurfaceLoadersMessage) {
 namespace paver {
 namespace {
 
+// Unit wide along x and closed (every directed edge has its reverse).
+void expect_unit_wide_and_closed(const ShapeMesh& shape, const std::string& what) {
+  float lo = 1e9f, hi = -1e9f;
+  for (const auto& p : shape.positions) lo = std::min(lo, p.x), hi = std::max(hi, p.x);
+  EXPECT_NEAR(hi - lo, 1.0f, 1e-6f) << what;
+  std::set<std::pair<int, int>> edges;
+  for (const auto& t : shape.triangles) edges.insert({t.x, t.y}), edges.insert({t.y, t.z}), edges.insert({t.z, t.x});
+  for (const auto& [a, b] : edges) EXPECT_TRUE(edges.count({b, a})) << what;
+}
+
 TEST(ElementShape, CoarseShapesAreLighterButStillUnitWideAndClosed) {
   for (ShapeKind kind : {ShapeKind::Sphere, ShapeKind::Disc}) {
     const ShapeMesh full = make_builtin_shape(kind), coarse = make_builtin_shape(kind, ShapeDetail::Coarse);
     EXPECT_LT(coarse.triangles.size() * 2, full.triangles.size()) << shape_name(kind);
-    float lo = 1e9f, hi = -1e9f;
-    for (const auto& p : coarse.positions) lo = std::min(lo, p.x), hi = std::max(hi, p.x);
-    EXPECT_NEAR(hi - lo, 1.0f, 1e-6f) << shape_name(kind);
-    // Closed: every directed edge has its reverse.
-    std::set<std::pair<int, int>> edges;
-    for (const auto& t : coarse.triangles) edges.insert({t.x, t.y}), edges.insert({t.y, t.z}), edges.insert({t.z, t.x});
-    for (const auto& [a, b] : edges) EXPECT_TRUE(edges.count({b, a})) << shape_name(kind);
+    expect_unit_wide_and_closed(coarse, std::string(shape_name(kind)));
   }
+}
+
+TEST(ElementShape, MinimalShapesAreLighterStillButUnitWideAndClosed) {
+  // What the 3D view draws for tens of thousands of elements, at most half of Coarse: a sphere of
+  // 12 triangles, a gem of 32.
+  for (ShapeKind kind : {ShapeKind::Sphere, ShapeKind::Gem, ShapeKind::Disc}) {
+    const ShapeMesh coarse = make_builtin_shape(kind, ShapeDetail::Coarse);
+    const ShapeMesh minimal = make_builtin_shape(kind, ShapeDetail::Minimal);
+    EXPECT_LE(minimal.triangles.size() * 2, coarse.triangles.size()) << shape_name(kind);
+    expect_unit_wide_and_closed(minimal, std::string(shape_name(kind)) + " minimal");
+  }
+  EXPECT_EQ(make_builtin_shape(ShapeKind::Sphere, ShapeDetail::Minimal).triangles.size(), 12u);
+  // The gem keeps its flat table on top (+Z) and its culet below, at the brilliant's heights.
+  const ShapeMesh gem = make_builtin_shape(ShapeKind::Gem, ShapeDetail::Minimal);
+  float top = -1e9f, bottom = 1e9f;
+  for (const auto& p : gem.positions) top = std::max(top, p.z), bottom = std::min(bottom, p.z);
+  EXPECT_NEAR(top, kGemGirdleHalf + kGemCrownHeight, 1e-6);
+  EXPECT_NEAR(top - bottom, kGemDepth, 1e-6);
 }
 
 }  // namespace
@@ -310,7 +332,7 @@ namespace {
 // shape's outline along +Z must fit the unit disc, and fill it (else the rule would be loose).
 TEST(ElementShape, BuiltInFootprintsFitTheUnitDisc) {
   for (ShapeKind kind : {ShapeKind::Sphere, ShapeKind::Gem, ShapeKind::HexPrism, ShapeKind::Disc})
-    for (ShapeDetail detail : {ShapeDetail::Full, ShapeDetail::Coarse}) {
+    for (ShapeDetail detail : {ShapeDetail::Full, ShapeDetail::Coarse, ShapeDetail::Minimal}) {
       const ShapeMesh shape = make_builtin_shape(kind, detail);
       float reach = 0;
       for (const glm::vec3& p : shape.positions) reach = std::max(reach, std::sqrt(p.x * p.x + p.y * p.y));
