@@ -36,9 +36,7 @@ BackendChoice choose_backend(const std::string& backend, const std::string& devi
   }
   return {gpu::vulkan_solver_factory(session.value()), "vulkan", context.value()->device().name};
 #else
-  if (backend == "vulkan" || !device.empty())
-    throw InputError((backend == "vulkan" ? std::string("--backend vulkan") : "--device " + device) +
-                     ": this paver was built without Vulkan");
+  if (must_use_vulkan) throw InputError(flag + ": this paver was built without Vulkan");
   return choice;
 #endif
 }

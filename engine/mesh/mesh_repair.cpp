@@ -253,8 +253,7 @@ long long orient_consistently(std::vector<glm::ivec3>& triangles, const Edges& e
 // The boundary loops of consistently oriented, manifold triangles, each following the direction
 // of its sides and starting at its lowest vertex; the longest (in 3D) first, then by first vertex.
 std::vector<std::vector<int>> boundary_loops(const std::vector<glm::ivec3>& triangles, const Edges& edges,
-                                             const std::vector<glm::dvec3>& positions, const std::string& source,
-                                             const std::string& note) {
+                                             const std::vector<glm::dvec3>& positions) {
   const size_t vertex_count = positions.size();
   std::vector<int> next(vertex_count, -1);
   bool any = false;
@@ -340,7 +339,7 @@ LoadedSurface check_and_repair(std::vector<glm::dvec3> positions, const std::vec
   if (flipped > 0)
     loaded.warnings.push_back(source + ": reoriented " + count_of(flipped, "face", "faces") +
                               " to match their neighbours");
-  const std::vector<std::vector<int>> loops = boundary_loops(triangles, edges, positions, source, note);
+  const std::vector<std::vector<int>> loops = boundary_loops(triangles, edges, positions);
 
   // Compact the vertices to those the kept faces use.
   std::fill(used.begin(), used.end(), 0);

@@ -1157,7 +1157,9 @@ TEST_F(PaverRun, SubtractWritesTheMetalWithItsSeatsAsOneClosedSolid) {
   if (png) args.push_back("--png");
   const CliResult r = paver(args);
   ASSERT_EQ(r.exit_code, 0) << describe(r);
-  if (png) EXPECT_GT(fs::file_size(out / "cut.png"), 10000u);
+  if (png) {
+    EXPECT_GT(fs::file_size(out / "cut.png"), 10000u);
+  }
   const json report = read_json(out / "report.json");
   const json& cut = report["cut"];
   ASSERT_TRUE(cut.is_object()) << report.dump(1);

@@ -35,7 +35,9 @@ TEST(ElementHash, FindsEveryPointWithinOneCellLikeABruteForceLoop) {
     for (int j = 0; j < int(points.size()); ++j) {
       if (glm::length(points[j] - p) > grid.cell) continue;
       EXPECT_TRUE(found_all.count(j)) << "point " << j << " within a cell was missed";
-      if (j < 1500) EXPECT_TRUE(found_first.count(j)) << "point " << j << " within a cell was missed";
+      if (j < 1500) {
+        EXPECT_TRUE(found_first.count(j)) << "point " << j << " within a cell was missed";
+      }
     }
     for (int j : found_first) EXPECT_LT(j, 1500);
   }

@@ -148,7 +148,9 @@ TEST_P(ClosedSurfaces, OnePavementWithNoContactAcrossTheSeamAndFillOfAtLeast85Pe
     EXPECT_GE(p.after.fill, 0.85) << "gap " << gap_share;
     // Elements across the seams are added (refill_seams) where the charts leave room: the bead's
     // honeycomb leaves a row of them.
-    if (name == "bead" && tessellation == Tessellation::Hexagon && gap_share == 0) EXPECT_GE(p.refill.on_seams, 20);
+    if (name == "bead" && tessellation == Tessellation::Hexagon && gap_share == 0) {
+      EXPECT_GE(p.refill.on_seams, 20);
+    }
     if (gap_share == 0) {
       const Verdict verdict = judge_pavement(p.after);
       EXPECT_TRUE(verdict.ok) << (verdict.problems.empty() ? "" : verdict.problems.front());
