@@ -350,6 +350,10 @@ void Renderer::set_surface(const SurfaceMap& map) {
   d.instance_range.clear();
 }
 
+// Thousands of elements are drawn with coarser shapes, tens of thousands with minimal ones: at
+// those counts each is a few pixels wide, and the triangle count would otherwise run into the
+// tens of millions. On lavapipe the 3D view of 46k spheres took 0.9 s a frame with Coarse's 80
+// triangles each and 0.25 s with Minimal's 12 (docs/benchmarks.md, the studio while it solves).
 ShapeDetail shape_detail_for(std::size_t element_count) {
   return element_count > kMinimalShapesAbove ? ShapeDetail::Minimal
          : element_count > kCoarseShapesAbove ? ShapeDetail::Coarse
@@ -360,10 +364,6 @@ void Renderer::set_elements(const Elements& elements, const std::vector<std::arr
                             const ShapeMesh* custom) {
   Impl& d = *impl_;
   // All shapes' triangles in one vertex buffer (expanded: the fragment shader makes flat normals).
-  // Thousands of elements are drawn with coarser shapes, tens of thousands with minimal ones: at
-  // those counts each is a few pixels wide, and the triangle count would otherwise run into the
-  // tens of millions. On lavapipe the 3D view of 46k spheres took 0.9 s a frame with Coarse's 80
-  // triangles each and 0.25 s with Minimal's 12 (docs/benchmarks.md, the studio while it solves).
   const ShapeDetail detail = shape_detail_for(elements.size());
   std::vector<glm::vec3> shape_vertices;
   d.shape_range.clear();

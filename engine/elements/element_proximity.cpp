@@ -48,6 +48,23 @@ constexpr int kChunk = 4096;
 
 int chunk_count(int n) { return (n + kChunk - 1) / kChunk; }
 
+// Calls f(chunk, begin, end) for every chunk [begin, end) of [0, n), in parallel.
+template <class F>
+void for_each_chunk(int n, F&& f) {
+  tbb::parallel_for(0, chunk_count(n), [&](int chunk) { f(chunk, chunk * kChunk, std::min(n, (chunk + 1) * kChunk)); });
+}
+
+// The chunks' results, one after the other in chunk order.
+template <class T>
+std::vector<T> joined(const std::vector<std::vector<T>>& parts) {
+  std::size_t total = 0;
+  for (const auto& part : parts) total += part.size();
+  std::vector<T> out;
+  out.reserve(total);
+  for (const auto& part : parts) out.insert(out.end(), part.begin(), part.end());
+  return out;
+}
+
 // Calls found(collision) for every colliding pair (i < j) with i in [begin, end), in no particular order.
 template <class Found>
 void collisions_from(const ElementHash& hash, const Elements& elements, double gap, int begin, int end, Found&& found) {
@@ -73,9 +90,9 @@ CollisionTally count_collisions(const Elements& elements, double gap) {
   const ElementHash hash = collision_hash(elements, gap);
   const int n = int(elements.size());
   std::vector<CollisionTally> tallies(std::size_t(chunk_count(n)));
-  tbb::parallel_for(0, chunk_count(n), [&](int chunk) {
+  for_each_chunk(n, [&](int chunk, int begin, int end) {
     CollisionTally& tally = tallies[std::size_t(chunk)];
-    collisions_from(hash, elements, gap, chunk * kChunk, std::min(n, (chunk + 1) * kChunk), [&](const Collision& c) {
+    collisions_from(hash, elements, gap, begin, end, [&](const Collision& c) {
       ++tally.pairs;
       tally.worst_overlap = std::max(tally.worst_overlap, c.overlap);
     });
@@ -90,19 +107,13 @@ std::vector<Collision> find_collisions(const Elements& elements, double gap) {
   const ElementHash hash = collision_hash(elements, gap);
   const int n = int(elements.size());
   std::vector<std::vector<Collision>> parts(std::size_t(chunk_count(n)));
-  tbb::parallel_for(0, chunk_count(n), [&](int chunk) {
+  for_each_chunk(n, [&](int chunk, int begin, int end) {
     std::vector<Collision>& part = parts[std::size_t(chunk)];
-    collisions_from(hash, elements, gap, chunk * kChunk, std::min(n, (chunk + 1) * kChunk),
-                    [&](const Collision& c) { part.push_back(c); });
+    collisions_from(hash, elements, gap, begin, end, [&](const Collision& c) { part.push_back(c); });
     std::sort(part.begin(), part.end(),
               [](const Collision& a, const Collision& b) { return a.i != b.i ? a.i < b.i : a.j < b.j; });
   });
-  std::size_t total = 0;
-  for (const auto& part : parts) total += part.size();
-  std::vector<Collision> out;
-  out.reserve(total);
-  for (const auto& part : parts) out.insert(out.end(), part.begin(), part.end());
-  return out;
+  return joined(parts);
 }
 
 namespace {
@@ -128,8 +139,8 @@ std::vector<double> smallest_over_others(const Elements& elements, Score score, 
     const bool spans_all = hash.cell() >= extent;
     const int m = int(pending.size());
     std::vector<std::vector<int>> unresolved(std::size_t(chunk_count(m)));
-    tbb::parallel_for(0, chunk_count(m), [&](int chunk) {
-      for (int k = chunk * kChunk; k < std::min(m, (chunk + 1) * kChunk); ++k) {
+    for_each_chunk(m, [&](int chunk, int begin, int end) {
+      for (int k = begin; k < end; ++k) {
         const int i = pending[std::size_t(k)];
         hash.for_each_near(elements.position[i], [&](int j) {
           if (j == i) return;
@@ -138,8 +149,7 @@ std::vector<double> smallest_over_others(const Elements& elements, Score score, 
         if (!spans_all && !(best[i] <= floor(i, hash.cell()))) unresolved[std::size_t(chunk)].push_back(i);
       }
     });
-    pending.clear();
-    for (const auto& part : unresolved) pending.insert(pending.end(), part.begin(), part.end());
+    pending = joined(unresolved);
   }
   return best;
 }
@@ -181,8 +191,8 @@ std::vector<int> vertex_valences(const Elements& elements, double shell) {
   std::nth_element(finite.begin(), finite.begin() + finite.size() / 2, finite.end());
   const double reach = 1.5 * finite[finite.size() / 2];
   const ElementHash hash = hash_over(elements, bounding_box(elements), shell * reach);
-  tbb::parallel_for(0, chunk_count(n), [&](int chunk) {
-    for (int i = chunk * kChunk; i < std::min(n, (chunk + 1) * kChunk); ++i) {
+  for_each_chunk(n, [&](int, int begin, int end) {
+    for (int i = begin; i < end; ++i) {
       if (!is_vertex(i)) continue;
       valence[i] = 0;
       if (!(nearest[i] <= reach)) continue;
