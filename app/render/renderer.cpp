@@ -11,6 +11,7 @@
 #include "mesh/mean_curvature.h"
 #include "report/pavement_quality.h"
 #include "render_targets.h"
+#include "scene_data.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -19,6 +20,9 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <chrono>
+#include <functional>
+#include <limits>
 #include <map>
 #include <span>
 // SPIR-V embedded at build time (app/render/CMakeLists.txt).
@@ -44,22 +48,27 @@ static_assert(sizeof(FramePush) == 96);
 struct SurfaceVertex {
   glm::vec3 position, normal;
 };
-struct FlatVertex {
-  glm::vec3 position;
-  std::uint32_t colour;  // RGBA8
-};
-struct DiskInstance {
-  glm::vec2 centre;
-  float radius;
-  std::uint32_t colour;
+
+// One draw of a view's image, or a run of its instances: what a slice of the drawing records, and
+// its cost in vertices.
+struct DrawPiece {
+  std::function<void(vk::raii::CommandBuffer&)> record;
+  std::uint64_t vertices = 0;
 };
 
-std::uint32_t pack(std::array<std::uint8_t, 3> c, std::uint8_t a = 255) {
-  return std::uint32_t(c[0]) | std::uint32_t(c[1]) << 8 | std::uint32_t(c[2]) << 16 | std::uint32_t(a) << 24;
-}
+// A view's image drawn in pieces: one submission draws pieces of up to kSliceVertices (one at
+// least) into the image; the first clears it, the later ones add to it. On lavapipe, with the
+// solver on the other core, 40,000 vertices take a few milliseconds.
+constexpr std::uint64_t kSliceVertices = 40000;
+constexpr double kWholeImage = std::numeric_limits<double>::infinity();
 
-constexpr ShapeKind kShapes[] = {ShapeKind::Sphere, ShapeKind::Gem, ShapeKind::HexPrism, ShapeKind::Disc,
-                                 ShapeKind::Custom};
+struct ViewDrawing {
+  std::vector<DrawPiece> pieces;
+  std::size_t next = 0;  // the first piece not drawn yet
+  bool cleared = false;  // the first slice (clear) was drawn
+  FramePush push{};
+  SceneStyle style;
+};
 
 }  // namespace
 
@@ -67,49 +76,62 @@ struct Renderer::Impl {
   std::shared_ptr<gpu::VulkanContext> context;
   gpu::VulkanContext::Impl* vk = nullptr;
   std::optional<vk::raii::RenderPass> pass;
+  std::optional<vk::raii::RenderPass> pass_again;  // draws onto what the earlier slices drew
   std::optional<vk::raii::PipelineLayout> layout;
   std::optional<vk::raii::Pipeline> surface_pipe, element_pipe, lines3d_pipe, tris2d_pipe, lines2d_pipe, disk_pipe;
   std::optional<vk::raii::Sampler> sampler;
-  std::array<RenderTarget, 2> targets;
+  // Per view: the image shown, and the one drawn over several frames (start_3d, draw_more) until
+  // it is complete and takes the other's place.
+  std::array<std::array<RenderTarget, 2>, 2> targets;
+  std::array<int, 2> shown{0, 0};
+  std::array<int, 2> image_changes{0, 0};  // the shown image re-created or swapped
+  std::array<std::optional<ViewDrawing>, 2> unfinished;
 
   // Scene buffers (host-visible: rewritten whenever the scene changes).
   gpu::GpuBuffer surface_vertices, surface_indices, map_triangles, map_lines, shape_vertices, instances,
       lattice3d, lattice2d, disks;
   std::uint32_t surface_index_count = 0, map_triangle_count = 0, map_line_count = 0, lattice3d_count = 0,
                 lattice2d_count = 0, disk_count = 0;
-  std::map<ShapeKind, std::pair<std::uint32_t, std::uint32_t>> shape_range;     // first vertex, count
-  std::map<ShapeKind, std::pair<std::uint32_t, std::uint32_t>> instance_range;  // first instance, count
-  glm::vec3 scene_centre{0};
-  float scene_size = 1;
+  std::map<ShapeKind, DrawRange> shape_range;     // vertices
+  std::map<ShapeKind, DrawRange> instance_range;  // instances
 
   vk::raii::ShaderModule module(std::span<const std::uint32_t> spirv) {
     return vk::raii::ShaderModule(*vk->device, vk::ShaderModuleCreateInfo({}, spirv.size_bytes(), spirv.data()));
   }
 
   void create() {
-    const vk::AttachmentDescription attachments[] = {
+    // Depth is kept: a later slice of the image tests against what the earlier ones drew.
+    vk::AttachmentDescription attachments[] = {
         {{}, kColourFormat, vk::SampleCountFlagBits::e1, vk::AttachmentLoadOp::eClear, vk::AttachmentStoreOp::eStore,
          vk::AttachmentLoadOp::eDontCare, vk::AttachmentStoreOp::eDontCare, vk::ImageLayout::eUndefined,
          vk::ImageLayout::eShaderReadOnlyOptimal},
-        {{}, kDepthFormat, vk::SampleCountFlagBits::e1, vk::AttachmentLoadOp::eClear, vk::AttachmentStoreOp::eDontCare,
+        {{}, kDepthFormat, vk::SampleCountFlagBits::e1, vk::AttachmentLoadOp::eClear, vk::AttachmentStoreOp::eStore,
          vk::AttachmentLoadOp::eDontCare, vk::AttachmentStoreOp::eDontCare, vk::ImageLayout::eUndefined,
          vk::ImageLayout::eDepthStencilAttachmentOptimal}};
     const vk::AttachmentReference colour_ref(0, vk::ImageLayout::eColorAttachmentOptimal);
     const vk::AttachmentReference depth_ref(1, vk::ImageLayout::eDepthStencilAttachmentOptimal);
     const vk::SubpassDescription subpass({}, vk::PipelineBindPoint::eGraphics, {}, colour_ref, {}, &depth_ref);
-    // Earlier samplings/copies of the image finish before we draw; later ones (the studio's ImGui
-    // pass, a PNG copy) wait for the drawing.
+    // Earlier samplings/copies of the image, and the drawing of an earlier slice of it, finish
+    // before we draw; later ones (the studio's ImGui pass, a PNG copy) wait for the drawing.
     const vk::SubpassDependency dependencies[] = {
         {VK_SUBPASS_EXTERNAL, 0,
          vk::PipelineStageFlagBits::eFragmentShader | vk::PipelineStageFlagBits::eTransfer |
-             vk::PipelineStageFlagBits::eColorAttachmentOutput | vk::PipelineStageFlagBits::eEarlyFragmentTests,
-         vk::PipelineStageFlagBits::eColorAttachmentOutput | vk::PipelineStageFlagBits::eEarlyFragmentTests,
-         vk::AccessFlagBits::eShaderRead | vk::AccessFlagBits::eTransferRead,
-         vk::AccessFlagBits::eColorAttachmentWrite | vk::AccessFlagBits::eDepthStencilAttachmentWrite},
+             vk::PipelineStageFlagBits::eColorAttachmentOutput | vk::PipelineStageFlagBits::eEarlyFragmentTests |
+             vk::PipelineStageFlagBits::eLateFragmentTests,
+         vk::PipelineStageFlagBits::eColorAttachmentOutput | vk::PipelineStageFlagBits::eEarlyFragmentTests |
+             vk::PipelineStageFlagBits::eLateFragmentTests,
+         vk::AccessFlagBits::eShaderRead | vk::AccessFlagBits::eTransferRead | vk::AccessFlagBits::eColorAttachmentWrite |
+             vk::AccessFlagBits::eDepthStencilAttachmentWrite,
+         vk::AccessFlagBits::eColorAttachmentRead | vk::AccessFlagBits::eColorAttachmentWrite |
+             vk::AccessFlagBits::eDepthStencilAttachmentRead | vk::AccessFlagBits::eDepthStencilAttachmentWrite},
         {0, VK_SUBPASS_EXTERNAL, vk::PipelineStageFlagBits::eColorAttachmentOutput,
          vk::PipelineStageFlagBits::eFragmentShader | vk::PipelineStageFlagBits::eTransfer,
          vk::AccessFlagBits::eColorAttachmentWrite, vk::AccessFlagBits::eShaderRead | vk::AccessFlagBits::eTransferRead}};
     pass.emplace(*vk->device, vk::RenderPassCreateInfo({}, attachments, subpass, dependencies));
+    for (auto& a : attachments) a.loadOp = vk::AttachmentLoadOp::eLoad;
+    attachments[0].initialLayout = vk::ImageLayout::eShaderReadOnlyOptimal;
+    attachments[1].initialLayout = vk::ImageLayout::eDepthStencilAttachmentOptimal;
+    pass_again.emplace(*vk->device, vk::RenderPassCreateInfo({}, attachments, subpass, dependencies));
     const vk::PushConstantRange push(vk::ShaderStageFlagBits::eVertex | vk::ShaderStageFlagBits::eFragment, 0,
                                      sizeof(FramePush));
     layout.emplace(*vk->device, vk::PipelineLayoutCreateInfo({}, {}, push));
@@ -186,11 +208,12 @@ struct Renderer::Impl {
     return b;
   }
 
-  void begin(vk::raii::CommandBuffer& cb, RenderTarget& t, const SceneStyle& style) {
+  void begin(vk::raii::CommandBuffer& cb, RenderTarget& t, const SceneStyle& style, bool clear) {
     const vk::ClearValue clears[] = {vk::ClearColorValue(std::array<float, 4>{style.background[0], style.background[1],
                                                                                style.background[2], 1.0f}),
                                      vk::ClearDepthStencilValue(1.0f, 0)};
-    cb.beginRenderPass(vk::RenderPassBeginInfo(**pass, **t.framebuffer,
+    // The framebuffer was made with `pass`; `pass_again` is compatible with it.
+    cb.beginRenderPass(vk::RenderPassBeginInfo(clear ? **pass : **pass_again, **t.framebuffer,
                                                vk::Rect2D({0, 0}, {std::uint32_t(t.width), std::uint32_t(t.height)}), clears),
                        vk::SubpassContents::eInline);
     // Flip y so +y is up, as in the maps and the camera.
@@ -200,6 +223,110 @@ struct Renderer::Impl {
 
   void push(vk::raii::CommandBuffer& cb, const FramePush& f) {
     cb.pushConstants<FramePush>(**layout, vk::ShaderStageFlagBits::eVertex | vk::ShaderStageFlagBits::eFragment, 0, f);
+  }
+
+  RenderTarget& shown_target(int view) { return targets[view][shown[view]]; }
+  RenderTarget& drawn_target(int view) { return targets[view][1 - shown[view]]; }
+
+  // Draws slices of `drawing` into `t` until it is complete or `budget_ms` is spent (one slice at
+  // least); returns true once it is complete.
+  bool draw_slices(RenderTarget& t, ViewDrawing& drawing, double budget_ms) {
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<DrawPiece>& pieces = drawing.pieces;
+    const bool whole = budget_ms == kWholeImage;
+    do {
+      std::size_t end = drawing.next;
+      std::uint64_t vertices = 0;
+      while (end < pieces.size() && (whole || end == drawing.next || vertices + pieces[end].vertices <= kSliceVertices))
+        vertices += pieces[end++].vertices;
+      vk->submit_and_wait([&](vk::raii::CommandBuffer& cb) {
+        begin(cb, t, drawing.style, !drawing.cleared);
+        push(cb, drawing.push);
+        for (std::size_t i = drawing.next; i < end; ++i) pieces[i].record(cb);
+        cb.endRenderPass();
+      });
+      drawing.cleared = true;
+      drawing.next = end;
+    } while (drawing.next < pieces.size() &&
+             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() < budget_ms);
+    return drawing.next == pieces.size();
+  }
+
+  // A run of instanced draws cut so that each piece stays within a slice.
+  void add_instanced(std::vector<DrawPiece>& pieces, const std::function<void(vk::raii::CommandBuffer&)>& bind,
+                     std::uint32_t shape_first, std::uint32_t shape_vertices, std::uint32_t first, std::uint32_t count) {
+    const std::uint32_t per_piece = std::uint32_t(std::max<std::uint64_t>(1, kSliceVertices / std::max(1u, shape_vertices)));
+    for (std::uint32_t at = first; at < first + count; at += per_piece) {
+      const std::uint32_t n = std::min(per_piece, first + count - at);
+      pieces.push_back({[=](vk::raii::CommandBuffer& cb) {
+                          bind(cb);
+                          cb.draw(shape_vertices, n, shape_first, at);
+                        },
+                        std::uint64_t(shape_vertices) * n});
+    }
+  }
+
+  ViewDrawing drawing_3d(const RenderTarget& t, const OrbitCamera& camera, const SceneStyle& style) {
+    ViewDrawing out;
+    out.style = style;
+    out.push = FramePush{camera.view_projection(float(t.width) / float(t.height)), glm::vec4(camera.eye(), 1),
+                         glm::vec4(glm::normalize(camera.eye() - camera.target) + glm::vec3(0.3f, 0.2f, 0.8f), 0)};
+    if (style.show_surface && surface_index_count > 0)
+      out.pieces.push_back({[this](vk::raii::CommandBuffer& cb) {
+                              cb.bindPipeline(vk::PipelineBindPoint::eGraphics, **surface_pipe);
+                              cb.bindVertexBuffers(0, surface_vertices.handle(), {0});
+                              cb.bindIndexBuffer(surface_indices.handle(), 0, vk::IndexType::eUint32);
+                              cb.drawIndexed(surface_index_count, 1, 0, 0, 0);
+                            },
+                            surface_index_count});
+    if (style.show_elements) {
+      const auto bind = [this](vk::raii::CommandBuffer& cb) {
+        cb.bindPipeline(vk::PipelineBindPoint::eGraphics, **element_pipe);
+        cb.bindVertexBuffers(0, {shape_vertices.handle(), instances.handle()}, {0, 0});
+      };
+      for (const auto& [kind, range] : instance_range) {
+        if (range.second == 0) continue;
+        const auto shape = shape_range.at(kind);
+        add_instanced(out.pieces, bind, shape.first, shape.second, range.first, range.second);
+      }
+    }
+    if (style.show_lattice && lattice3d_count > 0)
+      out.pieces.push_back({[this](vk::raii::CommandBuffer& cb) {
+                              cb.bindPipeline(vk::PipelineBindPoint::eGraphics, **lines3d_pipe);
+                              cb.bindVertexBuffers(0, lattice3d.handle(), {0});
+                              cb.draw(lattice3d_count, 1, 0, 0);
+                            },
+                            lattice3d_count});
+    return out;
+  }
+
+  ViewDrawing drawing_2d(const RenderTarget& t, const MapView& view, const SceneStyle& style) {
+    ViewDrawing out;
+    out.style = style;
+    out.push = FramePush{view.projection(float(t.width) / float(t.height)), glm::vec4(0, 0, 1, 1), glm::vec4(0, 0, 1, 0)};
+    const auto flat = [this](const vk::raii::Pipeline& pipe, const gpu::GpuBuffer& buffer, std::uint32_t count) {
+      return DrawPiece{[this, &pipe, &buffer, count](vk::raii::CommandBuffer& cb) {
+                         cb.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipe);
+                         cb.bindVertexBuffers(0, buffer.handle(), {0});
+                         cb.draw(count, 1, 0, 0);
+                       },
+                       count};
+    };
+    if (map_triangle_count > 0) out.pieces.push_back(flat(*tris2d_pipe, map_triangles, map_triangle_count));
+    if (style.show_map_wireframe && map_line_count > 0) out.pieces.push_back(flat(*lines2d_pipe, map_lines, map_line_count));
+    if (style.show_lattice && lattice2d_count > 0) out.pieces.push_back(flat(*lines2d_pipe, lattice2d, lattice2d_count));
+    if (style.show_elements && disk_count > 0)
+      add_instanced(out.pieces,
+                    [this](vk::raii::CommandBuffer& cb) {
+                      cb.bindPipeline(vk::PipelineBindPoint::eGraphics, **disk_pipe);
+                      cb.bindVertexBuffers(0, disks.handle(), {0});
+                    },
+                    0, 6, 0, disk_count);
+    return out;
+  }
+
+  ViewDrawing drawing_of(int view, const RenderTarget& t, const ViewRequest& request) {
+    return view == 0 ? drawing_3d(t, request.camera, request.style) : drawing_2d(t, request.map_view, request.style);
   }
 };
 
@@ -303,6 +430,7 @@ gpu::Result<std::unique_ptr<Renderer>> Renderer::create(std::shared_ptr<gpu::Vul
 
 void Renderer::set_surface(const SurfaceMap& map) {
   Impl& d = *impl_;
+  d.unfinished = {};  // drawn from the buffers about to be replaced
   std::vector<SurfaceVertex> vertices;
   for (int v = 0; v < map.mesh.vertex_count(); ++v)
     vertices.push_back({glm::vec3(map.mesh.positions[v]), glm::vec3(map.normals[v])});
@@ -315,8 +443,8 @@ void Renderer::set_surface(const SurfaceMap& map) {
   // The map: filled triangles, a light wireframe and the boundary in a darker line. A map that
   // wraps (a band's seamless map) is drawn with its neighbouring periods, faded.
   std::vector<FlatVertex> tris, lines;
-  const std::uint32_t fill = pack({206, 209, 214}), faded = pack({112, 115, 121}), wire = pack({170, 174, 182}),
-                      edge = pack({60, 64, 72});
+  const std::uint32_t fill = pack_colour({206, 209, 214}), faded = pack_colour({112, 115, 121}), wire = pack_colour({170, 174, 182}),
+                      edge = pack_colour({60, 64, 72});
   const std::vector<double> shifts = map_wraps(map) ? std::vector<double>{0.0, -map.period, map.period}
                                                     : std::vector<double>{0.0};
   const auto at = [](glm::dvec2 q, double shift) { return glm::vec3(float(q.x + shift), float(q.y), 0.0f); };
@@ -342,10 +470,6 @@ void Renderer::set_surface(const SurfaceMap& map) {
   d.map_lines = d.host_buffer(lines, vk::BufferUsageFlagBits::eVertexBuffer);
   d.map_triangle_count = std::uint32_t(tris.size());
   d.map_line_count = std::uint32_t(lines.size());
-  glm::dvec3 lo(1e300), hi(-1e300);
-  for (const auto& p : map.mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
-  d.scene_centre = glm::vec3(0.5 * (lo + hi));
-  d.scene_size = float(glm::length(hi - lo));
   d.lattice3d_count = d.lattice2d_count = d.disk_count = 0;
   d.instance_range.clear();
 }
@@ -362,147 +486,74 @@ ShapeDetail shape_detail_for(std::size_t element_count) {
 
 void Renderer::set_elements(const Elements& elements, const std::vector<std::array<std::uint8_t, 3>>& colours,
                             const ShapeMesh* custom) {
-  Impl& d = *impl_;
-  // All shapes' triangles in one vertex buffer (expanded: the fragment shader makes flat normals).
-  const ShapeDetail detail = shape_detail_for(elements.size());
-  std::vector<glm::vec3> shape_vertices;
-  d.shape_range.clear();
-  for (ShapeKind kind : kShapes) {
-    ShapeMesh mesh;
-    if (kind == ShapeKind::Custom) {
-      if (!custom) continue;
-      mesh = *custom;
-    } else {
-      mesh = make_builtin_shape(kind, detail);
-    }
-    const std::uint32_t first = std::uint32_t(shape_vertices.size());
-    for (const auto& t : mesh.triangles)
-      for (int c : {t.x, t.y, t.z}) shape_vertices.push_back(mesh.positions[c]);
-    d.shape_range[kind] = {first, std::uint32_t(shape_vertices.size()) - first};
-  }
-  d.shape_vertices = d.host_buffer(shape_vertices, vk::BufferUsageFlagBits::eVertexBuffer);
+  set_elements(prepare_elements(elements, colours, custom));
+}
 
-  std::vector<ElementInstance> instances;
-  std::vector<DiskInstance> disks;
-  d.instance_range.clear();
-  for (ShapeKind kind : kShapes) {
-    if (!d.shape_range.count(kind)) continue;
-    const std::uint32_t first = std::uint32_t(instances.size());
-    for (size_t i = 0; i < elements.size(); ++i) {
-      if (elements.shape[i] != kind) continue;
-      const std::uint32_t colour = pack(i < colours.size() ? colours[i] : std::array<std::uint8_t, 3>{200, 200, 200});
-      instances.push_back(make_element_instance(elements, i, colour));
-      disks.push_back({glm::vec2(elements.uv[i]), float(0.5 * elements.diameter[i]), colour});
-    }
-    d.instance_range[kind] = {first, std::uint32_t(instances.size()) - first};
-  }
-  d.instances = d.host_buffer(instances, vk::BufferUsageFlagBits::eVertexBuffer);
-  d.disks = d.host_buffer(disks, vk::BufferUsageFlagBits::eVertexBuffer);
-  d.disk_count = std::uint32_t(disks.size());
+void Renderer::set_elements(const PreparedElements& prepared) {
+  Impl& d = *impl_;
+  d.unfinished = {};  // drawn from the buffers about to be replaced
+  d.shape_vertices = d.host_buffer(prepared.shape_vertices, vk::BufferUsageFlagBits::eVertexBuffer);
+  d.shape_range = prepared.shape_range;
+  d.instances = d.host_buffer(prepared.instances, vk::BufferUsageFlagBits::eVertexBuffer);
+  d.instance_range = prepared.instance_range;
+  d.disks = d.host_buffer(prepared.disks, vk::BufferUsageFlagBits::eVertexBuffer);
+  d.disk_count = std::uint32_t(prepared.disks.size());
 }
 
 void Renderer::set_pattern(const SurfaceMap& map, const Pattern& pattern, const std::vector<glm::dvec2>& points) {
+  set_pattern(prepare_pattern(map, pattern, points));
+}
+
+void Renderer::set_pattern(const PreparedPattern& prepared) {
   Impl& d = *impl_;
-  // 2D: straight edges. 3D: each edge lifted at a few points so it follows the surface, raised a
-  // hair along the normal so it is not hidden in it.
-  constexpr int kSamples = 4;
-  std::vector<FlatVertex> lines2d, lines3d;
-  std::vector<glm::dvec2> samples;
-  const std::uint32_t real = pack({30, 90, 200}), virtual_colour = pack({140, 170, 220});
-  for (int e = 0; e < pattern.edge_count(); ++e) {
-    const glm::dvec2 a = points[pattern.edge_a[e]];
-    const glm::dvec2 b = nearest_image(map, points[pattern.edge_b[e]], a);  // across a band's seam
-    const std::uint32_t c = pattern.edge_virtual[e] ? virtual_colour : real;
-    lines2d.push_back({glm::vec3(glm::vec2(a), 0), c});
-    lines2d.push_back({glm::vec3(glm::vec2(b), 0), c});
-    if (pattern.edge_virtual[e]) continue;
-    for (int s = 0; s <= kSamples; ++s) samples.push_back(a + (double(s) / kSamples) * (b - a));
-  }
-  LiftedPoints lifted;
-  lifted.resize(samples.size());
-  lift_points(map, samples, lifted);
-  const double raise = 0.002 * d.scene_size;
-  for (size_t i = 0; i < samples.size(); i += kSamples + 1)
-    for (int s = 0; s < kSamples; ++s) {
-      const size_t p = i + s, q = i + s + 1;
-      if (lifted.triangle[p] < 0 || lifted.triangle[q] < 0) continue;
-      lines3d.push_back({glm::vec3(lifted.position[p] + raise * lifted.normal[p]), pack({20, 40, 90})});
-      lines3d.push_back({glm::vec3(lifted.position[q] + raise * lifted.normal[q]), pack({20, 40, 90})});
-    }
-  d.lattice2d = d.host_buffer(lines2d, vk::BufferUsageFlagBits::eVertexBuffer);
-  d.lattice3d = d.host_buffer(lines3d, vk::BufferUsageFlagBits::eVertexBuffer);
-  d.lattice2d_count = std::uint32_t(lines2d.size());
-  d.lattice3d_count = std::uint32_t(lines3d.size());
+  d.unfinished = {};  // drawn from the buffers about to be replaced
+  d.lattice2d = d.host_buffer(prepared.lines2d, vk::BufferUsageFlagBits::eVertexBuffer);
+  d.lattice3d = d.host_buffer(prepared.lines3d, vk::BufferUsageFlagBits::eVertexBuffer);
+  d.lattice2d_count = std::uint32_t(prepared.lines2d.size());
+  d.lattice3d_count = std::uint32_t(prepared.lines3d.size());
+}
+
+void Renderer::render(int view, const ViewRequest& request) {
+  Impl& d = *impl_;
+  d.unfinished[view].reset();
+  RenderTarget& t = d.shown_target(view);
+  if (t.ensure(*d.vk, *d.pass, request.width, request.height)) ++d.image_changes[view];
+  ViewDrawing drawing = d.drawing_of(view, t, request);
+  d.draw_slices(t, drawing, kWholeImage);
 }
 
 void Renderer::render_3d(int width, int height, const OrbitCamera& camera, const SceneStyle& style) {
-  Impl& d = *impl_;
-  RenderTarget& t = d.targets[0];
-  t.ensure(*d.vk, *d.pass, width, height);
-  FramePush f{camera.view_projection(float(t.width) / float(t.height)), glm::vec4(camera.eye(), 1),
-              glm::vec4(glm::normalize(camera.eye() - camera.target) + glm::vec3(0.3f, 0.2f, 0.8f), 0)};
-  d.vk->submit_and_wait([&](vk::raii::CommandBuffer& cb) {
-    d.begin(cb, t, style);
-    d.push(cb, f);
-    if (style.show_surface && d.surface_index_count > 0) {
-      cb.bindPipeline(vk::PipelineBindPoint::eGraphics, **d.surface_pipe);
-      cb.bindVertexBuffers(0, d.surface_vertices.handle(), {0});
-      cb.bindIndexBuffer(d.surface_indices.handle(), 0, vk::IndexType::eUint32);
-      cb.drawIndexed(d.surface_index_count, 1, 0, 0, 0);
-    }
-    if (style.show_elements && !d.instance_range.empty()) {
-      cb.bindPipeline(vk::PipelineBindPoint::eGraphics, **d.element_pipe);
-      cb.bindVertexBuffers(0, {d.shape_vertices.handle(), d.instances.handle()}, {0, 0});
-      for (const auto& [kind, range] : d.instance_range) {
-        if (range.second == 0) continue;
-        const auto shape = d.shape_range.at(kind);
-        cb.draw(shape.second, range.second, shape.first, range.first);
-      }
-    }
-    if (style.show_lattice && d.lattice3d_count > 0) {
-      cb.bindPipeline(vk::PipelineBindPoint::eGraphics, **d.lines3d_pipe);
-      cb.bindVertexBuffers(0, d.lattice3d.handle(), {0});
-      cb.draw(d.lattice3d_count, 1, 0, 0);
-    }
-    cb.endRenderPass();
-  });
+  render(0, {width, height, camera, {}, style});
 }
 
 void Renderer::render_2d(int width, int height, const MapView& view, const SceneStyle& style) {
-  Impl& d = *impl_;
-  RenderTarget& t = d.targets[1];
-  t.ensure(*d.vk, *d.pass, width, height);
-  FramePush f{view.projection(float(t.width) / float(t.height)), glm::vec4(0, 0, 1, 1), glm::vec4(0, 0, 1, 0)};
-  d.vk->submit_and_wait([&](vk::raii::CommandBuffer& cb) {
-    d.begin(cb, t, style);
-    d.push(cb, f);
-    if (d.map_triangle_count > 0) {
-      cb.bindPipeline(vk::PipelineBindPoint::eGraphics, **d.tris2d_pipe);
-      cb.bindVertexBuffers(0, d.map_triangles.handle(), {0});
-      cb.draw(d.map_triangle_count, 1, 0, 0);
-    }
-    if (style.show_map_wireframe && d.map_line_count > 0) {
-      cb.bindPipeline(vk::PipelineBindPoint::eGraphics, **d.lines2d_pipe);
-      cb.bindVertexBuffers(0, d.map_lines.handle(), {0});
-      cb.draw(d.map_line_count, 1, 0, 0);
-    }
-    if (style.show_lattice && d.lattice2d_count > 0) {
-      cb.bindPipeline(vk::PipelineBindPoint::eGraphics, **d.lines2d_pipe);
-      cb.bindVertexBuffers(0, d.lattice2d.handle(), {0});
-      cb.draw(d.lattice2d_count, 1, 0, 0);
-    }
-    if (style.show_elements && d.disk_count > 0) {
-      cb.bindPipeline(vk::PipelineBindPoint::eGraphics, **d.disk_pipe);
-      cb.bindVertexBuffers(0, d.disks.handle(), {0});
-      cb.draw(6, d.disk_count, 0, 0);
-    }
-    cb.endRenderPass();
-  });
+  render(1, {width, height, {}, view, style});
 }
+
+void Renderer::start_drawing(int view, const ViewRequest& request) {
+  Impl& d = *impl_;
+  RenderTarget& t = d.drawn_target(view);
+  t.ensure(*d.vk, *d.pass, request.width, request.height);
+  d.unfinished[view] = d.drawing_of(view, t, request);
+}
+
+bool Renderer::draw_more(int view, double budget_ms) {
+  Impl& d = *impl_;
+  if (!d.unfinished[view]) return false;
+  if (!d.draw_slices(d.drawn_target(view), *d.unfinished[view], budget_ms)) return false;
+  d.unfinished[view].reset();
+  d.shown[view] = 1 - d.shown[view];
+  ++d.image_changes[view];
+  return true;
+}
+
+bool Renderer::drawing(int view) const { return impl_->unfinished[view].has_value(); }
+
+void Renderer::stop_drawing(int view) { impl_->unfinished[view].reset(); }
 
 Image Renderer::read_back(int view) {
   Impl& d = *impl_;
-  RenderTarget& t = d.targets[view];
+  RenderTarget& t = d.shown_target(view);
   Image out;
   out.width = t.width, out.height = t.height;
   out.rgba.resize(std::size_t(t.width) * t.height * 4);
@@ -533,10 +584,10 @@ Image Renderer::read_back(int view) {
 }
 
 void* Renderer::image_view(int view) const {
-  const auto& t = impl_->targets[view];
+  const auto& t = impl_->targets[view][impl_->shown[view]];
   return t.colour.view ? reinterpret_cast<void*>(static_cast<VkImageView>(**t.colour.view)) : nullptr;
 }
 void* Renderer::sampler() const { return reinterpret_cast<void*>(static_cast<VkSampler>(**impl_->sampler)); }
-int Renderer::image_generation(int view) const { return impl_->targets[view].generation; }
+int Renderer::image_generation(int view) const { return impl_->image_changes[view]; }
 
 }  // namespace paver::render

@@ -26,6 +26,9 @@
 
 namespace paver::render {
 
+struct PreparedElements;
+struct PreparedPattern;
+
 // Orbit camera around `target`; yaw/pitch in radians, vertical field of view in degrees.
 struct OrbitCamera {
   glm::vec3 target{0};
@@ -85,6 +88,14 @@ std::vector<std::array<std::uint8_t, 3>> element_colours(const Elements& element
 inline constexpr std::size_t kCoarseShapesAbove = 4000, kMinimalShapesAbove = 20000;
 ShapeDetail shape_detail_for(std::size_t element_count);
 
+// What a view is drawn with: its size, and the camera (3D) or the map view (2D) with the style.
+struct ViewRequest {
+  int width = 1, height = 1;
+  OrbitCamera camera;  // view 0
+  MapView map_view;    // view 1
+  SceneStyle style;
+};
+
 struct Image {
   int width = 0, height = 0;
   std::vector<std::uint8_t> rgba;  // row-major, top row first
@@ -101,10 +112,25 @@ public:
   void set_elements(const Elements& elements, const std::vector<std::array<std::uint8_t, 3>>& colours,
                     const ShapeMesh* custom = nullptr);
   void set_pattern(const SurfaceMap& map, const Pattern& pattern, const std::vector<glm::dvec2>& points);
+  // The same, prepared beforehand (scene_data.h): a copy into the buffers.
+  void set_elements(const PreparedElements& prepared);
+  void set_pattern(const PreparedPattern& prepared);
 
   // Renders a view into the renderer's image of that view (0: 3D, 1: 2D), resized as needed.
+  void render(int view, const ViewRequest& request);
   void render_3d(int width, int height, const OrbitCamera& camera, const SceneStyle& style);
   void render_2d(int width, int height, const MapView& view, const SceneStyle& style);
+
+  // The same image drawn over several calls, for a view too heavy to draw within one frame of the
+  // studio (tens of thousands of elements on a software renderer while the solver runs).
+  // start_drawing begins it on a second image of the view; each draw_more adds to it for about
+  // `budget_ms` (one slice at least) and returns true once it is complete, when it becomes the
+  // view's image. Until then the view keeps its last complete image (image_view, read_back). A
+  // scene change (set_*) or a whole render of the view drops an unfinished image.
+  void start_drawing(int view, const ViewRequest& request);
+  bool draw_more(int view, double budget_ms);
+  bool drawing(int view) const;  // an unfinished image is waiting for draw_more
+  void stop_drawing(int view);
 
   // Reads a view's image back (for PNGs and tests).
   Image read_back(int view);

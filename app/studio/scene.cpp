@@ -21,6 +21,7 @@ bool sync_scene(Scene& scene, render::Renderer& renderer, Document& doc, const L
     scene.pavement = nullptr;
     scene.live_sequence = 0;
     scene.lattice_uploaded = false;
+    scene.live_frames.reset();
     ++scene.generation;
   }
   const bool recolour = scene.colour_mode != views.colour_mode;
@@ -34,27 +35,33 @@ bool sync_scene(Scene& scene, render::Renderer& renderer, Document& doc, const L
   // they move. Otherwise the final pavement.
   const RunState state = live.state();
   if ((state == RunState::Running || state == RunState::Paused) && live.revision() == doc.revision) {
+    // A frame prepared off the UI thread (live_frames.h) is shown as it comes.
+    if (std::optional<LiveFrame> frame = scene.live_frames.take()) {
+      if (frame->revision != doc.revision) return false;
+      show_map(map_for_topology(*map, frame->topology));
+      renderer.set_elements(frame->elements);
+      if (frame->pattern) renderer.set_pattern(*frame->pattern);
+      scene.lattice_uploaded = frame->pattern.has_value();
+      scene.pavement = nullptr;
+      scene.live_sequence = frame->sequence;
+      ++scene.generation;
+      return false;
+    }
+    if (scene.live_frames.busy()) return false;
     const auto now = std::chrono::steady_clock::now();
     const bool again = recolour || lattice_missing;
     if (!again && scene.live_sequence != 0 && now - scene.live_uploaded < kLiveInterval) return false;
-    const std::optional<LiveSnapshot> snapshot = live.snapshot_since(again ? 0 : scene.live_sequence);
+    // The views are still drawing the last frame: a new one now would restart them, and they
+    // would never finish.
+    if (!again && (renderer.drawing(0) || renderer.drawing(1))) return false;
+    std::optional<LiveSnapshot> snapshot = live.snapshot_since(again ? 0 : scene.live_sequence);
     if (!snapshot || snapshot->revision != doc.revision) return false;
-    // Post-processing is left out while the particles move: it is the slow part, and only the
-    // final pavement is exported.
-    const PlacedElements placed =
-        place_all_elements(map_for_topology(*map, snapshot->design.pattern.topology), *snapshot->pattern,
-                           snapshot->points, snapshot->design, false);
-    show_map(map_for_topology(*map, snapshot->design.pattern.topology));
-    renderer.set_elements(placed.elements, render::element_colours(placed.elements, views.colour_mode, snapshot->design.elements.gap),
-                          custom_shape(doc));
-    if (lattice_shown) renderer.set_pattern(*scene.map_2d, *snapshot->pattern, snapshot->points);
-    scene.lattice_uploaded = lattice_shown;
-    scene.pavement = nullptr;
-    scene.live_sequence = snapshot->sequence;
+    scene.live_frames.prepare(std::move(*snapshot),
+                              {doc.surface.map, shared_custom_shape(doc), views.colour_mode, lattice_shown});
     scene.live_uploaded = now;
-    ++scene.generation;
     return false;
   }
+  scene.live_frames.reset();  // a frame of a run no longer shown
 
   const PavementResult& result = doc.result;
   if (!result.pavement || result.revision != doc.revision) return false;

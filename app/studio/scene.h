@@ -3,6 +3,7 @@
 // either the live particles (elements placed on them as they move) or the final pavement.
 // Uploads only what changed; `generation` bumps with every upload so the views draw again.
 #include "document.h"
+#include "live_frames.h"
 #include "live_pavement.h"
 #include "view_settings.h"
 
@@ -20,16 +21,20 @@ struct Scene {
   const SurfaceMap* map_2d = nullptr;     // the map drawn (a band's seamless map when its points are on it)
   const Pavement* pavement = nullptr;     // the final pavement last uploaded; null while live
   std::uint64_t live_sequence = 0;        // the live snapshot last uploaded
+  LiveFrames live_frames;                 // the next one, prepared off the UI thread
   bool lattice_uploaded = false;          // the pattern's lines match the elements uploaded
-  std::chrono::steady_clock::time_point live_uploaded{};  // when: live snapshots are shown at most kLiveInterval apart
+  std::chrono::steady_clock::time_point live_uploaded{};  // when the last was taken: at most one per kLiveInterval
   render::ColourMode colour_mode = render::ColourMode::NeighbourRatio;
   std::uint64_t generation = 0;
   std::array<std::vector<double>, 2> rendered;  // per view: the inputs its image was drawn with
+  std::array<std::vector<double>, 2> drawing;   // per view: those of the image drawn in slices, if any
 };
 
-// Placing, colouring and drawing a live snapshot takes the UI thread tens of milliseconds on a
-// software renderer with the solver on the other cores: the frames in between stay light.
+// A live snapshot is shown at most this often, and only once the views finished drawing the last.
 inline constexpr auto kLiveInterval = std::chrono::milliseconds(150);
+// How long a frame may spend drawing slices of each view's next image (views_panel.cpp): with the
+// rest of a frame at about 25 ms on lavapipe, the frame stays within 33 ms (30 fps).
+inline constexpr double kViewSliceBudgetMs = 3;
 
 // Returns true when the document's final pavement was uploaded this frame: once it is presented,
 // the edit-to-result latency is known.

@@ -501,13 +501,13 @@ void after_present(Studio& s, const std::optional<render::Image>& frame) {
   if (s.live.state() == RunState::Running) {
     if (f.last != std::chrono::steady_clock::time_point{}) {
       const double ms = std::chrono::duration<double, std::milli>(now - f.last).count();
-      ++f.frames, f.total_ms += ms, f.slowest_ms = std::max(f.slowest_ms, ms);
+      f.frame_ms.push_back(ms);
     }
     f.last = now;
   } else if (f.last != std::chrono::steady_clock::time_point{}) {
-    if (s.script_mode && f.frames > 0) {
-      std::printf("frames_while_solving %d, %.1f fps mean, slowest %.1f ms\n", f.frames, 1000.0 * f.frames / f.total_ms,
-                  f.slowest_ms);
+    if (s.script_mode && !f.frame_ms.empty()) {
+      std::printf("frames_while_solving %s, live images %d\n", describe(frame_pace(f.frame_ms)).c_str(),
+                  f.images_drawn_in_slices);
       std::fflush(stdout);
     }
     f = {};

@@ -8,6 +8,7 @@
 #include "file_browser.h"
 #include "live_pavement.h"
 #include "scene.h"
+#include "solving_frames.h"
 #include "surface_loader.h"
 #include "metal_cutter.h"
 #include "view_settings.h"
@@ -85,14 +86,6 @@ struct UiState {
 };
 
 
-
-// Frame times while a run is solving in the background: the UI must keep its pace meanwhile. A
-// script session prints them when the run ends ("frames_while_solving").
-struct SolvingFrames {
-  int frames = 0;
-  double total_ms = 0, slowest_ms = 0;
-  std::chrono::steady_clock::time_point last{};
-};
 
 struct Studio {
   Studio(AppWindow& w, render::Renderer& r) : window(w), renderer(r) {}

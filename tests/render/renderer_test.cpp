@@ -152,6 +152,71 @@ TEST(Renderer, ImagesFollowTheRequestedSize) {
   EXPECT_NE(r.sampler(), nullptr);
 }
 
+// The studio draws a heavy view a slice per frame: the view keeps its last complete image until
+// the new one is whole, and the new one is exactly what a whole render draws.
+TEST(Renderer, AnImageDrawnInSlicesIsTheWholeImageAndShownOnlyWhenComplete) {
+  REQUIRE_VULKAN();
+  render::Renderer& r = *fixture().renderer;
+  const Pavement& p = dome_pavement(dome_map());
+  // The dome's stones twenty times over (each drawn where it is, so the copies coincide): enough
+  // instances for the 2D view's disks to take several slices too.
+  Elements many;
+  for (int copy = 0; copy < 20; ++copy) many.append(p.elements);
+  r.set_surface(dome_map());
+  r.set_elements(many, render::element_colours(many, render::ColourMode::NeighbourRatio));
+  r.set_pattern(dome_map(), p.pattern, p.points);
+  render::SceneStyle style;
+  style.show_lattice = true;
+  for (const int view : {0, 1}) {
+    SCOPED_TRACE(view);
+    render::ViewRequest before{480, 300, render::frame_surface(dome_map().mesh), render::frame_map(dome_map()), style};
+    render::ViewRequest after = before;
+    after.camera.yaw += 0.7f;
+    after.map_view.half_height *= 0.6f;
+    r.render(view, after);
+    const render::Image whole = r.read_back(view);
+    r.render(view, before);
+    const render::Image old_image = r.read_back(view);
+    ASSERT_NE(old_image.rgba, whole.rgba) << "the two requests draw different images";
+
+    const int generation = r.image_generation(view);
+    r.start_drawing(view, after);
+    int slices = 0;
+    bool complete = false;
+    while (!complete && slices < 10000) {
+      complete = r.draw_more(view, 0.0);  // no budget: one slice per call
+      ++slices;
+      if (!complete) {
+        ASSERT_TRUE(r.drawing(view));
+        ASSERT_EQ(r.read_back(view).rgba, old_image.rgba) << "the unfinished image is not shown, slice " << slices;
+        ASSERT_EQ(r.image_generation(view), generation);
+      }
+    }
+    ASSERT_TRUE(complete);
+    EXPECT_GT(slices, 2) << "thousands of elements take several slices";
+    EXPECT_FALSE(r.drawing(view));
+    EXPECT_NE(r.image_generation(view), generation) << "the studio binds the new image";
+    EXPECT_EQ(r.read_back(view).rgba, whole.rgba) << "drawn in slices, pixel for pixel what a whole render draws";
+  }
+}
+
+TEST(Renderer, ASceneChangeOrAWholeRenderDropsAnUnfinishedImage) {
+  REQUIRE_VULKAN();
+  render::Renderer& r = *fixture().renderer;
+  const Pavement& p = dome_pavement(dome_map());
+  r.set_surface(dome_map());
+  r.set_elements(p.elements, render::element_colours(p.elements, render::ColourMode::NeighbourRatio));
+  const render::ViewRequest request{320, 200, render::frame_surface(dome_map().mesh), {}, {}};
+  r.start_drawing(0, request);
+  ASSERT_FALSE(r.draw_more(0, 0.0));
+  r.set_elements(p.elements, render::element_colours(p.elements, render::ColourMode::ElementType));
+  EXPECT_FALSE(r.drawing(0)) << "its pieces were drawn from the buffers just replaced";
+  EXPECT_FALSE(r.draw_more(0, 1e9));
+  r.start_drawing(0, request);
+  r.render(0, request);
+  EXPECT_FALSE(r.drawing(0));
+}
+
 TEST(Renderer, LegendIsDrawnIntoTheImage) {
   render::Image image;
   image.width = 800, image.height = 600;

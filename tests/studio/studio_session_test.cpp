@@ -215,6 +215,24 @@ TEST_F(StudioSession, ThePatternsLinesAppearWhenShownAfterTheRun) {
   EXPECT_GT(after, before + 250) << "blue line pixels: " << before << " hidden, " << after << " shown";
 }
 
+// While a run of 46k stones solves, the views draw each live image a slice per frame and show it
+// once complete (a whole image takes lavapipe longer than a frame). The live view must still
+// follow the run: images completed during it, and the final pavement drawn when it ends.
+TEST_F(StudioSession, TheViewsFollowALargeRunWithImagesDrawnInSlices) {
+  const fs::path script = dir_ / "session.txt", final_png = dir_ / "final.png";
+  std::ofstream(script) << "open assets/surfaces/pendant.obj\nspacing 0.12\noptimize\n"
+                        << "screenshot " << final_png.string() << "\nquit\n";
+  const Outcome r = run_script(script);
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const std::size_t at = r.out.find("frames_while_solving ");
+  ASSERT_NE(at, std::string::npos) << describe(r);
+  const std::string line = r.out.substr(at, r.out.find('\n', at) - at);
+  const std::size_t images_at = line.find("live images ");
+  ASSERT_NE(images_at, std::string::npos) << line;
+  EXPECT_GE(std::stoi(line.substr(images_at + 12)), 2) << line;
+  EXPECT_TRUE(fs::exists(final_png));
+}
+
 // placements.csv as id -> (u, v, x, y, z, diameter).
 struct Row {
   double u, v, x, y, z, diameter;

@@ -41,9 +41,20 @@ std::vector<double> style_inputs(const render::SceneStyle& st) {
           st.background[0], st.background[1], st.background[2]};
 }
 
-// Renders the view into the renderer's image unless it already shows exactly this.
+// A view's image drawn in slices is complete, and now shown.
+void completed_in_slices(Studio& s, int view) {
+  s.scene.rendered[view] = std::move(s.scene.drawing[view]);
+  s.scene.drawing[view].clear();
+  ++s.solving_frames.images_drawn_in_slices;
+}
+
+// Renders the view into the renderer's image unless it already shows exactly this. While a run
+// moves the elements, a new image of the same look (size, camera, style) is drawn a slice per
+// frame and shown once complete: on a software renderer a view of tens of thousands of elements
+// takes longer than a frame. Anything else (the camera moved, a screenshot is due, the result
+// arrived) draws the view whole at once.
 void render_if_changed(Studio& s, int view, int width, int height) {
-  std::vector<double> inputs = {double(width), double(height), double(s.scene.generation)};
+  std::vector<double> inputs = {double(width), double(height)};
   if (view == 0) {
     const render::OrbitCamera& c = s.views.camera;
     inputs.insert(inputs.end(),
@@ -54,12 +65,27 @@ void render_if_changed(Studio& s, int view, int width, int height) {
   }
   const std::vector<double> style = style_inputs(s.views.style);
   inputs.insert(inputs.end(), style.begin(), style.end());
-  if (s.scene.rendered[view] == inputs) return;
-  if (view == 0)
-    s.renderer.render_3d(width, height, s.views.camera, s.views.style);
-  else
-    s.renderer.render_2d(width, height, s.views.map_view, s.views.style);
-  s.scene.rendered[view] = std::move(inputs);
+  inputs.push_back(double(s.scene.generation));  // last: the look is everything before it
+
+  std::vector<double>& shown = s.scene.rendered[view];
+  std::vector<double>& drawing = s.scene.drawing[view];
+  if (s.renderer.drawing(view) && drawing == inputs && !s.ui.screenshot) {
+    if (s.renderer.draw_more(view, kViewSliceBudgetMs)) completed_in_slices(s, view);
+    return;
+  }
+  s.renderer.stop_drawing(view);
+  drawing.clear();
+  if (shown == inputs) return;
+  const render::ViewRequest request{width, height, s.views.camera, s.views.map_view, s.views.style};
+  const bool same_look = shown.size() == inputs.size() && std::equal(inputs.begin(), inputs.end() - 1, shown.begin());
+  if (same_look && s.live.state() == RunState::Running && !s.ui.screenshot) {
+    s.renderer.start_drawing(view, request);
+    drawing = inputs;
+    if (s.renderer.draw_more(view, kViewSliceBudgetMs)) completed_in_slices(s, view);
+    return;
+  }
+  s.renderer.render(view, request);
+  shown = std::move(inputs);
 }
 
 // --- 3D ---------------------------------------------------------------------------------------
@@ -536,6 +562,8 @@ void views_area(Studio& s, ImVec2 pos, ImVec2 size) {
   // The other view as an inset in the bottom-right corner, in a child window so that the mouse
   // over it does not reach the large view; I hides it when it is in the way.
   if (!s.views.show_inset) {
+    s.renderer.stop_drawing(1 - large);  // an image it would never finish
+    s.scene.drawing[1 - large].clear();
     ImGui::End();
     return;
   }
