@@ -15,6 +15,7 @@ std::optional<LiveFrame> prepare_frame(const LiveSnapshot& snapshot, const LiveF
   frame.revision = snapshot.revision;
   frame.sequence = snapshot.sequence;
   frame.topology = snapshot.design.pattern.topology;
+  frame.colour_mode = request.colour_mode;
   const SurfaceMap& map = map_for_topology(*request.map, frame.topology);
   // Post-processing is left out while the particles move: it is the slow part, and only the
   // final pavement is exported.

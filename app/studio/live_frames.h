@@ -19,6 +19,7 @@ namespace paver::studio {
 struct LiveFrame {
   std::uint64_t revision = 0, sequence = 0;  // the snapshot's
   Topology topology = Topology::Lattice;    // which map its points are on (map_for_topology)
+  render::ColourMode colour_mode = render::ColourMode::NeighbourRatio;  // its elements' colouring
   render::PreparedElements elements;
   std::optional<render::PreparedPattern> pattern;  // when the pattern's lines are shown
 };

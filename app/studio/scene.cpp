@@ -24,8 +24,9 @@ bool sync_scene(Scene& scene, render::Renderer& renderer, Document& doc, const L
     scene.live_frames.reset();
     ++scene.generation;
   }
+  // Set where elements are uploaded: a live frame prepared before the colouring changed is drawn in
+  // the old colours, and asks for another.
   const bool recolour = scene.colour_mode != views.colour_mode;
-  scene.colour_mode = views.colour_mode;
   // The pattern's lines are uploaded only while they are shown: lifting them for the 3D view is
   // most of a live upload's time (46k elements: 30-80 ms of 100), on every upload of a run.
   const bool lattice_shown = views.style.show_lattice;
@@ -40,6 +41,7 @@ bool sync_scene(Scene& scene, render::Renderer& renderer, Document& doc, const L
       if (frame->revision != doc.revision) return false;
       show_map(map_for_topology(*map, frame->topology));
       renderer.set_elements(frame->elements);
+      scene.colour_mode = frame->colour_mode;
       if (frame->pattern) renderer.set_pattern(*frame->pattern);
       scene.lattice_uploaded = frame->pattern.has_value();
       scene.pavement = nullptr;
@@ -68,6 +70,7 @@ bool sync_scene(Scene& scene, render::Renderer& renderer, Document& doc, const L
   const Pavement& p = *result.pavement;
   if (scene.pavement == &p && !recolour && !lattice_missing) return false;
   auto colours = render::element_colours(p.elements, views.colour_mode, p.design.elements.gap);
+  scene.colour_mode = views.colour_mode;
   Elements with_beads;  // drawn with the stones, as they are exported; stone i stays element i
   show_map(pavement_map(*map, p));
   renderer.set_elements(stones_and_beads(p, with_beads, &colours), colours, custom_shape(doc));

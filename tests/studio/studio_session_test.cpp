@@ -233,6 +233,39 @@ TEST_F(StudioSession, TheViewsFollowALargeRunWithImagesDrawnInSlices) {
   EXPECT_TRUE(fs::exists(final_png));
 }
 
+// Pixels of the V elements' blue in the colouring by type (not the ratio scale's greens and reds,
+// nor the grey surface), in the large view.
+long type_blue_pixels(const fs::path& shot) {
+  int width = 0, height = 0, channels = 0;
+  unsigned char* pixels = stbi_load(shot.string().c_str(), &width, &height, &channels, 3);
+  if (!pixels) return -1;
+  long blue = 0;
+  for (int y = 60; y < height - 40; ++y)
+    for (int x = 440; x < width; ++x) {
+      const unsigned char* p = pixels + 3 * (long(y) * width + x);
+      if (p[2] > p[0] + 60 && p[2] > p[1] + 30) ++blue;
+    }
+  stbi_image_free(pixels);
+  return blue;
+}
+
+// A run paused mid-way shows its particles; changing the colouring then recolours them although
+// no newer snapshot comes: the live frame, prepared off the UI thread, is asked for again. (A
+// frame still being prepared in the old colouring when it changes is also asked again; that race
+// is too narrow for a session to hit reliably, so it is this test's aim, not its proof.)
+TEST_F(StudioSession, APausedRunIsRecolouredWhenTheColouringChanges) {
+  const fs::path ratio = dir_ / "ratio.png", typed = dir_ / "typed.png", script = dir_ / "session.txt";
+  // The colouring changes right after the pause, while the paused frame may still be prepared.
+  std::ofstream(script) << "open assets/surfaces/pendant.obj\nspacing 0.12\nwait 40\n"
+                        << "screenshot " << ratio.string() << "\nkey Space\ncolour type\nwait 40\n"
+                        << "screenshot " << typed.string() << "\nquit\n";
+  const Outcome r = run_script(script);
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const long before = type_blue_pixels(ratio), after = type_blue_pixels(typed);
+  ASSERT_GE(before, 0) << "cannot read " << ratio;
+  EXPECT_GT(after, before + 5000) << "blue V-element pixels: " << before << " by ratio, " << after << " by type";
+}
+
 // placements.csv as id -> (u, v, x, y, z, diameter).
 struct Row {
   double u, v, x, y, z, diameter;
