@@ -474,10 +474,10 @@ void Renderer::set_surface(const SurfaceMap& map) {
   d.instance_range.clear();
 }
 
-// Thousands of elements are drawn with coarser shapes, tens of thousands with minimal ones: at
-// those counts each is a few pixels wide, and the triangle count would otherwise run into the
-// tens of millions. On lavapipe the 3D view of 46k spheres took 0.9 s a frame with Coarse's 80
-// triangles each and 0.25 s with Minimal's 12 (docs/benchmarks.md, the studio while it solves).
+// Thousands of elements are drawn with coarser shapes, from 8,000 with minimal ones: at those
+// counts each is a few pixels wide, and the triangle count would otherwise run into the millions.
+// A software renderer's time goes with the triangles (paver-render-bench, docs/benchmarks.md):
+// these thresholds keep every count up to about 50k elements within about 600k triangles.
 ShapeDetail shape_detail_for(std::size_t element_count) {
   return element_count > kMinimalShapesAbove ? ShapeDetail::Minimal
          : element_count > kCoarseShapesAbove ? ShapeDetail::Coarse

@@ -85,7 +85,7 @@ std::vector<std::array<std::uint8_t, 3>> element_colours(const Elements& element
 
 // How many elements the 3D view draws in each shape detail (ShapeDetail): Full up to
 // kCoarseShapesAbove, Coarse up to kMinimalShapesAbove, Minimal beyond.
-inline constexpr std::size_t kCoarseShapesAbove = 4000, kMinimalShapesAbove = 20000;
+inline constexpr std::size_t kCoarseShapesAbove = 2000, kMinimalShapesAbove = 8000;
 ShapeDetail shape_detail_for(std::size_t element_count);
 
 // What a view is drawn with: its size, and the camera (3D) or the map view (2D) with the style.

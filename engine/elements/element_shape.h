@@ -30,9 +30,8 @@ inline constexpr double kGemPavilionDepth = 0.43;   // girdle bottom to culet
 inline constexpr double kGemGirdleHalf = 0.01;      // girdle thickness 0.02
 inline constexpr double kGemDepth = kGemCrownHeight + 2 * kGemGirdleHalf + kGemPavilionDepth;  // table to culet
 
-// How finely shapes are tessellated: Full for export, Coarse for drawing many thousands of
-// elements (a sphere of 80 triangles instead of 288), Minimal for tens of thousands, each a few
-// pixels wide (a sphere is a hexagonal bipyramid of 12 triangles, a gem an octagonal table,
+// How finely shapes are tessellated: Full for export, Coarse for drawing thousands of elements
+// (a sphere of 80 triangles instead of 288), Minimal for more, each a few pixels wide (a sphere is a hexagonal bipyramid of 12 triangles, a gem an octagonal table,
 // crown and pavilion of 32). Every detail has the same unit width and footprint.
 enum class ShapeDetail { Full, Coarse, Minimal };
 
