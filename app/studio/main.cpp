@@ -67,6 +67,14 @@ int main(int argc, char** argv) {
       after_present(s, window.end_frame(s.ui.screenshot.has_value()));
     }
     s.live.reset();  // a run still going is abandoned, not waited for
+    if (runner)  // how the views were drawn (views_panel.cpp), for the session's tests
+      for (int view : {0, 1}) {
+        const ViewPace& pace = s.scene.pace[std::size_t(view)];
+        const std::vector<double>& shown = s.scene.rendered[std::size_t(view)];
+        std::printf("view %s: last full image %.1f ms, %d quick images, %d drawn in slices, showing %s\n",
+                    view == 0 ? "3D" : "2D", pace.full_image_ms, pace.quick_images, pace.images_in_slices,
+                    !shown.empty() && shown.back() == kQuickImageMark ? "a quick image" : "the full image");
+      }
     // With $PAVER_VULKAN_VALIDATION=1, what the layer said about the window's device.
     for (const std::string& message : window.context()->validation_messages())
       std::fprintf(stderr, "paver-studio: Vulkan validation: %s\n", message.c_str());

@@ -16,6 +16,13 @@
 
 namespace paver::studio {
 
+// How long a view's full image takes to draw, and how the studio drew them (views_panel.cpp).
+struct ViewPace {
+  double full_image_ms = 0;   // the last full image's drawing time, whole or the sum of its slices
+  double drawing_ms = 0;      // the image being drawn in slices, so far
+  int quick_images = 0, images_in_slices = 0;
+};
+
 struct Scene {
   const SurfaceMap* surface = nullptr;    // the map last uploaded
   const SurfaceMap* map_2d = nullptr;     // the map drawn (a band's seamless map when its points are on it)
@@ -28,6 +35,7 @@ struct Scene {
   std::uint64_t generation = 0;
   std::array<std::vector<double>, 2> rendered;  // per view: the inputs its image was drawn with
   std::array<std::vector<double>, 2> drawing;   // per view: those of the image drawn in slices, if any
+  std::array<ViewPace, 2> pace;
 };
 
 // A live snapshot is shown at most this often, and only once the views finished drawing the last.
@@ -35,6 +43,11 @@ inline constexpr auto kLiveInterval = std::chrono::milliseconds(150);
 // How long a frame may spend drawing slices of each view's next image (views_panel.cpp): with the
 // rest of a frame at about 25 ms on lavapipe, the frame stays within 33 ms (30 fps).
 inline constexpr double kViewSliceBudgetMs = 3;
+// A view whose full image took longer than this is drawn in slices while it moves, after a quick
+// image without the elements (views_panel.cpp).
+inline constexpr double kQuickImageAboveMs = 20;
+// Ends Scene::rendered[view] while the view shows such a quick image (a generation is never < 0).
+inline constexpr double kQuickImageMark = -1;
 
 // Returns true when the document's final pavement was uploaded this frame: once it is presented,
 // the edit-to-result latency is known.

@@ -30,7 +30,8 @@ constexpr std::pair<std::string_view, Kind> kCommands[] = {
     {"select", Kind::Select},   {"pin", Kind::Pin},       {"unpin", Kind::Unpin},   {"drag", Kind::Drag},
     {"delete", Kind::Delete},   {"add", Kind::Add},       {"brush", Kind::Brush},
     {"colour", Kind::Colour}, {"save", Kind::Save}, {"select_box", Kind::SelectBox}, {"browse", Kind::Browse},
-    {"click", Kind::Click}, {"mouse_drag", Kind::MouseDrag}, {"key", Kind::Key}, {"mouse_drag3d", Kind::MouseDrag3d}};
+    {"click", Kind::Click}, {"mouse_drag", Kind::MouseDrag}, {"key", Kind::Key}, {"mouse_drag3d", Kind::MouseDrag3d},
+    {"orbit", Kind::Orbit}};
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
 
@@ -182,6 +183,14 @@ bool parse_script_line(std::string_view line, int line_number, const std::string
         throw InputError(where + "cut '" + std::string(thickness) + "': the thickness must be a number above 0");
       if (folder.empty()) throw InputError(where + "cut " + std::string(thickness) + " needs a folder");
       out.text = std::string(folder);
+      break;
+    }
+    case Kind::Orbit: {
+      need_argument("degrees and a number of frames, e.g. orbit 90 60");
+      const auto [degrees, frames] = first_word(rest);
+      if (!parse_number(degrees, out.number) || !std::isfinite(out.number) || !parse_number(frames, out.frames) ||
+          out.frames < 1)
+        throw InputError(where + "orbit '" + std::string(rest) + "': give degrees and a whole number of frames >= 1");
       break;
     }
     case Kind::Wait: {

@@ -6,13 +6,15 @@
 //   delete ID|selection | add U V | brush U V RADIUS STRENGTH |
 //   colour ratio|type | browse surface|design|save|export|shape |
 //   click U V [shift|ctrl] | mouse_drag U0 V0 U1 V1 [shift|ctrl] | key E|P|I|V|L|C|R|N|Delete|Escape|Space |
-//   mouse_drag3d ID U V
+//   mouse_drag3d ID U V | orbit DEGREES FRAMES
 // (element commands name elements by the ids placements.csv lists; drag moves by DU, DV spacings D
 // in the map, add puts a vertex element at map coordinates U, V, placements.csv's u and v; brush
 // paints a guidance dab there, RADIUS in spacings D, STRENGTH in [-0.5, 1]: > 0 looser, < 0 denser)
 // (click and mouse_drag play the mouse into the large 2D view at map points, mouse_drag3d drags
 // element ID in the large 3D view to the surface point at map point U V, key presses a key:
 // the views' own mouse handling and the shortcuts run on them, as on a designer's hand)
+// (orbit turns the 3D camera about its target by DEGREES over FRAMES frames, as a drag does, and
+// prints the frames' pace: "frames_while_orbiting ...")
 // (browse opens the file dialog for that button, as a click on it does: for screenshots)
 // (panel shows a side panel: file, pattern, elements, optimize, report or help; cut_axis picks the
 // plane a closed surface is cut across, and opens an open closed surface again with it)
@@ -26,12 +28,12 @@ namespace paver::studio {
 struct ScriptCommand {
   enum class Kind { Open, CutAxis, Design, Pattern, Spacing, Set, Optimize, Undo, Redo, Export, Cut, Screenshot, View3d,
                     View2d, Panel, Wait, Quit, Select, Pin, Unpin, Drag, Delete, Add, Brush, Colour, Save, SelectBox, Browse,
-                    Click, MouseDrag, Key, MouseDrag3d };
+                    Click, MouseDrag, Key, MouseDrag3d, Orbit };
   Kind kind = Kind::Quit;
   std::string text;    // open/design/save/export/cut/screenshot: the path; pattern, panel, cut_axis, colour: the name; set: the key
   std::string value;   // set: the value as written
-  double number = 0;   // spacing: D; cut: the metal's thickness
-  int frames = 0;      // wait: N
+  double number = 0;   // spacing: D; cut: the metal's thickness; orbit: degrees
+  int frames = 0;      // wait, orbit: N
   int id = -1;         // select, pin, unpin, drag, delete: the element (kSelection: the selection)
   double u = 0, v = 0; // drag: the move in spacings D; add, brush: the map point
   double radius = 0, strength = 0;  // brush

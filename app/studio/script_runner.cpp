@@ -8,6 +8,7 @@
 
 #include <cstdio>
 #include <initializer_list>
+#include <numbers>
 #include <utility>
 
 namespace paver::studio {
@@ -45,6 +46,7 @@ std::string describe(const ScriptCommand& c) {
   switch (c.kind) {
     case Kind::Spacing: return text + numbers_text({c.number});
     case Kind::Wait: return text + " " + std::to_string(c.frames);
+    case Kind::Orbit: return text + numbers_text({c.number, double(c.frames)});
     case Kind::Brush: return text + numbers_text({c.u, c.v, c.radius, c.strength});
     case Kind::Add: return text + numbers_text({c.u, c.v});
     case Kind::SelectBox: return text + numbers_text({c.u, c.v, c.u1, c.v1});
@@ -154,6 +156,11 @@ void ScriptRunner::act(Studio& s, const ScriptCommand& c) {
       break;
     case Kind::Panel: s.ui.select_panel = c.text; break;
     case Kind::Wait: frames_left_ = c.frames; break;
+    case Kind::Orbit:
+      orbit_step_ = float(c.number * std::numbers::pi / 180.0 / c.frames);
+      frames_left_ = c.frames;
+      s.orbiting_frames.emplace();
+      break;
     case Kind::Quit: s.quit = true; break;
     case Kind::Select:
     case Kind::Pin:
@@ -197,12 +204,21 @@ void ScriptRunner::act(Studio& s, const ScriptCommand& c) {
   }
 }
 
-bool ScriptRunner::settled(const Studio& s, const ScriptCommand& c) {
+bool ScriptRunner::settled(Studio& s, const ScriptCommand& c) {
   switch (c.kind) {
     case Kind::Open: return !s.loader.busy() && s.doc.surface.path == std::filesystem::path(c.text);
     case Kind::CutAxis: return !s.loader.busy();
     case Kind::Screenshot: return !s.ui.screenshot;  // after_present wrote it
     case Kind::Wait: return frames_left_-- <= 0;
+    case Kind::Orbit:
+      if (frames_left_-- > 0) {
+        s.views.camera.yaw += orbit_step_;  // drawn this frame
+        return false;
+      }
+      std::printf("frames_while_orbiting %s\n", describe(frame_pace(s.orbiting_frames->frame_ms)).c_str());
+      std::fflush(stdout);
+      s.orbiting_frames.reset();
+      return true;
     case Kind::Click:
     case Kind::MouseDrag:
     case Kind::MouseDrag3d:

@@ -25,14 +25,15 @@ private:
   enum class Phase { Ready, Settling };  // waiting to start the command / for it to take effect
   bool ready(const Studio& s, const ScriptCommand& c) const;
   void act(Studio& s, const ScriptCommand& c);
-  bool settled(const Studio& s, const ScriptCommand& c);
+  bool settled(Studio& s, const ScriptCommand& c);
   void fail(Studio& s, const std::string& message, int code);
 
   std::vector<ScriptCommand> commands_;
   std::string source_;
   std::size_t next_ = 0;
   Phase phase_ = Phase::Ready;
-  int frames_left_ = 0;                       // wait N
+  int frames_left_ = 0;                       // wait N, orbit
+  float orbit_step_ = 0;                      // orbit: radians per frame
   std::chrono::steady_clock::time_point since_;  // the current command started waiting
   int errors_seen_ = 0;
   bool finished_ = false;

@@ -512,6 +512,12 @@ void after_present(Studio& s, const std::optional<render::Image>& frame) {
     }
     f = {};
   }
+  if (s.orbiting_frames) {
+    SolvingFrames& o = *s.orbiting_frames;
+    if (o.last != std::chrono::steady_clock::time_point{})
+      o.frame_ms.push_back(std::chrono::duration<double, std::milli>(now - o.last).count());
+    o.last = now;
+  }
   if (s.result_shown && s.doc.result.latency_ms < 0) {
     s.doc.result.latency_ms = s.doc.edit_clock.ms(Clock::now());
     if (s.script_mode) {

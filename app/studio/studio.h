@@ -105,6 +105,7 @@ struct Studio {
   bool quit = false;
   bool result_shown = false; // the final pavement was uploaded this frame
   SolvingFrames solving_frames;
+  std::optional<SolvingFrames> orbiting_frames;  // a script's orbit in progress: its frames
   std::deque<InputFrame> input_queue;  // a script's mouse and keys, played one per frame
 };
 

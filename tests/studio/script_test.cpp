@@ -156,6 +156,16 @@ TEST(Script, ABoxSelectsAndTheSelectionIsPinnedOrDeleted) {
   EXPECT_NE(error_of("select selection").find("whole number >= 0"), std::string::npos);
 }
 
+TEST(Script, OrbitTakesDegreesAndFrames) {
+  const auto orbit = parse_script("orbit -45.5 30\n", "s.txt");
+  ASSERT_EQ(orbit.size(), 1u);
+  EXPECT_EQ(orbit[0].kind, Kind::Orbit);
+  EXPECT_EQ(orbit[0].number, -45.5);
+  EXPECT_EQ(orbit[0].frames, 30);
+  for (const char* bad : {"orbit 90", "orbit ninety 10", "orbit 90 0", "orbit 90 2.5", "orbit inf 10"})
+    EXPECT_NE(error_of(bad).find("give degrees and a whole number of frames >= 1"), std::string::npos) << bad;
+}
+
 TEST(Script, MissingFileIsAnInputError) {
   EXPECT_THROW(load_script("/nonexistent/session.txt"), InputError);
 }

@@ -41,18 +41,39 @@ std::vector<double> style_inputs(const render::SceneStyle& st) {
           st.background[0], st.background[1], st.background[2]};
 }
 
-// A view's image drawn in slices is complete, and now shown.
-void completed_in_slices(Studio& s, int view) {
-  s.scene.rendered[view] = std::move(s.scene.drawing[view]);
-  s.scene.drawing[view].clear();
-  ++s.solving_frames.images_drawn_in_slices;
+double ms_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// Renders the view into the renderer's image unless it already shows exactly this. While a run
-// moves the elements, a new image of the same look (size, camera, style) is drawn a slice per
-// frame and shown once complete: on a software renderer a view of tens of thousands of elements
-// takes longer than a frame. Anything else (the camera moved, a screenshot is due, the result
-// arrived) draws the view whole at once.
+// Adds a slice to the view's image being drawn; once complete it is shown.
+void draw_more(Studio& s, int view) {
+  ViewPace& pace = s.scene.pace[view];
+  const auto t0 = std::chrono::steady_clock::now();
+  const bool complete = s.renderer.draw_more(view, kViewSliceBudgetMs);
+  pace.drawing_ms += ms_since(t0);
+  if (!complete) return;
+  s.scene.rendered[view] = std::move(s.scene.drawing[view]);
+  s.scene.drawing[view].clear();
+  pace.full_image_ms = pace.drawing_ms;
+  ++pace.images_in_slices;
+  if (s.live.state() == RunState::Running) ++s.solving_frames.images_drawn_in_slices;
+}
+
+// `now`: its first slice this frame; else from the next, unless the view moves on before.
+void start_drawing(Studio& s, int view, const render::ViewRequest& request, std::vector<double> inputs, bool now) {
+  s.renderer.start_drawing(view, request);
+  s.scene.drawing[view] = std::move(inputs);
+  s.scene.pace[view].drawing_ms = 0;
+  if (now) draw_more(s, view);
+}
+
+// Renders the view into the renderer's image unless it already shows exactly this. Where a whole
+// image takes longer than a frame can spare (tens of thousands of elements on a software
+// renderer), the full image is drawn a slice per frame and shown once complete:
+// - while a run moves the elements, each new image of the same look (size, camera, style);
+// - while the view moves, after a quick image without the elements and the pattern's lines,
+//   which is shown at once, so that the view follows the mouse.
+// A screenshot, or a view quick to draw, is drawn whole at once.
 void render_if_changed(Studio& s, int view, int width, int height) {
   std::vector<double> inputs = {double(width), double(height)};
   if (view == 0) {
@@ -68,23 +89,28 @@ void render_if_changed(Studio& s, int view, int width, int height) {
   inputs.push_back(double(s.scene.generation));  // last: the look is everything before it
 
   std::vector<double>& shown = s.scene.rendered[view];
-  std::vector<double>& drawing = s.scene.drawing[view];
-  if (s.renderer.drawing(view) && drawing == inputs && !s.ui.screenshot) {
-    if (s.renderer.draw_more(view, kViewSliceBudgetMs)) completed_in_slices(s, view);
-    return;
-  }
+  const bool whole_now = s.ui.screenshot.has_value();
+  if (s.renderer.drawing(view) && s.scene.drawing[view] == inputs && !whole_now) return draw_more(s, view);
   s.renderer.stop_drawing(view);
-  drawing.clear();
+  s.scene.drawing[view].clear();
   if (shown == inputs) return;
   const render::ViewRequest request{width, height, s.views.camera, s.views.map_view, s.views.style};
   const bool same_look = shown.size() == inputs.size() && std::equal(inputs.begin(), inputs.end() - 1, shown.begin());
-  if (same_look && s.live.state() == RunState::Running && !s.ui.screenshot) {
-    s.renderer.start_drawing(view, request);
-    drawing = inputs;
-    if (s.renderer.draw_more(view, kViewSliceBudgetMs)) completed_in_slices(s, view);
-    return;
+  ViewPace& pace = s.scene.pace[view];
+  if (!whole_now && same_look && s.live.state() == RunState::Running)
+    return start_drawing(s, view, request, inputs, true);
+  if (!whole_now && !same_look && pace.full_image_ms > kQuickImageAboveMs) {
+    render::ViewRequest quick = request;
+    quick.style.show_elements = quick.style.show_lattice = false;
+    s.renderer.render(view, quick);
+    shown = inputs;
+    shown.push_back(kQuickImageMark);
+    ++pace.quick_images;
+    return start_drawing(s, view, request, inputs, false);
   }
+  const auto t0 = std::chrono::steady_clock::now();
   s.renderer.render(view, request);
+  pace.full_image_ms = ms_since(t0);
   shown = std::move(inputs);
 }
 
