@@ -80,10 +80,11 @@ struct Renderer::Impl {
   std::optional<vk::raii::PipelineLayout> layout;
   std::optional<vk::raii::Pipeline> surface_pipe, element_pipe, lines3d_pipe, tris2d_pipe, lines2d_pipe, disk_pipe;
   std::optional<vk::raii::Sampler> sampler;
-  // Per view: the image shown, and the one drawn over several frames (start_3d, draw_more) until
-  // it is complete and takes the other's place.
-  std::array<std::array<RenderTarget, 2>, 2> targets;
-  std::array<int, 2> shown{0, 0};
+  // Per view: the full image shown, the one drawn over several frames (start_drawing, draw_more)
+  // until it is complete and takes the other's place, and [2] the quick image (render_quick).
+  std::array<std::array<RenderTarget, 3>, 2> targets;
+  std::array<int, 2> shown{0, 0};             // the full image shown: 0 or 1
+  std::array<bool, 2> quick_shown{false, false};  // the quick image is shown instead
   std::array<int, 2> image_changes{0, 0};  // the shown image re-created or swapped
   std::array<std::optional<ViewDrawing>, 2> unfinished;
 
@@ -225,7 +226,7 @@ struct Renderer::Impl {
     cb.pushConstants<FramePush>(**layout, vk::ShaderStageFlagBits::eVertex | vk::ShaderStageFlagBits::eFragment, 0, f);
   }
 
-  RenderTarget& shown_target(int view) { return targets[view][shown[view]]; }
+  RenderTarget& shown_target(int view) { return targets[view][quick_shown[view] ? 2 : shown[view]]; }
   RenderTarget& drawn_target(int view) { return targets[view][1 - shown[view]]; }
 
   // Draws slices of `drawing` into `t` until it is complete or `budget_ms` is spent (one slice at
@@ -516,10 +517,23 @@ void Renderer::set_pattern(const PreparedPattern& prepared) {
 void Renderer::render(int view, const ViewRequest& request) {
   Impl& d = *impl_;
   d.unfinished[view].reset();
-  RenderTarget& t = d.shown_target(view);
-  if (t.ensure(*d.vk, *d.pass, request.width, request.height)) ++d.image_changes[view];
+  RenderTarget& t = d.targets[view][d.shown[view]];
+  if (t.ensure(*d.vk, *d.pass, request.width, request.height) || d.quick_shown[view]) ++d.image_changes[view];
+  d.quick_shown[view] = false;
   ViewDrawing drawing = d.drawing_of(view, t, request);
   d.draw_slices(t, drawing, kWholeImage);
+}
+
+void Renderer::render_quick(int view, const ViewRequest& request) {
+  Impl& d = *impl_;
+  RenderTarget& t = d.targets[view][2];
+  t.ensure(*d.vk, *d.pass, (request.width + 1) / 2, (request.height + 1) / 2);
+  ViewRequest quick = request;
+  quick.style.show_elements = quick.style.show_lattice = false;
+  ViewDrawing drawing = d.drawing_of(view, t, quick);
+  d.draw_slices(t, drawing, kWholeImage);
+  d.quick_shown[view] = true;
+  ++d.image_changes[view];
 }
 
 void Renderer::render_3d(int width, int height, const OrbitCamera& camera, const SceneStyle& style) {
@@ -543,6 +557,7 @@ bool Renderer::draw_more(int view, double budget_ms) {
   if (!d.draw_slices(d.drawn_target(view), *d.unfinished[view], budget_ms)) return false;
   d.unfinished[view].reset();
   d.shown[view] = 1 - d.shown[view];
+  d.quick_shown[view] = false;
   ++d.image_changes[view];
   return true;
 }
@@ -584,7 +599,8 @@ Image Renderer::read_back(int view) {
 }
 
 void* Renderer::image_view(int view) const {
-  const auto& t = impl_->targets[view][impl_->shown[view]];
+  const Impl& d = *impl_;
+  const auto& t = d.targets[view][d.quick_shown[view] ? 2 : d.shown[view]];
   return t.colour.view ? reinterpret_cast<void*>(static_cast<VkImageView>(**t.colour.view)) : nullptr;
 }
 void* Renderer::sampler() const { return reinterpret_cast<void*>(static_cast<VkSampler>(**impl_->sampler)); }

@@ -128,6 +128,9 @@ public:
   // view's image. Until then the view keeps its last complete image (image_view, read_back). A
   // scene change (set_*) or a whole render of the view drops an unfinished image.
   void start_drawing(int view, const ViewRequest& request);
+  // A quick image of the view while it moves: at half the size (the studio stretches it), without
+  // the elements and the pattern's lines. It is shown until the next whole or complete image.
+  void render_quick(int view, const ViewRequest& request);
   bool draw_more(int view, double budget_ms);
   bool drawing(int view) const;  // an unfinished image is waiting for draw_more
   void stop_drawing(int view);

@@ -217,6 +217,34 @@ TEST(Renderer, ASceneChangeOrAWholeRenderDropsAnUnfinishedImage) {
   EXPECT_FALSE(r.drawing(0));
 }
 
+// While a heavy view moves the studio shows a quick image: half the size, the surface without the
+// elements; the next whole image takes its place again.
+TEST(Renderer, AQuickImageIsHalfSizeWithoutTheElementsUntilTheNextWholeOne) {
+  REQUIRE_VULKAN();
+  render::Renderer& r = *fixture().renderer;
+  const Pavement& p = dome_pavement(dome_map());
+  r.set_surface(dome_map());
+  r.set_elements(p.elements, render::element_colours(p.elements, render::ColourMode::NeighbourRatio));
+  const render::ViewRequest request{640, 400, render::frame_surface(dome_map().mesh), {}, {}};
+  r.render(0, request);
+  const Counts full = count(r.read_back(0));
+  ASSERT_GT(full.green, full.total / 10) << "the elements";
+  const int generation = r.image_generation(0);
+  r.render_quick(0, request);
+  EXPECT_NE(r.image_generation(0), generation) << "the studio binds the quick image";
+  const render::Image quick = r.read_back(0);
+  EXPECT_EQ(quick.width, 320);
+  EXPECT_EQ(quick.height, 200);
+  const Counts c = count(quick);
+  EXPECT_EQ(c.green, 0) << "no elements";
+  EXPECT_GT(c.grey, c.total / 5) << "the surface";
+  const int quick_generation = r.image_generation(0);
+  r.render(0, request);
+  EXPECT_NE(r.image_generation(0), quick_generation);
+  EXPECT_EQ(r.read_back(0).width, 640);
+  EXPECT_GT(count(r.read_back(0)).green, full.total / 10);
+}
+
 TEST(Renderer, LegendIsDrawnIntoTheImage) {
   render::Image image;
   image.width = 800, image.height = 600;

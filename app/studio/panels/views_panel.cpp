@@ -100,9 +100,7 @@ void render_if_changed(Studio& s, int view, int width, int height) {
   if (!whole_now && same_look && s.live.state() == RunState::Running)
     return start_drawing(s, view, request, inputs, true);
   if (!whole_now && !same_look && pace.full_image_ms > kQuickImageAboveMs) {
-    render::ViewRequest quick = request;
-    quick.style.show_elements = quick.style.show_lattice = false;
-    s.renderer.render(view, quick);
+    s.renderer.render_quick(view, request);
     shown = inputs;
     shown.push_back(kQuickImageMark);
     ++pace.quick_images;
