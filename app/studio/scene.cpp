@@ -42,7 +42,8 @@ bool sync_scene(Scene& scene, render::Renderer& renderer, Document& doc, const L
       show_map(map_for_topology(*map, frame->topology));
       renderer.set_elements(frame->elements);
       scene.colour_mode = frame->colour_mode;
-      if (frame->pattern) renderer.set_pattern(*frame->pattern);
+      // Without the lines, the last ones are dropped: they are not this frame's.
+      renderer.set_pattern(frame->pattern ? *frame->pattern : render::PreparedPattern{});
       scene.lattice_uploaded = frame->pattern.has_value();
       scene.pavement = nullptr;
       scene.live_sequence = frame->sequence;
@@ -54,8 +55,10 @@ bool sync_scene(Scene& scene, render::Renderer& renderer, Document& doc, const L
     const bool again = recolour || lattice_missing;
     if (!again && scene.live_sequence != 0 && now - scene.live_uploaded < kLiveInterval) return false;
     // The views are still drawing the last frame: a new one now would restart them, and they
-    // would never finish.
-    if (!again && (renderer.drawing(0) || renderer.drawing(1))) return false;
+    // would never finish. A view that moves (a drawing started but not yet drawn: each frame it
+    // draws a quick image instead) does not hold the live view up.
+    const auto drawing = [&](int view) { return renderer.drawing(view) && scene.pace[std::size_t(view)].drawing_ms > 0; };
+    if (!again && (drawing(0) || drawing(1))) return false;
     std::optional<LiveSnapshot> snapshot = live.snapshot_since(again ? 0 : scene.live_sequence);
     if (!snapshot || snapshot->revision != doc.revision) return false;
     scene.live_frames.prepare(std::move(*snapshot),

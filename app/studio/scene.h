@@ -18,8 +18,8 @@ namespace paver::studio {
 
 // How long a view's full image takes to draw, and how the studio drew them (views_panel.cpp).
 struct ViewPace {
-  double full_image_ms = 0;   // the last full image's drawing time, whole or the sum of its slices
-  double drawing_ms = 0;      // the image being drawn in slices, so far
+  double full_image_ms = 0;   // the last whole image's drawing time
+  double drawing_ms = 0;      // the image being drawn in slices, so far (0: no slice drawn yet)
   int quick_images = 0, images_in_slices = 0;
 };
 
@@ -36,6 +36,7 @@ struct Scene {
   std::array<std::vector<double>, 2> rendered;  // per view: the inputs its image was drawn with
   std::array<std::vector<double>, 2> drawing;   // per view: those of the image drawn in slices, if any
   std::array<ViewPace, 2> pace;
+  std::array<bool, 2> redraw_whole{false, false};  // the view's image was replaced: draw it whole
 };
 
 // A live snapshot is shown at most this often, and only once the views finished drawing the last.

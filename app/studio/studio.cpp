@@ -368,7 +368,8 @@ void save_view_png(Studio& s, const fs::path& path) {
   render::OrbitCamera centred = s.views.camera;
   centred.screen_shift_x = 0;
   s.renderer.render_3d(width, height, centred, s.views.style);
-  s.scene.rendered[0].clear();  // the screen's view is drawn again next frame
+  s.scene.rendered[0].clear();  // the screen's view is drawn again next frame, whole
+  s.scene.redraw_whole[0] = true;
   render::Image image = s.renderer.read_back(0);
   // The legend of the colouring on screen, as the screen draws it.
   if (s.views.show_legend && s.views.style.show_elements) {
@@ -518,6 +519,7 @@ void after_present(Studio& s, const std::optional<render::Image>& frame) {
       o.frame_ms.push_back(std::chrono::duration<double, std::milli>(now - o.last).count());
     o.last = now;
   }
+  s.last_present = now;
   if (s.result_shown && s.doc.result.latency_ms < 0) {
     s.doc.result.latency_ms = s.doc.edit_clock.ms(Clock::now());
     if (s.script_mode) {

@@ -106,6 +106,7 @@ struct Studio {
   bool result_shown = false; // the final pavement was uploaded this frame
   SolvingFrames solving_frames;
   std::optional<SolvingFrames> orbiting_frames;  // a script's orbit in progress: its frames
+  std::chrono::steady_clock::time_point last_present{};
   std::deque<InputFrame> input_queue;  // a script's mouse and keys, played one per frame
 };
 

@@ -28,6 +28,13 @@ TEST(FramePace, OneStallShowsInTheSecondThatHoldsIt) {
   EXPECT_EQ(pace.fewest_in_a_second, 21);
 }
 
+TEST(FramePace, AStallAtTheStartCounts) {
+  std::vector<double> frames(100, 20.0);
+  frames[0] = 600.0;  // the first frame: the second from the run's start holds it and 20 more
+  EXPECT_EQ(frame_pace(frames).fewest_in_a_second, 21);
+  EXPECT_EQ(frame_pace(std::vector<double>(50, 20.0)).fewest_in_a_second, 50) << "exactly one second";
+}
+
 TEST(FramePace, ThePercentileIgnoresTheRareSlowFrame) {
   std::vector<double> frames(1000, 10.0);
   for (int i = 0; i < 5; ++i) frames[i * 200] = 50.0;  // 0.5% of the frames

@@ -241,7 +241,7 @@ TEST_F(StudioSession, TurningAHeavyViewShowsQuickImagesThenTheFullOne) {
   std::ofstream(script) << "open assets/surfaces/pendant.obj\nspacing 0.12\noptimize\norbit 40 20\nwait 100\nquit\n";
   const Outcome r = run_script(script);
   ASSERT_EQ(r.exit_code, 0) << describe(r);
-  ASSERT_NE(r.out.find("frames_while_orbiting 19,"), std::string::npos) << describe(r);
+  ASSERT_NE(r.out.find("frames_while_orbiting 20,"), std::string::npos) << describe(r);
   const std::size_t at = r.out.find("view 3D: ");
   ASSERT_NE(at, std::string::npos) << describe(r);
   const std::string line = r.out.substr(at, r.out.find('\n', at) - at);

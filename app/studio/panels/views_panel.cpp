@@ -54,7 +54,6 @@ void draw_more(Studio& s, int view) {
   if (!complete) return;
   s.scene.rendered[view] = std::move(s.scene.drawing[view]);
   s.scene.drawing[view].clear();
-  pace.full_image_ms = pace.drawing_ms;
   ++pace.images_in_slices;
   if (s.live.state() == RunState::Running) ++s.solving_frames.images_drawn_in_slices;
 }
@@ -89,7 +88,8 @@ void render_if_changed(Studio& s, int view, int width, int height) {
   inputs.push_back(double(s.scene.generation));  // last: the look is everything before it
 
   std::vector<double>& shown = s.scene.rendered[view];
-  const bool whole_now = s.ui.screenshot.has_value();
+  // A screenshot, or the view's image replaced by another (save_view_png), is drawn whole.
+  const bool whole_now = s.ui.screenshot.has_value() || s.scene.redraw_whole[view];
   if (s.renderer.drawing(view) && s.scene.drawing[view] == inputs && !whole_now) return draw_more(s, view);
   s.renderer.stop_drawing(view);
   s.scene.drawing[view].clear();
@@ -106,10 +106,12 @@ void render_if_changed(Studio& s, int view, int width, int height) {
     ++pace.quick_images;
     return start_drawing(s, view, request, inputs, false);
   }
+  // Only a whole image measures the view: slices each add a load and store of the image.
   const auto t0 = std::chrono::steady_clock::now();
   s.renderer.render(view, request);
   pace.full_image_ms = ms_since(t0);
   shown = std::move(inputs);
+  s.scene.redraw_whole[view] = false;
 }
 
 // --- 3D ---------------------------------------------------------------------------------------
