@@ -253,6 +253,16 @@ struct Renderer::Impl {
     return drawing.next == pieces.size();
   }
 
+  // One draw of `count` vertices of `buffer` (FlatVertex) with `pipe`: lines and map triangles.
+  static DrawPiece flat_piece(const vk::raii::Pipeline& pipe, const gpu::GpuBuffer& buffer, std::uint32_t count) {
+    return {[&pipe, &buffer, count](vk::raii::CommandBuffer& cb) {
+              cb.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipe);
+              cb.bindVertexBuffers(0, buffer.handle(), {0});
+              cb.draw(count, 1, 0, 0);
+            },
+            count};
+  }
+
   // A run of instanced draws cut so that each piece stays within a slice.
   void add_instanced(std::vector<DrawPiece>& pieces, const std::function<void(vk::raii::CommandBuffer&)>& bind,
                      std::uint32_t shape_first, std::uint32_t shape_vertices, std::uint32_t first, std::uint32_t count) {
@@ -291,13 +301,7 @@ struct Renderer::Impl {
         add_instanced(out.pieces, bind, shape.first, shape.second, range.first, range.second);
       }
     }
-    if (style.show_lattice && lattice3d_count > 0)
-      out.pieces.push_back({[this](vk::raii::CommandBuffer& cb) {
-                              cb.bindPipeline(vk::PipelineBindPoint::eGraphics, **lines3d_pipe);
-                              cb.bindVertexBuffers(0, lattice3d.handle(), {0});
-                              cb.draw(lattice3d_count, 1, 0, 0);
-                            },
-                            lattice3d_count});
+    if (style.show_lattice && lattice3d_count > 0) out.pieces.push_back(flat_piece(*lines3d_pipe, lattice3d, lattice3d_count));
     return out;
   }
 
@@ -305,17 +309,10 @@ struct Renderer::Impl {
     ViewDrawing out;
     out.style = style;
     out.push = FramePush{view.projection(float(t.width) / float(t.height)), glm::vec4(0, 0, 1, 1), glm::vec4(0, 0, 1, 0)};
-    const auto flat = [this](const vk::raii::Pipeline& pipe, const gpu::GpuBuffer& buffer, std::uint32_t count) {
-      return DrawPiece{[this, &pipe, &buffer, count](vk::raii::CommandBuffer& cb) {
-                         cb.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipe);
-                         cb.bindVertexBuffers(0, buffer.handle(), {0});
-                         cb.draw(count, 1, 0, 0);
-                       },
-                       count};
-    };
-    if (map_triangle_count > 0) out.pieces.push_back(flat(*tris2d_pipe, map_triangles, map_triangle_count));
-    if (style.show_map_wireframe && map_line_count > 0) out.pieces.push_back(flat(*lines2d_pipe, map_lines, map_line_count));
-    if (style.show_lattice && lattice2d_count > 0) out.pieces.push_back(flat(*lines2d_pipe, lattice2d, lattice2d_count));
+    if (map_triangle_count > 0) out.pieces.push_back(flat_piece(*tris2d_pipe, map_triangles, map_triangle_count));
+    if (style.show_map_wireframe && map_line_count > 0)
+      out.pieces.push_back(flat_piece(*lines2d_pipe, map_lines, map_line_count));
+    if (style.show_lattice && lattice2d_count > 0) out.pieces.push_back(flat_piece(*lines2d_pipe, lattice2d, lattice2d_count));
     if (style.show_elements && disk_count > 0)
       add_instanced(out.pieces,
                     [this](vk::raii::CommandBuffer& cb) {
@@ -563,6 +560,8 @@ bool Renderer::draw_more(int view, double budget_ms) {
 }
 
 bool Renderer::drawing(int view) const { return impl_->unfinished[view].has_value(); }
+
+bool Renderer::drawing_begun(int view) const { return drawing(view) && impl_->unfinished[view]->cleared; }
 
 void Renderer::stop_drawing(int view) { impl_->unfinished[view].reset(); }
 

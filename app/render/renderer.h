@@ -132,7 +132,8 @@ public:
   // the elements and the pattern's lines. It is shown until the next whole or complete image.
   void render_quick(int view, const ViewRequest& request);
   bool draw_more(int view, double budget_ms);
-  bool drawing(int view) const;  // an unfinished image is waiting for draw_more
+  bool drawing(int view) const;        // an unfinished image is waiting for draw_more
+  bool drawing_begun(int view) const;  // ... and draw_more has drawn a slice of it
   void stop_drawing(int view);
 
   // Reads a view's image back (for PNGs and tests).

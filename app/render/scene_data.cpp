@@ -3,6 +3,7 @@
 #include "renderer.h"
 
 #include "map/lifting.h"
+#include "mesh/surface_mesh.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -66,9 +67,7 @@ PreparedPattern prepare_pattern(const SurfaceMap& map, const Pattern& pattern, c
   LiftedPoints lifted;
   lifted.resize(samples.size());
   lift_points(map, samples, lifted);
-  glm::dvec3 lo(1e300), hi(-1e300);
-  for (const auto& p : map.mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
-  const double raise = 0.002 * glm::length(hi - lo);
+  const double raise = 0.002 * bounding_box_diagonal(map.mesh);
   const std::uint32_t lifted_colour = pack_colour({20, 40, 90});
   for (std::size_t i = 0; i < samples.size(); i += kSamples + 1)
     for (int s = 0; s < kSamples; ++s) {

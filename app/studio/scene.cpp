@@ -55,10 +55,9 @@ bool sync_scene(Scene& scene, render::Renderer& renderer, Document& doc, const L
     const bool again = recolour || lattice_missing;
     if (!again && scene.live_sequence != 0 && now - scene.live_uploaded < kLiveInterval) return false;
     // The views are still drawing the last frame: a new one now would restart them, and they
-    // would never finish. A view that moves (a drawing started but not yet drawn: each frame it
-    // draws a quick image instead) does not hold the live view up.
-    const auto drawing = [&](int view) { return renderer.drawing(view) && scene.pace[std::size_t(view)].drawing_ms > 0; };
-    if (!again && (drawing(0) || drawing(1))) return false;
+    // would never finish. A view that moves (its drawing not begun: each frame it draws a quick
+    // image instead) does not hold the live view up.
+    if (!again && (renderer.drawing_begun(0) || renderer.drawing_begun(1))) return false;
     std::optional<LiveSnapshot> snapshot = live.snapshot_since(again ? 0 : scene.live_sequence);
     if (!snapshot || snapshot->revision != doc.revision) return false;
     scene.live_frames.prepare(std::move(*snapshot),

@@ -19,7 +19,6 @@ namespace paver::studio {
 // How long a view's full image takes to draw, and how the studio drew them (views_panel.cpp).
 struct ViewPace {
   double full_image_ms = 0;   // the last whole image's drawing time
-  double drawing_ms = 0;      // the image being drawn in slices, so far (0: no slice drawn yet)
   int quick_images = 0, images_in_slices = 0;
 };
 

@@ -159,8 +159,7 @@ void ScriptRunner::act(Studio& s, const ScriptCommand& c) {
     case Kind::Orbit:
       orbit_step_ = float(c.number * std::numbers::pi / 180.0 / c.frames);
       frames_left_ = c.frames;
-      s.orbiting_frames.emplace();
-      s.orbiting_frames->last = s.last_present;  // the first turn is drawn this frame
+      s.orbiting_frames.emplace();  // the first turn is drawn this frame
       break;
     case Kind::Quit: s.quit = true; break;
     case Kind::Select:

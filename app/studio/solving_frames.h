@@ -3,7 +3,6 @@
 // script session prints them when the run ends ("frames_while_solving"): the mean, the slowest
 // frame, the 99th percentile, and the fewest frames drawn in any one second of the run (sliding),
 // which is what "keeps 30 fps" means to the eye; and how many live images the views completed.
-#include <chrono>
 #include <string>
 #include <vector>
 
@@ -12,7 +11,7 @@ namespace paver::studio {
 struct SolvingFrames {
   std::vector<double> frame_ms;  // each frame's time, present to present
   int images_drawn_in_slices = 0;  // the views' live images completed (views_panel.cpp)
-  std::chrono::steady_clock::time_point last{};
+  bool solving = false;            // a run was solving at the last present
 };
 
 struct FramePace {

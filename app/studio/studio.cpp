@@ -499,13 +499,16 @@ void draw_studio(Studio& s) {
 void after_present(Studio& s, const std::optional<render::Image>& frame) {
   SolvingFrames& f = s.solving_frames;
   const auto now = std::chrono::steady_clock::now();
+  // This frame's time, present to present (none for the first frame).
+  const std::optional<double> frame_ms =
+      s.last_present == Clock::time_point{}
+          ? std::nullopt
+          : std::optional<double>(std::chrono::duration<double, std::milli>(now - s.last_present).count());
+  s.last_present = now;
   if (s.live.state() == RunState::Running) {
-    if (f.last != std::chrono::steady_clock::time_point{}) {
-      const double ms = std::chrono::duration<double, std::milli>(now - f.last).count();
-      f.frame_ms.push_back(ms);
-    }
-    f.last = now;
-  } else if (f.last != std::chrono::steady_clock::time_point{}) {
+    if (frame_ms) f.frame_ms.push_back(*frame_ms);
+    f.solving = true;
+  } else if (f.solving) {
     if (s.script_mode && !f.frame_ms.empty()) {
       std::printf("frames_while_solving %s, live images %d\n", describe(frame_pace(f.frame_ms)).c_str(),
                   f.images_drawn_in_slices);
@@ -513,13 +516,7 @@ void after_present(Studio& s, const std::optional<render::Image>& frame) {
     }
     f = {};
   }
-  if (s.orbiting_frames) {
-    SolvingFrames& o = *s.orbiting_frames;
-    if (o.last != std::chrono::steady_clock::time_point{})
-      o.frame_ms.push_back(std::chrono::duration<double, std::milli>(now - o.last).count());
-    o.last = now;
-  }
-  s.last_present = now;
+  if (s.orbiting_frames && frame_ms) s.orbiting_frames->frame_ms.push_back(*frame_ms);
   if (s.result_shown && s.doc.result.latency_ms < 0) {
     s.doc.result.latency_ms = s.doc.edit_clock.ms(Clock::now());
     if (s.script_mode) {

@@ -84,12 +84,17 @@ const Pavement& dome_pavement(const SurfaceMap& map) {
 
 const SurfaceMap& dome_map() { return *test::bundled_map("dome"); }
 
+// The dome's surface and `elements` on it, coloured by `mode`.
+void show_on_dome(render::Renderer& r, const Elements& elements, render::ColourMode mode) {
+  r.set_surface(dome_map());
+  r.set_elements(elements, render::element_colours(elements, mode));
+}
+
 TEST(Renderer, PreviewShowsSurfaceAndGreenElements) {
   REQUIRE_VULKAN();
   render::Renderer& r = *fixture().renderer;
   const Pavement& p = dome_pavement(dome_map());
-  r.set_surface(dome_map());
-  r.set_elements(p.elements, render::element_colours(p.elements, render::ColourMode::NeighbourRatio));
+  show_on_dome(r, p.elements, render::ColourMode::NeighbourRatio);
   r.set_pattern(dome_map(), p.pattern, p.points);
   r.render_3d(640, 400, render::frame_surface(dome_map().mesh), {});
   const render::Image image = r.read_back(0);
@@ -107,8 +112,7 @@ TEST(Renderer, ElementTypeColoursAndHiddenElements) {
   REQUIRE_VULKAN();
   render::Renderer& r = *fixture().renderer;
   const Pavement& p = dome_pavement(dome_map());
-  r.set_surface(dome_map());
-  r.set_elements(p.elements, render::element_colours(p.elements, render::ColourMode::ElementType));
+  show_on_dome(r, p.elements, render::ColourMode::ElementType);
   render::SceneStyle style;
   r.render_3d(320, 240, render::frame_surface(dome_map().mesh), style);
   const Counts typed = count(r.read_back(0));
@@ -124,8 +128,7 @@ TEST(Renderer, ParameterViewShowsTheMapAndDisks) {
   REQUIRE_VULKAN();
   render::Renderer& r = *fixture().renderer;
   const Pavement& p = dome_pavement(dome_map());
-  r.set_surface(dome_map());
-  r.set_elements(p.elements, render::element_colours(p.elements, render::ColourMode::NeighbourRatio));
+  show_on_dome(r, p.elements, render::ColourMode::NeighbourRatio);
   r.set_pattern(dome_map(), p.pattern, p.points);
   render::SceneStyle style;
   style.show_lattice = true;
@@ -162,8 +165,7 @@ TEST(Renderer, AnImageDrawnInSlicesIsTheWholeImageAndShownOnlyWhenComplete) {
   // instances for the 2D view's disks to take several slices too.
   Elements many;
   for (int copy = 0; copy < 20; ++copy) many.append(p.elements);
-  r.set_surface(dome_map());
-  r.set_elements(many, render::element_colours(many, render::ColourMode::NeighbourRatio));
+  show_on_dome(r, many, render::ColourMode::NeighbourRatio);
   r.set_pattern(dome_map(), p.pattern, p.points);
   render::SceneStyle style;
   style.show_lattice = true;
@@ -204,8 +206,7 @@ TEST(Renderer, ASceneChangeOrAWholeRenderDropsAnUnfinishedImage) {
   REQUIRE_VULKAN();
   render::Renderer& r = *fixture().renderer;
   const Pavement& p = dome_pavement(dome_map());
-  r.set_surface(dome_map());
-  r.set_elements(p.elements, render::element_colours(p.elements, render::ColourMode::NeighbourRatio));
+  show_on_dome(r, p.elements, render::ColourMode::NeighbourRatio);
   const render::ViewRequest request{320, 200, render::frame_surface(dome_map().mesh), {}, {}};
   r.start_drawing(0, request);
   ASSERT_FALSE(r.draw_more(0, 0.0));
@@ -223,8 +224,7 @@ TEST(Renderer, AQuickImageIsHalfSizeWithoutTheElementsUntilTheNextWholeOne) {
   REQUIRE_VULKAN();
   render::Renderer& r = *fixture().renderer;
   const Pavement& p = dome_pavement(dome_map());
-  r.set_surface(dome_map());
-  r.set_elements(p.elements, render::element_colours(p.elements, render::ColourMode::NeighbourRatio));
+  show_on_dome(r, p.elements, render::ColourMode::NeighbourRatio);
   const render::ViewRequest request{640, 400, render::frame_surface(dome_map().mesh), {}, {}};
   r.render(0, request);
   const Counts full = count(r.read_back(0));

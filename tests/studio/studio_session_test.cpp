@@ -186,9 +186,10 @@ TEST_F(StudioSession, ScriptedEditExportsWhatTheCliWritesAndScreenshotShowsThePa
   EXPECT_NE(read_text(dir_ / "config/paver/recent.txt").find("dome.obj"), std::string::npos);
 }
 
-// Pixels of the pattern's blue lines (30, 90, 200) and their shades in a 1280x800 screenshot's
-// views (right of the side panels, below the toolbar, whose checkboxes are blue too).
-long lattice_blue_pixels(const fs::path& shot) {
+// Pixels in a 1280x800 screenshot's views (right of the side panels, below the toolbar, whose
+// checkboxes are blue too) whose blue exceeds their red and green by the margins given; -1 when
+// the file cannot be read.
+long blue_view_pixels(const fs::path& shot, int over_red, int over_green) {
   int width = 0, height = 0, channels = 0;
   unsigned char* pixels = stbi_load(shot.string().c_str(), &width, &height, &channels, 3);
   if (!pixels) return -1;
@@ -196,11 +197,14 @@ long lattice_blue_pixels(const fs::path& shot) {
   for (int y = 60; y < height - 40; ++y)
     for (int x = 440; x < width; ++x) {
       const unsigned char* p = pixels + 3 * (long(y) * width + x);
-      if (p[2] > p[0] + 90 && p[2] > p[1] + 50) ++blue;
+      if (p[2] > p[0] + over_red && p[2] > p[1] + over_green) ++blue;
     }
   stbi_image_free(pixels);
   return blue;
 }
+
+// The pattern's blue lines (30, 90, 200) and their shades.
+long lattice_blue_pixels(const fs::path& shot) { return blue_view_pixels(shot, 90, 50); }
 
 TEST_F(StudioSession, ThePatternsLinesAppearWhenShownAfterTheRun) {
   // A run uploads the pattern's lines only while they are shown (they are most of a live
@@ -226,7 +230,7 @@ TEST_F(StudioSession, TheViewsFollowALargeRunWithImagesDrawnInSlices) {
                         << "screenshot " << final_png.string() << "\nquit\n";
   const Outcome r = run_script(script);
   ASSERT_EQ(r.exit_code, 0) << describe(r);
-  const std::size_t at = r.out.find("frames_while_solving ");
+  const std::size_t at = r.out.rfind("frames_while_solving ");  // the large run, after the launch's short one
   ASSERT_NE(at, std::string::npos) << describe(r);
   const std::string line = r.out.substr(at, r.out.find('\n', at) - at);
   const std::size_t images_at = line.find("live images ");
@@ -259,21 +263,9 @@ TEST_F(StudioSession, TurningAHeavyViewShowsQuickImagesThenTheFullOne) {
     EXPECT_EQ(quick, 0) << "a view quick to draw is drawn whole as it turns: " << line;
 }
 
-// Pixels of the V elements' blue in the colouring by type (not the ratio scale's greens and reds,
-// nor the grey surface), in the large view.
-long type_blue_pixels(const fs::path& shot) {
-  int width = 0, height = 0, channels = 0;
-  unsigned char* pixels = stbi_load(shot.string().c_str(), &width, &height, &channels, 3);
-  if (!pixels) return -1;
-  long blue = 0;
-  for (int y = 60; y < height - 40; ++y)
-    for (int x = 440; x < width; ++x) {
-      const unsigned char* p = pixels + 3 * (long(y) * width + x);
-      if (p[2] > p[0] + 60 && p[2] > p[1] + 30) ++blue;
-    }
-  stbi_image_free(pixels);
-  return blue;
-}
+// The V elements' blue (52, 101, 164) in the colouring by type and its shades: not the ratio
+// scale's greens and reds, nor the grey surface.
+long type_blue_pixels(const fs::path& shot) { return blue_view_pixels(shot, 60, 30); }
 
 // A run paused mid-way shows its particles; changing the colouring then recolours them although
 // no newer snapshot comes: the live frame, prepared off the UI thread, is asked for again. (A

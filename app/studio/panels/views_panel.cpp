@@ -41,20 +41,12 @@ std::vector<double> style_inputs(const render::SceneStyle& st) {
           st.background[0], st.background[1], st.background[2]};
 }
 
-double ms_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
-
 // Adds a slice to the view's image being drawn; once complete it is shown.
 void draw_more(Studio& s, int view) {
-  ViewPace& pace = s.scene.pace[view];
-  const auto t0 = std::chrono::steady_clock::now();
-  const bool complete = s.renderer.draw_more(view, kViewSliceBudgetMs);
-  pace.drawing_ms += ms_since(t0);
-  if (!complete) return;
+  if (!s.renderer.draw_more(view, kViewSliceBudgetMs)) return;
   s.scene.rendered[view] = std::move(s.scene.drawing[view]);
   s.scene.drawing[view].clear();
-  ++pace.images_in_slices;
+  ++s.scene.pace[view].images_in_slices;
   if (s.live.state() == RunState::Running) ++s.solving_frames.images_drawn_in_slices;
 }
 
@@ -62,7 +54,6 @@ void draw_more(Studio& s, int view) {
 void start_drawing(Studio& s, int view, const render::ViewRequest& request, std::vector<double> inputs, bool now) {
   s.renderer.start_drawing(view, request);
   s.scene.drawing[view] = std::move(inputs);
-  s.scene.pace[view].drawing_ms = 0;
   if (now) draw_more(s, view);
 }
 
@@ -109,7 +100,7 @@ void render_if_changed(Studio& s, int view, int width, int height) {
   // Only a whole image measures the view: slices each add a load and store of the image.
   const auto t0 = std::chrono::steady_clock::now();
   s.renderer.render(view, request);
-  pace.full_image_ms = ms_since(t0);
+  pace.full_image_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   shown = std::move(inputs);
   s.scene.redraw_whole[view] = false;
 }
