@@ -8,6 +8,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -118,22 +119,27 @@ std::vector<Collision> find_collisions(const Elements& elements, double gap) {
 
 namespace {
 
-// Per element, the smallest `score(i, j, distance)` over all other elements, found without
-// visiting all pairs: the 27 cells around each element, cells two largest diameters wide at first
-// (tight patterns find their nearest neighbour there). Every element outside them is at least one
-// cell away, so a score at or below `floor(i, cell)` (the least score a pair that far apart can
-// have) is the true minimum; the elements left (loose ones, or none found) search again in cells
-// four times wider, until the cells span the whole set. O(n) for tight patterns,
-// O(n log(spread)) for loose ones, never all pairs. +inf for an element alone.
-template <class Score, class Floor>
-std::vector<double> smallest_over_others(const Elements& elements, Score score, Floor floor) {
+// Per element and per figure k < K, the smallest `score(i, j, distance)[k]` over all other
+// elements, found without visiting all pairs: the 27 cells around each element, cells two largest
+// diameters wide at first (tight patterns find their nearest neighbour there). Every element
+// outside them is at least one cell away, so a score at or below `floor(i, cell)[k]` (the least
+// score a pair that far apart can have) is the true minimum; the elements left (loose ones, or
+// none found) search again in cells four times wider, until the cells span the whole set. O(n)
+// for tight patterns, O(n log(spread)) for loose ones, never all pairs. +inf for an element alone.
+// `first_pass(i, j, distance)` also sees every pair of the first pass (the cells of which hold
+// every pair within two largest diameters), in no particular order.
+template <std::size_t K, class Score, class Floor, class FirstPass>
+std::array<std::vector<double>, K> smallest_over_others(const Elements& elements, Score score, Floor floor,
+                                                        FirstPass first_pass) {
   const int n = int(elements.size());
-  std::vector<double> best(n, std::numeric_limits<double>::infinity());
+  std::array<std::vector<double>, K> best;
+  for (auto& b : best) b.assign(std::size_t(n), std::numeric_limits<double>::infinity());
   if (n < 2) return best;
   const Box box = bounding_box(elements);
   const double extent = box.largest_side();
   std::vector<int> pending(n);
   for (int i = 0; i < n; ++i) pending[i] = i;
+  bool first = true;
   for (double width = 2 * largest_diameter(elements); !pending.empty(); width *= 4) {
     const ElementHash hash = hash_over(elements, box, width);
     const bool spans_all = hash.cell() >= extent;
@@ -144,14 +150,33 @@ std::vector<double> smallest_over_others(const Elements& elements, Score score, 
         const int i = pending[std::size_t(k)];
         hash.for_each_near(elements.position[i], [&](int j) {
           if (j == i) return;
-          best[i] = std::min(best[i], score(i, j, glm::length(elements.position[i] - elements.position[j])));
+          const double d = glm::length(elements.position[i] - elements.position[j]);
+          if (first) first_pass(i, j, d);
+          const std::array<double, K> s = score(i, j, d);
+          for (std::size_t f = 0; f < K; ++f) best[f][i] = std::min(best[f][i], s[f]);
         });
-        if (!spans_all && !(best[i] <= floor(i, hash.cell()))) unresolved[std::size_t(chunk)].push_back(i);
+        if (spans_all) continue;
+        const std::array<double, K> least = floor(i, hash.cell());
+        bool resolved = true;
+        for (std::size_t f = 0; f < K; ++f) resolved = resolved && best[f][i] <= least[f];
+        if (!resolved) unresolved[std::size_t(chunk)].push_back(i);
       }
     });
     pending = joined(unresolved);
+    first = false;
   }
   return best;
+}
+
+template <class Score, class Floor>
+std::vector<double> smallest_over_others(const Elements& elements, Score score, Floor floor) {
+  return smallest_over_others<1>(
+      elements, [&](int i, int j, double d) { return std::array<double, 1>{score(i, j, d)}; },
+      [&](int i, double cell) { return std::array<double, 1>{floor(i, cell)}; }, [](int, int, double) {})[0];
+}
+
+double nearest_ratio(const Elements& e, int i, int j, double d, double gap) {
+  return d / contact_distance(e.diameter[i], e.diameter[j], gap);
 }
 
 }  // namespace
@@ -159,8 +184,7 @@ std::vector<double> smallest_over_others(const Elements& elements, Score score, 
 std::vector<double> nearest_neighbor_ratios(const Elements& elements, double gap) {
   const double largest = largest_diameter(elements);
   return smallest_over_others(
-      elements,
-      [&](int i, int j, double d) { return d / contact_distance(elements.diameter[i], elements.diameter[j], gap); },
+      elements, [&](int i, int j, double d) { return nearest_ratio(elements, i, j, d, gap); },
       [&](int i, double cell) { return cell / contact_distance(elements.diameter[i], largest, gap); });
 }
 
@@ -170,6 +194,45 @@ std::vector<double> nearest_clearances(const Elements& elements) {
       elements,
       [&](int i, int j, double d) { return clearance_between(d, elements.diameter[i], elements.diameter[j]); },
       [&](int i, double cell) { return clearance_between(cell, elements.diameter[i], largest); });
+}
+
+ProximityFigures measure_proximity(const Elements& elements, double gap) {
+  ProximityFigures figures;
+  const double largest = largest_diameter(elements);
+  // The first pass's cells, two largest diameters wide, hold every colliding pair when the gap is
+  // at most one largest diameter; a wider gap counts in a hash of its own.
+  const bool count_in_first_pass = gap <= largest;
+  const int n = int(elements.size());
+  std::vector<CollisionTally> tallies(std::size_t(chunk_count(n)));
+  auto nearest = smallest_over_others<2>(
+      elements,
+      [&](int i, int j, double d) {
+        return std::array<double, 2>{nearest_ratio(elements, i, j, d, 0),
+                                     clearance_between(d, elements.diameter[i], elements.diameter[j])};
+      },
+      [&](int i, double cell) {
+        return std::array<double, 2>{cell / contact_distance(elements.diameter[i], largest, 0),
+                                     clearance_between(cell, elements.diameter[i], largest)};
+      },
+      [&](int i, int j, double d) {
+        if (!count_in_first_pass || j <= i || !elements_collide(d, elements.diameter[i], elements.diameter[j], gap))
+          return;
+        // Every element is in the first pass, each from its own chunk: tally by i's chunk.
+        CollisionTally& tally = tallies[std::size_t(i / kChunk)];
+        ++tally.pairs;
+        tally.worst_overlap = std::max(tally.worst_overlap, 1 - d / contact_distance(elements.diameter[i],
+                                                                                      elements.diameter[j], gap));
+      });
+  figures.neighbor_ratios = std::move(nearest[0]);
+  figures.clearances = std::move(nearest[1]);
+  if (count_in_first_pass) {
+    for (const CollisionTally& t : tallies)
+      figures.collisions.pairs += t.pairs,
+          figures.collisions.worst_overlap = std::max(figures.collisions.worst_overlap, t.worst_overlap);
+  } else {
+    figures.collisions = count_collisions(elements, gap);
+  }
+  return figures;
 }
 
 std::vector<int> vertex_valences(const Elements& elements, double shell) {

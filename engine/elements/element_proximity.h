@@ -34,6 +34,16 @@ std::vector<double> nearest_neighbor_ratios(const Elements& elements, double gap
 // overlap); exact over all pairs. +inf when alone.
 std::vector<double> nearest_clearances(const Elements& elements);
 
+// What the report measures over all pairs, in one search: the pairs that collide with `gap`
+// (count_collisions), and per element the nearest-neighbour ratio over r_i + r_j without the gap
+// (nearest_neighbor_ratios(elements)) and the nearest clearance (nearest_clearances).
+struct ProximityFigures {
+  CollisionTally collisions;
+  std::vector<double> neighbor_ratios;
+  std::vector<double> clearances;
+};
+ProximityFigures measure_proximity(const Elements& elements, double gap);
+
 // Per V-element, its valence in space: how many V-elements lie within `shell` (> 1) times its
 // nearest V-element's distance (1.25 separates the first ring from the second in triangle, square
 // and hexagonal lattices alike). -1 for E-elements; 0 for a V-element whose nearest V-element lies

@@ -103,8 +103,12 @@ double spacing_curvature_correlation(const SurfaceMap& map, const Elements& elem
     if (elements.kind[i] == ElementKind::Vertex)
       vertex_elements.push_back(elements.kind[i], elements.source[i], elements.spec[i], elements.uv[i],
                                 elements.position[i], elements.normal[i], elements.diameter[i], elements.shape[i]);
-  const std::vector<double> spacing = nearest_neighbor_ratios(vertex_elements);
-  const LiftedPoints lifted = lift_all(map, vertex_elements.uv);
+  return spacing_curvature_correlation(map, vertex_elements.uv, nearest_neighbor_ratios(vertex_elements));
+}
+
+double spacing_curvature_correlation(const SurfaceMap& map, const std::vector<glm::dvec2>& uv,
+                                     const std::vector<double>& spacing) {
+  const LiftedPoints lifted = lift_all(map, uv);
   std::vector<double> s, k;
   for (size_t i = 0; i < spacing.size(); ++i) {
     if (!std::isfinite(spacing[i]) || lifted.triangle[i] < 0) continue;
@@ -185,17 +189,16 @@ PavementQuality measure_pavement(const SurfaceMap& map, const Pattern& pattern,
   q.edge_elements = q.elements - q.vertex_elements;
   q.gap = basis.gap;
   q.margin = basis.margin;
-  const CollisionTally collisions = count_collisions(elements, basis.gap);
-  q.contact_violations = collisions.pairs;
-  q.worst_overlap = collisions.worst_overlap;
-  const Distribution clearance = distribution_of(nearest_clearances(elements));
-  q.min_clearance = clearance.min;
+  ProximityFigures proximity = measure_proximity(elements, basis.gap);
+  q.contact_violations = proximity.collisions.pairs;
+  q.worst_overlap = proximity.collisions.worst_overlap;
+  q.min_clearance = distribution_of(std::move(proximity.clearances)).min;
   q.fill = basis.ideal_count > 0 ? double(q.elements) / basis.ideal_count : 0;
   const double ideal_vertices = basis.ideal_count * basis.vertex_share;
   const double ideal_edges = basis.ideal_count - ideal_vertices;
   q.vertex_fill = ideal_vertices > 0 ? double(q.vertex_elements) / ideal_vertices : 0;
   q.edge_fill = ideal_edges > 0 && q.edge_elements > 0 ? double(q.edge_elements) / ideal_edges : 0;
-  q.neighbor_ratio = distribution_of(nearest_neighbor_ratios(elements));
+  q.neighbor_ratio = distribution_of(proximity.neighbor_ratios);
   std::vector<double> deviation = spring_length_ratios(map, pattern, points, basis.solver, retired);
   for (double& r : deviation) r = std::abs(r - 1);
   const Distribution dev = distribution_of(deviation);
@@ -220,7 +223,11 @@ PavementQuality measure_pavement(const SurfaceMap& map, const Pattern& pattern,
     }
     q.regular_valence_share = q.interior_vertex_elements > 0 ? double(regular) / q.interior_vertex_elements : 0;
   }
-  if (q.structure_measured) q.spacing_curvature_spearman = spacing_curvature_correlation(map, elements);
+  // With no edge elements, the ratios above are the vertex elements' own.
+  if (q.structure_measured)
+    q.spacing_curvature_spearman =
+        q.edge_elements == 0 ? spacing_curvature_correlation(map, elements.uv, proximity.neighbor_ratios)
+                             : spacing_curvature_correlation(map, elements);
   return q;
 }
 

@@ -78,6 +78,9 @@ std::vector<double> spring_length_ratios(const SurfaceMap& map, const Pattern& p
 // Spearman correlation between the local spacing at each V-element (its nearest-neighbour
 // distance) and the surface's mean curvature there. 0 when either does not vary.
 double spacing_curvature_correlation(const SurfaceMap& map, const Elements& elements);
+// The same from the V-elements' map positions and their nearest-neighbour ratios, already measured.
+double spacing_curvature_correlation(const SurfaceMap& map, const std::vector<glm::dvec2>& uv,
+                                     const std::vector<double>& spacing);
 
 // How many elements the ideal pavement puts on the surface: its area less a strip of
 // `basis.boundary_strip` along the boundary, over the area per element (grown by eq. 5's spacing

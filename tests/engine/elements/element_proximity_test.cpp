@@ -3,7 +3,8 @@
 // element sets with mixed diameters, pairs placed exactly at the collision threshold and elements
 // sharing a centre, at gap 0 and with a gap; and the rule itself is exact and strict
 // (d < r_i + r_j + gap, no tolerance). nearest_clearances likewise against all pairs; a set of
-// several parallel chunks (count_collisions too) as well.
+// several parallel chunks (count_collisions too) as well, and the report's one search
+// (measure_proximity) for all three.
 #include "elements/element_proximity.h"
 
 #include <gtest/gtest.h>
@@ -145,6 +146,24 @@ TEST(ElementProximityCollisions, ASetSearchedInManyParallelChunksGivesTheAllPair
   EXPECT_EQ(tally.worst_overlap, worst);
   expect_same_per_element(nearest_clearances(e), all_pairs_clearances(e), "nearest_clearances");
   expect_same_ratios(nearest_neighbor_ratios(e), all_pairs_ratios(e));
+}
+
+TEST(ElementProximityCollisions, TheReportsOneSearchGivesTheAllPairsFigures) {
+  // measure_proximity counts the collisions in its nearest-neighbour search's first pass when the
+  // gap is at most the largest diameter (2.0 here), and in a search of its own for a wider gap.
+  std::mt19937 rng(20261127);
+  for (const double gap : {0.0, 0.25, 2.5}) {
+    const Elements e = random_elements(rng, 9000, 36, {-5, 1e3, 2}, gap);
+    const std::vector<Collision> want = all_pairs_collisions(e, gap);
+    ASSERT_GT(want.size(), 1000u) << "the set should have collisions in every chunk";
+    const ProximityFigures got = measure_proximity(e, gap);
+    EXPECT_EQ(got.collisions.pairs, long(want.size())) << "gap " << gap;
+    double worst = 0;
+    for (const Collision& c : want) worst = std::max(worst, c.overlap);
+    EXPECT_EQ(got.collisions.worst_overlap, worst) << "gap " << gap;
+    expect_same_per_element(got.clearances, all_pairs_clearances(e), "measure_proximity's clearances");
+    expect_same_per_element(got.neighbor_ratios, all_pairs_ratios(e), "measure_proximity's ratios (gap 0)");
+  }
 }
 
 TEST(ElementProximityCollisions, TheRuleIsExactWithNoTolerance) {
