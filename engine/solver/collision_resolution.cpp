@@ -26,6 +26,11 @@ int carrier(const ElementAnchor& anchor, int avoid) {
 // A pattern this large is too wide for its rows to pass their excess out to the rim within a
 // round's 60 iterations (about 30 rows across a 1,000-point pattern relax in 200, docs/solver.md).
 constexpr int kWidePatternParticles = 4000;
+// A pattern this large stalls from the start: on the lily, the first round's contact springs took
+// the collisions from 143,627 to 156,965 at 1M points and cut them by a fifth at 100k; retiring in
+// the first round left fewer pairs to remove and more elements (fill 0.890 against 0.884 at 250k,
+// 0.898 against 0.896 at 100k) but fewer at 10k (0.905 against 0.913), so it starts above that.
+constexpr int kVeryWidePatternParticles = 50000;
 
 // Retires vertex elements' particles where pairs of them collide, most overlapped pair first, in
 // the one of the two in more pairs; returns how many. A particle within two springs of one
@@ -134,7 +139,8 @@ Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface,
     // Only a wide pattern stalls this way: a small one can take a few rounds of more collisions
     // before its contact springs clear them all.
     const bool wide = system.particle_count() >= kWidePatternParticles;
-    const bool stalled = wide && round > 0 && double(collisions.size()) > 0.8 * double(previous);
+    const bool stalled = wide && (round == 0 ? system.particle_count() >= kVeryWidePatternParticles
+                                             : double(collisions.size()) > 0.8 * double(previous));
     previous = collisions.size();
     if (stalled) {
       report.retired += retire_one_of_each_pair(pattern, elements, collisions, design.elements, system);
