@@ -126,8 +126,9 @@ namespace {
 // score a pair that far apart can have) is the true minimum; the elements left (loose ones, or
 // none found) search again in cells four times wider, until the cells span the whole set. O(n)
 // for tight patterns, O(n log(spread)) for loose ones, never all pairs. +inf for an element alone.
-// `first_pass(i, j, distance)` also sees every pair of the first pass (the cells of which hold
-// every pair within two largest diameters), in no particular order.
+// `first_pass(chunk, i, j, distance)` also sees every pair of the first pass (whose cells hold
+// every pair within two largest diameters) both ways, (i, j) and (j, i), from i's chunk of
+// [0, n), in no particular order.
 template <std::size_t K, class Score, class Floor, class FirstPass>
 std::array<std::vector<double>, K> smallest_over_others(const Elements& elements, Score score, Floor floor,
                                                         FirstPass first_pass) {
@@ -151,7 +152,7 @@ std::array<std::vector<double>, K> smallest_over_others(const Elements& elements
         hash.for_each_near(elements.position[i], [&](int j) {
           if (j == i) return;
           const double d = glm::length(elements.position[i] - elements.position[j]);
-          if (first) first_pass(i, j, d);
+          if (first) first_pass(chunk, i, j, d);
           const std::array<double, K> s = score(i, j, d);
           for (std::size_t f = 0; f < K; ++f) best[f][i] = std::min(best[f][i], s[f]);
         });
@@ -172,7 +173,7 @@ template <class Score, class Floor>
 std::vector<double> smallest_over_others(const Elements& elements, Score score, Floor floor) {
   return smallest_over_others<1>(
       elements, [&](int i, int j, double d) { return std::array<double, 1>{score(i, j, d)}; },
-      [&](int i, double cell) { return std::array<double, 1>{floor(i, cell)}; }, [](int, int, double) {})[0];
+      [&](int i, double cell) { return std::array<double, 1>{floor(i, cell)}; }, [](int, int, int, double) {})[0];
 }
 
 double nearest_ratio(const Elements& e, int i, int j, double d, double gap) {
@@ -214,11 +215,10 @@ ProximityFigures measure_proximity(const Elements& elements, double gap) {
         return std::array<double, 2>{cell / contact_distance(elements.diameter[i], largest, 0),
                                      clearance_between(cell, elements.diameter[i], largest)};
       },
-      [&](int i, int j, double d) {
+      [&](int chunk, int i, int j, double d) {
         if (!count_in_first_pass || j <= i || !elements_collide(d, elements.diameter[i], elements.diameter[j], gap))
           return;
-        // Every element is in the first pass, each from its own chunk: tally by i's chunk.
-        CollisionTally& tally = tallies[std::size_t(i / kChunk)];
+        CollisionTally& tally = tallies[std::size_t(chunk)];
         ++tally.pairs;
         tally.worst_overlap = std::max(tally.worst_overlap, 1 - d / contact_distance(elements.diameter[i],
                                                                                       elements.diameter[j], gap));

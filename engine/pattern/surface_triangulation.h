@@ -13,7 +13,7 @@
 namespace paver {
 
 // For each triangle, the triangle across the edge opposite each of its corners (-1 where none):
-// triangles that share an edge in opposite directions.
+// triangles that share an edge in opposite directions. Corner indices are >= 0.
 std::vector<glm::ivec3> triangle_neighbours(const std::vector<glm::ivec3>& triangles);
 
 // Delaunay triangulation of 2D points (Bowyer-Watson): counter-clockwise triangles covering their

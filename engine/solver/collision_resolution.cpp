@@ -26,10 +26,8 @@ int carrier(const ElementAnchor& anchor, int avoid) {
 // A pattern this large is too wide for its rows to pass their excess out to the rim within a
 // round's 60 iterations (about 30 rows across a 1,000-point pattern relax in 200, docs/solver.md).
 constexpr int kWidePatternParticles = 4000;
-// A pattern this large stalls from the start: on the lily, the first round's contact springs took
-// the collisions from 143,627 to 156,965 at 1M points and cut them by a fifth at 100k; retiring in
-// the first round left fewer pairs to remove and more elements (fill 0.890 against 0.884 at 250k,
-// 0.898 against 0.896 at 100k) but fewer at 10k (0.905 against 0.913), so it starts above that.
+// From this size the first round's contact springs do not pay, and vacancies start in round 0
+// (measured on the lily, docs/solver.md); at 10k they still do.
 constexpr int kVeryWidePatternParticles = 50000;
 
 // Retires vertex elements' particles where pairs of them collide, most overlapped pair first, in

@@ -348,7 +348,7 @@ PAVER_FN SpringSums accumulate_spring(PAVER_IN(SolverConstants) k, SpringSums s,
                                float side) {
   // Reciprocals once, products after: three divisions per spring instead of eight.
   PAVER_PRECISE float inv_l = 1.0f / l;
-  // k_c is clamped at r = 0.1: below it alpha / r^12 overflows (inf - inf = NaN at r = 0).
+  // r is clamped at 0.1: below it k_c grows without bound (inf at r = 0).
   PAVER_PRECISE float ratio = len * inv_l;
   float kc = spring_constant(k, max_f(ratio, 0.1f));
   PAVER_PRECISE float tiny = 1e-6f * l;

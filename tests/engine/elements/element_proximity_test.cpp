@@ -150,12 +150,14 @@ TEST(ElementProximityCollisions, ASetSearchedInManyParallelChunksGivesTheAllPair
 
 TEST(ElementProximityCollisions, TheReportsOneSearchGivesTheAllPairsFigures) {
   // measure_proximity counts the collisions in its nearest-neighbour search's first pass when the
-  // gap is at most the largest diameter (2.0 here), and in a search of its own for a wider gap.
+  // gap is at most the largest diameter (2.0: one element has it exactly), and in a search of its
+  // own for a wider gap.
   std::mt19937 rng(20261127);
-  for (const double gap : {0.0, 0.25, 2.5}) {
-    const Elements e = random_elements(rng, 9000, 36, {-5, 1e3, 2}, gap);
+  for (const double gap : {0.0, 0.25, 2.0, 2.5}) {
+    Elements e = random_elements(rng, 9000, 36, {-5, 1e3, 2}, gap);
+    add(e, e.position[0] + glm::dvec3(0, 0, std::nextafter(0.5 * (e.diameter[0] + 2.0) + gap, 0.0)), 2.0);
     const std::vector<Collision> want = all_pairs_collisions(e, gap);
-    ASSERT_GT(want.size(), 1000u) << "the set should have collisions in every chunk";
+    ASSERT_GT(want.size(), 1000u) << "the set should have many collisions, across its three chunks";
     const ProximityFigures got = measure_proximity(e, gap);
     EXPECT_EQ(got.collisions.pairs, long(want.size())) << "gap " << gap;
     double worst = 0;
