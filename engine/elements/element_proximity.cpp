@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace paver {
 namespace {
@@ -66,16 +67,33 @@ std::vector<T> joined(const std::vector<std::vector<T>>& parts) {
   return out;
 }
 
+// Elements i and j, `d` apart, as a collision, if they collide by the rule with `gap`.
+std::optional<Collision> collision_of(const Elements& elements, int i, int j, double d, double gap) {
+  const double di = elements.diameter[i], dj = elements.diameter[j];
+  if (!elements_collide(d, di, dj, gap)) return std::nullopt;
+  return Collision{i, j, d, 1 - d / contact_distance(di, dj, gap), clearance_between(d, di, dj)};
+}
+
+void add_to(CollisionTally& tally, const Collision& c) {
+  ++tally.pairs;
+  tally.worst_overlap = std::max(tally.worst_overlap, c.overlap);
+}
+
+CollisionTally total_of(const std::vector<CollisionTally>& tallies) {
+  CollisionTally total;
+  for (const CollisionTally& t : tallies)
+    total.pairs += t.pairs, total.worst_overlap = std::max(total.worst_overlap, t.worst_overlap);
+  return total;
+}
+
 // Calls found(collision) for every colliding pair (i < j) with i in [begin, end), in no particular order.
 template <class Found>
 void collisions_from(const ElementHash& hash, const Elements& elements, double gap, int begin, int end, Found&& found) {
   for (int i = begin; i < end; ++i) {
     hash.for_each_near(elements.position[i], [&](int j) {
       if (j <= i) return;
-      const double need = contact_distance(elements.diameter[i], elements.diameter[j], gap);
-      const double d = glm::length(elements.position[i] - elements.position[j]);
-      if (elements_collide(d, elements.diameter[i], elements.diameter[j], gap))
-        found(Collision{i, j, d, 1 - d / need, clearance_between(d, elements.diameter[i], elements.diameter[j])});
+      if (const auto c = collision_of(elements, i, j, glm::length(elements.position[i] - elements.position[j]), gap))
+        found(*c);
     });
   }
 }
@@ -92,16 +110,10 @@ CollisionTally count_collisions(const Elements& elements, double gap) {
   const int n = int(elements.size());
   std::vector<CollisionTally> tallies(std::size_t(chunk_count(n)));
   for_each_chunk(n, [&](int chunk, int begin, int end) {
-    CollisionTally& tally = tallies[std::size_t(chunk)];
-    collisions_from(hash, elements, gap, begin, end, [&](const Collision& c) {
-      ++tally.pairs;
-      tally.worst_overlap = std::max(tally.worst_overlap, c.overlap);
-    });
+    collisions_from(hash, elements, gap, begin, end,
+                    [&](const Collision& c) { add_to(tallies[std::size_t(chunk)], c); });
   });
-  CollisionTally total;
-  for (const CollisionTally& t : tallies)
-    total.pairs += t.pairs, total.worst_overlap = std::max(total.worst_overlap, t.worst_overlap);
-  return total;
+  return total_of(tallies);
 }
 
 std::vector<Collision> find_collisions(const Elements& elements, double gap) {
@@ -169,32 +181,46 @@ std::array<std::vector<double>, K> smallest_over_others(const Elements& elements
   return best;
 }
 
-template <class Score, class Floor>
-std::vector<double> smallest_over_others(const Elements& elements, Score score, Floor floor) {
-  return smallest_over_others<1>(
-      elements, [&](int i, int j, double d) { return std::array<double, 1>{score(i, j, d)}; },
-      [&](int i, double cell) { return std::array<double, 1>{floor(i, cell)}; }, [](int, int, int, double) {})[0];
-}
+// Figures for smallest_over_others: a score for a pair `d` apart, and the least score of a pair at
+// least `cell` apart. This one: the distance over the pair's radii plus `gap`.
+struct NeighbourRatio {
+  const Elements& e;
+  double largest, gap;
+  double score(int i, int j, double d) const { return d / contact_distance(e.diameter[i], e.diameter[j], gap); }
+  double floor(int i, double cell) const { return cell / contact_distance(e.diameter[i], largest, gap); }
+};
+// The free space between the footprints.
+struct Clearance {
+  const Elements& e;
+  double largest;
+  double score(int i, int j, double d) const { return clearance_between(d, e.diameter[i], e.diameter[j]); }
+  double floor(int i, double cell) const { return clearance_between(cell, e.diameter[i], largest); }
+};
+// The distance between two V-elements (+inf for any other pair).
+struct VertexDistance {
+  const Elements& e;
+  bool vertex(int i) const { return e.kind[i] == ElementKind::Vertex; }
+  double score(int i, int j, double d) const {
+    return vertex(i) && vertex(j) ? d : std::numeric_limits<double>::infinity();
+  }
+  double floor(int i, double cell) const { return vertex(i) ? cell : std::numeric_limits<double>::infinity(); }
+};
 
-double nearest_ratio(const Elements& e, int i, int j, double d, double gap) {
-  return d / contact_distance(e.diameter[i], e.diameter[j], gap);
+template <class Figure>
+std::vector<double> smallest_over_others(const Elements& elements, const Figure& figure) {
+  return smallest_over_others<1>(
+      elements, [&](int i, int j, double d) { return std::array<double, 1>{figure.score(i, j, d)}; },
+      [&](int i, double cell) { return std::array<double, 1>{figure.floor(i, cell)}; }, [](int, int, int, double) {})[0];
 }
 
 }  // namespace
 
 std::vector<double> nearest_neighbor_ratios(const Elements& elements, double gap) {
-  const double largest = largest_diameter(elements);
-  return smallest_over_others(
-      elements, [&](int i, int j, double d) { return nearest_ratio(elements, i, j, d, gap); },
-      [&](int i, double cell) { return cell / contact_distance(elements.diameter[i], largest, gap); });
+  return smallest_over_others(elements, NeighbourRatio{elements, largest_diameter(elements), gap});
 }
 
 std::vector<double> nearest_clearances(const Elements& elements) {
-  const double largest = largest_diameter(elements);
-  return smallest_over_others(
-      elements,
-      [&](int i, int j, double d) { return clearance_between(d, elements.diameter[i], elements.diameter[j]); },
-      [&](int i, double cell) { return clearance_between(cell, elements.diameter[i], largest); });
+  return smallest_over_others(elements, Clearance{elements, largest_diameter(elements)});
 }
 
 ProximityFigures measure_proximity(const Elements& elements, double gap) {
@@ -205,44 +231,28 @@ ProximityFigures measure_proximity(const Elements& elements, double gap) {
   const bool count_in_first_pass = gap <= largest;
   const int n = int(elements.size());
   std::vector<CollisionTally> tallies(std::size_t(chunk_count(n)));
+  const NeighbourRatio ratio{elements, largest, 0};
+  const Clearance clearance{elements, largest};
   auto nearest = smallest_over_others<2>(
       elements,
-      [&](int i, int j, double d) {
-        return std::array<double, 2>{nearest_ratio(elements, i, j, d, 0),
-                                     clearance_between(d, elements.diameter[i], elements.diameter[j])};
-      },
-      [&](int i, double cell) {
-        return std::array<double, 2>{cell / contact_distance(elements.diameter[i], largest, 0),
-                                     clearance_between(cell, elements.diameter[i], largest)};
-      },
+      [&](int i, int j, double d) { return std::array<double, 2>{ratio.score(i, j, d), clearance.score(i, j, d)}; },
+      [&](int i, double cell) { return std::array<double, 2>{ratio.floor(i, cell), clearance.floor(i, cell)}; },
       [&](int chunk, int i, int j, double d) {
-        if (!count_in_first_pass || j <= i || !elements_collide(d, elements.diameter[i], elements.diameter[j], gap))
-          return;
-        CollisionTally& tally = tallies[std::size_t(chunk)];
-        ++tally.pairs;
-        tally.worst_overlap = std::max(tally.worst_overlap, 1 - d / contact_distance(elements.diameter[i],
-                                                                                      elements.diameter[j], gap));
+        if (!count_in_first_pass || j <= i) return;
+        if (const auto c = collision_of(elements, i, j, d, gap)) add_to(tallies[std::size_t(chunk)], *c);
       });
   figures.neighbor_ratios = std::move(nearest[0]);
   figures.clearances = std::move(nearest[1]);
-  if (count_in_first_pass) {
-    for (const CollisionTally& t : tallies)
-      figures.collisions.pairs += t.pairs,
-          figures.collisions.worst_overlap = std::max(figures.collisions.worst_overlap, t.worst_overlap);
-  } else {
-    figures.collisions = count_collisions(elements, gap);
-  }
+  figures.collisions = count_in_first_pass ? total_of(tallies) : count_collisions(elements, gap);
   return figures;
 }
 
 std::vector<int> vertex_valences(const Elements& elements, double shell) {
   const int n = int(elements.size());
   std::vector<int> valence(n, -1);
-  const auto is_vertex = [&](int i) { return elements.kind[i] == ElementKind::Vertex; };
-  const double inf = std::numeric_limits<double>::infinity();
-  const std::vector<double> nearest = smallest_over_others(
-      elements, [&](int i, int j, double d) { return is_vertex(i) && is_vertex(j) ? d : inf; },
-      [&](int i, double cell) { return is_vertex(i) ? cell : inf; });
+  const VertexDistance distance{elements};
+  const auto is_vertex = [&](int i) { return distance.vertex(i); };
+  const std::vector<double> nearest = smallest_over_others(elements, distance);
   std::vector<double> finite;
   for (int i = 0; i < n; ++i)
     if (is_vertex(i) && std::isfinite(nearest[i])) finite.push_back(nearest[i]);

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <numbers>
 #include <numeric>
@@ -59,6 +60,14 @@ LiftedPoints lift_all(const SurfaceMap& map, const std::vector<glm::dvec2>& poin
   lifted.resize(points.size());
   lift_points(map, points, lifted);
   return lifted;
+}
+
+// The least finite value, 0 when there is none (as distribution_of's min), without its sort.
+double smallest_finite(const std::vector<double>& values) {
+  double least = std::numeric_limits<double>::infinity();
+  for (double v : values)
+    if (std::isfinite(v)) least = std::min(least, v);
+  return std::isfinite(least) ? least : 0;
 }
 
 }  // namespace
@@ -192,7 +201,7 @@ PavementQuality measure_pavement(const SurfaceMap& map, const Pattern& pattern,
   ProximityFigures proximity = measure_proximity(elements, basis.gap);
   q.contact_violations = proximity.collisions.pairs;
   q.worst_overlap = proximity.collisions.worst_overlap;
-  q.min_clearance = distribution_of(std::move(proximity.clearances)).min;
+  q.min_clearance = smallest_finite(proximity.clearances);
   q.fill = basis.ideal_count > 0 ? double(q.elements) / basis.ideal_count : 0;
   const double ideal_vertices = basis.ideal_count * basis.vertex_share;
   const double ideal_edges = basis.ideal_count - ideal_vertices;
