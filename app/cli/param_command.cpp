@@ -5,7 +5,7 @@
 #include "progress.h"
 #include "io/output_guard.h"
 
-#include "map/arap_parameterization.h"
+#include "map/bijective_map.h"
 #include "core/input_error.h"
 #include "core/printable.h"
 #include "core/interrupted.h"
@@ -28,11 +28,11 @@ struct ParamArgs {
   std::string surface;
   std::string out;
   std::string start = "auto";
-  int iterations = ArapOptions{}.max_iterations;
+  int iterations = MapOptions{}.max_iterations;
   bool quiet = false;
 };
 
-std::string_view start_name(ArapStart s) { return s == ArapStart::Lscm ? "LSCM" : "Tutte"; }
+std::string_view start_name(MapStart s) { return s == MapStart::Lscm ? "LSCM" : "Tutte"; }
 
 int run_param(const ParamArgs& args) {
   using Clock = std::chrono::steady_clock;
@@ -56,19 +56,19 @@ int run_param(const ParamArgs& args) {
               std::chrono::duration<double, std::milli>(t1 - t0).count());
   std::fflush(stdout);
 
-  ArapOptions options;
+  MapOptions options = map_options_for(loaded.mesh);
   options.max_iterations = args.iterations;
-  options.start = args.start == "lscm" ? ArapStart::Lscm : args.start == "tutte" ? ArapStart::Tutte : ArapStart::Auto;
+  options.start = args.start == "lscm" ? MapStart::Lscm : args.start == "tutte" ? MapStart::Tutte : MapStart::Auto;
   // Ctrl-C ends the run at once until the map is written; progress on stderr.
   Progress progress(args.quiet, stderr_is_terminal());
   const Parameterization param = [&] {
     try {
       progress.stage("mapping");
       progress.fraction(0, "start map and factorization");
-      std::optional<Parameterization> done = parameterize_arap(
+      std::optional<Parameterization> done = parameterize_surface(
           loaded.mesh, options,
           [&](int iterations, int max, double energy) {
-            progress.fraction(double(iterations) / max, arap_progress_text(iterations, max, energy));
+            progress.fraction(double(iterations) / max, map_progress_text(iterations, max, energy));
           },
           [] { return interrupt_requested().load(); });
       progress.finish();
@@ -82,9 +82,10 @@ int run_param(const ParamArgs& args) {
   const double param_ms = std::chrono::duration<double, std::milli>(t2 - t1).count();
 
   const auto& q = param.quality;
-  std::printf("ARAP from %s: %d iterations in %.1f ms (%d steps shortened to stay bijective)\n",
-              std::string(start_name(param.report.start_used)).c_str(), param.report.iterations, param_ms,
-              param.report.blocked_steps);
+  std::printf("%s from %s: %d iterations (%d factorizations) in %.1f ms (%d steps shortened to stay bijective)\n",
+              std::string(map_energy_name(param.report.energy)).c_str(),
+              std::string(start_name(param.report.start_used)).c_str(), param.report.iterations,
+              param.report.factorizations, param_ms, param.report.blocked_steps);
   std::printf("  flipped triangles: %d, boundary self-intersections: %d -> %s\n", q.flipped_triangles,
               q.boundary_intersections, q.bijective() ? "bijective" : "NOT bijective");
   std::printf("  singular-value ratio s1/s2: mean %.4f, max %.4f\n", q.stretch_mean, q.stretch_max);

@@ -81,9 +81,9 @@ SurfaceMap make_surface_map(SurfaceMesh mesh, Parameterization parameterization)
   return map;
 }
 
-SurfaceMap build_surface_map(SurfaceMesh mesh, const ArapOptions& options) {
+SurfaceMap build_surface_map(SurfaceMesh mesh) {
   if (mesh.boundary_loops.empty()) return *map_closed_surface(mesh, CutAxis::Auto, "the closed surface");
-  Parameterization param = parameterize_arap(mesh, options);
+  Parameterization param = parameterize_surface(mesh, map_options_for(mesh));
   return make_surface_map(std::move(mesh), std::move(param));
 }
 

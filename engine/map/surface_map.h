@@ -1,7 +1,7 @@
 #pragma once
 // The bijection g between the surface M and its 2D map M^ (section 4.2) with everything lifting
 // needs: vertex positions and uv, normals, mean curvature, and the point-location grid.
-#include "map/arap_parameterization.h"
+#include "map/bijective_map.h"
 #include "mesh/surface_mesh.h"
 #include "map/uv_grid.h"
 
@@ -99,9 +99,9 @@ std::array<glm::dvec2, 3> triangle_uv(const SurfaceMap& map, int t);
 // The mesh triangle containing p (wrapped first), or -1; `bary` as uv_grid's locate.
 int locate_on_map(const SurfaceMap& map, glm::dvec2 p, glm::dvec3& bary);
 
-// Parameterizes the mesh (ARAP, bijective; a closed one as an atlas of charts cut across its
+// Parameterizes the mesh (bijective, with map_options_for; a closed one as an atlas of charts cut across its
 // longest axis, map/surface_charts.h) and builds the lifting data; throws as above.
-SurfaceMap build_surface_map(SurfaceMesh mesh, const ArapOptions& options = {});
+SurfaceMap build_surface_map(SurfaceMesh mesh);
 
 // Builds the lifting data for a given map (uv: #V, bijective).
 SurfaceMap make_surface_map(SurfaceMesh mesh, std::vector<glm::dvec2> uv);

@@ -112,10 +112,10 @@ MappedSurface map_surface_file(const std::filesystem::path& path, const Pipeline
   }
   try {
     report(0.05f, "mapping: start map and factorization");
-    std::optional<Parameterization> parameterization = parameterize_arap(
-        loaded.mesh, ArapOptions{},
+    std::optional<Parameterization> parameterization = parameterize_surface(
+        loaded.mesh, map_options_for(loaded.mesh),
         [&](int done, int max, double energy) {
-          report(0.15f + 0.75f * float(done) / float(max), "mapping: " + arap_progress_text(done, max, energy));
+          report(0.15f + 0.75f * float(done) / float(max), "mapping: " + map_progress_text(done, max, energy));
         },
         stopped);
     if (!parameterization) return out;

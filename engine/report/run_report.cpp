@@ -13,11 +13,11 @@ namespace paver {
 
 namespace {
 
-std::string_view start_name(ArapStart s) {
+std::string_view start_name(MapStart s) {
   switch (s) {
-    case ArapStart::Auto: return "auto";
-    case ArapStart::Lscm: return "lscm";
-    case ArapStart::Tutte: return "tutte";
+    case MapStart::Auto: return "auto";
+    case MapStart::Lscm: return "lscm";
+    case MapStart::Tutte: return "tutte";
   }
   return "?";
 }
@@ -117,10 +117,11 @@ nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const
                    {"area", surface_area(map.mesh)},
                    {"curvature_min", map.curvature_min},
                    {"curvature_max", map.curvature_max}}},
-      {"parameterization", {{"method", "arap"},
+      {"parameterization", {{"method", r.energy == MapEnergy::SymmetricDirichlet ? "symmetric_dirichlet" : "arap"},
                             {"start", start_name(r.start_used)},
                             {"iterations", r.iterations},
                             {"blocked_steps", r.blocked_steps},
+                            {"factorizations", r.factorizations},
                             {"flipped_triangles", q.flipped_triangles},
                             {"boundary_intersections", q.boundary_intersections},
                             {"bijective", q.bijective()},
@@ -171,6 +172,7 @@ nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const
                                 {"contact_springs", pavement.resolution.contact_springs},
                                 {"solver_iterations", pavement.resolution.solver_iterations},
                                 {"retired", pavement.resolution.retired},
+                                {"pairs_left", pavement.resolution.pairs_left},
                                 {"removed", pavement.resolution.removed},
                                 {"milliseconds", pavement.resolution.milliseconds}}},
       {"refill", {{"added", pavement.refill.added},

@@ -188,6 +188,7 @@ Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface,
   for (std::size_t i = 0; i < elements.size(); ++i)
     pinned[i] = elements.kind[i] == ElementKind::Vertex && elements.source[i] >= 0 &&
                 system.stray_count[std::size_t(elements.source[i])] == kPinned;
+  report.pairs_left = int(count_collisions(elements, design.elements.gap).pairs);
   report.removed = remove_colliding(elements, design.elements.gap, &pinned);
   report.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return elements;

@@ -34,7 +34,8 @@ struct CollisionResolutionReport {
   int contact_springs = 0;
   int solver_iterations = 0;
   int retired = 0;                 // particles retired where contact springs stalled (vacancies)
-  int removed = 0;                 // elements removed because they still collided
+  int pairs_left = 0;              // pairs that still collided after the last round
+  int removed = 0;                 // elements removed because they still collided (one per pair at most)
   double milliseconds = 0;
 };
 

@@ -122,9 +122,9 @@ TEST_P(AdaptiveOnTheHead, ItCoversTheHeadRegularlyWithNoContact) {
   EXPECT_LE(q.neighbor_ratio.cv, 0.05);
   EXPECT_GT(q.interior_vertex_elements, 500);
   EXPECT_GE(q.regular_valence_share, GetParam().least_regular_share);
-  // The lattice on the same head: torn and bare.
+  // The lattice on the same head: bare (on the ARAP map it was torn too; the symmetric
+  // Dirichlet map keeps what it places regular, nearest-neighbour p95 1.10).
   EXPECT_LT(lattice.after.fill, 0.70);
-  EXPECT_GT(lattice.after.neighbor_ratio.p95, 1.15);
 }
 
 INSTANTIATE_TEST_SUITE_P(TriAndHex, AdaptiveOnTheHead,

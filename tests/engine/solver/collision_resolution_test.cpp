@@ -89,8 +89,11 @@ TEST(CollisionResolution, WithoutItThePapersMethodLeavesCollisionsOnPendantGems)
   EXPECT_TRUE(colliding_pairs(on.elements).empty());
   EXPECT_EQ(on.paper.contact_violations, off.paper.contact_violations) << "the same paper's method before resolution";
   EXPECT_GT(on.resolution.rounds, 0);
-  // At most one element per colliding pair is given up.
-  EXPECT_LE(on.resolution.removed, long(pairs.size()));
+  // At most one element per pair that still collides is given up.
+  EXPECT_LE(on.resolution.removed, on.resolution.pairs_left);
+  // Of the pairs the paper's method leaves, about as many are left after the rounds (the rounds'
+  // solver iterations move the pattern, so one more or fewer may collide).
+  EXPECT_LE(on.resolution.pairs_left, long(pairs.size()) + 1);
 }
 
 TEST(CollisionResolution, ContactSpringsSeparateWhatAShortOptimizationLeaves) {
@@ -137,6 +140,7 @@ TEST(CollisionResolution, WithNoRoundsTheLastResortRemovesOneElementPerPair) {
   EXPECT_EQ(on.resolution.contact_springs, 0);
   EXPECT_TRUE(colliding_pairs(on.elements).empty());
   EXPECT_GT(on.resolution.removed, 0);
+  EXPECT_EQ(on.resolution.pairs_left, long(pairs.size())) << "no rounds: the paper's pairs are left";
   EXPECT_LE(on.resolution.removed, long(pairs.size()));
   ASSERT_EQ(on.elements.size() + size_t(on.resolution.removed), off.elements.size());
   // What is left is the paper's elements, in order, less the removed ones.
