@@ -1,9 +1,10 @@
 // Our bijective map against CGAL's ARAP parameterizer on the same meshes in the same run (issue
-// 13 asks for 10x): `parameterize_surface` (what `paver param` and `paver run` use) and CGAL's
-// ARAP_parameterizer_3 with its defaults and no post-processing, on the scanned bunny head and
-// on it split 1 -> 4 once and twice (12k and 48k faces; the shape stays the scan's). Counters:
-// faces, flipped triangles (CGAL's map may come out mirrored: the minority orientation counts),
-// iterations (ours). Run: build/bin/paver-map-bench --benchmark_format=json
+// 13 asks for 10x): `parameterize_surface` (what `paver param` and `paver run` use: symmetric
+// Dirichlet; paver_arap: the paper's ARAP energy) and CGAL's ARAP_parameterizer_3 with its
+// defaults and no post-processing, on the scanned bunny head and on it split 1 -> 4 once and
+// twice (12k and 48k faces; the shape stays the scan's). Counters: faces, flipped triangles
+// (CGAL's map may come out mirrored: the minority orientation counts), iterations,
+// factorizations and distortion (ours). Run: build/bin/paver-map-bench --benchmark_format=json
 #include "map/bijective_map.h"
 #include "mesh/mesh_loader.h"
 
@@ -66,17 +67,21 @@ long flipped(const std::vector<glm::ivec3>& triangles, const Uv& uv_of) {
   return std::min(positive, negative);
 }
 
-void ours(benchmark::State& state, int splits) {
+void ours(benchmark::State& state, int splits, MapEnergy energy) {
   const SurfaceMesh mesh = head(splits);
+  MapOptions options;
+  options.energy = energy;
   Parameterization p;
   for (auto _ : state) {
-    p = parameterize_surface(mesh);
+    p = parameterize_surface(mesh, options);
     benchmark::DoNotOptimize(p.uv.data());
   }
   state.counters["faces"] = mesh.face_count();
   state.counters["flipped"] = double(flipped(mesh.triangles, [&](int v) { return p.uv[v]; }));
   state.counters["iterations"] = p.report.iterations;
+  state.counters["factorizations"] = p.report.factorizations;
   state.counters["stretch_mean"] = p.quality.stretch_mean;
+  state.counters["area_distortion_mean"] = p.quality.area_distortion_mean;
 }
 
 void cgal_arap(benchmark::State& state, int splits) {
@@ -103,7 +108,9 @@ void cgal_arap(benchmark::State& state, int splits) {
 const bool registered = [] {
   for (int splits : {0, 1, 2}) {
     const std::string size = std::to_string(3000 << (2 * splits));
-    benchmark::RegisterBenchmark(("map/paver/bunnyhead_" + size).c_str(), ours, splits)
+    benchmark::RegisterBenchmark(("map/paver/bunnyhead_" + size).c_str(), ours, splits, MapEnergy::SymmetricDirichlet)
+        ->UseRealTime()->Unit(benchmark::kMillisecond)->Iterations(1);
+    benchmark::RegisterBenchmark(("map/paver_arap/bunnyhead_" + size).c_str(), ours, splits, MapEnergy::Arap)
         ->UseRealTime()->Unit(benchmark::kMillisecond)->Iterations(1);
     benchmark::RegisterBenchmark(("map/cgal_arap/bunnyhead_" + size).c_str(), cgal_arap, splits)
         ->UseRealTime()->Unit(benchmark::kMillisecond)->Iterations(1);
