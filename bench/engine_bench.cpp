@@ -35,7 +35,7 @@ void parameterize(benchmark::State& state, fs::path path) {
   const paver::SurfaceMesh mesh = paver::load_surface(path).mesh;
   paver::Parameterization p;
   for (auto _ : state) {
-    p = paver::parameterize_surface(mesh);
+    p = paver::parameterize_surface(mesh, paver::map_options_for(mesh));
     benchmark::DoNotOptimize(p.uv.data());
   }
   state.counters["faces"] = mesh.face_count();

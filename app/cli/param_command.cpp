@@ -1,4 +1,4 @@
-// `paver param SURFACE [--out UV.obj]`: the bijective ARAP map alone, with its quality.
+// `paver param SURFACE [--out UV.obj]`: the bijective map alone (map_options_for), with its quality.
 #include "command_line.h"
 #include "commands.h"
 #include "interrupt.h"
@@ -103,13 +103,13 @@ int run_param(const ParamArgs& args) {
 
 std::function<int()> add_param_command(CLI::App& app) {
   auto args = std::make_shared<ParamArgs>();
-  CLI::App* cmd = app.add_subcommand("param", "Parameterize a surface (bijective ARAP) and report its distortion");
+  CLI::App* cmd = app.add_subcommand("param", "Parameterize a surface (bijective: symmetric Dirichlet, ARAP for a band) and report its distortion");
   cmd->add_option("SURFACE", args->surface, "Open surface: OBJ, OFF, PLY or STL")->required();
   cmd->add_option("--out", args->out, "Write the map as an OBJ with the map as texture coordinates");
   cmd->add_option("--start", args->start, "Start map: auto (LSCM if bijective, else Tutte), lscm, tutte")
       ->check(CLI::IsMember({"auto", "lscm", "tutte"}))
       ->capture_default_str();
-  cmd->add_option("--iterations", args->iterations, "Most ARAP iterations")
+  cmd->add_option("--iterations", args->iterations, "Most map iterations")
       ->check(CLI::Range(0, 100000))
       ->capture_default_str();
   cmd->add_flag("--quiet", args->quiet, "No progress on stderr (warnings and errors still)");

@@ -1,6 +1,6 @@
 #pragma once
 // What `paver run` and `paver param` are doing, on stderr, for anything that can take seconds
-// (loading, mapping with the ARAP energy, pattern, optimizer, resolution, refill, export).
+// (loading, mapping with the map's energy, pattern, optimizer, resolution, refill, export).
 // On a terminal: one line redrawn in place (stage, bar, detail) at most 20 times a second and
 // cleared at the end. Elsewhere (logs, pipes): a line when a stage starts and a detail line at
 // most every 2 s, with no control characters. Nothing at all when quiet (--quiet).
@@ -25,7 +25,7 @@ public:
   void fraction(double done, const std::string& detail);
   void finish();
 
-  // Feeds the loader's and the map's progress ("mapping: ARAP 20 / 300, energy ...").
+  // Feeds the loader's and the map's progress ("mapping: 20 / 300 iterations, energy ...").
   PipelineProgress mapping();
   // Feeds the solver's iterations into the current stage.
   SolverObserver solver(int iterations);

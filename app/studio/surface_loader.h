@@ -1,6 +1,6 @@
 #pragma once
 // Opens a surface in the background through the pipeline's first stages (map_surface_file, which
-// `paver run` calls too), with its progress shown and a stop between ARAP chunks, so the window
+// `paver run` calls too), with its progress shown and a stop between the map's chunks, so the window
 // never freezes, even on a mesh of a million faces; what the studio exports is what `paver run`
 // writes for the same surface and design.
 #include "background_jobs.h"
@@ -36,7 +36,7 @@ public:
   bool busy() const;
   const std::filesystem::path& path() const { return path_; }  // the last one started
   float progress() const;     // 0..1
-  std::string stage() const;  // "loading", "mapping (ARAP 40 / 300)", ...
+  std::string stage() const;  // "loading", "mapping (40 / 300 iterations)", ...
   std::optional<SurfaceLoadOutcome> take_outcome();  // once per finished load
 
   struct Shared;  // state shared with the loading thread

@@ -51,8 +51,8 @@ struct MapOptions {
   static constexpr int kStopWindow = 5;
   static constexpr double kSymmetricDirichletTolerance = 1e-4;
   static constexpr double kArapTolerance = 1e-7;  // its steps are short on hard surfaces
-  double barrier_weight = 1e-3;      // weight of the inverse-Jacobian barrier in the line search
-  bool injective = true;             // false = plain ARAP (full steps; for comparison only)
+  double barrier_weight = 1e-3;      // ARAP only: weight of the inverse-Jacobian barrier in the line search
+  bool injective = true;             // ARAP only: false = plain ARAP (full steps; for comparison only)
 };
 
 // "symmetric Dirichlet" or "ARAP", as summaries and reports name it.
@@ -65,7 +65,7 @@ struct MapReport {
   double initial_energy = 0;
   double final_energy = 0;
   int blocked_steps = 0;             // iterations whose step was shortened to keep bijectivity
-  int factorizations = 0;            // symmetric Dirichlet: proxies factorized (one per iteration at most)
+  int factorizations = 0;            // symmetric Dirichlet: proxies factorized (at most one more than iterations)
   double precompute_ms = 0;
   double solve_ms = 0;
 };

@@ -2,7 +2,7 @@
 // A surface with holes, closed into a disk for mapping (issue 12, "surfaces with holes").
 //
 // Each hole is closed by a temporary fan of triangles around one new vertex at the hole's
-// centroid. The disk is mapped as before (bijective ARAP), and the patches are then dropped: a
+// centroid. The disk is mapped as before (bijective_map), and the patches are then dropped: a
 // bijective map of the closed disk restricted to the real faces is a bijective map of the surface
 // with holes, whose holes stay inside the outer loop and apart from each other because the patch
 // triangles never fold. The patches are not surface: the map gives them little weight, so that
@@ -11,7 +11,7 @@
 
 namespace paver {
 
-// ARAP weight of a patch triangle relative to a real one of the same shape.
+// Weight in the map's energy of a patch triangle relative to a real one of the same shape.
 inline constexpr double kHolePatchWeight = 1e-1;
 
 struct PatchedSurface {

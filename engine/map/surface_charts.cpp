@@ -270,6 +270,7 @@ std::optional<SurfaceMap> map_closed_surface(const SurfaceMesh& closed, CutAxis 
   for (int c = 1; c < charts; ++c) {
     combined.report.iterations += maps[c].report.iterations;
     combined.report.blocked_steps += maps[c].report.blocked_steps;
+    combined.report.factorizations += maps[c].report.factorizations;
     combined.report.precompute_ms += maps[c].report.precompute_ms;
     combined.report.solve_ms += maps[c].report.solve_ms;
   }

@@ -107,7 +107,7 @@ SurfaceMap build_surface_map(SurfaceMesh mesh);
 SurfaceMap make_surface_map(SurfaceMesh mesh, std::vector<glm::dvec2> uv);
 
 // The lifting data for a finished parameterization, which the map keeps. Throws
-// std::runtime_error when it is not bijective: ARAP here keeps it bijective by construction, so
+// std::runtime_error when it is not bijective: the map here keeps it bijective by construction, so
 // that would be a bug to report, and lifting through a folded map would be wrong.
 SurfaceMap make_surface_map(SurfaceMesh mesh, Parameterization parameterization);
 

@@ -2,7 +2,7 @@
 // Tutte embedding with mean-value weights (Floater 2003): the boundary loop is pinned to a circle
 // by arc length and every interior vertex is a convex combination of its neighbours. Positive
 // weights and a convex boundary make the map bijective by construction, which is why it is
-// the fall-back start for ARAP.
+// the fall-back start for the bijective map.
 #include "mesh/surface_mesh.h"
 
 #include <glm/vec2.hpp>

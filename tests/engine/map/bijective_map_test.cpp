@@ -88,7 +88,7 @@ TEST(BijectiveMap, SymmetricDirichletConvergesOnTheNearlyClosedHeadWithLessDisto
   arap.energy = MapEnergy::Arap;
   const Parameterization a = parameterize_surface(mesh, arap);
   const Parameterization d = parameterize_surface(mesh);
-  EXPECT_EQ(a.report.iterations, arap.max_iterations) << "the ARAP this replaces runs to its limit";
+  EXPECT_GT(a.report.iterations, 3 * d.report.iterations) << "the ARAP it replaces crawls (it ran to its limit)";
   EXPECT_LT(d.report.iterations, 100);
   EXPECT_LT(d.report.factorizations, d.report.iterations) << "the proxy is reused between refreshes";
   EXPECT_TRUE(d.quality.bijective());

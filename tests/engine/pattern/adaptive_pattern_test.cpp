@@ -93,13 +93,14 @@ TEST(AdaptivePattern, AHoneycombIsTheDualWithThreeEdgesAtEveryInnerPointAndFaces
   }
 }
 
-// The nearly closed bunny head: its map squeezes the ears 20-fold, so the lattice piles up and
-// tears. The adaptive pattern, packed to contact, covers it (issue 10's targets; docs/topology.md
-// has the figures): fill >= 0.90, NN p95 <= 1.15, NN cv <= 0.05, with no contact violation and
-// no removal after the pattern is built. Regular valence: hex meets 85%; tri measured 0.81 (the
-// packing's jamming disorders it), and 0.778 since the triangulation's triangles come in a
-// canonical order (the relaxation follows their order: other orders gave 0.74 to 0.81). It is held
-// here at 0.77 so that it cannot slip unseen.
+// The nearly closed bunny head: its map squeezes the ears (2D/3D area ratio down to 0.11 on the
+// symmetric Dirichlet map; 20-fold on the ARAP map before it), so the lattice piles up and leaves
+// bare patches. The adaptive pattern, packed to contact, covers it (issue 10's targets;
+// docs/topology.md has the figures): fill >= 0.90, NN p95 <= 1.15, NN cv <= 0.05, with no contact
+// violation and no removal after the pattern is built. Regular valence: hex meets 85%; tri
+// measured 0.778 on the ARAP map (the packing's jamming disorders it; other triangle orders gave
+// 0.74 to 0.81) and 0.825 on the symmetric Dirichlet map. It is held here at 0.80 so that it
+// cannot slip unseen.
 struct HeadTargets {
   Tessellation tessellation;
   double least_regular_share;
@@ -128,7 +129,7 @@ TEST_P(AdaptiveOnTheHead, ItCoversTheHeadRegularlyWithNoContact) {
 }
 
 INSTANTIATE_TEST_SUITE_P(TriAndHex, AdaptiveOnTheHead,
-                         ::testing::Values(HeadTargets{Tessellation::Triangle, 0.77},
+                         ::testing::Values(HeadTargets{Tessellation::Triangle, 0.80},
                                            HeadTargets{Tessellation::Hexagon, 0.85}));
 
 // Vertex and edge gems (the bundled pendant_tri_gems design at the head's default spacing): each

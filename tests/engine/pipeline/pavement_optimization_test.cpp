@@ -95,8 +95,8 @@ TEST_P(ScannedSurface, UniformPatternIsCollisionFreeAndRegular) {
   EXPECT_GT(p.refill.added, 50);
   EXPECT_GT(p.after.fill, bare.after.fill + 0.05) << "refill must close part of the bare patches";
   EXPECT_EQ(p.after.elements, bare.after.elements + p.refill.added);
-  // The initial pavement had collisions and the paper's forces alone leave some (on hex as many
-  // as they found); the contact springs and vacancies clear them (after: 0, above; see
+  // The initial pavement had collisions and the paper's forces alone leave some (on hex more than
+  // they found); the contact springs and vacancies clear them (after: 0, above; see
   // docs/solver.md for the figures of each).
   EXPECT_GT(p.before.contact_violations, 0);
   EXPECT_GT(p.paper.contact_violations, 0);
