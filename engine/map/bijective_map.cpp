@@ -541,7 +541,7 @@ std::string_view map_energy_name(MapEnergy energy) {
 
 MapOptions map_options_for(const SurfaceMesh& mesh) {
   MapOptions options;
-  if (mesh.boundary_loops.size() == 2) options.energy = MapEnergy::Arap;
+  if (mesh.boundary_loops.size() != 1) options.energy = MapEnergy::Arap;
   return options;
 }
 
