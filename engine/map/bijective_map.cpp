@@ -498,19 +498,10 @@ MapSolver::MapSolver(const SurfaceMesh& mesh, const MapOptions& options)
     s.uv = tutte_embedding(disk);
     s.report.start_used = MapStart::Tutte;
   }
+  // Symmetric Dirichlet is not scale-free: it starts at the surface's area.
+  if (options.energy == MapEnergy::SymmetricDirichlet) detail::scale_to_surface_area(disk, s.uv);
   s.report.precompute_ms = ms_since(t0);
   s.precompute();
-  if (options.energy == MapEnergy::SymmetricDirichlet) {
-    // Symmetric Dirichlet is not scale-free: start at the surface's area.
-    double area2 = 0, area3 = 0;
-    for (int f = 0; f < disk.face_count(); ++f) {
-      const auto& t = disk.triangles[f];
-      area2 += s.face_weight[f] * detail::signed_area(s.uv[t.x], s.uv[t.y], s.uv[t.z]);
-      area3 += s.face_weight[f] * s.area3[f];
-    }
-    const double scale = std::sqrt(area3 / area2);
-    for (glm::dvec2& p : s.uv) p *= scale;
-  }
 }
 
 MapSolver::~MapSolver() = default;
@@ -539,9 +530,9 @@ std::string_view map_energy_name(MapEnergy energy) {
   return energy == MapEnergy::SymmetricDirichlet ? "symmetric Dirichlet" : "ARAP";
 }
 
-MapOptions map_options_for(const SurfaceMesh& mesh) {
+MapOptions map_options_for(const SurfaceMesh& mesh, MapPiece piece) {
   MapOptions options;
-  if (mesh.boundary_loops.size() != 1) options.energy = MapEnergy::Arap;
+  if (piece == MapPiece::Chart || mesh.boundary_loops.size() != 1) options.energy = MapEnergy::Arap;
   return options;
 }
 

@@ -220,16 +220,11 @@ std::optional<SurfaceMap> map_closed_surface(const SurfaceMesh& closed, CutAxis 
                                              const std::function<bool()>& stop) {
   const ChartCut cut = cut_into_charts(closed, axis, source);
   const int charts = int(cut.charts.size());
-  // A chart is half a closed surface, where the paper's ARAP converges (unlike on a nearly closed
-  // head); the closed bunny's tri pavement at a gap of 8% of D keeps fill 0.852 with it against
-  // 0.846 on symmetric Dirichlet charts (the other closed cases within 0.005 either way).
-  MapOptions chart_options;
-  chart_options.energy = MapEnergy::Arap;
   std::vector<Parameterization> maps;
   for (int c = 0; c < charts; ++c) {
     if (stop && stop()) return std::nullopt;
     if (progress) progress(c, charts);
-    maps.push_back(parameterize_surface(cut.charts[c], chart_options));
+    maps.push_back(parameterize_surface(cut.charts[c], map_options_for(cut.charts[c], MapPiece::Chart)));
   }
 
   // Side by side along u, centred on v = 0, half the largest chart apart: no lattice edge spans two.

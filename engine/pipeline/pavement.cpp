@@ -216,7 +216,9 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
     pavement.timings.emplace_back("measure_paper", ms_since(t0));
     if (options.resolve_collisions && !design.elements.allow_overlap) {
       t0 = start("resolve_collisions");
-      pavement.resolution.removed = remove_colliding(pavement.elements, design.elements.gap);
+      const Removal removal = remove_colliding(pavement.elements, design.elements.gap);
+      pavement.resolution.pairs_left = removal.pairs;
+      pavement.resolution.removed = removal.removed;
       pavement.timings.emplace_back("resolve_collisions", ms_since(t0));
     }
   } else if (options.optimize && pavement.pattern.point_count() > 0) {

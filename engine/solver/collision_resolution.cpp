@@ -69,11 +69,12 @@ int retire_one_of_each_pair(const Pattern& pattern, const Elements& elements, st
 
 }  // namespace
 
-int remove_colliding(Elements& elements, double gap, std::vector<std::uint8_t>* kept) {
-  int removed = 0;
-  for (;;) {
+Removal remove_colliding(Elements& elements, double gap, std::vector<std::uint8_t>* kept) {
+  Removal removal;
+  for (bool first = true;; first = false) {
     const std::vector<Collision> collisions = find_collisions(elements, gap);
-    if (collisions.empty()) return removed;
+    if (first) removal.pairs = int(collisions.size());
+    if (collisions.empty()) return removal;
     const auto is_kept = [&](int i) { return kept && (*kept)[std::size_t(i)] != 0; };
     std::vector<int> count(elements.size(), 0);
     for (const Collision& c : collisions) ++count[c.i], ++count[c.j];
@@ -90,7 +91,7 @@ int remove_colliding(Elements& elements, double gap, std::vector<std::uint8_t>* 
                                                      : c.i;
       remove[victim] = 1;
       settled[c.i] = settled[c.j] = 1;
-      ++removed;
+      ++removal.removed;
     }
     elements.erase_flagged(remove);
     if (kept) {
@@ -188,8 +189,9 @@ Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface,
   for (std::size_t i = 0; i < elements.size(); ++i)
     pinned[i] = elements.kind[i] == ElementKind::Vertex && elements.source[i] >= 0 &&
                 system.stray_count[std::size_t(elements.source[i])] == kPinned;
-  report.pairs_left = int(count_collisions(elements, design.elements.gap).pairs);
-  report.removed = remove_colliding(elements, design.elements.gap, &pinned);
+  const Removal removal = remove_colliding(elements, design.elements.gap, &pinned);
+  report.pairs_left = removal.pairs;
+  report.removed = removal.removed;
   report.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return elements;
 }

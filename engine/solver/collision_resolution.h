@@ -52,10 +52,14 @@ using ElementPlacer =
     std::function<Elements(const std::vector<glm::dvec2>& points, const std::vector<std::uint32_t>& stray_count)>;
 
 // The last resort: removes one element of every pair that still collides (an edge element before
-// the vertex element it touches, else the one in more pairs) until none does; returns how many.
-// Elements flagged in `kept` (#elements, the designer's pinned ones) go only when both of a pair
-// are flagged; the flags are erased along with their elements.
-int remove_colliding(Elements& elements, double gap, std::vector<std::uint8_t>* kept = nullptr);
+// the vertex element it touches, else the one in more pairs) until none does. Elements flagged in
+// `kept` (#elements, the designer's pinned ones) go only when both of a pair are flagged; the flags
+// are erased along with their elements.
+struct Removal {
+  int pairs = 0;    // pairs that collided before any removal
+  int removed = 0;  // elements removed: at most one per pair
+};
+Removal remove_colliding(Elements& elements, double gap, std::vector<std::uint8_t>* kept = nullptr);
 
 // Resolves collisions by contact springs and returns the final elements; `system` and `points`
 // are updated in place.

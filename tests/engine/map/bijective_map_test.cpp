@@ -107,6 +107,7 @@ TEST(BijectiveMap, DisksAreMappedBySymmetricDirichletAndSurfacesWithHolesByArap)
     const SurfaceMesh mesh = load_surface(test::scanned_mesh(name)).mesh;
     ASSERT_EQ(int(mesh.boundary_loops.size()), loops) << name;
     EXPECT_EQ(map_options_for(mesh).energy, energy) << name;
+    EXPECT_EQ(map_options_for(mesh, MapPiece::Chart).energy, MapEnergy::Arap) << name;
   }
 }
 
