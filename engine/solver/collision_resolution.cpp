@@ -26,9 +26,6 @@ int carrier(const ElementAnchor& anchor, int avoid) {
 // A pattern this large is too wide for its rows to pass their excess out to the rim within a
 // round's 60 iterations (about 30 rows across a 1,000-point pattern relax in 200, docs/solver.md).
 constexpr int kWidePatternParticles = 4000;
-// From this size the first round's contact springs do not pay, and vacancies start in round 0
-// (measured on the lily, docs/solver.md); at 10k they still do.
-constexpr int kVeryWidePatternParticles = 50000;
 
 // Retires vertex elements' particles where pairs of them collide, most overlapped pair first, in
 // the one of the two in more pairs; returns how many. A particle within two springs of one
@@ -138,8 +135,7 @@ Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface,
     // Only a wide pattern stalls this way: a small one can take a few rounds of more collisions
     // before its contact springs clear them all.
     const bool wide = system.particle_count() >= kWidePatternParticles;
-    const bool stalled = wide && (round == 0 ? system.particle_count() >= kVeryWidePatternParticles
-                                             : double(collisions.size()) > 0.8 * double(previous));
+    const bool stalled = wide && round > 0 && double(collisions.size()) > 0.8 * double(previous);
     previous = collisions.size();
     if (stalled) {
       report.retired += retire_one_of_each_pair(pattern, elements, collisions, design.elements, system);
