@@ -127,6 +127,9 @@ Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface,
   for (int round = 0; round < options.max_rounds; ++round) {
     const std::vector<Collision> collisions = find_collisions(elements, design.elements.gap);
     if (collisions.empty() || (stop && stop->load())) break;
+    if (system.particle_count() >= options.large_pattern_particles &&
+        double(collisions.size()) < options.large_pattern_pairs_share * double(elements.size()))
+      break;
     ++report.rounds;
     // Contact springs that stopped paying: where the map leaves the lattice more particles than
     // room (rows squeezed along a line, typical of a large pattern), pushing two apart presses

@@ -80,5 +80,33 @@ TEST(CollisionResolution, WhereContactSpringsStallVacanciesResolveTheRest) {
   EXPECT_EQ(test::all_pairs(p.elements, 0).violations, 0);
 }
 
+TEST(CollisionResolution, ALargePatternEndsItsRoundsWhenFewPairsAreLeft) {
+  // The saddle's 20k-point lattice at the default filter rate, resolved as usual and as a large
+  // pattern (the threshold lowered to it): its rounds end once under 1% of its elements collide,
+  // and the last resort removes at most that many.
+  const auto map = test::named_map("saddle");
+  const Design design = saddle_design(1 / 4.5, 8, SolverParams{}.mu_stretched);
+  PavementOptions large;
+  large.resolution.large_pattern_particles = 10000;
+  const Pavement usual = make_pavement(*map, design);
+  const Pavement early = make_pavement(*map, design, large);
+  ASSERT_GT(early.pattern.point_count(), large.resolution.large_pattern_particles);
+  ASSERT_LT(usual.pattern.point_count(), CollisionResolutionOptions{}.large_pattern_particles);
+
+  const double share = large.resolution.large_pattern_pairs_share;
+  ASSERT_GT(early.paper.contact_violations, share * early.paper.elements);  // there is work for the rounds
+  EXPECT_GT(early.resolution.rounds, 0);
+  EXPECT_LT(early.resolution.rounds, usual.resolution.rounds);
+  EXPECT_LT(early.resolution.pairs_left, share * early.paper.elements);
+  EXPECT_LE(early.resolution.removed, early.resolution.pairs_left);
+  EXPECT_GT(early.resolution.removed, usual.resolution.removed);
+  for (const Pavement* p : {&usual, &early}) {
+    EXPECT_GE(p->after.fill, 0.9);
+    const test::AllPairs truth = test::all_pairs(p->elements, 0);
+    EXPECT_EQ(truth.violations, 0);
+    EXPECT_EQ(p->after.contact_violations, truth.violations);
+  }
+}
+
 }  // namespace
 }  // namespace paver
