@@ -21,6 +21,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <cstdio>
 #include <string>
@@ -260,8 +261,12 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
       for (int i = 0; i < system.particle_count(); ++i) pavement.points[i] = glm::dvec2(system.position[i]);
       if (options.resolve_collisions && !design.elements.allow_overlap) {
         CollisionResolutionReport around;
+        // An edit's few collisions are the designer's: pushed apart in every round, never left
+        // to the last resort early, whatever the pattern's size.
+        CollisionResolutionOptions every_round = options.resolution;
+        every_round.large_pattern_particles = std::numeric_limits<int>::max();
         pavement.elements = resolve_collisions(map, surface, system, pavement.pattern, design, pavement.points, place,
-                                               factory, options.resolution, around, options.stop);
+                                               factory, every_round, around, options.stop);
         pavement.resolution.rounds += around.rounds;
         pavement.resolution.contact_springs += around.contact_springs;
         pavement.resolution.solver_iterations += around.solver_iterations;

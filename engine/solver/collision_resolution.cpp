@@ -127,7 +127,8 @@ Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface,
   for (int round = 0; round < options.max_rounds; ++round) {
     const std::vector<Collision> collisions = find_collisions(elements, design.elements.gap);
     if (collisions.empty() || (stop && stop->load())) break;
-    if (system.particle_count() >= options.large_pattern_particles &&
+    // Every pattern gets one round; a large one may leave its last few pairs to the last resort.
+    if (round > 0 && system.particle_count() >= options.large_pattern_particles &&
         double(collisions.size()) < options.large_pattern_pairs_share * double(elements.size()))
       break;
     ++report.rounds;

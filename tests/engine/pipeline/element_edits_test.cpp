@@ -147,6 +147,25 @@ TEST_F(ElementEdits, AnAddedElementStaysWhereItWasPutAndItsNeighboursMakeRoom) {
             std::size_t(base.resolution.removed));
 }
 
+TEST_F(ElementEdits, AnEditsCollisionsArePushedApartHoweverLargeThePattern) {
+  // A large pattern may leave its last few colliding pairs to the last resort; an edit's are the
+  // designer's and get every round: the same pavement when every pattern counts as large.
+  const Pavement& base = *base_;
+  const double D = base.design.pattern.spacing;
+  const Picked picked = pick(base, 1);
+  const glm::dvec2 centre = base.elements.uv[index_by_id(base.elements).at(picked.centre)];
+  Design design = base.design;
+  design.edits.added.push_back({design.edits.next_added_id(), centre + glm::dvec2(0.5 * D, 0.1 * D)});
+  PavementOptions all_large;
+  all_large.resolution.large_pattern_particles = 1;
+  const Pavement usual = make_pavement(*map_, design);
+  const Pavement large = make_pavement(*map_, design, all_large);
+  ASSERT_GT(usual.resolution.rounds, 2);  // the edit's resolution took rounds the rule would cut
+  EXPECT_EQ(large.resolution.rounds, usual.resolution.rounds);
+  EXPECT_EQ(large.resolution.removed, usual.resolution.removed);
+  EXPECT_EQ(large.elements.uv, usual.elements.uv);
+}
+
 TEST_F(ElementEdits, ASavedDesignReproducesTheEditedPavement) {
   const Pavement& base = *base_;
   const Picked picked = pick(base, 3);

@@ -25,6 +25,14 @@ Design saddle_design(double spacing_share, int coarse_levels, double mu_stretche
   return design;
 }
 
+// The 20k-point saddle at the default filter rate, from its multilevel start (shared by two tests:
+// it takes seconds).
+const Pavement& default_rate_saddle() {
+  static const Pavement pavement =
+      make_pavement(*test::named_map("saddle"), saddle_design(1 / 4.5, 8, SolverParams{}.mu_stretched));
+  return pavement;
+}
+
 TEST(CoarseStart, ALargeLatticeRelaxesFromItsCoarseShapeWhereTheRegularStartStaysSqueezed) {
   const auto map = test::named_map("saddle");
   const Pavement coarse = make_pavement(*map, saddle_design(1 / 4.5, 8));
@@ -51,7 +59,8 @@ TEST(CoarseStart, ALargeLatticeRelaxesFromItsCoarseShapeWhereTheRegularStartStay
 
   // At the default filter rate the paper's stage leaves more pairs in contact, and resolution
   // makes up for them: the final pavement is at least as full.
-  const Pavement tighter = make_pavement(*map, saddle_design(1 / 4.5, 8, SolverParams{}.mu_stretched));
+  const Pavement& tighter = default_rate_saddle();
+  EXPECT_GT(tighter.paper.contact_violations, coarse.paper.contact_violations);
   EXPECT_GE(tighter.after.fill, coarse.after.fill);
 
   for (const Pavement* p : {&coarse, &regular, &tighter}) {
@@ -73,7 +82,7 @@ TEST(CollisionResolution, WhereContactSpringsStallVacanciesResolveTheRest) {
   // From the regular start the saddle's large lattice is squeezed along lines: contact springs push
   // one pair apart into the next, so resolution turns to retiring particles.
   const auto map = test::named_map("saddle");
-  const Pavement p = make_pavement(*map, saddle_design(1 / 4.5, 0));
+  const Pavement p = make_pavement(*map, saddle_design(1 / 4.5, 0, SolverParams{}.mu_stretched));
   EXPECT_GT(p.resolution.retired, 0);
   // Vacancies let the pattern relax: far fewer elements are left to remove than were retired.
   EXPECT_LT(p.resolution.removed, p.resolution.retired);
@@ -81,31 +90,26 @@ TEST(CollisionResolution, WhereContactSpringsStallVacanciesResolveTheRest) {
 }
 
 TEST(CollisionResolution, ALargePatternEndsItsRoundsWhenFewPairsAreLeft) {
-  // The saddle's 20k-point lattice at the default filter rate, resolved as usual and as a large
-  // pattern (the threshold lowered to it): its rounds end once under 1% of its elements collide,
-  // and the last resort removes at most that many.
+  // The saddle's 20k-point lattice resolved as usual and as a large pattern (the threshold lowered
+  // to it): after its first round it stops once it has fewer colliding pairs than 1% of its
+  // elements, and leaves them to the last resort.
   const auto map = test::named_map("saddle");
-  const Design design = saddle_design(1 / 4.5, 8, SolverParams{}.mu_stretched);
   PavementOptions large;
   large.resolution.large_pattern_particles = 10000;
-  const Pavement usual = make_pavement(*map, design);
-  const Pavement early = make_pavement(*map, design, large);
+  const Pavement& usual = default_rate_saddle();
+  const Pavement early = make_pavement(*map, saddle_design(1 / 4.5, 8, SolverParams{}.mu_stretched), large);
   ASSERT_GT(early.pattern.point_count(), large.resolution.large_pattern_particles);
   ASSERT_LT(usual.pattern.point_count(), CollisionResolutionOptions{}.large_pattern_particles);
 
   const double share = large.resolution.large_pattern_pairs_share;
-  ASSERT_GT(early.paper.contact_violations, share * early.paper.elements);  // there is work for the rounds
-  EXPECT_GT(early.resolution.rounds, 0);
+  ASSERT_GT(early.paper.contact_violations, share * early.paper.elements);  // work for more than one round
   EXPECT_LT(early.resolution.rounds, usual.resolution.rounds);
   EXPECT_LT(early.resolution.pairs_left, share * early.paper.elements);
-  EXPECT_LE(early.resolution.removed, early.resolution.pairs_left);
   EXPECT_GT(early.resolution.removed, usual.resolution.removed);
-  for (const Pavement* p : {&usual, &early}) {
-    EXPECT_GE(p->after.fill, 0.9);
-    const test::AllPairs truth = test::all_pairs(p->elements, 0);
-    EXPECT_EQ(truth.violations, 0);
-    EXPECT_EQ(p->after.contact_violations, truth.violations);
-  }
+  EXPECT_GE(early.after.fill, 0.9);
+  const test::AllPairs truth = test::all_pairs(early.elements, 0);
+  EXPECT_EQ(truth.violations, 0);
+  EXPECT_EQ(early.after.contact_violations, truth.violations);
 }
 
 }  // namespace
