@@ -32,8 +32,6 @@ struct ParamArgs {
   bool quiet = false;
 };
 
-std::string_view start_name(MapStart s) { return s == MapStart::Lscm ? "LSCM" : "Tutte"; }
-
 int run_param(const ParamArgs& args) {
   using Clock = std::chrono::steady_clock;
   nothing_written_yet();
@@ -84,7 +82,7 @@ int run_param(const ParamArgs& args) {
   const auto& q = param.quality;
   std::printf("%s from %s: %d iterations (%d factorizations) in %.1f ms (%d steps shortened to stay bijective)\n",
               std::string(map_energy_name(param.report.energy)).c_str(),
-              std::string(start_name(param.report.start_used)).c_str(), param.report.iterations,
+              std::string(map_start_name(param.report.start_used)).c_str(), param.report.iterations,
               param.report.factorizations, param_ms, param.report.blocked_steps);
   std::printf("  flipped triangles: %d, boundary self-intersections: %d -> %s\n", q.flipped_triangles,
               q.boundary_intersections, q.bijective() ? "bijective" : "NOT bijective");

@@ -529,6 +529,25 @@ Parameterization finish_parameterization(const SurfaceMesh& mesh, const MapSolve
 std::string_view map_energy_name(MapEnergy energy) {
   return energy == MapEnergy::SymmetricDirichlet ? "symmetric Dirichlet" : "ARAP";
 }
+std::string_view map_energy_key(MapEnergy energy) {
+  return energy == MapEnergy::SymmetricDirichlet ? "symmetric_dirichlet" : "arap";
+}
+std::string_view map_start_name(MapStart start) {
+  switch (start) {
+    case MapStart::Auto: return "auto";
+    case MapStart::Lscm: return "LSCM";
+    case MapStart::Tutte: return "Tutte";
+  }
+  return "?";
+}
+std::string_view map_start_key(MapStart start) {
+  switch (start) {
+    case MapStart::Auto: return "auto";
+    case MapStart::Lscm: return "lscm";
+    case MapStart::Tutte: return "tutte";
+  }
+  return "?";
+}
 
 MapOptions map_options_for(const SurfaceMesh& mesh, MapPiece piece) {
   MapOptions options;

@@ -55,8 +55,12 @@ struct MapOptions {
   bool injective = true;             // ARAP only: false = plain ARAP (full steps; for comparison only)
 };
 
-// "symmetric Dirichlet" or "ARAP", as summaries and reports name it.
+// The energy and the start as the summaries name them ("symmetric Dirichlet", "LSCM") and as
+// report.json keys them ("symmetric_dirichlet", "lscm"), written once here.
 std::string_view map_energy_name(MapEnergy energy);
+std::string_view map_energy_key(MapEnergy energy);
+std::string_view map_start_name(MapStart start);
+std::string_view map_start_key(MapStart start);
 
 struct MapReport {
   MapEnergy energy = MapEnergy::SymmetricDirichlet;

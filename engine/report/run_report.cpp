@@ -11,19 +11,6 @@
 
 namespace paver {
 
-namespace {
-
-std::string_view start_name(MapStart s) {
-  switch (s) {
-    case MapStart::Auto: return "auto";
-    case MapStart::Lscm: return "lscm";
-    case MapStart::Tutte: return "tutte";
-  }
-  return "?";
-}
-
-}  // namespace
-
 // The designer's edits of single elements (design.edits) and what became of them.
 nlohmann::json edits_json(const Pavement& pavement) {
   const ElementEdits& edits = pavement.design.edits;
@@ -117,8 +104,8 @@ nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const
                    {"area", surface_area(map.mesh)},
                    {"curvature_min", map.curvature_min},
                    {"curvature_max", map.curvature_max}}},
-      {"parameterization", {{"method", r.energy == MapEnergy::SymmetricDirichlet ? "symmetric_dirichlet" : "arap"},
-                            {"start", start_name(r.start_used)},
+      {"parameterization", {{"method", map_energy_key(r.energy)},
+                            {"start", map_start_key(r.start_used)},
                             {"iterations", r.iterations},
                             {"blocked_steps", r.blocked_steps},
                             {"factorizations", r.factorizations},

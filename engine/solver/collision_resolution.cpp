@@ -124,11 +124,14 @@ Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface,
   std::map<std::pair<int, int>, int> contact_of;  // particle pair -> its contact spring
   LiftedPoints lifted;
   std::size_t previous = 0;
+  // Only a wide pattern stalls (below); only a large one may end its rounds early.
+  const bool wide = system.particle_count() >= kWidePatternParticles;
+  const bool large = system.particle_count() >= options.large_pattern_particles;
   for (int round = 0; round < options.max_rounds; ++round) {
     const std::vector<Collision> collisions = find_collisions(elements, design.elements.gap);
     if (collisions.empty() || (stop && stop->load())) break;
     // Every pattern gets one round; a large one may leave its last few pairs to the last resort.
-    if (round > 0 && system.particle_count() >= options.large_pattern_particles &&
+    if (large && round > 0 &&
         double(collisions.size()) < options.large_pattern_pairs_share * double(elements.size()))
       break;
     ++report.rounds;
@@ -138,7 +141,6 @@ Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface,
     // pair that two vertex elements make is retired, and its neighbours relax into the space.
     // Only a wide pattern stalls this way: a small one can take a few rounds of more collisions
     // before its contact springs clear them all.
-    const bool wide = system.particle_count() >= kWidePatternParticles;
     const bool stalled = wide && round > 0 && double(collisions.size()) > 0.8 * double(previous);
     previous = collisions.size();
     if (stalled) {

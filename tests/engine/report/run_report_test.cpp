@@ -133,6 +133,13 @@ TEST_P(RunReportOnPavement, CountsAgreeWithThePavement) {
   EXPECT_EQ(r["postprocess"]["eliminated"].get<int>(), p.eliminated);
   EXPECT_EQ(r["collision_resolution"]["removed"].get<int>(), p.resolution.removed);
   EXPECT_EQ(r["collision_resolution"]["contact_springs"].get<int>(), p.resolution.contact_springs);
+  EXPECT_EQ(r["collision_resolution"]["pairs_left"].get<int>(), p.resolution.pairs_left);
+  // The map's energy and start in report.json's vocabulary (the summaries name them in words).
+  const MapReport& mr = map.parameterization.report;
+  EXPECT_EQ(r["parameterization"]["method"].get<std::string>(),
+            mr.energy == MapEnergy::SymmetricDirichlet ? "symmetric_dirichlet" : "arap");
+  EXPECT_EQ(r["parameterization"]["start"].get<std::string>(), mr.start_used == MapStart::Lscm ? "lscm" : "tutte");
+  EXPECT_EQ(r["parameterization"]["factorizations"].get<int>(), mr.factorizations);
 
   EXPECT_EQ(r["surface"]["path"].get<std::string>(), info.surface_path);
   EXPECT_EQ(r["surface"]["vertices"].get<int>(), map.mesh.vertex_count());
