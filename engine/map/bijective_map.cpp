@@ -142,6 +142,7 @@ struct MapSolver::Impl {
     cholesky.compute(laplacian);
     if (cholesky.info() != Eigen::Success)
       throw InputError("ARAP: the Laplacian could not be factorized (degenerate triangles?)");
+    report.factorizations = 1;
     report.precompute_ms += ms_since(t0);
   }
 
@@ -526,28 +527,19 @@ Parameterization finish_parameterization(const SurfaceMesh& mesh, const MapSolve
   return result;
 }
 
-std::string_view map_energy_name(MapEnergy energy) {
-  return energy == MapEnergy::SymmetricDirichlet ? "symmetric Dirichlet" : "ARAP";
-}
-std::string_view map_energy_key(MapEnergy energy) {
-  return energy == MapEnergy::SymmetricDirichlet ? "symmetric_dirichlet" : "arap";
-}
-std::string_view map_start_name(MapStart start) {
-  switch (start) {
-    case MapStart::Auto: return "auto";
-    case MapStart::Lscm: return "LSCM";
-    case MapStart::Tutte: return "Tutte";
-  }
-  return "?";
-}
-std::string_view map_start_key(MapStart start) {
-  switch (start) {
-    case MapStart::Auto: return "auto";
-    case MapStart::Lscm: return "lscm";
-    case MapStart::Tutte: return "tutte";
-  }
-  return "?";
-}
+namespace {
+// Each enumerator's words and report.json key, in the enum's order.
+struct Naming {
+  std::string_view name, key;
+};
+constexpr Naming kEnergyNaming[] = {{"symmetric Dirichlet", "symmetric_dirichlet"}, {"ARAP", "arap"}};
+constexpr Naming kStartNaming[] = {{"auto", "auto"}, {"LSCM", "lscm"}, {"Tutte", "tutte"}};
+}  // namespace
+
+std::string_view map_energy_name(MapEnergy energy) { return kEnergyNaming[int(energy)].name; }
+std::string_view map_energy_key(MapEnergy energy) { return kEnergyNaming[int(energy)].key; }
+std::string_view map_start_name(MapStart start) { return kStartNaming[int(start)].name; }
+std::string_view map_start_key(MapStart start) { return kStartNaming[int(start)].key; }
 
 MapOptions map_options_for(const SurfaceMesh& mesh, MapPiece piece) {
   MapOptions options;

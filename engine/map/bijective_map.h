@@ -30,13 +30,13 @@
 
 namespace paver {
 
-enum class MapStart {
+enum class MapStart {  // named in this order by kStartNaming (bijective_map.cpp)
   Auto,   // LSCM when it is bijective, else the Tutte embedding
   Lscm,   // LSCM (throws if it is not bijective)
   Tutte,  // mean-value Tutte embedding on a circle
 };
 
-enum class MapEnergy {
+enum class MapEnergy {  // named in this order by kEnergyNaming (bijective_map.cpp)
   SymmetricDirichlet,  // sum A_t (|J|^2 + |J^-1|^2), minimized by SLIM (Rabinovich et al. 2017)
   Arap,                // the paper's ARAP (Liu et al. 2008), local/global with a barrier
 };
@@ -69,7 +69,7 @@ struct MapReport {
   double initial_energy = 0;
   double final_energy = 0;
   int blocked_steps = 0;             // iterations whose step was shortened to keep bijectivity
-  int factorizations = 0;            // symmetric Dirichlet: proxies factorized (at most one more than iterations)
+  int factorizations = 0;            // ARAP: 1 (its Laplacian); symmetric Dirichlet: proxies factorized (at most one more than iterations)
   double precompute_ms = 0;
   double solve_ms = 0;
 };

@@ -76,6 +76,7 @@ TEST(BijectiveMap, BunnyheadFoldsWithPlainArapButNotWithOurs) {
     EXPECT_EQ(p.quality.flipped_triangles, 0);
     EXPECT_EQ(p.quality.boundary_intersections, 0);
     EXPECT_LT(p.report.final_energy, p.report.initial_energy);
+    if (energy == MapEnergy::Arap) EXPECT_EQ(p.report.factorizations, 1);  // its Laplacian, once
   }
 }
 
@@ -109,6 +110,18 @@ TEST(BijectiveMap, DisksAreMappedBySymmetricDirichletAndSurfacesWithHolesByArap)
     EXPECT_EQ(map_options_for(mesh).energy, energy) << name;
     EXPECT_EQ(map_options_for(mesh, MapPiece::Chart).energy, MapEnergy::Arap) << name;
   }
+}
+
+TEST(BijectiveMap, EnergiesAndStartsAreNamedInWordsAndAsReportKeys) {
+  EXPECT_EQ(map_energy_name(MapEnergy::SymmetricDirichlet), "symmetric Dirichlet");
+  EXPECT_EQ(map_energy_key(MapEnergy::SymmetricDirichlet), "symmetric_dirichlet");
+  EXPECT_EQ(map_energy_name(MapEnergy::Arap), "ARAP");
+  EXPECT_EQ(map_energy_key(MapEnergy::Arap), "arap");
+  EXPECT_EQ(map_start_name(MapStart::Auto), "auto");
+  EXPECT_EQ(map_start_name(MapStart::Lscm), "LSCM");
+  EXPECT_EQ(map_start_key(MapStart::Lscm), "lscm");
+  EXPECT_EQ(map_start_name(MapStart::Tutte), "Tutte");
+  EXPECT_EQ(map_start_key(MapStart::Tutte), "tutte");
 }
 
 // A developable strip (a third of a cylinder) flattens isometrically.
