@@ -80,10 +80,10 @@ int run_param(const ParamArgs& args) {
   const double param_ms = std::chrono::duration<double, std::milli>(t2 - t1).count();
 
   const auto& q = param.quality;
-  std::printf("%s from %s: %d iterations (%d factorizations) in %.1f ms (%d steps shortened to stay bijective)\n",
+  std::printf("%s from %s: %d iterations (%d factorization%s) in %.1f ms (%d steps shortened to stay bijective)\n",
               std::string(map_energy_name(param.report.energy)).c_str(),
               std::string(map_start_name(param.report.start_used)).c_str(), param.report.iterations,
-              param.report.factorizations, param_ms, param.report.blocked_steps);
+              param.report.factorizations, param.report.factorizations == 1 ? "" : "s", param_ms, param.report.blocked_steps);
   std::printf("  flipped triangles: %d, boundary self-intersections: %d -> %s\n", q.flipped_triangles,
               q.boundary_intersections, q.bijective() ? "bijective" : "NOT bijective");
   std::printf("  singular-value ratio s1/s2: mean %.4f, max %.4f\n", q.stretch_mean, q.stretch_max);

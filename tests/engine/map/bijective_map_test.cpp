@@ -76,7 +76,9 @@ TEST(BijectiveMap, BunnyheadFoldsWithPlainArapButNotWithOurs) {
     EXPECT_EQ(p.quality.flipped_triangles, 0);
     EXPECT_EQ(p.quality.boundary_intersections, 0);
     EXPECT_LT(p.report.final_energy, p.report.initial_energy);
-    if (energy == MapEnergy::Arap) EXPECT_EQ(p.report.factorizations, 1);  // its Laplacian, once
+    if (energy == MapEnergy::Arap) {
+      EXPECT_EQ(p.report.factorizations, 1);  // its Laplacian, once
+    }
   }
 }
 
