@@ -5,6 +5,7 @@
 //   solver_shape/<band|disk>/<N>/<threads> the same on the bangle's seamless map (which wraps) and on the dome
 //                       (a disk), at N particles of a tri lattice: a band costs what a disk costs
 //                       per particle (compare ns_per_particle of the two rows of one run).
+#include "core/stopwatch.h"
 #include "io/design_io.h"
 #include "mesh/mesh_loader.h"
 #include "pipeline/pavement.h"
@@ -16,7 +17,6 @@
 #include <benchmark/benchmark.h>
 #include <tbb/task_arena.h>
 
-#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -36,10 +36,10 @@ std::map<std::string, std::string> design_surfaces() {
 }
 
 void design(benchmark::State& state, std::string name, std::string surface) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const paver::Stopwatch watch;
   const auto map = std::make_shared<const paver::SurfaceMap>(
       paver::build_surface_map(paver::load_surface(fs::path(PAVER_SOURCE_DIR) / "assets/surfaces" / surface).mesh));
-  const double map_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  const double map_ms = watch.milliseconds();
   paver::PipelineRequest request;
   request.map = map;
   request.design = paver::load_design(fs::path(PAVER_SOURCE_DIR) / "assets/designs" / (name + ".json"));

@@ -8,12 +8,12 @@
 #include "map/bijective_map.h"
 #include "core/input_error.h"
 #include "core/printable.h"
+#include "core/stopwatch.h"
 #include "core/interrupted.h"
 #include "mesh/mesh_loader.h"
 #include "io/uv_map_export.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -33,25 +33,25 @@ struct ParamArgs {
 };
 
 int run_param(const ParamArgs& args) {
-  using Clock = std::chrono::steady_clock;
   nothing_written_yet();
   if (!args.out.empty()) {  // before any work
     refuse_overwriting_inputs({args.surface}, {args.out});
     const std::filesystem::path folder = std::filesystem::path(args.out).parent_path();
     check_output_folder(folder.empty() ? "." : folder);
   }
-  const auto t0 = Clock::now();
+  const Stopwatch load_watch;
   LoadedSurface loaded = load_surface(args.surface);
   for (const auto& w : loaded.warnings) std::cerr << "paver: warning: " << printable(w) << "\n";
   if (loaded.mesh.boundary_loops.empty())
     throw InputError(args.surface + ": is a closed surface; `paver param` maps one open surface, and `paver run` "
                      "cuts a closed one into charts (--cut)");
-  const auto t1 = Clock::now();
+  const double load_ms = load_watch.milliseconds();
+  const Stopwatch map_watch;
   // Said before the mapping, which can take minutes on a big mesh.
   std::printf("%s: %d vertices, %d faces, %d boundary vertices in %zu loops (loaded in %.1f ms)\n",
               printable(args.surface).c_str(), loaded.mesh.vertex_count(), loaded.mesh.face_count(),
               boundary_vertex_count(loaded.mesh), loaded.mesh.boundary_loops.size(),
-              std::chrono::duration<double, std::milli>(t1 - t0).count());
+              load_ms);
   std::fflush(stdout);
 
   MapOptions options = map_options_for(loaded.mesh);
@@ -76,8 +76,7 @@ int run_param(const ParamArgs& args) {
       throw InputError(args.surface + ": " + e.what() + "; remesh the surface or remove its sliver triangles");
     }
   }();
-  const auto t2 = Clock::now();
-  const double param_ms = std::chrono::duration<double, std::milli>(t2 - t1).count();
+  const double param_ms = map_watch.milliseconds();
 
   const auto& q = param.quality;
   std::printf("%s from %s: %d iterations (%d factorization%s) in %.1f ms (%d steps shortened to stay bijective)\n",

@@ -9,6 +9,7 @@
 #include "core/input_error.h"
 #include "core/number_text.h"
 #include "core/printable.h"
+#include "core/stopwatch.h"
 #include "io/design_io.h"
 #include "pipeline/run_pipeline.h"
 #include "pattern/adaptive_pattern.h"
@@ -20,7 +21,6 @@
 #include "report/verdict.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -34,7 +34,6 @@ namespace paver::cli {
 namespace {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
 
 struct RunArgs {
   std::string surface;
@@ -80,9 +79,6 @@ double finite_non_negative(const char* flag, double value, const char* meaning) 
   throw InputError(std::string(flag) + " " + number_text(value) + ": must be finite and >= 0 (" + meaning + ")");
 }
 
-double ms_since(Clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
 
 int run_run(const RunArgs& args) {
   nothing_written_yet();
@@ -182,14 +178,14 @@ int run_run(const RunArgs& args) {
     write_cut = [&, thickness, cutter](const PipelineResult& r, const fs::path& folder, StageTimings& timings,
                                        nlohmann::json& sections) {
       progress.stage("cut");
-      const auto t0 = Clock::now();
+      const Stopwatch watch;
       const CutSolid cut = cut_pavement(*r.map, r.pavement.elements,
                                         {.cutter = cutter, .thickness = thickness, .custom = r.custom_shape.get(),
                                          .stop = &interrupt_requested(), .beads = &r.pavement.beads});
       write_cut_files(folder, cut, r.pavement.elements, r.pavement.design.units, r.custom_shape.get(),
                       &interrupt_requested());
       if (previews) previews->write_solid(folder / "cut.png", cut.mesh, r.map->mesh);
-      timings.emplace_back("cut", ms_since(t0));
+      timings.emplace_back("cut", watch.milliseconds());
       cut_summary = sections["cut"] = cut_json(cut, cutter, thickness, r.pavement.design.units);
     };
 #else
@@ -204,9 +200,9 @@ int run_run(const RunArgs& args) {
                              nlohmann::json& sections) {
     if (write_cut) write_cut(r, folder, timings, sections);
     if (previews) {
-      const auto t0 = Clock::now();
+      const Stopwatch watch;
       previews->write(folder, *r.map, r.pavement, r.custom_shape.get());
-      timings.emplace_back("png", ms_since(t0));
+      timings.emplace_back("png", watch.milliseconds());
     }
   };
   const MeshFormats request_formats = request.formats;

@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "core/input_error.h"
+#include "core/stopwatch.h"
 
 #include <atomic>
 #include <chrono>
@@ -56,7 +57,7 @@ struct LivePavement::Run {
 namespace {
 
 void run_pavement(const RunRequest& request, const std::shared_ptr<LivePavement::Run>& run) {
-  const auto t0 = Clock::now();
+  const Stopwatch watch;
   RunOutcome outcome;
   outcome.revision = request.revision;
   try {
@@ -89,7 +90,7 @@ void run_pavement(const RunRequest& request, const std::shared_ptr<LivePavement:
   } catch (const std::exception& e) {
     outcome.error = std::string("the pavement failed: ") + e.what();
   }
-  outcome.milliseconds = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+  outcome.milliseconds = watch.milliseconds();
   std::lock_guard lock(run->mutex);
   run->finished = true;
   if (!run->cancelled) run->outcome = std::move(outcome);

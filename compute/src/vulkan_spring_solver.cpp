@@ -1,5 +1,6 @@
 #include "paver/compute/vulkan_spring_solver.h"
 
+#include "core/stopwatch.h"
 #include "paver/compute/gpu_buffer.h"
 #include "solver/spring_solver.h"
 #include "paver/compute/vulkan_objects.h"
@@ -13,7 +14,6 @@
 
 #include <array>
 #include <mutex>
-#include <chrono>
 #include <cstring>
 #include <span>
 
@@ -238,7 +238,7 @@ private:
   }
 
   SolveReport run(const SolverObserver& observer, const std::atomic<bool>* stop) {
-    const auto t0 = std::chrono::steady_clock::now();
+    const Stopwatch watch;
     const int n = system_.particle_count(), e = system_.spring_count();
     Transfers t(*s_.ctx);
     upload_inputs(t);
@@ -294,7 +294,7 @@ private:
     report.iterations = int(control_[kControlIterations]);
     std::memcpy(&report.last_max_step, &control_[kControlLastMaxStep], sizeof(float));
     report.strays_pulled_back = int(control_[kControlStrays]);
-    report.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    report.milliseconds = watch.milliseconds();
     return report;
   }
 

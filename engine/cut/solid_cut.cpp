@@ -3,6 +3,7 @@
 #include "core/input_error.h"
 #include "core/interrupted.h"
 #include "core/number_text.h"
+#include "core/stopwatch.h"
 #include "cut/thick_shell.h"
 #include "elements/element_frame.h"
 #include "io/shape_table.h"
@@ -23,7 +24,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -198,7 +198,7 @@ double cutter_reach_above() { return 0.6; }
 double cutter_reach_below(double thickness, double diameter) { return 1.5 * thickness / diameter + 0.5; }
 
 CutSolid cut_pavement(const SurfaceMap& map, const Elements& elements, const CutOptions& options) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   const auto check_stop = [&] {
     if (options.stop && options.stop->load()) throw Interrupted();
   };
@@ -270,7 +270,7 @@ CutSolid cut_pavement(const SurfaceMap& map, const Elements& elements, const Cut
   if (!PMP::is_outward_oriented(rounded)) throw std::runtime_error("cut: the result is not outward-oriented");
   if (PMP::does_self_intersect(rounded)) throw std::runtime_error("cut: the result intersects itself");
   result.volume = volume_of(result.mesh);
-  result.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  result.milliseconds = watch.milliseconds();
   return result;
 }
 

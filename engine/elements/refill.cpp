@@ -1,5 +1,6 @@
 #include "elements/refill.h"
 
+#include "core/stopwatch.h"
 #include "elements/boundary_postprocess.h"
 #include "elements/element_hash.h"
 #include "elements/contact_rule.h"
@@ -12,7 +13,6 @@
 #include <algorithm>
 #include <array>
 #include <span>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -62,7 +62,7 @@ CellGrid element_grid(const SurfaceMap& map, const Elements& elements, double di
 
 RefillReport refill_bare_regions(const SurfaceMap& map, Elements& elements, const Design& design,
                                  double area_per_element, const std::atomic<bool>* stop) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   RefillReport report;
   const ElementsDesign& spec = design.elements;
   if (!spec.vertex.enabled || elements.size() == 0 || map.mesh.positions.empty() || !(area_per_element > 0))
@@ -153,7 +153,7 @@ RefillReport refill_bare_regions(const SurfaceMap& map, Elements& elements, cons
     }
     seeds.swap(next);
   }
-  report.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  report.milliseconds = watch.milliseconds();
   return report;
 }
 
@@ -161,7 +161,7 @@ void refill_seams(const SurfaceMap& map, Elements& elements, const Design& desig
                   RefillReport& report) {
   const ElementsDesign& spec = design.elements;
   if (!is_atlas(map) || !spec.vertex.enabled || design.elements.allow_overlap || !(area_per_element > 0)) return;
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   const double diameter = spec.vertex.scale * design.pattern.spacing;
   const DensityRule density(design, area_per_element);
   const CellGrid grid = element_grid(map, elements, diameter, spec.gap, density.widest());
@@ -190,7 +190,7 @@ void refill_seams(const SurfaceMap& map, Elements& elements, const Design& desig
         return;
       }
     });
-  report.milliseconds += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  report.milliseconds += watch.milliseconds();
 }
 
 }  // namespace paver

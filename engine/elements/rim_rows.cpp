@@ -1,5 +1,6 @@
 #include "elements/rim_rows.h"
 
+#include "core/stopwatch.h"
 #include "elements/boundary_postprocess.h"
 #include "elements/contact_rule.h"
 #include "elements/element_hash.h"
@@ -11,7 +12,6 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -79,7 +79,7 @@ std::vector<int> rim_row_loops(const SurfaceMap& map, RimRows rows) {
 }
 
 RimRowReport place_rim_rows(const SurfaceMap& map, Elements& elements, const Design& design) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   RimRowReport report;
   const ElementsDesign& spec = design.elements;
   const std::vector<int> loops = rim_row_loops(map, spec.rim_rows);
@@ -174,7 +174,7 @@ RimRowReport place_rim_rows(const SurfaceMap& map, Elements& elements, const Des
       elements.push_back(ElementKind::Vertex, -1, 0, row.uv[i], row.position[i], row.normal[i], diameter,
                          spec.vertex.shape);
   }
-  report.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  report.milliseconds = watch.milliseconds();
   return report;
 }
 

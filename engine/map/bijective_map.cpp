@@ -5,6 +5,7 @@
 #include <glm/matrix.hpp>
 
 #include "core/input_error.h"
+#include "core/stopwatch.h"
 #include "map/hole_patches.h"
 #include "map/lscm.h"
 #include "map/tutte_embedding.h"
@@ -16,17 +17,12 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <limits>
 
 namespace paver {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
 
 // Smallest alpha > 0 where det([e1 + alpha f1, e2 + alpha f2]) reaches zero, or +inf.
 double first_collapse(glm::dvec2 e1, glm::dvec2 e2, glm::dvec2 f1, glm::dvec2 f2) {
@@ -85,7 +81,7 @@ struct MapSolver::Impl {
   Impl(const SurfaceMesh& m, const MapOptions& o) : patched(close_holes(m)), options(o) { report.energy = o.energy; }
 
   void precompute() {
-    const auto t0 = Clock::now();
+    const Stopwatch watch;
     const int n = mesh.vertex_count(), nf = mesh.face_count();
     flat.resize(nf);
     cot.resize(nf);
@@ -134,7 +130,7 @@ struct MapSolver::Impl {
     laplacian.setFromTriplets(lff.begin(), lff.end());
     if (options.energy == MapEnergy::SymmetricDirichlet) {
       precompute_symmetric_dirichlet(laplacian);
-      report.precompute_ms += ms_since(t0);
+      report.precompute_ms += watch.milliseconds();
       return;
     }
     pinned_column.resize(free_count, 1);
@@ -143,7 +139,7 @@ struct MapSolver::Impl {
     if (cholesky.info() != Eigen::Success)
       throw InputError("ARAP: the Laplacian could not be factorized (degenerate triangles?)");
     report.factorizations = 1;
-    report.precompute_ms += ms_since(t0);
+    report.precompute_ms += watch.milliseconds();
   }
 
   // Local step: the best rotation per triangle, in closed form for 2x2.
@@ -417,7 +413,7 @@ struct MapSolver::Impl {
   }
 
   bool iterate(int max_iterations) {
-    const auto t0 = Clock::now();
+    const Stopwatch watch;
     bool converged = false;
     trial.resize(uv.size());
     if (report.iterations == 0 && recent_energies.empty()) {
@@ -474,7 +470,7 @@ struct MapSolver::Impl {
       }
     }
     report.final_energy = energy;
-    report.solve_ms += ms_since(t0);
+    report.solve_ms += watch.milliseconds();
     return converged;
   }
 };
@@ -482,7 +478,7 @@ struct MapSolver::Impl {
 MapSolver::MapSolver(const SurfaceMesh& mesh, const MapOptions& options)
     : impl_(std::make_unique<Impl>(mesh, options)) {
   auto& s = *impl_;
-  const auto t0 = Clock::now();
+  const Stopwatch watch;
   const SurfaceMesh& disk = s.mesh;
   if (options.start != MapStart::Tutte) {
     std::vector<glm::dvec2> start = lscm(disk);
@@ -501,7 +497,7 @@ MapSolver::MapSolver(const SurfaceMesh& mesh, const MapOptions& options)
   }
   // Symmetric Dirichlet is not scale-free: it starts at the surface's area.
   if (options.energy == MapEnergy::SymmetricDirichlet) detail::scale_to_surface_area(disk, s.uv);
-  s.report.precompute_ms = ms_since(t0);
+  s.report.precompute_ms = watch.milliseconds();
   s.precompute();
 }
 

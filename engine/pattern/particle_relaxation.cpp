@@ -1,5 +1,6 @@
 #include "pattern/particle_relaxation.h"
 
+#include "core/stopwatch.h"
 #include "elements/element_hash.h"
 #include "map/boundary_index.h"
 #include "map/lifting.h"
@@ -11,7 +12,6 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -176,7 +176,7 @@ double relaxation_spacing(const SurfaceMap& map, const RelaxationTarget& target,
 
 RelaxedParticles relax_particles(const SurfaceMap& map, const std::vector<glm::dvec2>& seeds,
                                  const RelaxationTarget& target, const std::atomic<bool>* stop) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   RelaxedParticles out;
   RelaxationReport& report = out.report;
   const double largest = target.spacing * (1 + target.c + std::max(target.m, 0.0));
@@ -249,7 +249,7 @@ RelaxedParticles relax_particles(const SurfaceMap& map, const std::vector<glm::d
   }
   out.triangles = triangulate_surface_points(p.uv, p.lifted.position, kLongestEdge * largest);
   out.uv = std::move(p.uv);
-  report.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  report.milliseconds = watch.milliseconds();
   return out;
 }
 

@@ -1,6 +1,7 @@
 #include "pipeline/map_surface.h"
 
 #include "core/input_error.h"
+#include "core/stopwatch.h"
 #include "mesh/mesh_loader.h"
 
 #include <glm/geometric.hpp>
@@ -8,14 +9,11 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <chrono>
 #include <vector>
 
 namespace paver {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
 
 }  // namespace
@@ -78,18 +76,18 @@ MappedSurface map_surface_file(const std::filesystem::path& path, const Pipeline
   };
   const auto stopped = [&] { return stop && stop(); };
   MappedSurface out;
-  auto t0 = Clock::now();
+  Stopwatch watch;
   report(0.0f, "loading");
   LoadedSurface loaded = load_surface(path);
   out.warnings = std::move(loaded.warnings);
   if (warn)
     for (const std::string& w : out.warnings) warn(w);
-  out.timings.emplace_back("load", ms_since(t0));
+  out.timings.emplace_back("load", watch.milliseconds());
   check_surface_size(path, loaded.mesh);
   check_surface_proportions(path, loaded.mesh);
   if (stopped()) return out;
 
-  t0 = Clock::now();
+  watch = Stopwatch();
   if (loaded.mesh.boundary_loops.empty()) {
     try {
       std::optional<SurfaceMap> atlas = map_closed_surface(
@@ -106,7 +104,7 @@ MappedSurface map_surface_file(const std::filesystem::path& path, const Pipeline
     } catch (const std::runtime_error& e) {
       throw std::runtime_error(path.string() + ": " + e.what());
     }
-    out.timings.emplace_back("parameterize", ms_since(t0));
+    out.timings.emplace_back("parameterize", watch.milliseconds());
     report(1.0f, "mapped");
     return out;
   }
@@ -128,7 +126,7 @@ MappedSurface map_surface_file(const std::filesystem::path& path, const Pipeline
   } catch (const std::runtime_error& e) {
     throw std::runtime_error(path.string() + ": " + e.what());
   }
-  out.timings.emplace_back("parameterize", ms_since(t0));
+  out.timings.emplace_back("parameterize", watch.milliseconds());
   report(1.0f, "mapped");
   return out;
 }

@@ -1,5 +1,6 @@
 #include "pipeline/pavement.h"
 
+#include "core/stopwatch.h"
 #include "elements/beads.h"
 #include "elements/boundary_postprocess.h"
 #include "pattern/adaptive_pattern.h"
@@ -19,7 +20,6 @@
 #include <glm/geometric.hpp>
 
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -29,10 +29,6 @@
 namespace paver {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
 
 }  // namespace
 
@@ -145,9 +141,9 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
   // Each stage's clock starts where the caller hears that it starts.
   const auto start = [&](const char* stage) {
     if (options.on_stage) options.on_stage(stage);
-    return Clock::now();
+    return Stopwatch();
   };
-  auto t0 = start("pattern");
+  Stopwatch watch = start("pattern");
   if (design.pattern.spacing <= 0)
     design.pattern.spacing = default_spacing(map.mesh, design.pattern.tessellation);
   const bool adaptive = design.pattern.topology == Topology::Adaptive;
@@ -184,16 +180,16 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
   }
   const std::vector<EditedParticle> edited = add_edited_points(pavement.pattern, design.edits);
   pavement.points = pavement.pattern.points;
-  pavement.timings.emplace_back("pattern", ms_since(t0));
+  pavement.timings.emplace_back("pattern", watch.milliseconds());
   // Before any element is placed or measured: the caller's bounds (run_pipeline's output size)
   // refuse a design here at the cost of its pattern alone.
   if (options.on_pattern) options.on_pattern(pavement.pattern, design);
 
-  t0 = start("measure_initial");
+  watch = start("measure_initial");
   const PlacedElements initial = place_all_elements(map, pavement.pattern, pavement.points, design, options.postprocess);
   pavement.before =
       measure_pavement(map, pavement.pattern, pavement.points, initial.elements, basis, nullptr, Measure::Counts);
-  pavement.timings.emplace_back("measure_initial", ms_since(t0));
+  pavement.timings.emplace_back("measure_initial", watch.milliseconds());
 
   pavement.retired.assign(pavement.points.size(), 0);
   const auto place = [&](const std::vector<glm::dvec2>& points, const std::vector<std::uint32_t>& stray_count) {
@@ -207,23 +203,23 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
   if (options.optimize && adaptive && pavement.pattern.point_count() > 0) {
     // The adaptive pattern's own optimizer, on the surface, with contact in it; removal is the
     // last resort for what still collides.
-    t0 = start("optimize");
+    watch = start("optimize");
     pavement.solve = relax_pattern_on_surface(map, pavement.pattern, pavement.points, design, {}, options.stop);
-    pavement.timings.emplace_back("optimize", ms_since(t0));
-    t0 = start("measure_paper");
+    pavement.timings.emplace_back("optimize", watch.milliseconds());
+    watch = start("measure_paper");
     pavement.elements = place(pavement.points, {});
     pavement.paper = measure_pavement(map, pavement.pattern, pavement.points, pavement.elements, basis,
                                       &pavement.retired, Measure::Counts);
-    pavement.timings.emplace_back("measure_paper", ms_since(t0));
+    pavement.timings.emplace_back("measure_paper", watch.milliseconds());
     if (options.resolve_collisions && !design.elements.allow_overlap) {
-      t0 = start("resolve_collisions");
+      watch = start("resolve_collisions");
       const Removal removal = remove_colliding(pavement.elements, design.elements.gap);
       pavement.resolution.pairs_left = removal.pairs;
       pavement.resolution.removed = removal.removed;
-      pavement.timings.emplace_back("resolve_collisions", ms_since(t0));
+      pavement.timings.emplace_back("resolve_collisions", watch.milliseconds());
     }
   } else if (options.optimize && pavement.pattern.point_count() > 0) {
-    t0 = start("optimize");
+    watch = start("optimize");
     const SolverSurface surface = make_solver_surface(map);
     SpringSystem system = make_spring_system(pavement.pattern);
     apply_guidance(system, pavement.pattern, design.guidance);
@@ -239,24 +235,24 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
       pavement.coarse_start =
           coarse_start(surface, system, pattern_at, design.solver, design.pattern.spacing, factory, options.stop);
     pavement.solve = factory(surface, system, design.solver, design.pattern.spacing)->solve(options.observer, options.stop);
-    pavement.timings.emplace_back("optimize", ms_since(t0));
+    pavement.timings.emplace_back("optimize", watch.milliseconds());
     for (int i = 0; i < system.particle_count(); ++i) pavement.points[i] = glm::dvec2(system.position[i]);
 
-    t0 = start("measure_paper");
+    watch = start("measure_paper");
     pavement.elements = place(pavement.points, system.stray_count);
     pavement.paper = measure_pavement(map, pavement.pattern, pavement.points, pavement.elements, basis,
                                       &pavement.retired, Measure::Counts);
-    pavement.timings.emplace_back("measure_paper", ms_since(t0));
+    pavement.timings.emplace_back("measure_paper", watch.milliseconds());
     // Designs that overlap on purpose keep their overlaps.
     if (options.resolve_collisions && !design.elements.allow_overlap) {
-      t0 = start("resolve_collisions");
+      watch = start("resolve_collisions");
       pavement.elements = resolve_collisions(map, surface, system, pavement.pattern, design, pavement.points, place,
                                              factory, options.resolution, pavement.resolution, options.stop);
-      pavement.timings.emplace_back("resolve_collisions", ms_since(t0));
+      pavement.timings.emplace_back("resolve_collisions", watch.milliseconds());
     }
     if (!edited.empty()) {
       // The edits start from the design's own pavement and change it only around them.
-      t0 = start("edits");
+      watch = start("edits");
       const HeldParticles beyond = place_edits(system, edited, design.pattern.spacing);
       for (int i = 0; i < system.particle_count(); ++i) pavement.points[i] = glm::dvec2(system.position[i]);
       if (options.resolve_collisions && !design.elements.allow_overlap) {
@@ -276,7 +272,7 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
         pavement.elements = place(pavement.points, system.stray_count);
       }
       release_held(system, beyond);
-      pavement.timings.emplace_back("edits", ms_since(t0));
+      pavement.timings.emplace_back("edits", watch.milliseconds());
     }
   } else {
     for (const EditedParticle& e : edited) pavement.points[std::size_t(e.particle)] = e.to;  // unoptimized: as put
@@ -284,12 +280,12 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
     pavement.paper = pavement.before;
   }
   if (design.elements.rim_rows != RimRows::None && !design.elements.allow_overlap) {
-    t0 = start("rim_rows");
+    watch = start("rim_rows");
     pavement.rim_rows = place_rim_rows(map, pavement.elements, design);
-    pavement.timings.emplace_back("rim_rows", ms_since(t0));
+    pavement.timings.emplace_back("rim_rows", watch.milliseconds());
   }
   if (options.refill && !design.elements.allow_overlap) {
-    t0 = start("refill");
+    watch = start("refill");
     // Across a closed surface's seams first, so that the bare regions' refill grows from there too.
     RefillReport seams;
     refill_seams(map, pavement.elements, design, basis.area_per_element, seams);
@@ -297,26 +293,26 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
     pavement.refill.added += seams.added;
     pavement.refill.on_seams = seams.on_seams;
     pavement.refill.milliseconds += seams.milliseconds;
-    pavement.timings.emplace_back("refill", ms_since(t0));
+    pavement.timings.emplace_back("refill", watch.milliseconds());
   }
 
   number_elements(pavement.elements, pavement.pattern, design.edits.added);
   if (!design.edits.deleted.empty()) {
-    t0 = start("deletions");
+    watch = start("deletions");
     pavement.deletions_missed =
         delete_elements(pavement.elements, design.edits, first_refill_id(pavement.pattern));
-    pavement.timings.emplace_back("deletions", ms_since(t0));
+    pavement.timings.emplace_back("deletions", watch.milliseconds());
   }
 
-  t0 = start("measure");
+  watch = start("measure");
   pavement.after =
       measure_pavement(map, pavement.pattern, pavement.points, pavement.elements, basis, &pavement.retired);
-  pavement.timings.emplace_back("measure", ms_since(t0));
+  pavement.timings.emplace_back("measure", watch.milliseconds());
   if (design.elements.beads.enabled) {
-    t0 = start("beads");
+    watch = start("beads");
     pavement.beads = place_beads(map, pavement.elements, design.elements);
     number_beads(pavement.beads, pavement.elements);
-    pavement.timings.emplace_back("beads", ms_since(t0));
+    pavement.timings.emplace_back("beads", watch.milliseconds());
   }
   pavement.design = std::move(design);
   return pavement;

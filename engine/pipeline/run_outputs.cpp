@@ -1,5 +1,6 @@
 #include "pipeline/run_outputs.h"
 
+#include "core/stopwatch.h"
 #include "report/bill_of_stones.h"
 #include "report/report_html.h"
 
@@ -18,7 +19,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include <chrono>
 
 namespace paver {
 
@@ -71,10 +71,10 @@ void write_run_outputs(const fs::path& folder, const RunInfo& info, const Surfac
   check_stop();
   OutputSet::remove_stale_staging(folder);  // left by runs that were killed
   OutputSet set(folder, run_output_names());
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   write_run_files(set.staging(), map, pavement, options);
   timings.emplace_back("export",
-                       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+                       watch.milliseconds());
   check_stop();
   nlohmann::json sections = nlohmann::json::object();
   if (extras) extras(set.staging(), timings, sections);

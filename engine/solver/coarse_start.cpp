@@ -1,9 +1,9 @@
 #include "solver/coarse_start.h"
 
+#include "core/stopwatch.h"
 #include "solver/displacement_field.h"
 #include "solver/solver_kernels.h"
 
-#include <chrono>
 
 namespace paver {
 namespace {
@@ -68,7 +68,7 @@ CoarseStartReport coarse_start(const SolverSurface& surface, SpringSystem& syste
                                const std::atomic<bool>* stop) {
   CoarseStartReport report;
   if (params.coarse_levels <= 0 || surface.period > 0) return report;
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   // Work on copies: a stop part-way leaves the system as it was.
   std::vector<glm::vec2> position = system.position;
   std::vector<std::uint32_t> stray_count = system.stray_count;
@@ -82,7 +82,7 @@ CoarseStartReport coarse_start(const SolverSurface& surface, SpringSystem& syste
     report.level_points.clear();  // stopped: nothing of the levels was used
     report.level_iterations.clear();
   }
-  report.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  report.milliseconds = watch.milliseconds();
   return report;
 }
 

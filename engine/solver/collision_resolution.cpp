@@ -1,5 +1,6 @@
 #include "solver/collision_resolution.h"
 
+#include "core/stopwatch.h"
 #include "elements/contact_rule.h"
 
 #include "elements/element_proximity.h"
@@ -8,7 +9,6 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <map>
 #include <utility>
 
@@ -119,7 +119,7 @@ Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface,
                             const ElementPlacer& place, const SolverFactory& solver,
                             const CollisionResolutionOptions& options, CollisionResolutionReport& report,
                             const std::atomic<bool>* stop) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   Elements elements = place(points, system.stray_count);
   std::map<std::pair<int, int>, int> contact_of;  // particle pair -> its contact spring
   LiftedPoints lifted;
@@ -194,7 +194,7 @@ Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface,
   const Removal removal = remove_colliding(elements, design.elements.gap, &pinned);
   report.pairs_left = removal.pairs;
   report.removed = removal.removed;
-  report.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  report.milliseconds = watch.milliseconds();
   return elements;
 }
 

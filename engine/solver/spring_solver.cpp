@@ -1,12 +1,13 @@
 #include "solver/spring_solver.h"
 
+#include "core/stopwatch.h"
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -143,7 +144,7 @@ float CpuSpringSolver::step() {
 }
 
 SolveReport CpuSpringSolver::solve(const SolverObserver& observer, const std::atomic<bool>* stop) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   SolveReport report;
   report.reason = StopReason::IterationLimit;
   for (int it = 0; it < params_.iterations; ++it) {
@@ -161,7 +162,7 @@ SolveReport CpuSpringSolver::solve(const SolverObserver& observer, const std::at
   // Leave the positions as lifted (strays pulled back), without another filter step.
   arena_->execute([&] { lift_all(false); });
   report.strays_pulled_back = strays_;
-  report.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  report.milliseconds = watch.milliseconds();
   return report;
 }
 

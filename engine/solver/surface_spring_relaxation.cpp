@@ -1,5 +1,6 @@
 #include "solver/surface_spring_relaxation.h"
 
+#include "core/stopwatch.h"
 #include "elements/element_hash.h"
 #include "elements/contact_rule.h"
 #include "map/boundary_index.h"
@@ -11,7 +12,6 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdint>
 #include <limits>
 
@@ -108,7 +108,7 @@ void relax_honeycomb_springs(const SurfaceMap& map, const Pattern& pattern, std:
 SolveReport relax_pattern_on_surface(const SurfaceMap& map, const Pattern& pattern, std::vector<glm::dvec2>& points,
                                      const Design& design, const SurfaceSpringOptions& options,
                                      const std::atomic<bool>* stop) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   SolveReport report;
   const int n = int(points.size());
   if (n == 0) return report;
@@ -136,7 +136,7 @@ SolveReport relax_pattern_on_surface(const SurfaceMap& map, const Pattern& patte
     if (packed.overlapping_pairs == 0 && report.reason == StopReason::IterationLimit)
       report.reason = StopReason::Converged;
   }
-  report.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  report.milliseconds = watch.milliseconds();
   return report;
 }
 

@@ -17,6 +17,7 @@
 
 #include "pipeline/pavement.h"
 #include "core/input_error.h"
+#include "core/stopwatch.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
@@ -98,9 +99,9 @@ void render_if_changed(Studio& s, int view, int width, int height) {
     return start_drawing(s, view, request, inputs, false);
   }
   // Only a whole image measures the view: slices each add a load and store of the image.
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   s.renderer.render(view, request);
-  pace.full_image_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  pace.full_image_ms = watch.milliseconds();
   shown = std::move(inputs);
   s.scene.redraw_whole[view] = false;
 }
