@@ -7,6 +7,7 @@
 
 #include "map/lifting.h"
 
+#include "io/output_set.h"
 #include "io/output_guard.h"
 #include "panels/panels.h"
 #include "recent_files.h"
@@ -338,7 +339,9 @@ void export_outputs(Studio& s, const fs::path& folder) {
     throw InputError("nothing to export yet: the pavement for this design is not finished (run it, or wait)");
   const Pavement& pavement = *s.doc.result.pavement;
   const std::vector<fs::path> inputs = {s.doc.surface.path, s.doc.design_path, s.doc.design.elements.custom_shape};
-  refuse_overwriting_inputs(inputs, run_output_paths(folder, kStudioExportFormats));
+  const std::vector<fs::path> outputs = run_output_paths(folder, kStudioExportFormats);
+  refuse_overwriting_inputs(inputs, outputs);
+  OutputSet::refuse_replacing_users_files(folder, outputs, run_output_names());
   StageTimings timings = s.doc.surface.timings;
   timings.insert(timings.end(), pavement.timings.begin(), pavement.timings.end());
   const RunInfo info{s.doc.surface.path.string(), s.doc.design_path.empty() ? "studio" : s.doc.design_path.string(),

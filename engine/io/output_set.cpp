@@ -8,6 +8,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <string_view>
 #include <system_error>
 
@@ -20,12 +21,33 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr std::string_view kStagingTag = ".paver-staging.";
+constexpr const char* kManifest = ".paver-files";
 
 fs::path normal_folder(const fs::path& folder) {
   std::error_code ec;
   fs::path p = fs::absolute(folder, ec).lexically_normal();
   if (p.filename().empty() && p.has_parent_path() && p.parent_path() != p) p = p.parent_path();
   return p;
+}
+
+bool listed(const std::vector<std::string>& names, const std::string& name) {
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+// The files of `folder` that an earlier run published there (see output_set.h), among `known`.
+std::vector<std::string> previous_run_files(const fs::path& folder, const std::vector<std::string>& known) {
+  std::vector<std::string> files;
+  std::error_code ec;
+  std::ifstream manifest(folder / kManifest);
+  if (manifest) {
+    for (std::string name; std::getline(manifest, name);)
+      if (listed(known, name) && fs::exists(folder / name, ec)) files.push_back(name);
+    return files;
+  }
+  if (!fs::is_regular_file(folder / "report.json", ec)) return files;
+  for (const std::string& name : known)
+    if (fs::exists(folder / name, ec)) files.push_back(name);
+  return files;
 }
 
 bool contains_only(const fs::path& folder, const std::vector<std::string>& names) {
@@ -79,7 +101,8 @@ int remove_stale(const fs::path& folder, const std::string& prefix) {
 }  // namespace
 
 OutputSet::OutputSet(fs::path folder, std::vector<std::string> known_names)
-    : folder_(normal_folder(folder)), known_(std::move(known_names)) {
+    : folder_(normal_folder(folder)), known_(std::move(known_names)), previous_(previous_run_files(folder_, known_)) {
+  previous_.push_back(kManifest);
   const std::string pid = std::to_string(long(::getpid()));
   std::error_code ec;
   fs::create_directories(folder_.parent_path(), ec);
@@ -106,6 +129,14 @@ OutputSet::~OutputSet() {
 
 void OutputSet::publish(const std::string& last) {
   std::error_code ec;
+  {
+    std::vector<std::string> staged;
+    for (const auto& entry : fs::directory_iterator(staging_)) staged.push_back(entry.path().filename().string());
+    std::sort(staged.begin(), staged.end());
+    std::ofstream manifest(staging_ / kManifest);
+    for (const std::string& name : staged) manifest << name << "\n";
+    if (!manifest.flush()) throw InputError("cannot write " + (staging_ / kManifest).string());
+  }
   const bool beside = staging_.parent_path() == folder_.parent_path();
   if (beside && !fs::exists(folder_, ec)) {
     fs::rename(staging_, folder_, ec);
@@ -114,23 +145,38 @@ void OutputSet::publish(const std::string& last) {
       return;
     }
   }
-  if (beside && contains_only(folder_, known_) &&
+  if (beside && contains_only(folder_, previous_) &&
       ::renameat2(AT_FDCWD, staging_.c_str(), AT_FDCWD, folder_.c_str(), RENAME_EXCHANGE) == 0) {
     published_ = true;
     fs::remove_all(staging_, ec);  // the previous run's set, swapped out
     return;
   }
-  // One by one: everything but `last`, then the previous run's files this run did not write, then `last`.
+  // One by one: everything but the manifest and `last`, then the previous run's files this run did
+  // not write, then the manifest, then `last`.
   std::vector<std::string> staged;
   for (const auto& entry : fs::directory_iterator(staging_)) staged.push_back(entry.path().filename().string());
   std::sort(staged.begin(), staged.end());
   for (const std::string& name : staged)
-    if (name != last) move_file(staging_ / name, folder_ / name);
-  for (const std::string& name : known_)
-    if (std::find(staged.begin(), staged.end(), name) == staged.end()) fs::remove(folder_ / name, ec);
-  if (std::find(staged.begin(), staged.end(), last) != staged.end()) move_file(staging_ / last, folder_ / last);
+    if (name != last && name != kManifest) move_file(staging_ / name, folder_ / name);
+  for (const std::string& name : previous_)
+    if (!listed(staged, name)) fs::remove(folder_ / name, ec);
+  move_file(staging_ / kManifest, folder_ / kManifest);
+  if (listed(staged, last)) move_file(staging_ / last, folder_ / last);
   published_ = true;
   fs::remove_all(staging_, ec);
+}
+
+void OutputSet::refuse_replacing_users_files(const fs::path& folder, const std::vector<fs::path>& outputs,
+                                             const std::vector<std::string>& known_names) {
+  const fs::path f = normal_folder(folder);
+  std::error_code ec;
+  if (!fs::is_directory(f, ec)) return;
+  const std::vector<std::string> previous = previous_run_files(f, known_names);
+  for (const fs::path& output : outputs) {
+    const std::string name = output.filename().string();
+    if (fs::exists(f / name, ec) && !listed(previous, name))
+      throw InputError((f / name).string() + ": exists and no earlier paver run wrote it; move it away or choose another output folder");
+  }
 }
 
 int OutputSet::remove_stale_staging(const fs::path& folder) {

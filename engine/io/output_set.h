@@ -8,6 +8,12 @@
 // atomic rename (renameat2 RENAME_EXCHANGE) and the old set removed; when it also holds files of
 // the user's, the staged files are renamed in one by one (each atomic, report.json last) and the
 // previous run's files that this run did not write are removed, so the set is never mixed.
+//
+// Which files are a previous run's: those its manifest (`.paver-files`, one name a line, published
+// with the set) lists. A file the program did not write is the user's even when it bears an
+// output's name: it is never removed, and a run that would replace it is refused before any work.
+// A folder written before manifests existed counts every known name in it as the program's when it
+// holds a report.json (what those versions did).
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -31,6 +37,12 @@ public:
   // after all the others.
   void publish(const std::string& last = "report.json");
 
+  // Throws InputError, naming the file, when one of `outputs` exists in `folder` and no earlier run
+  // wrote it (see above); `known_names` as for the constructor. For the checks before any work.
+  static void refuse_replacing_users_files(const std::filesystem::path& folder,
+                                           const std::vector<std::filesystem::path>& outputs,
+                                           const std::vector<std::string>& known_names);
+
   // Staging folders left by runs that were killed (their process is gone), beside or inside
   // `folder`; removed quietly. Returns how many.
   static int remove_stale_staging(const std::filesystem::path& folder);
@@ -38,6 +50,7 @@ public:
 private:
   std::filesystem::path folder_, staging_;
   std::vector<std::string> known_;
+  std::vector<std::string> previous_;  // the previous run's files in the folder (see above)
   bool published_ = false;
 };
 

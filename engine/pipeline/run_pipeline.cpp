@@ -4,6 +4,7 @@
 #include "core/interrupted.h"
 #include "core/number_text.h"
 #include "io/output_guard.h"
+#include "io/output_set.h"
 #include "pipeline/run_outputs.h"
 
 #include "io/element_export.h"
@@ -51,6 +52,7 @@ PipelineResult run_pipeline(PipelineRequest request) {
     outputs.insert(outputs.end(), request.extra_outputs.begin(), request.extra_outputs.end());
     refuse_overwriting_inputs({request.surface_path, request.design_path, design.elements.custom_shape}, outputs);
     check_output_folder(*request.out);
+    OutputSet::refuse_replacing_users_files(*request.out, outputs, run_output_names());
   }
 
   const std::atomic<bool>* stop = request.pavement.stop;

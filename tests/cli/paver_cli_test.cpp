@@ -391,6 +391,29 @@ TEST_F(PaverRun, NeverOverwritesItsInputs) {
   EXPECT_TRUE(leftover_temporaries(dir()).empty());
 }
 
+// Files of the user's in the output folder stay, even under an output's name: a run that does not
+// write that name leaves it alone, and one that would replace it is refused before any work.
+TEST_F(PaverRun, KeepsTheUsersFilesInTheOutputFolder) {
+  const fs::path out = dir() / "out";
+  fs::create_directories(out);
+  write_file_text(out / "preview.png", "my photo");
+  write_file_text(out / "cut.stl", "my seats");
+  const CliResult run = paver({"run", "assets/surfaces/dome.obj", "--spacing", "6", "--formats", "ply", "--out",
+                               out.string()});
+  ASSERT_EQ(run.exit_code, 0) << describe(run);
+  EXPECT_TRUE(fs::exists(out / "report.json"));
+  EXPECT_EQ(read_file_text(out / "preview.png"), "my photo");
+  EXPECT_EQ(read_file_text(out / "cut.stl"), "my seats");
+
+  const std::string report = read_file_text(out / "report.json");
+  const CliResult png = paver({"run", "assets/surfaces/dome.obj", "--spacing", "6", "--formats", "ply", "--png",
+                               "--out", out.string()});
+  EXPECT_EQ(png.exit_code, 2) << describe(png);
+  EXPECT_NE(png.err.find("preview.png: exists and no earlier paver run wrote it"), std::string::npos) << describe(png);
+  EXPECT_EQ(read_file_text(out / "preview.png"), "my photo");
+  EXPECT_EQ(read_file_text(out / "report.json"), report) << "a refused run replaced the results";
+}
+
 // ---------------------------------------------------------------------------------------------
 // Bad inputs: exit code 2, a message on stderr that names the problem, and no output written.
 

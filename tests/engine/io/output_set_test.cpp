@@ -1,7 +1,10 @@
 // Tests for engine/io/output_set.cpp: a run's files appear in the output folder all at once, an
 // unpublished set leaves no trace, a previous run's files never mix with a new run's, the user's
-// own files are left alone, and staging folders of killed runs are cleaned up.
+// own files are left alone (even under an output's name: the manifest tells them apart), and
+// staging folders of killed runs are cleaned up.
 #include "io/output_set.h"
+
+#include "core/input_error.h"
 
 #include <gtest/gtest.h>
 
@@ -20,6 +23,7 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::vector<std::string> kKnown = {"a.csv", "b.ply", "report.json", "preview.png"};
+constexpr const char* kManifest = ".paver-files";
 
 class OutputSetTest : public ::testing::Test {
 protected:
@@ -37,9 +41,11 @@ protected:
     s << in.rdbuf();
     return s.str();
   }
+  // The folder's files but the manifest (checked on its own).
   static std::set<std::string> names(const fs::path& folder) {
     std::set<std::string> out;
-    for (const auto& e : fs::directory_iterator(folder)) out.insert(e.path().filename().string());
+    for (const auto& e : fs::directory_iterator(folder))
+      if (e.path().filename() != kManifest) out.insert(e.path().filename().string());
     return out;
   }
   void publish_run(const fs::path& out, const std::string& tag, std::vector<std::string> files) {
@@ -93,6 +99,56 @@ TEST_F(OutputSetTest, TheUsersOwnFilesStay) {
   EXPECT_EQ(read(out / "notes.txt"), "mine");
   EXPECT_EQ(read(out / "b.ply"), "new");
   EXPECT_EQ(read(out / "report.json"), "new");
+}
+
+TEST_F(OutputSetTest, TheManifestListsThePublishedSet) {
+  const fs::path out = base_ / "out";
+  publish_run(out, "old", {"a.csv", "report.json"});
+  EXPECT_EQ(read(out / kManifest), "a.csv\nreport.json\n");
+  write(out / "notes.txt", "mine");  // the one-by-one path
+  publish_run(out, "new", {"b.ply", "report.json"});
+  EXPECT_EQ(read(out / kManifest), "b.ply\nreport.json\n");
+  EXPECT_EQ(names(out), (std::set<std::string>{"b.ply", "notes.txt", "report.json"}));
+}
+
+TEST_F(OutputSetTest, TheUsersFilesUnderAnOutputsNameStay) {
+  const fs::path out = base_ / "out";
+  fs::create_directories(out);
+  write(out / "preview.png", "my photo");
+  write(out / "b.ply", "my scan");
+  publish_run(out, "new", {"a.csv", "report.json"});
+  EXPECT_EQ(names(out), (std::set<std::string>{"a.csv", "b.ply", "preview.png", "report.json"}));
+  EXPECT_EQ(read(out / "preview.png"), "my photo");
+  publish_run(out, "newer", {"a.csv", "report.json"});
+  EXPECT_EQ(read(out / "b.ply"), "my scan") << "a second run must not take them for the first run's";
+}
+
+TEST_F(OutputSetTest, ReplacingAUsersFileIsRefusedBeforeAnyWork) {
+  const fs::path out = base_ / "out";
+  fs::create_directories(out);
+  write(out / "preview.png", "my photo");
+  EXPECT_NO_THROW(OutputSet::refuse_replacing_users_files(out, {out / "a.csv", out / "report.json"}, kKnown));
+  try {
+    OutputSet::refuse_replacing_users_files(out, {out / "a.csv", out / "preview.png"}, kKnown);
+    ADD_FAILURE() << "a run that would replace the user's preview.png must be refused";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("preview.png"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(read(out / "preview.png"), "my photo");
+  // A file that an earlier run wrote is that run's to replace.
+  fs::remove(out / "preview.png");
+  publish_run(out, "old", {"preview.png", "report.json"});
+  EXPECT_NO_THROW(OutputSet::refuse_replacing_users_files(out, {out / "preview.png"}, kKnown));
+}
+
+TEST_F(OutputSetTest, AFolderFromBeforeManifestsIsTheProgramsWhenItHasAReport) {
+  const fs::path out = base_ / "out";
+  fs::create_directories(out);
+  for (const char* name : {"a.csv", "b.ply", "report.json"}) write(out / name, "old");
+  write(out / "notes.txt", "mine");
+  EXPECT_NO_THROW(OutputSet::refuse_replacing_users_files(out, {out / "b.ply"}, kKnown));
+  publish_run(out, "new", {"a.csv", "report.json"});
+  EXPECT_EQ(names(out), (std::set<std::string>{"a.csv", "notes.txt", "report.json"})) << "the old b.ply goes";
 }
 
 TEST_F(OutputSetTest, StagingOfKilledRunsIsRemovedButNotOfLiveOnes) {
