@@ -35,6 +35,10 @@ struct ParamArgs {
 int run_param(const ParamArgs& args) {
   nothing_written_yet();
   if (!args.out.empty()) {  // before any work
+    std::error_code ec;
+    if (std::filesystem::is_directory(args.out, ec))
+      throw InputError("--out " + args.out + ": is a folder; paver param writes one map file: give its name, e.g. " +
+                       (std::filesystem::path(args.out) / "uv.obj").string());
     refuse_overwriting_inputs({args.surface}, {args.out});
     const std::filesystem::path folder = std::filesystem::path(args.out).parent_path();
     check_output_folder(folder.empty() ? "." : folder);

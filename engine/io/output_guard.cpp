@@ -19,7 +19,7 @@ void refuse_overwriting_inputs(const std::vector<std::filesystem::path>& inputs,
       if (in.empty()) continue;
       if (std::filesystem::equivalent(in, out, ec))
         throw InputError("refusing to write " + out.string() + ": it is the input " + in.string() +
-                         "; choose another output folder");
+                         "; write the output elsewhere");
     }
   }
 }

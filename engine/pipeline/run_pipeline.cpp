@@ -84,11 +84,16 @@ PipelineResult run_pipeline(PipelineRequest request) {
   check_stop();  // the solves ended early: a partial pavement is not a result
   if (result.pavement.elements.size() == 0) {
     const Pavement& p = result.pavement;
+    const double margin = p.design.elements.margin;
+    const std::string why = p.eliminated == 0 ? "was dropped"
+                            : margin > 0     ? "crossed its boundary or the margin along it"
+                                             : "crossed its boundary (the surface is narrower than the elements)";
+    const std::string what_to_do = margin > 0 ? "use a smaller margin (--margin, elements.margin: now " +
+                                                    number_text(margin) + "), a smaller spacing or smaller element scales"
+                                              : "use a smaller spacing or smaller element scales";
     throw InputError("no element fits on this surface: the pattern put " + std::to_string(p.pattern.point_count()) +
-                     " points on it at D = " + number_text(p.design.pattern.spacing) + ", and every element " +
-                     (p.eliminated > 0 ? "crossed its boundary (the surface is narrower than the elements)"
-                                       : "was dropped") +
-                     "; use a smaller spacing or smaller element scales");
+                     " points on it at D = " + number_text(p.design.pattern.spacing) + ", and every element " + why +
+                     "; " + what_to_do);
   }
   result.timings.insert(result.timings.end(), result.pavement.timings.begin(), result.pavement.timings.end());
   result.counts = count_pavement(result.pavement);

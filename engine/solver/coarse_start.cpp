@@ -28,6 +28,9 @@ struct Level {
   bool start(std::vector<glm::vec2>& position, std::vector<std::uint32_t>& stray_count, double spacing,
              int levels_left) {
     if (levels_left <= 0 || stopped()) return false;
+    // A coarse level has about a quarter of the points: none worth relaxing below this, and not
+    // built at all (at a spacing near the surface's size the coarser lattice would not fit).
+    if (position.size() < 2 * std::size_t(kCoarseStartMinPoints)) return false;
     const double coarse_spacing = 2 * spacing;
     const Pattern coarse = pattern_at(coarse_spacing);
     if (coarse.point_count() < kCoarseStartMinPoints) return false;

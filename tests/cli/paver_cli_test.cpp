@@ -433,6 +433,11 @@ TEST_F(PaverRunErrors, SpacingOffsetAndNumbersOutOfAnyUse) {
   const fs::path out = dir() / "out";
   const CliResult huge = paver({"run", "assets/surfaces/dome.obj", "--spacing", "1e300", "--out", out.string()});
   expect_input_error(huge, out, {"spacing D = 1e+300 is larger than the surface", "use a spacing below"});
+  // Just below the map's size (41.6 across) the message is about the spacing given, not about the
+  // coarse start's lattice at twice it (it said "D = 82 is larger than the surface").
+  const CliResult near_size = paver({"run", "assets/surfaces/pendant.obj", "--spacing", "41", "--out", out.string()});
+  EXPECT_EQ(near_size.err.find("D = 82"), std::string::npos) << describe(near_size);
+  EXPECT_NE(near_size.err.find("at D = 41,"), std::string::npos) << describe(near_size);
 
   const fs::path far = dir() / "far.json";
   write_file_text(far, R"({"version": 1, "placement": {"offset": [1e12, 0]}})");
@@ -551,6 +556,10 @@ TEST_F(PaverRunErrors, SurfacesThePatternCannotPave) {
   // Elements wider than the strip: none survives.
   expect_input_error(paver({"run", (dir() / "strip.obj").string(), "--out", out.string()}), out,
                      {"no element fits on this surface", "use a smaller spacing"});
+  // A margin that leaves no room is named as the cause.
+  expect_input_error(paver({"run", "assets/surfaces/pendant.obj", "--margin", "20", "--out", out.string()}), out,
+                     {"every element crossed its boundary or the margin along it",
+                      "use a smaller margin (--margin, elements.margin: now 20)"});
   // A lattice whose bounding box over the strip would take gigabytes (it was a bad_alloc).
   write_file_text(dir() / "fine.json", R"({"version": 1, "pattern": {"spacing": 0.005}, "placement": {"rotation_deg": 45}})");
   expect_input_error(
@@ -726,6 +735,14 @@ TEST_F(PaverRunErrors, UnknownFlag) {
 // paver param
 
 using PaverParam = CliTest;
+
+TEST_F(PaverParam, AFolderAsOutIsRefusedBeforeTheMap) {
+  const CliResult r = paver({"param", "assets/scanned/bunnyhead.obj", "--out", dir().string()});
+  EXPECT_EQ(r.exit_code, 2) << describe(r);
+  EXPECT_NE(r.err.find("is a folder; paver param writes one map file"), std::string::npos) << describe(r);
+  EXPECT_EQ(r.out.find("vertices"), std::string::npos) << "it loaded and mapped the surface first\n" << describe(r);
+  EXPECT_TRUE(fs::is_empty(dir()));
+}
 
 TEST_F(PaverParam, BunnyheadMapIsBijective) {
   const fs::path uv_obj = dir() / "bunnyhead_uv.obj";
