@@ -79,6 +79,12 @@ double finite_non_negative(const char* flag, double value, const char* meaning) 
   throw InputError(std::string(flag) + " " + number_text(value) + ": must be finite and >= 0 (" + meaning + ")");
 }
 
+// A numeric flag that must be finite and > 0 (a size): its value, or an InputError naming the flag.
+double finite_positive(const char* flag, double value, const char* meaning) {
+  if (std::isfinite(value) && value > 0) return value;
+  throw InputError(std::string(flag) + " " + number_text(value) + ": must be finite and > 0 (" + meaning + ")");
+}
+
 
 int run_run(const RunArgs& args) {
   nothing_written_yet();
@@ -125,8 +131,7 @@ int run_run(const RunArgs& args) {
   if (args.beads) design.elements.beads.enabled = true;
   if (args.stone) {
     if (args.spacing) throw InputError("--stone and --spacing both set the spacing (D = stone + gap): give one of them");
-    const double stone = finite_non_negative("--stone", *args.stone, "the stone's diameter, surface units");
-    if (!(stone > 0)) throw InputError("--stone 0: a stone needs a diameter above 0");
+    const double stone = finite_positive("--stone", *args.stone, "the stone's diameter, surface units");
     set_stone_size(design, stone);
     // Pavé is a close packing: with no pattern asked for anywhere, stones go on a triangle lattice.
     if (args.pattern.empty() && args.design.empty()) design.pattern.tessellation = Tessellation::Triangle;
@@ -169,8 +174,7 @@ int run_run(const RunArgs& args) {
   if (!args.subtract && args.thickness) throw InputError("--thickness is the metal's for --subtract: add --subtract");
   if (args.subtract) {
     if (!args.thickness) throw InputError("--subtract needs --thickness T: how thick the metal is, surface units");
-    const double thickness = finite_non_negative("--thickness", *args.thickness, "the metal's thickness, surface units");
-    if (!(thickness > 0)) throw InputError("--thickness 0: the metal needs a thickness above 0");
+    const double thickness = finite_positive("--thickness", *args.thickness, "the metal's thickness, surface units");
 #ifdef PAVER_WITH_CGAL
     request.extra_outputs.insert(request.extra_outputs.end(), {out / "cut.stl", out / "cut.3mf"});
     if (args.png) request.extra_outputs.push_back(out / "cut.png");
@@ -343,17 +347,22 @@ int run_run(const RunArgs& args) {
 std::function<int()> add_run_command(CLI::App& app) {
   auto args = std::make_shared<RunArgs>();
   CLI::App* cmd = app.add_subcommand("run", "Pave a surface: map, pattern, elements, export and report");
-  cmd->add_option("SURFACE", args->surface, "Surface: OBJ, OFF, PLY or STL (open, or closed without handles)")->required();
-  cmd->add_option("--design", args->design, "design.json (flags below override it)");
-  cmd->add_option("--pattern", args->pattern, "Tessellation: tri, grid or hex");
+  cmd->add_option("SURFACE", args->surface, "Surface: OBJ, OFF, PLY or STL (open, or closed without handles)")->required()
+      ->check(app::not_empty());
+  cmd->add_option("--design", args->design, "design.json (flags below override it)")
+      ->check(app::not_empty());
+  cmd->add_option("--pattern", args->pattern, "Tessellation: tri, grid or hex")
+      ->check(app::not_empty());
   cmd->add_option("--topology", args->topology,
                   "auto (default: the lattice, or the adaptive pattern where the lattice tears or leaves bare patches), "
                   "lattice (the paper's) or adaptive: particles grown on the surface with point defects, for maps "
-                  "that distort a lattice (tri and hex; docs/topology.md)");
+                  "that distort a lattice (tri and hex; docs/topology.md)")
+      ->check(app::not_empty());
   cmd->add_option("--cut", args->cut,
                   "A closed surface (a bead, a figurine) is cut into charts by a plane across this axis through its "
                   "centre: auto (its longest axis, default), x, y or z")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(app::not_empty());
   cmd->add_option("--spacing", args->spacing, "Edge length D in surface units (default: from the surface size)");
   cmd->add_option("--gap", args->gap,
                   "Required free space between neighbouring elements, surface units (default 0: touching)");
@@ -361,7 +370,8 @@ std::function<int()> add_run_command(CLI::App& app) {
                   "Free band along the surface's boundary that no element may enter, surface units (default 0)");
   cmd->add_option("--rim-rows", args->rim_rows,
                   "A row of stones that follows a rim, so a hole's edge looks designed, not trimmed: none (default), "
-                  "holes (every loop but the outer edge) or all");
+                  "holes (every loop but the outer edge) or all")
+      ->check(app::not_empty());
   cmd->add_flag("--beads", args->beads,
                 "Add a bead (shared prong) in the gap between every three stones in contact; scale in the design "
                 "file (elements.beads.scale)");
@@ -369,22 +379,27 @@ std::function<int()> add_run_command(CLI::App& app) {
                   "Stone diameter, surface units: the vertex elements become round brilliants of this size, with "
                   "D = stone + gap so that neighbouring stones are exactly the gap apart (instead of --spacing)");
   cmd->add_option("--units", args->units, "Unit of the surface's coordinates: mm (default), cm, m or in; stone sizes "
-                                          "and carats are reported in mm");
-  cmd->add_option("--out", args->out, "Output folder")->capture_default_str();
+                                          "and carats are reported in mm")
+      ->check(app::not_empty());
+  cmd->add_option("--out", args->out, "Output folder")->capture_default_str()
+      ->check(app::not_empty());
   cmd->add_flag("--no-optimize", args->no_optimize, "Skip the section 5 optimizer (initial pavement only)");
   cmd->add_flag("--no-postprocess", args->no_postprocess, "Skip boundary filling and elimination (5.4)");
   cmd->add_option("--threads", args->threads, "Solver threads (0 = all cores)")->check(CLI::Range(0, 1024));
   app::add_backend_option(*cmd, args->backend);
-  cmd->add_option("--device", args->device, "Vulkan device: a substring of its name (see `paver devices`)");
+  cmd->add_option("--device", args->device, "Vulkan device: a substring of its name (see `paver devices`)")
+      ->check(app::not_empty());
   cmd->add_flag("--quiet", args->quiet, "No progress on stderr (warnings and errors still)");
   cmd->add_option("--formats", args->formats,
                   "Mesh files to write, comma-separated: ply, obj, stl, glb (glTF 2.0 binary), 3mf")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(app::not_empty());
   cmd->add_flag("--subtract", args->subtract,
                 "Also write the metal with the stones' seats cut out (cut.stl, cut.3mf) and its weight; needs --thickness");
   cmd->add_option("--thickness", args->thickness, "Metal thickness for --subtract, surface units (against the normals)");
   cmd->add_option("--cutter", args->cutter, "What --subtract cuts: seat (girdle, seat cone, hole through) or element")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(app::not_empty());
   cmd->add_flag("--png", args->png, "Also render preview.png (3D) and param.png (2D) offscreen with Vulkan");
   cmd->add_option("--max-output-gb", args->max_output_gb,
                   "Refuse to write element meshes (PLY + OBJ) larger than this, in GB")

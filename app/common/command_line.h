@@ -9,9 +9,12 @@
 namespace paver::app {
 
 // Parses argv; returns the exit code when the program should stop now: 0 after --help or
-// --version, 2 for a bad argument, with one line on stderr: "PROGRAM: what is wrong (usage; see
-// --help)". CLI11's own codes (106 ...) and its two-line message would tell a script nothing more.
+// --version, 2 for a bad argument, with one line on stderr: "PROGRAM: error: what is wrong (usage;
+// see --help)". CLI11's own codes (106 ...) and its two-line message would tell a script nothing more.
 std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, const std::string& usage);
+
+// Refuses a text option given as "" (`--pattern ""` was taken as not given at all).
+const CLI::Validator& not_empty();
 
 // --backend cpu|vulkan|auto (default auto), as choose_backend takes it.
 CLI::Option* add_backend_option(CLI::App& app, std::string& backend);

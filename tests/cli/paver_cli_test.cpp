@@ -728,7 +728,13 @@ TEST_F(PaverRunErrors, UnknownPattern) {
 TEST_F(PaverRunErrors, UnknownFlag) {
   const fs::path out = dir() / "out";
   const CliResult r = paver({"run", "assets/surfaces/dome.obj", "--frobnicate", "--out", out.string()});
-  expect_input_error(r, out, {"--frobnicate"});
+  expect_input_error(r, out, {"paver: error:", "--frobnicate"});
+}
+
+TEST_F(PaverRunErrors, UnknownCommandIsNamed) {
+  const CliResult r = paver({"bogus"});
+  EXPECT_EQ(r.exit_code, 2) << describe(r);
+  EXPECT_NE(r.err.find("paver: error: unknown command 'bogus'"), std::string::npos) << describe(r);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1045,6 +1051,16 @@ TEST_F(PaverRun, StonesAndGapInMillimetresGiveTheBillOfStones) {
                      bad, {"--stone and --spacing"});
   expect_input_error(paver({"run", "assets/surfaces/pendant.obj", "--units", "furlong", "--out", bad.string()}), bad,
                      {"--units furlong", "mm, cm, m or in"});
+  // Sizes must be above 0, and the message for 0 says so (it said ">= 0" for -1, then refused 0).
+  for (const char* stone : {"0", "-1"})
+    expect_input_error(paver({"run", "assets/surfaces/pendant.obj", "--stone", stone, "--out", bad.string()}), bad,
+                       {std::string("--stone ") + stone + ": must be finite and > 0"});
+  expect_input_error(paver({"run", "assets/surfaces/pendant.obj", "--subtract", "--thickness", "0", "--out",
+                            bad.string()}),
+                     bad, {"--thickness 0: must be finite and > 0"});
+  // An empty value is not an absent one.
+  expect_input_error(paver({"run", "assets/surfaces/pendant.obj", "--pattern", "", "--out", bad.string()}), bad,
+                     {"paver: error: --pattern: must not be empty"});
 }
 
 // The boundary of an OBJ surface as segments (edges of one face only), read here from the file,
