@@ -74,6 +74,18 @@ void set_stone_size(Design& design, double stone) {
   design.elements.vertex.shape = ShapeKind::Gem;
 }
 
+bool keeps_stone_sizes(const ElementsDesign& e) {
+  if (e.vertex.enabled && e.vertex.shape == ShapeKind::Gem) return true;
+  return std::any_of(e.edge.begin(), e.edge.end(), [](const auto& s) { return s.shape == ShapeKind::Gem; });
+}
+
+void keep_stone_sizes(ElementsDesign& e, double spacing_before, double spacing_after) {
+  const double ratio = spacing_before / spacing_after;
+  if (e.vertex.shape == ShapeKind::Gem) e.vertex.scale *= ratio;
+  for (EdgeElementDesign& s : e.edge)
+    if (s.shape == ShapeKind::Gem) s.scale *= ratio;
+}
+
 bool uses_custom_shape(const ElementsDesign& e) {
   if (e.vertex.enabled && e.vertex.shape == ShapeKind::Custom) return true;
   return std::any_of(e.edge.begin(), e.edge.end(), [](const auto& s) { return s.shape == ShapeKind::Custom; });

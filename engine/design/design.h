@@ -96,6 +96,12 @@ struct Design {
 // stones on neighbouring lattice vertices are exactly the gap apart (docs/stones.md).
 void set_stone_size(Design& design, double stone);
 
+// Whether the design has stones (gem elements), whose diameter a change of D must not touch.
+bool keeps_stone_sizes(const ElementsDesign& elements);
+// Rescales the gem elements' scales so that their diameters stay what they were at `spacing_before`
+// now that D is `spacing_after` (a band's closure).
+void keep_stone_sizes(ElementsDesign& elements, double spacing_before, double spacing_after);
+
 // Throws InputError naming the key when a value is out of range.
 void validate_design(const Design& design, const std::string& source);
 

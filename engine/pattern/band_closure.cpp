@@ -59,7 +59,8 @@ std::string describe_band_closure(const BandClosure& closure) {
   std::snprintf(after, sizeof after, "%.4g", closure.spacing);
   return "D " + std::string(before) + " -> " + after + ": " +
          std::to_string(closure.around) + " lattice steps close the band (rows " +
-         (closure.rows_across ? "across" : "along") + " it)";
+         (closure.rows_across ? "across" : "along") + " it)" +
+         (closure.stones_kept ? "; the stones keep their size, the gap takes the change" : "");
 }
 
 }  // namespace paver

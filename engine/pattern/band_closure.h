@@ -20,6 +20,7 @@ struct BandClosure {
   glm::ivec2 step{1, 0};      // the lattice vector that repeats around, in cells (a1, a2)
   double rotation_deg = 0;    // the placement rotation that lines it up with the band
   bool rows_across = false;   // the rows run across the band (else along it)
+  bool stones_kept = false;   // gem elements kept their diameter; the gap took the change in D
 };
 
 // The closure of `cell` (at the design's spacing) on `map` (which wraps) under `placement`
@@ -28,7 +29,8 @@ struct BandClosure {
 BandClosure close_band(const SurfaceMap& map, const UnitCell& cell, const Placement& placement,
                        bool never_closer = false);
 
-// "D 0.630 -> 0.628: 90 elements close the band (rows along it)".
+// "D 0.630 -> 0.628: 90 elements close the band (rows along it)", and "; the stones keep their
+// size" when they did.
 std::string describe_band_closure(const BandClosure& closure);
 
 }  // namespace paver

@@ -150,8 +150,14 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
   if (map_wraps(map) && !adaptive) {
     // A band's seamless map: the lattice turned and its D changed a little, so that it closes.
     check_design_cell(design);  // the design's own errors first, at its own spacing
-    BandClosure closure = close_band(map, make_design_cell(design.pattern), design.placement);
-    if (closure.spacing < design.pattern.spacing) {
+    // Stones (gem elements) come in catalogue sizes: they keep their diameter, the gap takes the
+    // change, and so D may only grow. Other elements are sized with D, as everywhere.
+    const bool stones = keeps_stone_sizes(design.elements);
+    BandClosure closure = close_band(map, make_design_cell(design.pattern), design.placement, stones);
+    if (stones) {
+      keep_stone_sizes(design.elements, closure.spacing_before, closure.spacing);
+      closure.stones_kept = true;
+    } else if (closure.spacing < design.pattern.spacing) {
       // Closer elements may break the design's gap, which is in surface units: then one step fewer.
       Design closer = design;
       closer.pattern.spacing = closure.spacing;

@@ -67,7 +67,7 @@ nlohmann::json band_json(const SurfaceMap& map, const Pavement& pavement) {
     band["closure"] = {{"spacing_before", c->spacing_before}, {"spacing", c->spacing},
                        {"lattice_steps_around", c->around},    {"step_cells", {c->step.x, c->step.y}},
                        {"rotation_deg", c->rotation_deg},       {"rows", c->rows_across ? "across" : "along"},
-                       {"text", describe_band_closure(*c)}};
+                       {"stones_kept", c->stones_kept},         {"text", describe_band_closure(*c)}};
   return band;
 }
 

@@ -178,6 +178,33 @@ TEST(SeamlessBand, RowsAcrossTheBandTurnTheLattice) {
   EXPECT_LE(hi, 1.01);
 }
 
+// Stones come in catalogue sizes: closing the band changes D, never the stones. The gap takes the
+// change, so D may only grow (never below the design's gap); the elements' own diameters say so.
+TEST(SeamlessBand, StonesKeepTheirSizeAndTheGapTakesTheChange) {
+  for (const double stone : {0.5, 0.55, 0.6}) {
+    Design design;
+    design.pattern.tessellation = Tessellation::Triangle;
+    design.elements.gap = 0.05;
+    set_stone_size(design, stone);
+    const Pavement p = make_pavement(cylinder_map(), design, {});
+    ASSERT_TRUE(p.band_closure);
+    const std::string what = "stone " + std::to_string(stone) + ": " + describe_band_closure(*p.band_closure);
+    EXPECT_TRUE(p.band_closure->stones_kept) << what;
+    EXPECT_GE(p.band_closure->spacing, stone + 0.05) << what;
+    ASSERT_GT(p.elements.size(), 0u) << what;
+    for (size_t i = 0; i < p.elements.size(); ++i) ASSERT_NEAR(p.elements.diameter[i], stone, 1e-12) << what;
+    EXPECT_NEAR(p.design.elements.vertex.scale * p.design.pattern.spacing, stone, 1e-12) << what;
+    EXPECT_EQ(p.after.contact_violations, 0) << what;
+    EXPECT_GE(p.after.min_clearance, 0.05) << what;
+  }
+  // Spheres are sized with D, as everywhere: the closure may bring them closer.
+  Design spheres;
+  spheres.pattern.spacing = 0.63;
+  const Pavement p = make_pavement(cylinder_map(), spheres, {});
+  ASSERT_TRUE(p.band_closure);
+  EXPECT_FALSE(p.band_closure->stones_kept);
+}
+
 TEST(SeamlessBand, TheAdaptivePatternPavesTheAnnulus) {
   Design design;
   design.pattern.topology = Topology::Adaptive;
