@@ -73,6 +73,9 @@ void apply_solver_flag(SolverParams& solver, const SolverParameter& p, const std
     throw InputError("--" + std::string(p.flag) + " " + text + ": " + *problem);
 }
 
+// `paver run` wrote its files but the verdict is NOT OK (README, "Exit codes").
+constexpr int kExitVerdictNotOk = 3;
+
 // A numeric flag that must be finite and >= 0: its value, or an InputError naming the flag.
 double finite_non_negative(const char* flag, double value, const char* meaning) {
   if (std::isfinite(value) && value >= 0) return value;
@@ -339,7 +342,8 @@ int run_run(const RunArgs& args) {
   if (!cut_summary.is_null()) written += args.png ? ", cut.stl, cut.3mf, cut.png" : ", cut.stl, cut.3mf";
   if (args.png) written += ", preview.png, param.png";
   std::printf("wrote    %s/{%s}\n", printable(out.string()).c_str(), written.c_str());
-  return 0;
+  // The files are written either way (to look at); a script learns from the code that they failed.
+  return verdict.ok ? 0 : kExitVerdictNotOk;
 }
 
 }  // namespace

@@ -860,12 +860,16 @@ TEST_F(PaverRun, OptimizedPavementReportsZeroCollisions) {
     EXPECT_TRUE(report["timings_ms"].contains(stage)) << stage;
   EXPECT_NE(r.out.find("final"), std::string::npos) << describe(r);
 
-  // --no-optimize leaves the initial pavement, collisions and all.
+  // --no-optimize leaves the initial pavement, collisions and all: the files are written, the
+  // verdict is NOT OK, and the exit code (3) tells a script so.
   const fs::path raw = dir() / "raw";
   const CliResult r2 = paver({"run", "assets/surfaces/dome.obj", "--design", "assets/designs/dome_hex_d6.json",
                               "--no-optimize", "--out", raw.string()});
-  ASSERT_EQ(r2.exit_code, 0) << describe(r2);
-  EXPECT_GT(read_json(raw / "report.json")["quality_after"]["contact_violations"].get<long>(), 0);
+  ASSERT_EQ(r2.exit_code, 3) << describe(r2);
+  EXPECT_EQ(r2.out.rfind("verdict  NOT OK", 0), 0u) << describe(r2);
+  const json raw_report = read_json(raw / "report.json");
+  EXPECT_GT(raw_report["quality_after"]["contact_violations"].get<long>(), 0);
+  EXPECT_FALSE(raw_report["verdict"]["ok"].get<bool>());
 }
 
 
