@@ -296,7 +296,8 @@ int run_run(const RunArgs& args) {
   const BillOfStones bill = bill_of_stones(pavement.elements, pavement.design.units);
   for (const StoneRow& row : bill.rows) {
     std::printf("stones   %ld %s of %.2f mm", row.count, std::string(shape_name(row.shape)).c_str(), row.diameter_mm);
-    if (row.carat_each) std::printf(", %.4f ct each, %.3f ct", *row.carat_each, row.carat_total);
+    // Three significant digits each, so that count x each gives the total to its last digit.
+    if (row.carat_each) std::printf(", %.3g ct each, %.3f ct", *row.carat_each, row.carat_total);
     std::printf("\n");
   }
   if (bill.carat_total > 0) std::printf("stones   total %ld, %.3f ct (stones.csv)\n", bill.count, bill.carat_total);

@@ -31,6 +31,20 @@ std::string shortest(double value) {
   return text;
 }
 
+// Carats as the trade writes them: a stone's weight to 4 significant digits (melee weighs
+// thousandths of a carat), totals to 0.0001 ct. Printing every digit of the float gave rows like
+// 0.436752375.
+std::string carat_each_text(double carats) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", carats);
+  return text;
+}
+std::string carat_total_text(double carats) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4f", carats);
+  return text;
+}
+
 }  // namespace
 
 double round_brilliant_carat(double d) {
@@ -70,11 +84,11 @@ void write_stones_csv(const std::filesystem::path& path, const BillOfStones& bil
   std::string text = "shape,diameter_mm,count,carat_each,carat_total\n";
   for (const StoneRow& row : bill.rows) {
     text += std::string(shape_name(row.shape)) + "," + shortest(row.diameter_mm) + "," + std::to_string(row.count) + ",";
-    if (row.carat_each) text += shortest(*row.carat_each) + "," + shortest(row.carat_total);
+    if (row.carat_each) text += carat_each_text(*row.carat_each) + "," + carat_total_text(row.carat_total);
     else text += ",";
     text += "\n";
   }
-  text += "total,," + std::to_string(bill.count) + ",," + shortest(bill.carat_total) + "\n";
+  text += "total,," + std::to_string(bill.count) + ",," + carat_total_text(bill.carat_total) + "\n";
   write_text_atomically(path, text);
 }
 

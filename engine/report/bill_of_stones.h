@@ -38,7 +38,8 @@ BillOfStones bill_of_stones(const Elements& elements, Units units);
 double round_brilliant_carat(double diameter_mm);
 
 // stones.csv: `shape,diameter_mm,count,carat_each,carat_total`, one row per shape and size, then
-// `total,,COUNT,,CARATS`. Carat fields are empty for shapes that are not round brilliants.
+// `total,,COUNT,,CARATS`. Carat fields are empty for shapes that are not round brilliants; a stone's
+// carats have 4 significant digits, totals 4 decimals.
 void write_stones_csv(const std::filesystem::path& path, const BillOfStones& bill);
 
 nlohmann::json to_json(const BillOfStones& bill);

@@ -1042,7 +1042,8 @@ TEST_F(PaverRun, StonesAndGapInMillimetresGiveTheBillOfStones) {
   EXPECT_EQ(row[2], std::to_string(stones.size()));
   // The melee sieve chart puts 1.5 mm between 0.013 ct (1.45-1.50 mm) and 0.014 ct (1.50-1.55 mm).
   EXPECT_NEAR(std::stod(row[3]), 0.0135, 1e-9);
-  EXPECT_NEAR(std::stod(row[4]), 0.0135 * double(stones.size()), 1e-6);
+  EXPECT_NEAR(std::stod(row[4]), 0.0135 * double(stones.size()), 0.5e-4);  // 4 decimals
+  EXPECT_EQ(row[4].size() - row[4].find('.'), 5u) << row[4];
   EXPECT_EQ(split(csv[2], ',')[0], "total");
   const json report = read_json(out / "report.json");
   EXPECT_EQ(report["stones"]["count"], stones.size());
