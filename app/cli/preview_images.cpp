@@ -65,7 +65,10 @@ void PreviewImages::write(const std::filesystem::path& folder, const SurfaceMap&
   const bool marks_defects = !pavement.pattern.defects.empty();
   if (marks_defects)
     r.set_elements(pavement.elements, defect_marked_colours(pavement, stone_colours), custom);
-  r.render_2d(size.width, size.height, render::frame_map(points_map, double(size.width) / double(size.height)), style);
+  // The map beside the legends, not under them.
+  const double legend_share = double(render::legend_column_width(size.height)) / double(size.width);
+  r.render_2d(size.width, size.height,
+              render::frame_map(points_map, double(size.width) / double(size.height), 0, legend_share), style);
   render::Image param = r.read_back(1);
   render::draw_ratio_legend(param);  // the stones are coloured by their ratio here too
   if (marks_defects) render::draw_defect_legend(param, kFewer, kMore);

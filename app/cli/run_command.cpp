@@ -319,8 +319,11 @@ int run_run(const RunArgs& args) {
       std::printf(" %s %.2f g;", row["alloy"].get<std::string>().c_str(), row["grams"].get<double>());
     std::printf("\n");
   }
-  std::printf("quality (gap %g)\n", pavement.design.elements.gap);
-  std::printf("                  violations  min clearance  NN ratio min / p5 / median / p95   cv     crossings  fill\n");
+  // Lengths in the surface's unit; NN over the diameter (param.png colours NN over diameter + gap).
+  const std::string unit(units_name(pavement.design.units));
+  std::printf("quality (gap %g %s; clearance in %s; NN = nearest-neighbour distance / diameter)\n",
+              pavement.design.elements.gap, unit.c_str(), unit.c_str());
+  std::printf("                  violations  min clearance  NN min / p5 / median / p95         cv     crossings  fill\n");
   for (const auto& [label, q] : {std::pair{"  initial", &pavement.before}, std::pair{"  paper's method", &pavement.paper},
                                  std::pair{"  final", &pavement.after}})
     std::printf("%-17s %10ld  %13.4g  %.4f / %.4f / %.4f / %.4f  %.3f  %-9ld  %.3f\n", label, q->contact_violations,

@@ -52,6 +52,7 @@ const std::map<char, std::array<const char*, 7>>& glyphs() {
       {'V', {"#   #", "#   #", "#   #", "#   #", "#   #", " # # ", "  #  "}},
       {'(', {"   # ", "  #  ", " #   ", " #   ", " #   ", "  #  ", "   # "}},
       {')', {" #   ", "  #  ", "   # ", "   # ", "   # ", "  #  ", " #   "}},
+      {'+', {"     ", "  #  ", "  #  ", "#####", "  #  ", "  #  ", "     "}},
   };
   return font;
 }
@@ -77,12 +78,30 @@ void text(Image& image, int x, int y, const std::string& s, int scale, std::arra
 
 }  // namespace
 
+namespace {
+struct RatioLegendBox {
+  int scale, bar_w, bar_h, x0, panel_w;
+};
+RatioLegendBox ratio_legend_box(int image_height) {
+  const int scale = image_height >= 600 ? 2 : 1;
+  const int bar_w = 260 * scale / 2 + 40;
+  return {scale, bar_w, 14 * scale, 16 * scale, std::max(bar_w, int(std::string(kRatioLegendTitle).size()) * 6 * scale)};
+}
+}  // namespace
+
+bool legend_can_write(std::string_view text) {
+  return std::all_of(text.begin(), text.end(), [](char ch) { return glyphs().count(ch) > 0; });
+}
+
+int legend_column_width(int image_height) {
+  const RatioLegendBox box = ratio_legend_box(image_height);
+  return box.x0 + box.panel_w + 16 * box.scale;  // the widest legend's panel and a margin
+}
+
 void draw_ratio_legend(Image& image) {
-  const int scale = image.height >= 600 ? 2 : 1;
-  const int bar_w = 260 * scale / 2 + 40, bar_h = 14 * scale;
-  const int x0 = 16 * scale, y0 = image.height - 40 * scale - bar_h;
+  const auto [scale, bar_w, bar_h, x0, panel_w] = ratio_legend_box(image.height);
+  const int y0 = image.height - 40 * scale - bar_h;
   const std::string title = kRatioLegendTitle;
-  const int panel_w = std::max(bar_w, int(title.size()) * 6 * scale);
   // Panel behind the legend so it reads on any background.
   for (int y = y0 - 22 * scale; y < y0 + bar_h + 22 * scale; ++y)
     for (int x = x0 - 8 * scale; x < x0 + panel_w + 8 * scale; ++x) put(image, x, y, {28, 30, 34});

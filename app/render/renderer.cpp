@@ -375,15 +375,17 @@ glm::mat4 MapView::projection(float aspect) const {
                     centre.y + half_height, -1.0f, 1.0f);
 }
 
-MapView frame_map(const SurfaceMap& map, double aspect, double right_share) {
+MapView frame_map(const SurfaceMap& map, double aspect, double right_share, double left_share) {
   MapView v;
   v.centre = glm::vec2(0.5 * (map.uv_min + map.uv_max));
   const glm::dvec2 extent = map.uv_max - map.uv_min;
+  right_share = std::clamp(right_share, 0.0, 0.9);
+  left_share = std::clamp(left_share, 0.0, 0.9 - right_share);
   // Fit both sides with a margin in the free part of the width; render_2d widens by the aspect.
-  const double free_aspect = std::max(aspect * (1 - std::clamp(right_share, 0.0, 0.9)), 1e-3);
+  const double free_aspect = std::max(aspect * (1 - right_share - left_share), 1e-3);
   v.half_height = float(0.55 * std::max(extent.y, extent.x / free_aspect));
-  // The free part's middle is right_share of the half width left of the view's centre.
-  v.centre.x += float(right_share * v.half_height * aspect);
+  // The free part's middle lies (right_share - left_share) of the half width off the view's centre.
+  v.centre.x += float((right_share - left_share) * v.half_height * aspect);
   return v;
 }
 

@@ -22,6 +22,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <string_view>
 #include <vector>
 
 namespace paver::render {
@@ -52,8 +53,9 @@ struct MapView {
   glm::mat4 projection(float aspect) const;
 };
 // The whole map with a margin, in a view `aspect` (width / height) wide, leaving the right
-// `right_share` of the width free (where the studio's inset sits).
-MapView frame_map(const SurfaceMap& map, double aspect = 1.6, double right_share = 0);
+// `right_share` of the width free (where the studio's inset sits) and the left `left_share` (where
+// a PNG's legends sit).
+MapView frame_map(const SurfaceMap& map, double aspect = 1.6, double right_share = 0, double left_share = 0);
 
 enum class ColourMode { NeighbourRatio, ElementType };
 
@@ -68,9 +70,13 @@ struct SceneStyle {
 // What the legends say, written once for the studio's screen and every PNG (CLI and studio): the
 // title, the span of the ratio bar (linear in the ratio), its labelled ticks, the colour at a ratio
 // (the elements' own colour), and the element-type entries. Each side draws them its own way.
-inline constexpr const char* kRatioLegendTitle = "NN distance / contact distance";
+inline constexpr const char* kRatioLegendTitle = "NN distance / (diameter + gap)";
 inline constexpr double kRatioLegendMin = 0.9, kRatioLegendMax = 1.3;
 std::vector<double> ratio_legend_ticks();
+// Whether the PNG legends' bitmap font has every character of `text` (a missing one draws blank).
+bool legend_can_write(std::string_view text);
+// Pixels from a PNG's left edge that its legends (bottom left) take, for an image this tall.
+int legend_column_width(int image_height);
 std::array<std::uint8_t, 3> ratio_legend_colour(double ratio);
 // Where `ratio` sits along the bar, 0 (left) to 1 (right).
 double ratio_legend_position(double ratio);

@@ -270,6 +270,38 @@ TEST(Renderer, TheMapIsFramedWholeAndLeftOfTheInset) {
   }
 }
 
+// Every text the PNG legends write has its glyphs (a '+' once drew as a blank).
+TEST(Renderer, ThePngLegendsFontHasEveryCharacterTheyWrite) {
+  EXPECT_TRUE(render::legend_can_write(render::kRatioLegendTitle)) << render::kRatioLegendTitle;
+  for (const char* text : {"point defects", "< 6", "> 6", "0.9", "1.3"}) EXPECT_TRUE(render::legend_can_write(text)) << text;
+  for (const auto& entry : render::element_type_legend()) EXPECT_TRUE(render::legend_can_write(entry.label)) << entry.label;
+  EXPECT_FALSE(render::legend_can_write("#"));
+}
+
+// A PNG's map sits right of its legends: no legend panel pixel lies over the map's extent.
+TEST(Renderer, TheMapIsFramedBesideThePngLegends) {
+  const SurfaceMap& map = dome_map();
+  const int width = 1280, height = 800;
+  const double aspect = double(width) / height;
+  const double left = double(render::legend_column_width(height)) / width;
+  const render::MapView v = render::frame_map(map, aspect, 0, left);
+  const double half_width = v.half_height * aspect;
+  const auto pixel_x = [&](double u) { return (u - (v.centre.x - half_width)) / (2 * half_width) * width; };
+  EXPECT_GE(pixel_x(map.uv_min.x), render::legend_column_width(height)) << "the map runs under the legends";
+  EXPECT_LE(pixel_x(map.uv_max.x), width);
+  EXPECT_GE(map.uv_min.y, v.centre.y - v.half_height);
+  EXPECT_LE(map.uv_max.y, v.centre.y + v.half_height);
+  // Every legend panel ends inside that column.
+  render::Image image;
+  image.width = width, image.height = height;
+  image.rgba.assign(size_t(width) * height * 4, 0);
+  render::draw_ratio_legend(image);
+  render::draw_defect_legend(image, {0, 0, 255}, {255, 0, 255});
+  for (int y = 0; y < height; ++y)
+    for (int x = render::legend_column_width(height); x < width; ++x)
+      ASSERT_EQ(image.rgba[(size_t(y) * width + x) * 4], 0) << "legend pixel at " << x << ", " << y;
+}
+
 // The bar is the elements' own colour scale, linear in the ratio, its ticks where their ratios sit.
 TEST(Renderer, TheRatioLegendIsTheElementsScaleWithTicksAtTheirRatios) {
   EXPECT_NE(render::ratio_legend_colour(0.9), render::ratio_legend_colour(1.3)) << "red to green";
