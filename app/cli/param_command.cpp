@@ -7,6 +7,7 @@
 
 #include "map/bijective_map.h"
 #include "core/input_error.h"
+#include "core/number_text.h"
 #include "core/printable.h"
 #include "core/stopwatch.h"
 #include "core/interrupted.h"
@@ -52,9 +53,10 @@ int run_param(const ParamArgs& args) {
   const double load_ms = load_watch.milliseconds();
   const Stopwatch map_watch;
   // Said before the mapping, which can take minutes on a big mesh.
-  std::printf("%s: %d vertices, %d faces, %d boundary vertices in %zu loops (loaded in %.1f ms)\n",
+  std::printf("%s: %d vertices, %d faces, %d boundary vertices in %s (loaded in %.1f ms)\n",
               printable(args.surface).c_str(), loaded.mesh.vertex_count(), loaded.mesh.face_count(),
-              boundary_vertex_count(loaded.mesh), loaded.mesh.boundary_loops.size(),
+              boundary_vertex_count(loaded.mesh),
+              count_text(long(loaded.mesh.boundary_loops.size()), "loop", "loops").c_str(),
               load_ms);
   std::fflush(stdout);
 

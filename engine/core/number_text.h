@@ -16,4 +16,9 @@ inline std::string number_text(double value) {
   return std::string(buffer, result.ptr);
 }
 
+// "1 problem", "3 problems": a count with its noun in the right number.
+inline std::string count_text(long long count, const std::string& singular, const std::string& plural) {
+  return std::to_string(count) + " " + (count == 1 ? singular : plural);
+}
+
 }  // namespace paver

@@ -1,5 +1,6 @@
 #include "pipeline/pavement.h"
 
+#include "core/number_text.h"
 #include "core/stopwatch.h"
 #include "elements/beads.h"
 #include "elements/boundary_postprocess.h"
@@ -427,7 +428,7 @@ Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptio
   kept.topology_choice = "auto: " + std::string(adaptive_better ? "adaptive" : "lattice") + "; " + failure +
                          ", the adaptive pattern " +
                          (adaptive_better ? "did better (fill " + three_digits(second.after.fill) + ", " +
-                                                std::to_string(adaptive_verdict.problems.size()) + " problems)"
+                                                count_text(adaptive_verdict.problems.size(), "problem", "problems") + ")"
                                           : "did no better (fill " + three_digits(second.after.fill) + ")");
   double tried = 0;
   for (const auto& [stage, ms] : dropped.timings) tried += ms;

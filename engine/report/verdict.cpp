@@ -1,5 +1,7 @@
 #include "report/verdict.h"
 
+#include "core/number_text.h"
+
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
@@ -19,12 +21,12 @@ Verdict judge_pavement(const PavementQuality& q) {
   Verdict v;
   if (q.elements == 0) v.problems.push_back("no elements were placed");
   if (q.contact_violations > 0)
-    v.problems.push_back(format("%.0f pairs are closer than their radii plus the gap (smallest clearance %.4g)",
-                                double(q.contact_violations), q.min_clearance));
+    v.problems.push_back(count_text(q.contact_violations, "pair is", "pairs are") +
+                         format(" closer than their radii plus the gap (smallest clearance %.4g)", q.min_clearance));
   if (q.boundary_crossings > 0)
-    v.problems.push_back(q.margin > 0 ? format("%.0f elements cross the surface boundary or its margin of %.4g",
-                                               double(q.boundary_crossings), q.margin)
-                                      : format("%.0f elements cross the surface boundary", double(q.boundary_crossings)));
+    v.problems.push_back(count_text(q.boundary_crossings, "element crosses", "elements cross") +
+                         (q.margin > 0 ? format(" the surface boundary or its margin of %.4g", q.margin)
+                                       : std::string(" the surface boundary")));
   if (pattern_is_torn(q))
     v.problems.push_back(format("the pattern is torn: 5%% of its springs are more than %.0f%% off their "
                                 "target (p95 deviation %.3g)",
