@@ -418,6 +418,9 @@ struct MapSolver::Impl {
     trial.resize(uv.size());
     if (report.iterations == 0 && recent_energies.empty()) {
       energy = report.initial_energy = map_energy(uv);
+      // No step can lower an infinite or NaN energy: it would stop at once as "converged".
+      if (!std::isfinite(energy))
+        throw InputError("map: the start map's energy is not finite (a triangle of zero area on the surface)");
       recent_energies.push_back(energy);  // the stopping window counts from the start
     }
     const bool dirichlet = options.energy == MapEnergy::SymmetricDirichlet;

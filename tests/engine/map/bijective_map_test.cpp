@@ -1,4 +1,5 @@
 #include "map/bijective_map.h"
+#include "core/input_error.h"
 #include "map/lscm.h"
 #include "map/map_quality.h"
 #include "mesh/mesh_loader.h"
@@ -158,6 +159,28 @@ TEST(BijectiveMap, DefaultMapKeepsDevelopableStripNearlyIsometric) {
   const Parameterization p = parameterize_surface(strip);
   EXPECT_NEAR(p.quality.stretch_max, 1.0, 1e-3);
   EXPECT_LT(p.quality.area_distortion_mean, 1e-3);
+}
+
+// A zero-area triangle (three vertices on a line) makes the start energy infinite: refused, not
+// reported as converged at 0 iterations.
+TEST(BijectiveMap, AStartWithAnInfiniteEnergyIsRefused) {
+  SurfaceMesh mesh;
+  mesh.positions = {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}, {1, 0, 0}};
+  mesh.triangles = {{0, 4, 3}, {4, 1, 2}, {4, 2, 3}, {0, 1, 4}};
+  mesh.boundary_loops = {{0, 1, 2, 3}};
+  for (MapEnergy energy : {MapEnergy::SymmetricDirichlet, MapEnergy::Arap}) {
+    MapOptions options;
+    options.energy = energy;
+    options.start = MapStart::Tutte;
+    try {
+      MapSolver solver(mesh, options);
+      const bool converged = solver.iterate(10);
+      EXPECT_FALSE(converged && solver.report().iterations == 0 && !std::isfinite(solver.energy()))
+          << map_energy_name(energy) << ": converged at 0 iterations on an infinite energy";
+    } catch (const InputError& e) {
+      SUCCEED() << e.what();
+    }
+  }
 }
 
 TEST(BijectiveMap, EnergyNeverIncreases) {
