@@ -100,7 +100,11 @@ int run_run(const RunArgs& args) {
   request.design_path = args.design;
   request.on_warning = [](const std::string& w) { std::cerr << "paver: warning: " << printable(w) << "\n"; };
   Design& design = request.design;
-  if (!args.design.empty()) design = load_design(args.design);
+  if (!args.design.empty()) {
+    std::vector<std::string> notes;
+    design = load_design(args.design, &notes);
+    for (const std::string& note : notes) request.on_warning(note);
+  }
   if (!args.pattern.empty()) {
     const auto t = tessellation_from_name(args.pattern);
     if (!t) throw InputError("--pattern " + args.pattern + ": use tri, grid or hex");

@@ -110,13 +110,16 @@ void set_result(Document& doc, std::shared_ptr<const Pavement> pavement, std::ui
 
 bool open_design_file(Document& doc, const std::filesystem::path& path) {
   try {
-    const Design loaded = load_design(path);
+    std::vector<std::string> notes;
+    const Design loaded = load_design(path, &notes);
     end_gesture(doc);
     if (!change_design(doc, loaded)) return false;
     doc.design_path = path;
     doc.saved_json = design_to_json(doc.design).dump();
     refresh_dirty(doc);
-    report_status(doc, "loaded design " + path.string());
+    std::string status = "loaded design " + path.string();
+    for (const std::string& note : notes) status += "; note: " + note;
+    report_status(doc, status);
     return true;
   } catch (const std::exception& e) {
     report_error(doc, e.what());

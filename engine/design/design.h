@@ -81,7 +81,10 @@ struct ElementsDesign {
 };
 
 struct Design {
-  static constexpr int kVersion = 1;
+  // design.json's version, written by save_design. Version 1 (before 2026-11-27) differs only in a
+  // default: solver.mu_stretched was 0.5 then. Both are read.
+  static constexpr int kVersion = 2;
+  static constexpr int kOldestVersion = 1;
   Units units = Units::Millimetre;
   PatternDesign pattern;
   ElementsDesign elements;

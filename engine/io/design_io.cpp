@@ -466,7 +466,7 @@ std::string read_design_text(const std::filesystem::path& path) {
 
 }  // namespace
 
-Design design_from_json(const nlohmann::json& json, const std::string& source) {
+Design design_from_json(const nlohmann::json& json, const std::string& source, std::vector<std::string>* notes) {
   const Reader reader(source);
   if (!json.is_object()) reader.fail(std::string("the design must be a JSON object, got ") + json.type_name());
   // The version comes first: a newer file's new keys should not be reported as unknown.
@@ -476,9 +476,9 @@ Design design_from_json(const nlohmann::json& json, const std::string& source) {
                 std::to_string(Design::kVersion));
   int number = 0;
   reader.read(*version, "version", number);
-  if (number != Design::kVersion)
-    reader.fail("'version' is " + std::to_string(number) + ", but this build reads only version " +
-                std::to_string(Design::kVersion));
+  if (number < Design::kOldestVersion || number > Design::kVersion)
+    reader.fail("'version' is " + std::to_string(number) + ", but this build reads versions " +
+                std::to_string(Design::kOldestVersion) + " to " + std::to_string(Design::kVersion));
 
   reader.check_object(json, "", {"version", "units", "pattern", "elements", "placement", "solver", "edits", "guidance"});
   Design design;
@@ -490,12 +490,19 @@ Design design_from_json(const nlohmann::json& json, const std::string& source) {
   reader.field(json, "", "edits", design.edits);
   reader.field(json, "", "guidance", design.guidance);
   validate_design(design, source);
+  // Version 1 files were saved with every parameter, so a 0.5 there is most likely that version's
+  // default rather than a choice: kept as saved (a design reproduces its pavement), and said.
+  if (notes && number == 1 && design.solver.mu_stretched == 0.5 && json.contains("solver") &&
+      json.at("solver").is_object() && json.at("solver").contains("mu_stretched"))
+    notes->push_back(source + ": saved by an earlier Paver (design version 1), whose default solver.mu_stretched "
+                              "was 0.5; the design keeps it. Today's default, 0.75, leaves large lattices fuller "
+                              "(docs/parameters.md): set it, or remove the key, to use it");
   return design;
 }
 
 nlohmann::json design_to_json(const Design& design) { return to_json<nlohmann::json>(design); }
 
-Design design_from_text(std::string_view text, const std::string& source) {
+Design design_from_text(std::string_view text, const std::string& source, std::vector<std::string>* notes) {
   nlohmann::json json;
   try {
     json = nlohmann::json::parse(text);
@@ -509,11 +516,11 @@ Design design_from_text(std::string_view text, const std::string& source) {
     if (bracket != std::string::npos) reason = reason.substr(bracket + 2);
     throw InputError(source + ": " + reason + "; numbers must be finite (at most about 1.8e308)");
   }
-  return design_from_json(json, source);
+  return design_from_json(json, source, notes);
 }
 
-Design load_design(const std::filesystem::path& path) {
-  Design design = design_from_text(read_design_text(path), path.string());
+Design load_design(const std::filesystem::path& path, std::vector<std::string>* notes) {
+  Design design = design_from_text(read_design_text(path), path.string(), notes);
 
   // A relative custom shape path means "beside the design file", wherever the program runs from.
   const std::filesystem::path shape = design.elements.custom_shape;

@@ -161,7 +161,8 @@ TEST(DesignIo, RoundTripKeepsEveryField) {
 
 TEST(DesignIo, WritesEveryKey) {
   const json j = design_to_json(Design{});
-  EXPECT_EQ(j.at("version"), 1);
+  EXPECT_EQ(j.at("version"), Design::kVersion);
+  EXPECT_EQ(Design::kVersion, 2);
   EXPECT_EQ(j.at("units"), "mm");
   EXPECT_EQ(j.at("pattern").size(), 5u);
   EXPECT_EQ(j.at("pattern").at("topology"), "auto");
@@ -291,11 +292,12 @@ TEST(DesignIo, NamesMustBeKnown) {
                        "'elements.vertex.shape' must be one of \"sphere\", \"gem\""));
 }
 
-TEST(DesignIo, VersionIsRequiredAndMustBeOne) {
+TEST(DesignIo, VersionIsRequiredAndOneThisBuildReads) {
   EXPECT_TRUE(contains(json_error(R"({"pattern": {}})"), "d.json: missing key 'version'"));
-  const std::string newer = json_error(R"({"version": 2, "future_key": 1})");
-  EXPECT_TRUE(contains(newer, "'version' is 2"));
-  EXPECT_TRUE(contains(newer, "reads only version 1"));
+  const std::string newer = json_error(R"({"version": 3, "future_key": 1})");
+  EXPECT_TRUE(contains(newer, "'version' is 3"));
+  EXPECT_TRUE(contains(newer, "reads versions 1 to 2"));
+  EXPECT_TRUE(contains(json_error(R"({"version": 0})"), "'version' is 0"));
   EXPECT_TRUE(contains(json_error(R"({"version": "1"})"), "'version' must be an integer, got string"));
 }
 
@@ -491,12 +493,39 @@ TEST_F(DesignIoFile, SaveThenLoadGivesTheSameDesign) {
 
   // Pretty-printed, 2-space indent, version first, trailing newline.
   const std::string text = read(path);
-  EXPECT_EQ(text.rfind("{\n  \"version\": 1,\n  \"units\": \"in\",\n  \"pattern\": {\n    \"tessellation\": \"grid\"", 0), 0u)
+  EXPECT_EQ(text.rfind("{\n  \"version\": 2,\n  \"units\": \"in\",\n  \"pattern\": {\n    \"tessellation\": \"grid\"", 0), 0u)
       << text;
   EXPECT_EQ(text.back(), '\n');
 
   save_design(path, Design{});
   expect_same(load_design(path), Design{});
+}
+
+}  // namespace
+}  // namespace paver
+
+namespace paver {
+namespace {
+
+// A version 1 file holding that version's default mu_stretched keeps it and says so; a file of
+// today's version, or one without the key, says nothing.
+TEST(DesignVersions, AnOldDefaultIsKeptAndNoted) {
+  std::vector<std::string> notes;
+  const Design old = design_from_json(nlohmann::json::parse(R"({"version": 1, "solver": {"mu_stretched": 0.5}})"),
+                                      "old.json", &notes);
+  EXPECT_EQ(old.solver.mu_stretched, 0.5);
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_NE(notes[0].find("old.json: saved by an earlier Paver (design version 1)"), std::string::npos) << notes[0];
+  EXPECT_NE(notes[0].find("0.75"), std::string::npos) << notes[0];
+
+  for (const char* quiet : {R"({"version": 2, "solver": {"mu_stretched": 0.5}})", R"({"version": 1})",
+                            R"({"version": 1, "solver": {"mu_stretched": 0.6}})"}) {
+    notes.clear();
+    design_from_json(nlohmann::json::parse(quiet), "d.json", &notes);
+    EXPECT_TRUE(notes.empty()) << quiet;
+  }
+  EXPECT_EQ(design_from_json(nlohmann::json::parse(R"({"version": 1})"), "d.json").solver.mu_stretched,
+            SolverParams{}.mu_stretched);
 }
 
 }  // namespace
