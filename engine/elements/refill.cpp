@@ -31,17 +31,19 @@ bool clears_all(const ElementHash& hash, const Elements& elements, const glm::dv
   bool clear = true;
   hash.for_each_near(p, [&](int j) {
     const double d = glm::length(p - elements.position[j]);
-    if (d < spacing || elements_collide(d, diameter, elements.diameter[j], gap)) clear = false;
+    // The density rule is the V-elements'; every element keeps the contact rule.
+    const bool too_dense = elements.kind[j] == ElementKind::Vertex && d < spacing;
+    if (too_dense || elements_collide(d, diameter, elements.diameter[j], gap)) clear = false;
   });
   return clear;
 }
 
-// The density rule: no closer to any element than a triangle packing with the design's area per
-// element, times eq. 5's growth at the curvature there.
+// The density rule: no closer to any V-element than a triangle packing with the design's area per
+// V-element, times eq. 5's growth at the curvature there.
 struct DensityRule {
   double packing = 0, c = 0, m = 0;
-  DensityRule(const Design& design, double area_per_element)
-      : packing(std::sqrt(area_per_element / (0.5 * std::sqrt(3.0)))), c(design.solver.c), m(design.solver.m) {}
+  DensityRule(const Design& design, double area_per_vertex_element)
+      : packing(std::sqrt(area_per_vertex_element / (0.5 * std::sqrt(3.0)))), c(design.solver.c), m(design.solver.m) {}
   double spacing(const SurfaceMap& map, double curvature) const {
     return packing * (1 + c + m * normalised_curvature(map, curvature));
   }
@@ -61,15 +63,15 @@ CellGrid element_grid(const SurfaceMap& map, const Elements& elements, double di
 }  // namespace
 
 RefillReport refill_bare_regions(const SurfaceMap& map, Elements& elements, const Design& design,
-                                 double area_per_element, const std::atomic<bool>* stop) {
+                                 double area_per_vertex_element, const std::atomic<bool>* stop) {
   const Stopwatch watch;
   RefillReport report;
   const ElementsDesign& spec = design.elements;
-  if (!spec.vertex.enabled || elements.size() == 0 || map.mesh.positions.empty() || !(area_per_element > 0))
+  if (!spec.vertex.enabled || elements.size() == 0 || map.mesh.positions.empty() || !(area_per_vertex_element > 0))
     return report;
   const double diameter = spec.vertex.scale * design.pattern.spacing;
   const double gap = spec.gap;
-  const DensityRule density(design, area_per_element);
+  const DensityRule density(design, area_per_vertex_element);
   const auto local_spacing = [&](double curvature) { return density.spacing(map, curvature); };
   const CellGrid grid = element_grid(map, elements, diameter, gap, density.widest());
   ElementHash hash(elements, grid);
@@ -157,13 +159,13 @@ RefillReport refill_bare_regions(const SurfaceMap& map, Elements& elements, cons
   return report;
 }
 
-void refill_seams(const SurfaceMap& map, Elements& elements, const Design& design, double area_per_element,
+void refill_seams(const SurfaceMap& map, Elements& elements, const Design& design, double area_per_vertex_element,
                   RefillReport& report) {
   const ElementsDesign& spec = design.elements;
-  if (!is_atlas(map) || !spec.vertex.enabled || design.elements.allow_overlap || !(area_per_element > 0)) return;
+  if (!is_atlas(map) || !spec.vertex.enabled || design.elements.allow_overlap || !(area_per_vertex_element > 0)) return;
   const Stopwatch watch;
   const double diameter = spec.vertex.scale * design.pattern.spacing;
-  const DensityRule density(design, area_per_element);
+  const DensityRule density(design, area_per_vertex_element);
   const CellGrid grid = element_grid(map, elements, diameter, spec.gap, density.widest());
   ElementHash hash(elements, grid);
   // Along the seam in steps of a tenth of a diameter; across it at these shares of a diameter into

@@ -3,8 +3,8 @@
 // boundary or removed as a last resort, a pavement has holes a whole element would fit in. Grown
 // outwards from every element in waves: candidates in 12 tangent directions, put on the surface
 // through the map, kept when they stay inside the boundary, keep the contact rule (with the gap)
-// with every element, and lie no closer to any element than the design's own density allows: the
-// spacing of a triangle packing with the design's area per element, times eq. 5's factor
+// with every element, and lie no closer to any V-element than the design's own density allows: the
+// spacing of a triangle packing with the design's area per V-element, times eq. 5's factor
 // (1 + c + m * normalised |H|) there. So a design with margins keeps its margins and a honeycomb
 // is not packed denser than a honeycomb. Linear in the elements (a spatial hash; each element
 // seeds once). Beyond the paper (its future work on combinatorial singularities); the added
@@ -26,9 +26,10 @@ struct RefillReport {
 
 // Appends the added elements to `elements` (their source is -1: no pattern point carries them).
 // Does nothing when the design has no V-elements or no element exists to grow from.
-// `design` has its spacing resolved; `area_per_element` is the regular pattern's (QualityBasis).
+// `design` has its spacing resolved; `area_per_vertex_element` is the regular pattern's area per V-element
+// (QualityBasis's area per element over its V share).
 RefillReport refill_bare_regions(const SurfaceMap& map, Elements& elements, const Design& design,
-                                 double area_per_element, const std::atomic<bool>* stop = nullptr);
+                                 double area_per_vertex_element, const std::atomic<bool>* stop = nullptr);
 
 // A closed surface's atlas (map/surface_charts.h): each chart's elements keep off its seams, so a
 // strip about two element radii wide runs bare along every seam, though the seam is no edge of the
@@ -36,7 +37,7 @@ RefillReport refill_bare_regions(const SurfaceMap& map, Elements& elements, cons
 // rule and the density rule above with every element, in 3D, over both charts: its centre on the
 // seam or up to half a diameter into either chart, the nearest to the seam that fits, greedily
 // along the seam. Adds to `report` (added, on_seams). Does nothing on a map that is no atlas.
-void refill_seams(const SurfaceMap& map, Elements& elements, const Design& design, double area_per_element,
+void refill_seams(const SurfaceMap& map, Elements& elements, const Design& design, double area_per_vertex_element,
                   RefillReport& report);
 
 }  // namespace paver

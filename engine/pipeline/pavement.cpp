@@ -295,8 +295,12 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
     watch = start("refill");
     // Across a closed surface's seams first, so that the bare regions' refill grows from there too.
     RefillReport seams;
-    refill_seams(map, pavement.elements, design, basis.area_per_element, seams);
-    pavement.refill = refill_bare_regions(map, pavement.elements, design, basis.area_per_element, options.stop);
+    // The refill adds V-elements: at the V-elements' own density, not all elements' (a honeycomb
+    // with edge elements has room in every hexagon at the mixed density).
+    const double area_per_vertex_element =
+        basis.vertex_share > 0 ? basis.area_per_element / basis.vertex_share : basis.area_per_element;
+    refill_seams(map, pavement.elements, design, area_per_vertex_element, seams);
+    pavement.refill = refill_bare_regions(map, pavement.elements, design, area_per_vertex_element, options.stop);
     pavement.refill.added += seams.added;
     pavement.refill.on_seams = seams.on_seams;
     pavement.refill.milliseconds += seams.milliseconds;
