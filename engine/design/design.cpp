@@ -221,6 +221,8 @@ void validate_edits(const Validator& v, const ElementEdits& edits, const Element
     v.require(edits.deleted[i].id >= 0, key + ".id", ">= 0 (an element id)", edits.deleted[i].id);
     check_uv(edits.deleted[i].uv, key);
   }
+  if (const auto twice = repeated_id(edits.deleted))
+    v.fail("'edits.deleted' names element " + std::to_string(*twice) + " twice; keep one entry per element");
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 // (solver/edit_relaxation.h), so that an edit changes the pavement around it and nowhere else.
 // Deletions act on the final elements: elements/element_deletion.h.
 #include "design/element_edits.h"
+#include "map/surface_map.h"
 #include "pattern/pattern.h"
 
 #include <glm/vec2.hpp>
@@ -22,7 +23,7 @@ struct EditedParticle {
 
 // Appends the added elements to `pattern` (Pattern::added_points) and lists every edited particle.
 // Throws InputError naming the edit when it names a particle the pattern does not have (edits made
-// for another spacing, pattern or placement).
-std::vector<EditedParticle> add_edited_points(Pattern& pattern, const ElementEdits& edits);
+// for another spacing, pattern or placement), or a uv off `map`.
+std::vector<EditedParticle> add_edited_points(const SurfaceMap& map, Pattern& pattern, const ElementEdits& edits);
 
 }  // namespace paver

@@ -185,7 +185,7 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
   } else {
     pavement.pattern = build_pattern(map, pavement.cell, design.placement);
   }
-  const std::vector<EditedParticle> edited = add_edited_points(pavement.pattern, design.edits);
+  const std::vector<EditedParticle> edited = add_edited_points(map, pavement.pattern, design.edits);
   pavement.points = pavement.pattern.points;
   pavement.timings.emplace_back("pattern", watch.milliseconds());
   // Before any element is placed or measured: the caller's bounds (run_pipeline's output size)

@@ -186,6 +186,11 @@ TEST_F(ElementEdits, EditsForAnotherPatternOrAnAutoTopologyAreRefused) {
   design.edits.moved.push_back({base_->pattern.point_count() + 5, {0, 0}, true});
   EXPECT_TRUE(test::Contains(test::error_of([&] { make_pavement(*map_, design); }), "edits.moved[0]: particle"));
   design.edits.moved.clear();
+  // A uv off the map (a hand-written file): refused, not dropped while counted as added.
+  design.edits.added.push_back({kFirstAddedId, {1e4, 1e4}});
+  EXPECT_TRUE(test::Contains(test::error_of([&] { make_pavement(*map_, design); }),
+                             "edits.added[0] (id " + std::to_string(kFirstAddedId) + "): its uv (10000, 10000) is off"));
+  design.edits.added.clear();
   design.edits.deleted.push_back({3, {0, 0}});
   design.pattern.topology = Topology::Auto;
   EXPECT_TRUE(test::Contains(test::error_of([&] { make_pavement(*map_, design); }), "pattern.topology is \"auto\""));
@@ -203,6 +208,9 @@ TEST(ElementEditsDesign, IdsAndPointsAreChecked) {
   design.edits.moved = {{4, {0, 0}, true}, {4, {1, 0}, false}};
   EXPECT_TRUE(test::Contains(test::error_of([&] { validate_design(design, "d"); }), "twice"));
   design.edits.moved = {};
+  design.edits.deleted = {{7, {0, 0}}, {7, {0, 0}}};
+  EXPECT_TRUE(test::Contains(test::error_of([&] { validate_design(design, "d"); }), "'edits.deleted' names element 7 twice"));
+  design.edits.deleted = {};
   design.edits.added = {{kFirstAddedId, {0, 0}}};
   design.elements.vertex.enabled = false;
   EXPECT_TRUE(test::Contains(test::error_of([&] { validate_design(design, "d"); }), "elements.vertex.enabled"));
