@@ -38,7 +38,7 @@ bool change_design(Document& doc, const Design& next, bool dragging) {
   try {
     validate_design(next, "this change");
   } catch (const InputError& e) {
-    report_error(doc, in_studio_words(e.what()));  // the panel and field to fix, then the key
+    report_error(doc, in_studio_words(e.what()), true);  // the panel and field to fix, then the key
     doc.messages.error_kept_design = true;
     return false;
   }
@@ -122,7 +122,7 @@ bool open_design_file(Document& doc, const std::filesystem::path& path) {
     report_status(doc, status);
     return true;
   } catch (const std::exception& e) {
-    report_error(doc, e.what());
+    report_error(doc, e);
     return false;
   }
 }
@@ -147,7 +147,7 @@ bool save_design_file(Document& doc, const std::filesystem::path& path) {
     report_status(doc, "saved design " + path.string());
     return true;
   } catch (const std::exception& e) {
-    report_error(doc, e.what());
+    report_error(doc, e);
     return false;
   }
 }
@@ -162,7 +162,7 @@ std::shared_ptr<const ShapeMesh> shared_custom_shape(Document& doc) {
     if (path.empty()) throw InputError("an element uses the custom shape: set its OBJ file in the elements panel");
     doc.custom_shape = std::make_shared<const ShapeMesh>(load_custom_shape(path));
   } catch (const std::exception& e) {
-    report_error(doc, e.what());
+    report_error(doc, e);
   }
   return doc.custom_shape;
 }
@@ -171,11 +171,16 @@ const ShapeMesh* custom_shape(Document& doc) { return shared_custom_shape(doc).g
 
 void report_status(Document& doc, std::string text) { doc.messages.status = std::move(text); }
 
-void report_error(Document& doc, std::string text) {
+void report_error(Document& doc, std::string text, bool input) {
   doc.messages.status = "error: " + text;
   doc.messages.error = std::move(text);
   doc.messages.error_kept_design = false;
+  doc.messages.error_is_input = input;
   ++doc.messages.error_count;
+}
+
+void report_error(Document& doc, const std::exception& e) {
+  report_error(doc, e.what(), dynamic_cast<const InputError*>(&e) != nullptr);
 }
 
 bool is_bundled_design(const std::filesystem::path& path) {

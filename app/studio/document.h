@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <exception>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,7 @@ struct Messages {
   std::string error;                      // the error dialog's text; empty when none is open
   int error_count = 0;                    // errors reported so far (a script stops on a new one)
   bool error_kept_design = false;         // the error refused a design change (so the design is unchanged)
+  bool error_is_input = false;            // the last error was the user's input (a script exits 2), not a bug (1)
 };
 
 struct Document {
@@ -105,7 +107,8 @@ std::shared_ptr<const ShapeMesh> shared_custom_shape(Document& doc);
 void prepare_output(const Document& doc, const std::filesystem::path& path, bool may_be_design = false);
 
 void report_status(Document& doc, std::string text);
-void report_error(Document& doc, std::string text);  // status line and the error dialog
+void report_error(Document& doc, std::string text, bool input = false);  // status line and the error dialog
+void report_error(Document& doc, const std::exception& e);  // an InputError is the user's input
 
 // Whether `path` is one of the designs bundled with Paver (assets/designs/ beside assets/surfaces/):
 // Save refuses to overwrite one.

@@ -61,7 +61,7 @@ int main(int argc, char** argv) {
         update_studio(s);
         if (runner) runner->frame(s);
       } catch (const std::exception& e) {
-        report_error(s.doc, e.what());  // shown; the design and the session go on
+        report_error(s.doc, e);  // shown; the design and the session go on
       }
       draw_studio(s);
       after_present(s, window.end_frame(s.ui.screenshot.has_value()));

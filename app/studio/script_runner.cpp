@@ -240,7 +240,7 @@ void ScriptRunner::frame(Studio& s) {
   const Messages& messages = s.doc.messages;
   const std::string where =
       next_ < commands_.size() ? source_ + ":" + std::to_string(commands_[next_].line) + ": " : source_ + ": ";
-  if (messages.error_count > errors_seen_) return fail(s, where + messages.error, 1);
+  if (messages.error_count > errors_seen_) return fail(s, where + messages.error, messages.error_is_input ? 2 : 1);
   if (next_ >= commands_.size()) {  // the end of the script is a quit
     finished_ = true;
     s.quit = true;

@@ -58,7 +58,7 @@ void handle_shortcuts(Studio& s) {
       try {
         export_outputs(s, s.ui.export_dir);
       } catch (const std::exception& e) {
-        report_error(s.doc, e.what());
+        report_error(s.doc, e);
       }
     }
     if (pressed(GLFW_KEY_Q)) s.window.request_close();

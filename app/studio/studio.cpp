@@ -35,7 +35,7 @@ void take_loaded_surface(Studio& s) {
   std::optional<SurfaceLoadOutcome> outcome = s.loader.take_outcome();
   if (!outcome) return;
   if (!outcome->surface) {
-    report_error(s.doc, outcome->error);
+    report_error(s.doc, outcome->error, outcome->input_error);
     return;
   }
   OpenedSurface& opened = *outcome->surface;
@@ -62,7 +62,7 @@ void take_run_outcome(Studio& s) {
   std::optional<RunOutcome> outcome = s.live.take_outcome();
   if (!outcome || outcome->revision != s.doc.revision) return;  // an older design's: dropped
   if (!outcome->pavement) {
-    report_error(s.doc, outcome->error);
+    report_error(s.doc, outcome->error, outcome->input_error);
     return;
   }
   const Pavement& p = *outcome->pavement;
@@ -182,7 +182,7 @@ void set_backend(Studio& s, const std::string& name) {
                              (s.run.choice.device.empty() ? std::string() : " on " + s.run.choice.device));
     if (s.doc.surface.map) run_now(s);
   } catch (const std::exception& e) {
-    report_error(s.doc, e.what());
+    report_error(s.doc, e);
   }
 }
 
@@ -256,7 +256,7 @@ bool edit_on_screen(Studio& s, const Edit& edit) {
   try {
     return change_design(s.doc, edit(*s.doc.result.pavement));
   } catch (const InputError& e) {
-    report_error(s.doc, e.what());
+    report_error(s.doc, e);
     return false;
   }
 }
@@ -409,8 +409,9 @@ bool within_budget(Studio& s) {
                 d.pattern.spacing, points, s.run.point_budget, points * kStudioBytesPerPoint / 1e9,
                 points * kStudioSecondsPerPoint);
   if (s.script_mode)
-    report_error(s.doc, std::string(text) + "; a script does not ask: use a larger spacing, or `paver run` for the "
-                                            "full design");
+    report_error(s.doc,
+                 std::string(text) + "; a script does not ask: use a larger spacing, or `paver run` for the full design",
+                 true);
   else
     report_status(s.doc, text);
   return false;
@@ -535,7 +536,7 @@ void after_present(Studio& s, const std::optional<render::Image>& frame) {
     render::write_png(*s.ui.screenshot, *frame);
     report_status(s.doc, "screenshot " + s.ui.screenshot->string());
   } catch (const std::exception& e) {
-    report_error(s.doc, e.what());
+    report_error(s.doc, e);
   }
   s.ui.screenshot.reset();
 }

@@ -33,6 +33,7 @@ SurfaceLoadOutcome load_and_map(const std::filesystem::path& path, CutAxis cut, 
     outcome.surface = OpenedSurface{path, std::move(mapped.map), std::move(mapped.warnings), std::move(mapped.timings)};
   } catch (const InputError& e) {
     outcome.error = e.what();
+    outcome.input_error = true;
   } catch (const std::exception& e) {
     outcome.error = e.what();
   }

@@ -27,6 +27,7 @@ struct OpenedSurface {
 struct SurfaceLoadOutcome {
   std::optional<OpenedSurface> surface;  // empty on failure
   std::string error;                     // what went wrong, naming the file
+  bool input_error = false;              // the file's fault (InputError), not a bug
 };
 
 class SurfaceLoader {

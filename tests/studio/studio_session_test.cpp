@@ -388,6 +388,17 @@ TEST_F(StudioSession, AnElementCommandOnAMissingIdFails) {
   EXPECT_NE(r.err.find("element 99999999 is not in the pavement on screen"), std::string::npos) << describe(r);
 }
 
+// A file that is not there is the user's input, not a bug: exit 2, as `paver run` (it was 1).
+TEST_F(StudioSession, AMissingFileInAScriptExitsWithTwo) {
+  for (const std::string& line : {std::string("design /nope/design.json"), std::string("open /nope/surface.obj")}) {
+    const fs::path script = dir_ / "missing_file.txt";
+    std::ofstream(script) << "open assets/surfaces/pendant.obj\n" << line << "\n";
+    const Outcome r = studio("--script " + quote(script.string()) + " --backend cpu --width 640 --height 480", dir_);
+    EXPECT_EQ(r.exit_code, 2) << line << "\n" << describe(r);
+    EXPECT_NE(r.err.find("missing_file.txt:2: "), std::string::npos) << describe(r);
+  }
+}
+
 // The smallest spacing the pattern stage accepts on the pendant (2.7M elements) is beyond the
 // studio's budget: a script stops at once with the figures instead of taking gigabytes and
 // minutes (the window asks "run anyway?" instead).
@@ -395,7 +406,7 @@ TEST_F(StudioSession, ADesignBeyondTheBudgetIsRefusedBeforeItRuns) {
   const fs::path script = dir_ / "huge.txt";
   std::ofstream(script) << "open assets/surfaces/pendant.obj\nspacing 0.0162\noptimize\n";
   const Outcome r = studio("--script " + quote(script.string()) + " --backend cpu --width 640 --height 480", dir_);
-  EXPECT_EQ(r.exit_code, 1) << describe(r);
+  EXPECT_EQ(r.exit_code, 2) << describe(r);  // the design's fault, as for `paver run`
   EXPECT_NE(r.err.find("would place about 2.67e+06 elements, above the studio's budget"), std::string::npos)
       << describe(r);
   // optimize waits for a pavement of this design, which never ran.

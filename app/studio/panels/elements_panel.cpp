@@ -167,7 +167,7 @@ void elements_panel(Document& doc, UiState& ui) {
       d.elements.custom_shape = ui.custom_shape_path;
       change_design(doc, d);
     } catch (const std::exception& e) {
-      report_error(doc, e.what());
+      report_error(doc, e);
     }
   }
   help_marker("Elements whose shape is 'custom' use this mesh (OBJ, OFF, PLY or STL), normalised to unit width.");

@@ -27,7 +27,7 @@ void guarded(Document& doc, const std::function<void()>& action) {
   try {
     action();
   } catch (const std::exception& e) {
-    report_error(doc, e.what());
+    report_error(doc, e);
   }
 }
 

@@ -34,7 +34,7 @@ void try_edit(Document& doc, Edit&& edit) {
   try {
     change_design(doc, edit(doc.design));
   } catch (const InputError& e) {
-    report_error(doc, e.what());
+    report_error(doc, e);
   }
 }
 

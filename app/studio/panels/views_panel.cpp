@@ -281,7 +281,7 @@ void interact_elements_2d(Studio& s, const MapFrame& f) {
     try {
       select_element(s, *id);
     } catch (const InputError& e) {
-      report_error(s.doc, e.what());
+      report_error(s.doc, e);
       return;
     }
     s.ui.dragging_element = true;
@@ -293,7 +293,7 @@ void interact_elements_2d(Studio& s, const MapFrame& f) {
     try {
       select_box(s, from, f.to_map(io.MousePos));
     } catch (const InputError& e) {
-      report_error(s.doc, e.what());
+      report_error(s.doc, e);
     }
   }
   if (s.ui.dragging_element && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
