@@ -21,6 +21,13 @@ struct LayoutElement {
   std::string name;
 };
 
+// The cell an element belongs to, when it is not the origin cell (a lattice vertex and its
+// neighbour are often the same cell vertex, one cell over).
+std::string of_cell(glm::ivec2 c) {
+  if (c == glm::ivec2(0)) return "";
+  return " of the cell at (" + std::to_string(c.x) + ", " + std::to_string(c.y) + ")";
+}
+
 std::string format(double v) {
   char b[32];
   std::snprintf(b, sizeof b, "%.3g", v);
@@ -46,7 +53,7 @@ void check_design_overlaps(const UnitCell& cell, const ElementsDesign& design, d
         for (int v = 0; v < int(cell.vertices.size()); ++v) {
           if (origin) own.push_back(all.size());
           all.push_back({cell.position(v, c), 0.5 * design.vertex.scale * spacing,
-                         "the V-element on cell vertex " + std::to_string(v)});
+                         "the V-element on cell vertex " + std::to_string(v) + of_cell(c)});
         }
       for (int s = 0; s < int(design.edge.size()); ++s) {
         const EdgeElementDesign& spec = design.edge[s];
@@ -57,7 +64,7 @@ void check_design_overlaps(const UnitCell& cell, const ElementsDesign& design, d
           const glm::dvec2 a = cell.position(edge.from, c), b = cell.position(edge.to, c + edge.offset);
           if (origin) own.push_back(all.size());
           all.push_back({a + spec.t * (b - a), 0.5 * spec.scale * spacing,
-                         "elements.edge[" + std::to_string(s) + "] on cell edge " + std::to_string(e)});
+                         "elements.edge[" + std::to_string(s) + "] on cell edge " + std::to_string(e) + of_cell(c)});
         }
       }
     }
@@ -75,6 +82,11 @@ void check_design_overlaps(const UnitCell& cell, const ElementsDesign& design, d
                          all[i].name + " and " + all[j].name + " are " + format(d / spacing) +
                          " D apart but need " + format(need / spacing) + " D" +
                          (gap > 0 ? " (their radii plus elements.gap)" : "") +
+                         // Two elements of one size: the largest scale that fits, the figure a user asks for.
+                         (all[i].radius == all[j].radius && d > gap
+                              ? "; at this spacing and gap their scale can be at most " + format((d - gap) / spacing) +
+                                    " (now " + format(2 * all[i].radius / spacing) + ")"
+                              : "") +
                          "; reduce their scales, move t" + (gap > 0 ? ", reduce the gap or raise the spacing" : "") +
                          " (or set elements.allow_overlap to allow it)");
     }

@@ -88,7 +88,9 @@ void write_stones_csv(const std::filesystem::path& path, const BillOfStones& bil
     else text += ",";
     text += "\n";
   }
-  text += "total,," + std::to_string(bill.count) + ",," + carat_total_text(bill.carat_total) + "\n";
+  // Carats only where some row has them (a design of beads or custom shapes has none).
+  const bool has_carats = std::any_of(bill.rows.begin(), bill.rows.end(), [](const StoneRow& r) { return bool(r.carat_each); });
+  text += "total,," + std::to_string(bill.count) + ",," + (has_carats ? carat_total_text(bill.carat_total) : "") + "\n";
   write_text_atomically(path, text);
 }
 

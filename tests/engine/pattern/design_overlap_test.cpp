@@ -103,6 +103,10 @@ TEST(DesignOverlap, TheGapIsPartOfTheRule) {
   EXPECT_TRUE(Contains(message, "closer than the gap"));
   EXPECT_TRUE(Contains(message, "are 1 D apart but need 1.05 D (their radii plus elements.gap)"));
   EXPECT_TRUE(Contains(message, "reduce the gap or raise the spacing"));
+  // The neighbour is the same cell vertex one cell over, and the scale that fits is given.
+  EXPECT_TRUE(Contains(message, "the V-element on cell vertex 0 and the V-element on cell vertex 0 of the cell at ("))
+      << message;
+  EXPECT_TRUE(Contains(message, "their scale can be at most 0.95 (now 1)")) << message;
 }
 
 TEST(DesignOverlap, TwoEElementsOnOneEdgeAreNamedWithTheirIndices) {
