@@ -13,6 +13,7 @@
 #include <functional>
 #include <random>
 #include <sstream>
+#include <string_view>
 #include <string>
 
 namespace paver {
@@ -526,6 +527,52 @@ TEST(DesignVersions, AnOldDefaultIsKeptAndNoted) {
   }
   EXPECT_EQ(design_from_json(nlohmann::json::parse(R"({"version": 1})"), "d.json").solver.mu_stretched,
             SolverParams{}.mu_stretched);
+}
+
+}  // namespace
+}  // namespace paver
+
+namespace paver {
+namespace {
+
+// Every value a design file can hold (design_to_json writes them all) is in docs/design_file.md's
+// table, solver.* aside (docs/parameters.md is generated from their table).
+void object_keys(const nlohmann::json& value, const std::string& path, std::vector<std::string>& out) {
+  if (!value.is_object()) return;
+  for (const auto& [key, child] : value.items()) {
+    const std::string here = path.empty() ? key : path + "." + key;
+    if (here == "solver") continue;
+    if (child.is_object())
+      object_keys(child, here, out);
+    else
+      out.push_back(here);  // a value: what a user writes
+  }
+}
+
+TEST(DesignFileDocs, EveryKeyIsDocumented) {
+  std::ifstream in(std::string(PAVER_SOURCE_DIR) + "/docs/design_file.md");
+  ASSERT_TRUE(in) << "docs/design_file.md is missing";
+  std::stringstream text;
+  text << in.rdbuf();
+  std::vector<std::string> keys;
+  object_keys(design_to_json(Design{}), "", keys);
+  ASSERT_GT(keys.size(), 20u);
+  for (const std::string& key : keys) {
+    // Leaf objects' members may be listed together ("elements.beads.enabled`, `.scale").
+    // Appended piece by piece: chained operator+ trips a GCC 12 -Wrestrict false positive.
+    const auto ticked = [](std::string_view before, std::string_view inner, std::string_view after) {
+      std::string out(before);
+      out += inner;
+      out += after;
+      return out;
+    };
+    const std::string parent = key.substr(0, key.rfind('.') + 1), leaf = key.substr(key.rfind('.') + 1);
+    const bool together = text.str().find(ticked("`", parent, "")) != std::string::npos &&
+                          text.str().find(ticked("`.", leaf, "`")) != std::string::npos;
+    const bool listed = text.str().find(ticked("`", key, "`")) != std::string::npos || together;
+    EXPECT_TRUE(listed || key == "edits" || key.rfind("edits.", 0) == 0 || key == "guidance")
+        << key << " is not in docs/design_file.md";
+  }
 }
 
 }  // namespace
