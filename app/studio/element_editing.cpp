@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <unordered_set>
 #include <cstdio>
 #include <limits>
 
@@ -129,6 +130,26 @@ bool is_pinned(const Design& design, const Pavement& pavement, int id) {
     return std::any_of(design.edits.moved.begin(), design.edits.moved.end(),
                        [&](const MovedParticle& m) { return m.id == particle && m.pinned; });
   });
+}
+
+std::vector<std::size_t> held_elements(const Design& design, const Pavement& pavement) {
+  std::unordered_set<int> pinned_particles;
+  for (const MovedParticle& m : design.edits.moved)
+    if (m.pinned) pinned_particles.insert(m.id);
+  std::vector<std::size_t> held;
+  const Elements& e = pavement.elements;
+  for (std::size_t i = 0; i < e.size(); ++i) {
+    if (e.id[i] >= kFirstAddedId) {
+      held.push_back(i);
+      continue;
+    }
+    if (pinned_particles.empty()) continue;
+    const std::vector<int> particles = pattern_particles(pavement, i);
+    if (!particles.empty() && std::all_of(particles.begin(), particles.end(),
+                                          [&](int particle) { return pinned_particles.count(particle) > 0; }))
+      held.push_back(i);
+  }
+  return held;
 }
 
 Design with_pinned(Design design, const Pavement& pavement, int id, bool pinned) {

@@ -33,6 +33,10 @@ std::string describe_element(const Design& design, const Pavement& pavement, int
 // edge element's edge) or one the designer added.
 bool is_pinned(const Design& design, const Pavement& pavement, int id);
 
+// The indices (into pavement.elements) of every element is_pinned holds, in one pass: the views
+// mark them, so a designer sees what stays put.
+std::vector<std::size_t> held_elements(const Design& design, const Pavement& pavement);
+
 // Holds element `id` where it is (pinned) or lets it relax again. A vertex element pins its
 // particle, an edge element the two ends of its edge.
 Design with_pinned(Design design, const Pavement& pavement, int id, bool pinned);

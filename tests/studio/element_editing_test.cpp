@@ -49,6 +49,19 @@ TEST(ElementEditing, PinningAnEdgeElementPinsBothEndsOfItsEdge) {
   EXPECT_FALSE(unpinned.edits.moved[0].pinned);
 }
 
+// The views mark what is held: exactly the elements is_pinned says, the designer's added ones too.
+TEST(ElementEditing, HeldElementsAreThePinnedAndTheAdded) {
+  const Pavement& p = gems();
+  EXPECT_TRUE(held_elements(p.design, p).empty());
+  const std::size_t e = first_of(p, ElementKind::Edge, true);
+  Design design = with_pinned(p.design, p, p.elements.id[e], true);
+  const std::vector<std::size_t> held = held_elements(design, p);
+  ASSERT_FALSE(held.empty());
+  EXPECT_NE(std::find(held.begin(), held.end(), e), held.end()) << "the pinned edge element";
+  for (std::size_t i = 0; i < p.elements.size(); ++i)
+    EXPECT_EQ(std::find(held.begin(), held.end(), i) != held.end(), is_pinned(design, p, p.elements.id[i])) << i;
+}
+
 TEST(ElementEditing, DragMovesByTheOffsetAndHolds) {
   const Pavement& p = gems();
   const std::size_t v = first_of(p, ElementKind::Vertex, true);

@@ -19,7 +19,7 @@ void single_elements_panel(Studio& s) {
               "surface): it stays where you drop "
               "it and its neighbours within three spacings make room; Ctrl+click adds a stone of the vertex size. "
               "Del deletes the selected stone (its place stays empty), P pins or unpins it (a pinned stone stays "
-              "put while the rest relaxes). Edits are undoable, saved in the design file, and `paver run` repeats "
+              "put while the rest relaxes; an orange dot marks it, and the stones you added). Edits are undoable, saved in the design file, and `paver run` repeats "
               "them. Shift+drag in the 2D map selects every stone in a box: Del and P then take them all.");
   const Pavement* pavement = s.doc.result.pavement.get();
   if (!s.ui.box_selected.empty()) {

@@ -314,6 +314,13 @@ void draw_selected(ImDrawList* draw, ImVec2 centre, float radius, std::optional<
   draw->AddLine(centre, *dragged_to, IM_COL32(90, 200, 250, 200), 1.5f);
 }
 
+// A held element (pinned, or added by the designer): an orange dot at its centre, in both views.
+void draw_held(ImDrawList* draw, ImVec2 centre, float radius) {
+  const float r = std::max(3.0f, 0.3f * radius);
+  draw->AddCircleFilled(centre, r + 1.5f, IM_COL32(0, 0, 0, 220), 20);
+  draw->AddCircleFilled(centre, r, IM_COL32(250, 160, 40, 255), 20);
+}
+
 // The selected elements (each as draw_selected shows it) and the box being drawn.
 void draw_selection_2d(Studio& s, ImDrawList* draw, const MapFrame& f) {
   if (s.ui.box_from) {
@@ -325,6 +332,8 @@ void draw_selection_2d(Studio& s, ImDrawList* draw, const MapFrame& f) {
   if (!s.doc.result.pavement) return;
   const Pavement& p = *s.doc.result.pavement;
   const float pixels_per_unit = float(f.size.y / (2 * f.view.half_height));
+  for (const std::size_t i : held_elements(s.doc.design, p))
+    draw_held(draw, f.to_screen(p.elements.uv[i]), float(0.5 * p.elements.diameter[i]) * pixels_per_unit);
   for (const int id : selection(s.ui)) {
     const std::optional<std::size_t> i = find_element(p, id);
     if (!i) continue;
@@ -342,6 +351,10 @@ void draw_selection_2d(Studio& s, ImDrawList* draw, const MapFrame& f) {
 void draw_selection_3d(Studio& s, ImDrawList* draw, const View3dFrame& f) {
   if (!s.doc.result.pavement) return;
   const Pavement& p = *s.doc.result.pavement;
+  for (const std::size_t i : held_elements(s.doc.design, p)) {
+    const std::optional<ImVec2> c = f.to_screen(p.elements.position[i]);
+    if (c) draw_held(draw, *c, f.footprint_radius(p.elements.position[i], p.elements.normal[i], p.elements.diameter[i], *c));
+  }
   for (const int id : selection(s.ui)) {
     const std::optional<std::size_t> i = find_element(p, id);
     if (!i) continue;
