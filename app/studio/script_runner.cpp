@@ -154,7 +154,10 @@ void ScriptRunner::act(Studio& s, const ScriptCommand& c) {
     case Kind::View2d:
       if (s.views.large_3d) swap_views(s);
       break;
-    case Kind::Panel: s.ui.select_panel = c.text; break;
+    case Kind::Panel:
+      s.ui.select_panel = c.text;
+      frames_left_ = 2;  // ImGui sizes a table's fitted columns on the frame after its first
+      break;
     case Kind::Wait: frames_left_ = c.frames; break;
     case Kind::Orbit:
       orbit_step_ = float(c.number * std::numbers::pi / 180.0 / c.frames);
@@ -209,7 +212,8 @@ bool ScriptRunner::settled(Studio& s, const ScriptCommand& c) {
     case Kind::Open: return !s.loader.busy() && s.doc.surface.path == std::filesystem::path(c.text);
     case Kind::CutAxis: return !s.loader.busy();
     case Kind::Screenshot: return !s.ui.screenshot;  // after_present wrote it
-    case Kind::Wait: return frames_left_-- <= 0;
+    case Kind::Wait:
+    case Kind::Panel: return frames_left_-- <= 0;
     case Kind::Orbit:
       if (frames_left_-- > 0) {
         s.views.camera.yaw += orbit_step_;  // drawn this frame
