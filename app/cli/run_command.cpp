@@ -41,7 +41,7 @@ struct RunArgs {
   std::string pattern;
   std::string topology;
   std::string rim_rows;
-  std::string cut = "auto";
+  std::string cut;  // empty: the design's
   std::optional<double> spacing;
   std::optional<double> gap;
   std::optional<double> margin;
@@ -93,9 +93,6 @@ int run_run(const RunArgs& args) {
   nothing_written_yet();
   PipelineRequest request;
   request.surface_path = args.surface;
-  const std::optional<CutAxis> cut_axis = cut_axis_from_name(args.cut);
-  if (!cut_axis) throw InputError("--cut " + printable(args.cut) + ": use auto, x, y or z");
-  request.cut = *cut_axis;
   request.design_source = args.design.empty() ? "defaults" : args.design;
   request.design_path = args.design;
   request.on_warning = [](const std::string& w) { std::cerr << "paver: warning: " << printable(w) << "\n"; };
@@ -104,6 +101,11 @@ int run_run(const RunArgs& args) {
     std::vector<std::string> notes;
     design = load_design(args.design, &notes);
     for (const std::string& note : notes) request.on_warning(note);
+  }
+  if (!args.cut.empty()) {  // else the design's (placement.cut_axis, default auto)
+    const std::optional<CutAxis> cut_axis = cut_axis_from_name(args.cut);
+    if (!cut_axis) throw InputError("--cut " + printable(args.cut) + ": use auto, x, y or z");
+    design.placement.cut_axis = *cut_axis;
   }
   if (!args.pattern.empty()) {
     const auto t = tessellation_from_name(args.pattern);
@@ -372,8 +374,7 @@ std::function<int()> add_run_command(CLI::App& app) {
       ->check(app::not_empty());
   cmd->add_option("--cut", args->cut,
                   "A closed surface (a bead, a figurine) is cut into charts by a plane across this axis through its "
-                  "centre: auto (its longest axis, default), x, y or z")
-      ->capture_default_str()
+                  "centre: auto (its longest axis), x, y or z; default: the design's placement.cut_axis, else auto")
       ->check(app::not_empty());
   cmd->add_option("--spacing", args->spacing, "Edge length D in surface units (default: from the surface size)");
   cmd->add_option("--gap", args->gap,

@@ -150,15 +150,25 @@ void open_surface(Studio& s, const fs::path& path) {
   report_status(s.doc, "opening " + path.string());
 }
 
-void set_cut_axis(Studio& s, CutAxis axis) {
+// The design says where a closed surface is cut (placement.cut_axis): a loaded design, an undo
+// and the File panel's choice all end here, which maps the surface again across it. A load in
+// flight is started again with the axis (it may be a closed surface); else the closed surface on
+// screen is mapped again.
+void follow_cut_axis(Studio& s) {
+  const CutAxis axis = s.doc.design.placement.cut_axis;
   if (axis == s.ui.cut_axis) return;
   s.ui.cut_axis = axis;
-  // A load in flight is started again with the axis (it may be a closed surface); else the
-  // closed surface on screen is mapped again.
   if (s.loader.busy())
     open_surface(s, fs::path(s.loader.path()));
   else if (s.doc.surface.map && is_atlas(*s.doc.surface.map))
     open_surface(s, s.doc.surface.path);
+}
+
+void set_cut_axis(Studio& s, CutAxis axis) {
+  if (axis == s.doc.design.placement.cut_axis) return;
+  Design next = s.doc.design;
+  next.placement.cut_axis = axis;
+  if (change_design(s.doc, next)) follow_cut_axis(s);
 }
 
 void open_any(Studio& s, const fs::path& path) {
@@ -473,6 +483,7 @@ void reset_run(Studio& s) {
 void update_studio(Studio& s) {
   for (const std::string& path : s.window.take_dropped_paths()) open_any(s, path);
   take_loaded_surface(s);
+  follow_cut_axis(s);
   take_run_outcome(s);
   take_cut_outcome(s);
   // The edit's clock stops while the run sits paused, whatever paused it (Space, a Step's end).

@@ -68,7 +68,7 @@ struct UiState {
   std::optional<std::filesystem::path> screenshot;  // write the next presented frame here
   std::string select_panel;            // a script's `panel NAME`: selected on the next frame
   double cut_thickness = 1;            // Cut metal: the metal's thickness, surface units
-  CutAxis cut_axis = CutAxis::Auto;    // the plane a closed surface is cut across (paver run --cut)
+  CutAxis cut_axis = CutAxis::Auto;    // the axis the surface on screen was cut across (the design's placement.cut_axis follows)
   int selected_element = -1;           // the element id selected in the views or by `select`; -1 = none
   std::vector<int> box_selected;       // more elements, from a Shift+drag box (or `select_box`): Del and P take all
   std::optional<glm::dvec2> box_from;  // the corner where a box selection's drag started, map units
@@ -121,7 +121,8 @@ void swap_views(Studio& s);      // the large view and the inset trade places; t
 void open_surface(Studio& s, const std::filesystem::path& path);
 // Sets the plane a closed surface is cut across; the surface being opened, or the closed surface
 // on screen, is opened again with it.
-void set_cut_axis(Studio& s, CutAxis axis);
+void set_cut_axis(Studio& s, CutAxis axis);  // a design change (placement.cut_axis), undoable
+void follow_cut_axis(Studio& s);             // maps the surface again when the design's axis changed
 // Save as: the design written to `path` (never over a bundled design or an input: the error dialog
 // says so), then the design's path and a recent file. False when refused.
 bool save_design_as(Studio& s, const std::filesystem::path& path);

@@ -28,6 +28,7 @@ constexpr Tessellation kTessellations[] = {Tessellation::Triangle, Tessellation:
 constexpr Topology kTopologies[] = {Topology::Lattice, Topology::Adaptive, Topology::Auto};
 constexpr Units kUnits[] = {Units::Millimetre, Units::Centimetre, Units::Metre, Units::Inch};
 constexpr BandRows kBandRows[] = {BandRows::Along, BandRows::Across};
+constexpr CutAxis kCutAxes[] = {CutAxis::Auto, CutAxis::X, CutAxis::Y, CutAxis::Z};
 constexpr RimRows kRimRows[] = {RimRows::None, RimRows::Holes, RimRows::All};
 constexpr FilterBase kFilterBases[] = {FilterBase::Current, FilterBase::Initial};
 constexpr ShapeKind kShapes[] = {ShapeKind::Sphere, ShapeKind::Gem, ShapeKind::HexPrism, ShapeKind::Disc,
@@ -159,6 +160,9 @@ public:
   void read(const json& value, const std::string& path, BandRows& out) const {
     read_name(value, path, out, kBandRows, band_rows_name);
   }
+  void read(const json& value, const std::string& path, CutAxis& out) const {
+    read_name(value, path, out, kCutAxes, cut_axis_name);
+  }
   void read(const json& value, const std::string& path, RimRows& out) const {
     read_name(value, path, out, kRimRows, rim_rows_name);
   }
@@ -264,11 +268,12 @@ public:
   }
 
   void read(const json& value, const std::string& path, Placement& out) const {
-    check_object(value, path, {"offset", "rotation_deg", "scale", "band_rows"});
+    check_object(value, path, {"offset", "rotation_deg", "scale", "band_rows", "cut_axis"});
     field(value, path, "offset", out.offset);
     field(value, path, "rotation_deg", out.rotation_deg);
     field(value, path, "scale", out.scale);
     field(value, path, "band_rows", out.band_rows);
+    field(value, path, "cut_axis", out.cut_axis);
   }
 
   void read(const json& value, const std::string& path, SolverParams& out) const {
@@ -380,6 +385,7 @@ Json to_json(const Design& design) {
   placement["rotation_deg"] = design.placement.rotation_deg;
   placement["scale"] = design.placement.scale;
   placement["band_rows"] = std::string(band_rows_name(design.placement.band_rows));
+  placement["cut_axis"] = std::string(cut_axis_name(design.placement.cut_axis));
 
   Json solver = Json::object();
   for (const SolverParameter& p : solver_parameters()) {

@@ -2,6 +2,8 @@
 // How the 2D map M^ sits under the pattern U^ (section 4.2): the map is scaled, rotated and then
 // translated into the pattern plane. Pattern point p and map point q relate by
 //   p = R(rotation) * (scale * q) + offset.
+#include "map/cut_axis.h"
+
 #include <glm/vec2.hpp>
 
 #include <string_view>
@@ -18,6 +20,7 @@ struct Placement {
   double rotation_deg = 0;   // degrees, counter-clockwise; default 0
   double scale = 1;          // > 0; default 1 (the map keeps the surface's area)
   BandRows band_rows = BandRows::Across;  // default "across" (docs/holes_and_bands.md says why)
+  CutAxis cut_axis = CutAxis::Auto;       // a closed surface's charts: cut across this axis (paver run --cut)
 
   glm::dvec2 map_to_pattern(glm::dvec2 q) const;
   glm::dvec2 pattern_to_map(glm::dvec2 p) const;

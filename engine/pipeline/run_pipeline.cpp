@@ -65,7 +65,8 @@ PipelineResult run_pipeline(PipelineRequest request) {
   } else {
     const StopRequested stop_requested = [&] { return stop && stop->load(); };
     MappedSurface mapped =
-        map_surface_file(request.surface_path, request.progress, stop_requested, request.on_warning, request.cut);
+        map_surface_file(request.surface_path, request.progress, stop_requested, request.on_warning,
+                         design.placement.cut_axis);
     result.map = std::move(mapped.map);
     result.warnings = std::move(mapped.warnings);
     result.timings = std::move(mapped.timings);

@@ -35,7 +35,6 @@ struct PipelineRequest {
   std::filesystem::path surface_path;
   std::shared_ptr<const SurfaceMap> map;
   StageTimings map_timings;
-  CutAxis cut = CutAxis::Auto;             // how a closed surface is cut into charts
 
   Design design;
   std::string design_source = "defaults";  // names the design in errors and the report: its file, "defaults", "studio"

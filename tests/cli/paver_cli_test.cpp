@@ -391,6 +391,28 @@ TEST_F(PaverRun, NeverOverwritesItsInputs) {
   EXPECT_TRUE(leftover_temporaries(dir()).empty());
 }
 
+// A closed surface's cut axis is part of the design: the design.json a `--cut x` run writes repeats
+// it without the flag, and the flag overrides the design's.
+TEST_F(PaverRun, TheCutAxisIsSavedWithTheDesign) {
+  const fs::path across_x = dir() / "x", again = dir() / "again", overridden = dir() / "auto";
+  ASSERT_EQ(paver({"run", "assets/surfaces/bead.obj", "--cut", "x", "--formats", "ply", "--out", across_x.string()})
+                .exit_code,
+            0);
+  EXPECT_EQ(read_json(across_x / "design.json")["placement"]["cut_axis"], "x");
+  const std::string design = (across_x / "design.json").string();
+  ASSERT_EQ(paver({"run", "assets/surfaces/bead.obj", "--design", design, "--formats", "ply", "--out", again.string()})
+                .exit_code,
+            0);
+  EXPECT_TRUE(read_file_text(across_x / "placements.csv") == read_file_text(again / "placements.csv"));
+  // (the saved design's lattice need not suit the other cut: written either way, ok or NOT OK)
+  const int overridden_exit = paver({"run", "assets/surfaces/bead.obj", "--design", design, "--cut", "auto", "--formats",
+                                     "ply", "--out", overridden.string()})
+                                  .exit_code;
+  ASSERT_TRUE(overridden_exit == 0 || overridden_exit == 3) << overridden_exit;
+  EXPECT_EQ(read_json(overridden / "design.json")["placement"]["cut_axis"], "auto");
+  EXPECT_FALSE(read_file_text(across_x / "placements.csv") == read_file_text(overridden / "placements.csv"));
+}
+
 // Files of the user's in the output folder stay, even under an output's name: a run that does not
 // write that name leaves it alone, and one that would replace it is refused before any work.
 TEST_F(PaverRun, KeepsTheUsersFilesInTheOutputFolder) {

@@ -671,7 +671,8 @@ TEST_F(StudioSession, ASpacingLargerThanThePartSaysWhatToDo) {
 
 #ifdef PAVER_WITH_CGAL
 // A closed bead cut across x (the script's cut_axis, the file panel's "cut across") exports what
-// `paver run --cut x` writes: the same placements.
+// `paver run` writes from the exported design alone: the design keeps the axis
+// (placement.cut_axis), so no --cut is needed to repeat it.
 TEST_F(StudioSession, AClosedSurfaceCutAcrossAnAxisExportsWhatTheCliWrites) {
   const fs::path exported = dir_ / "export", script = dir_ / "bead.txt";
   std::ofstream(script) << "open assets/surfaces/bead.obj\n"
@@ -683,13 +684,14 @@ TEST_F(StudioSession, AClosedSurfaceCutAcrossAnAxisExportsWhatTheCliWrites) {
   ASSERT_EQ(r.exit_code, 0) << describe(r);
   ASSERT_TRUE(fs::is_regular_file(exported / "placements.csv")) << describe(r);
   const fs::path cli_out = dir_ / "cli";
-  const Outcome cli = run_in_source(quote(PAVER_CLI) + " run assets/surfaces/bead.obj --cut x --design " +
+  const Outcome cli = run_in_source(quote(PAVER_CLI) + " run assets/surfaces/bead.obj --design " +
                                         quote((exported / "design.json").string()) +
                                         " --backend cpu --formats ply --out " + quote(cli_out.string()),
                                     dir_);
   ASSERT_EQ(cli.exit_code, 0) << describe(cli);
   EXPECT_TRUE(read_text(exported / "placements.csv") == read_text(cli_out / "placements.csv"))
-      << "placements.csv differs from paver run --cut x's";
+      << "placements.csv differs from paver run's on the exported design";
+  EXPECT_EQ(nlohmann::json::parse(read_text(exported / "design.json"))["placement"]["cut_axis"], "x");
   const nlohmann::json report = nlohmann::json::parse(read_text(exported / "report.json"));
   EXPECT_EQ(report["surface"]["cut_normal"], nlohmann::json::array({1.0, 0.0, 0.0})) << report["surface"].dump();
 }

@@ -79,7 +79,7 @@ void file_panel(Studio& s) {
   ImGui::TextDisabled("or drop a surface or a design .json on the window");
   if (doc.surface.map && is_atlas(*doc.surface.map)) {
     const char* axis_names[] = {"its longest axis", "x", "y", "z"};
-    int axis = int(s.ui.cut_axis);
+    int axis = int(s.doc.design.placement.cut_axis);
     if (ImGui::Combo("cut across", &axis, axis_names, 4)) set_cut_axis(s, CutAxis(axis));
     help_marker("A closed surface (a bead, a figurine) is paved as charts cut apart by a plane through its "
                 "centre, across this axis; stones are added across the seam where both sides leave room. "
