@@ -1,8 +1,10 @@
 #include "command_line.h"
 
+#include "core/closest_name.h"
 #include "core/printable.h"
 
 #include <cstdio>
+#include <sstream>
 
 namespace paver::app {
 
@@ -17,6 +19,22 @@ std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, cons
       bool known = false;
       for (const CLI::App* sub : app.get_subcommands({})) known = known || sub->get_name() == argv[1];
       if (!known) what = std::string("unknown command '") + argv[1] + "'";
+    }
+    // An unexpected flag that is a near miss of a real one: name the real one.
+    // CLI11: "The following argument(s) were not expected: 3 --lambdar".
+    const std::size_t listed = what.find("not expected: ");
+    if (listed != std::string::npos) {
+      std::vector<std::string> flags;
+      for (const CLI::App* command : app.get_subcommands())  // the one that was parsed
+        for (const CLI::Option* option : command->get_options())
+          for (const std::string& name : option->get_lnames()) flags.push_back("--" + name);
+      std::istringstream words(what.substr(listed + 14));
+      for (std::string word; words >> word;)
+        if (word.rfind("--", 0) == 0)
+          if (const std::optional<std::string> best = closest_name(word, flags)) {
+            what += " (did you mean " + *best + "?)";
+            break;
+          }
     }
     std::fprintf(stderr, "%s: error: %s (usage: %s; see --help)\n", app.get_name().c_str(),
                  paver::printable(what).c_str(), usage.c_str());

@@ -1,6 +1,7 @@
 #include "io/design_io.h"
 
 #include "io/atomic_file.h"
+#include "core/closest_name.h"
 #include "core/input_error.h"
 
 #include <nlohmann/json.hpp>
@@ -42,26 +43,6 @@ std::string join(const std::string& path, std::string_view key) {
 
 std::string indexed(const std::string& path, size_t index) { return path + "[" + std::to_string(index) + "]"; }
 
-std::string lowercase(std::string_view text) {
-  std::string out(text);
-  for (char& c : out) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
-
-// Levenshtein distance, for "did you mean" suggestions on misspelt keys.
-size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<size_t> previous(b.size() + 1), current(b.size() + 1);
-  for (size_t j = 0; j <= b.size(); ++j) previous[j] = j;
-  for (size_t i = 1; i <= a.size(); ++i) {
-    current[0] = i;
-    for (size_t j = 1; j <= b.size(); ++j) {
-      const size_t substitution = previous[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
-      current[j] = std::min({previous[j] + 1, current[j - 1] + 1, substitution});
-    }
-    std::swap(previous, current);
-  }
-  return previous[b.size()];
-}
 
 // Reads design.json values into Design fields. Every error names the source and the full key
 // path ("pattern.operators[2].offset") so the user can find the line to fix.
@@ -315,18 +296,8 @@ private:
   // " (did you mean 'pattern.spacing'?)" when a known key is a likely misspelling of `key`.
   template <class Known>
   static std::string suggestion(const std::string& key, const std::string& path, const Known& known) {
-    const std::string lower = lowercase(key);
-    std::string_view best;
-    size_t best_distance = 3;  // suggest only within edit distance 2
-    for (std::string_view candidate : known) {
-      const size_t distance = edit_distance(lower, lowercase(candidate));
-      // A one-letter key such as "c" is within distance 1 of any other letter; that is no hint.
-      if (distance < best_distance && distance < candidate.size()) {
-        best = candidate;
-        best_distance = distance;
-      }
-    }
-    if (!best.empty()) return " (did you mean '" + join(path, best) + "'?)";
+    if (const std::optional<std::string> best = closest_name(key, known))
+      return " (did you mean '" + join(path, *best) + "'?)";
     std::string list;
     for (std::string_view candidate : known) list += (list.empty() ? "" : ", ") + std::string(candidate);
     return "; known keys here: " + list;

@@ -753,6 +753,12 @@ TEST_F(PaverRunErrors, UnknownFlag) {
   expect_input_error(r, out, {"paver: error:", "--frobnicate"});
 }
 
+TEST_F(PaverRunErrors, AMisspeltFlagGetsTheRealOne) {
+  const fs::path out = dir() / "out";
+  expect_input_error(paver({"run", "assets/surfaces/dome.obj", "--lambdar", "3", "--out", out.string()}), out,
+                     {"--lambdar", "(did you mean --lambda-r?)"});
+}
+
 TEST_F(PaverRunErrors, UnknownCommandIsNamed) {
   const CliResult r = paver({"bogus"});
   EXPECT_EQ(r.exit_code, 2) << describe(r);
