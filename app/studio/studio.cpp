@@ -364,6 +364,7 @@ void export_outputs(Studio& s, const fs::path& folder) {
                      s.doc.design.pattern.spacing <= 0};
   write_run_outputs(folder, info, *s.doc.surface.map, pavement, timings,
                     {.custom = custom_shape(s.doc), .formats = kStudioExportFormats});
+  s.ui.export_dir = folder.string();  // the File panel shows where the files went (a script's export too)
   report_status(s.doc, "exported to " + folder.string());
 }
 

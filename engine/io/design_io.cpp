@@ -3,6 +3,7 @@
 #include "io/atomic_file.h"
 #include "core/closest_name.h"
 #include "core/input_error.h"
+#include "pattern/unit_cell.h"
 
 #include <nlohmann/json.hpp>
 
@@ -13,6 +14,7 @@
 #include <cstdint>
 #include <fstream>
 #include <initializer_list>
+#include <optional>
 #include <sstream>
 #include <string_view>
 #include <system_error>
@@ -133,6 +135,12 @@ public:
   }
 
   void read(const json& value, const std::string& path, Tessellation& out) const {
+    // The command line's long names ("triangle", "square", "hexagon") are read here too.
+    if (value.is_string())
+      if (const std::optional<Tessellation> t = tessellation_from_name(value.get<std::string>())) {
+        out = *t;
+        return;
+      }
     read_name(value, path, out, kTessellations, tessellation_name);
   }
   void read(const json& value, const std::string& path, Topology& out) const {

@@ -288,8 +288,15 @@ TEST(DesignIo, PairsNeedTwoEntries) {
 }
 
 TEST(DesignIo, NamesMustBeKnown) {
-  const std::string message = json_error(R"({"version": 1, "pattern": {"tessellation": "square"}})");
-  EXPECT_TRUE(contains(message, "'pattern.tessellation' must be one of \"tri\", \"grid\", \"hex\", got \"square\""));
+  const std::string message = json_error(R"({"version": 1, "pattern": {"tessellation": "pentagon"}})");
+  EXPECT_TRUE(contains(message, "'pattern.tessellation' must be one of \"tri\", \"grid\", \"hex\", got \"pentagon\""));
+  // The command line's long names are read as well (written back short).
+  EXPECT_EQ(design_from_json(json::parse(R"({"version": 2, "pattern": {"tessellation": "hexagon"}})"), "d.json")
+                .pattern.tessellation,
+            Tessellation::Hexagon);
+  EXPECT_EQ(design_from_json(json::parse(R"({"version": 2, "pattern": {"tessellation": "square"}})"), "d.json")
+                .pattern.tessellation,
+            Tessellation::Grid);
   EXPECT_TRUE(contains(json_error(R"({"version": 1, "pattern": {"operators": [{"op": "split"}]}})"),
                        "'pattern.operators[0].op' must be one of \"flip\", \"add\", \"remove\""));
   EXPECT_TRUE(contains(json_error(R"({"version": 1, "elements": {"vertex": {"shape": "cube"}}})"),
