@@ -183,7 +183,9 @@ int run_run(const RunArgs& args) {
   if (!args.subtract && args.thickness) throw InputError("--thickness is the metal's for --subtract: add --subtract");
   if (args.subtract) {
     if (!args.thickness) throw InputError("--subtract needs --thickness T: how thick the metal is, surface units");
-    const double thickness = finite_positive("--thickness", *args.thickness, "the metal's thickness, surface units");
+    // Checked in every build, so that a bad value says so before "this build has no CGAL".
+    [[maybe_unused]] const double thickness =
+        finite_positive("--thickness", *args.thickness, "the metal's thickness, surface units");
 #ifdef PAVER_WITH_CGAL
     request.extra_outputs.insert(request.extra_outputs.end(), {out / "cut.stl", out / "cut.3mf"});
     if (args.png) request.extra_outputs.push_back(out / "cut.png");
