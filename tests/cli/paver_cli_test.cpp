@@ -419,20 +419,21 @@ TEST_F(PaverRun, KeepsTheUsersFilesInTheOutputFolder) {
   const fs::path out = dir() / "out";
   fs::create_directories(out);
   write_file_text(out / "preview.png", "my photo");
-  write_file_text(out / "cut.stl", "my seats");
+  write_file_text(out / "elements.obj", "my scan");
   const CliResult run = paver({"run", "assets/surfaces/dome.obj", "--spacing", "6", "--formats", "ply", "--out",
                                out.string()});
   ASSERT_EQ(run.exit_code, 0) << describe(run);
   EXPECT_TRUE(fs::exists(out / "report.json"));
   EXPECT_EQ(read_file_text(out / "preview.png"), "my photo");
-  EXPECT_EQ(read_file_text(out / "cut.stl"), "my seats");
+  EXPECT_EQ(read_file_text(out / "elements.obj"), "my scan");
 
+  // A run that would write elements.obj over the user's is refused before any work.
   const std::string report = read_file_text(out / "report.json");
-  const CliResult png = paver({"run", "assets/surfaces/dome.obj", "--spacing", "6", "--formats", "ply", "--png",
-                               "--out", out.string()});
-  EXPECT_EQ(png.exit_code, 2) << describe(png);
-  EXPECT_NE(png.err.find("preview.png: exists and no earlier paver run wrote it"), std::string::npos) << describe(png);
-  EXPECT_EQ(read_file_text(out / "preview.png"), "my photo");
+  const CliResult obj = paver({"run", "assets/surfaces/dome.obj", "--spacing", "6", "--formats", "obj", "--out",
+                               out.string()});
+  EXPECT_EQ(obj.exit_code, 2) << describe(obj);
+  EXPECT_NE(obj.err.find("elements.obj: exists and no earlier paver run wrote it"), std::string::npos) << describe(obj);
+  EXPECT_EQ(read_file_text(out / "elements.obj"), "my scan");
   EXPECT_EQ(read_file_text(out / "report.json"), report) << "a refused run replaced the results";
 }
 
