@@ -121,34 +121,36 @@ std::string describe_element(const Design& design, const Pavement& pavement, int
   return text;
 }
 
+namespace {
+
+std::unordered_set<int> pinned_particles(const Design& design) {
+  std::unordered_set<int> pinned;
+  for (const MovedParticle& m : design.edits.moved)
+    if (m.pinned) pinned.insert(m.id);
+  return pinned;
+}
+
+// The one rule: the designer's own, or every particle carrying it pinned.
+bool holds(const std::unordered_set<int>& pinned, const Pavement& pavement, std::size_t index) {
+  if (pavement.elements.id[index] >= kFirstAddedId) return true;
+  const std::vector<int> particles = pattern_particles(pavement, index);
+  return !particles.empty() &&
+         std::all_of(particles.begin(), particles.end(), [&](int particle) { return pinned.count(particle) > 0; });
+}
+
+}  // namespace
+
 bool is_pinned(const Design& design, const Pavement& pavement, int id) {
   if (id >= kFirstAddedId) return true;
   const std::optional<std::size_t> index = find_element(pavement, id);
-  if (!index) return false;
-  const std::vector<int> particles = pattern_particles(pavement, *index);
-  return !particles.empty() && std::all_of(particles.begin(), particles.end(), [&](int particle) {
-    return std::any_of(design.edits.moved.begin(), design.edits.moved.end(),
-                       [&](const MovedParticle& m) { return m.id == particle && m.pinned; });
-  });
+  return index && holds(pinned_particles(design), pavement, *index);
 }
 
 std::vector<std::size_t> held_elements(const Design& design, const Pavement& pavement) {
-  std::unordered_set<int> pinned_particles;
-  for (const MovedParticle& m : design.edits.moved)
-    if (m.pinned) pinned_particles.insert(m.id);
+  const std::unordered_set<int> pinned = pinned_particles(design);
   std::vector<std::size_t> held;
-  const Elements& e = pavement.elements;
-  for (std::size_t i = 0; i < e.size(); ++i) {
-    if (e.id[i] >= kFirstAddedId) {
-      held.push_back(i);
-      continue;
-    }
-    if (pinned_particles.empty()) continue;
-    const std::vector<int> particles = pattern_particles(pavement, i);
-    if (!particles.empty() && std::all_of(particles.begin(), particles.end(),
-                                          [&](int particle) { return pinned_particles.count(particle) > 0; }))
-      held.push_back(i);
-  }
+  for (std::size_t i = 0; i < pavement.elements.size(); ++i)
+    if (holds(pinned, pavement, i)) held.push_back(i);
   return held;
 }
 

@@ -129,10 +129,11 @@ OutputSet::~OutputSet() {
 
 void OutputSet::publish(const std::string& last) {
   std::error_code ec;
+  // The staged files, listed once: the manifest names them, the one-by-one path moves them.
+  std::vector<std::string> staged;
+  for (const auto& entry : fs::directory_iterator(staging_)) staged.push_back(entry.path().filename().string());
+  std::sort(staged.begin(), staged.end());
   {
-    std::vector<std::string> staged;
-    for (const auto& entry : fs::directory_iterator(staging_)) staged.push_back(entry.path().filename().string());
-    std::sort(staged.begin(), staged.end());
     std::ofstream manifest(staging_ / kManifest);
     for (const std::string& name : staged) manifest << name << "\n";
     if (!manifest.flush()) throw InputError("cannot write " + (staging_ / kManifest).string());
@@ -151,13 +152,10 @@ void OutputSet::publish(const std::string& last) {
     fs::remove_all(staging_, ec);  // the previous run's set, swapped out
     return;
   }
-  // One by one: everything but the manifest and `last`, then the previous run's files this run did
-  // not write, then the manifest, then `last`.
-  std::vector<std::string> staged;
-  for (const auto& entry : fs::directory_iterator(staging_)) staged.push_back(entry.path().filename().string());
-  std::sort(staged.begin(), staged.end());
+  // One by one: everything but `last`, then the previous run's files this run did not write, then
+  // the manifest, then `last`.
   for (const std::string& name : staged)
-    if (name != last && name != kManifest) move_file(staging_ / name, folder_ / name);
+    if (name != last) move_file(staging_ / name, folder_ / name);
   for (const std::string& name : previous_)
     if (!listed(staged, name)) fs::remove(folder_ / name, ec);
   move_file(staging_ / kManifest, folder_ / kManifest);
