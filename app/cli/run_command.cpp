@@ -308,7 +308,7 @@ int run_run(const RunArgs& args) {
     if (row.carat_each) std::printf(", %.3g ct each, %.3f ct", *row.carat_each, row.carat_total);
     std::printf("\n");
   }
-  if (bill.carat_total > 0) std::printf("stones   total %ld, %.3f ct (stones.csv)\n", bill.count, bill.carat_total);
+  if (bill.weighed()) std::printf("stones   total %ld, %.3f ct (stones.csv)\n", bill.count, bill.carat_total);
   if (pavement.design.elements.beads.enabled) {
     const nlohmann::json beads = beads_json(pavement);
     std::printf("beads    %zu shared prongs of %.2f to %.2f mm, between every three stones in contact%s\n",

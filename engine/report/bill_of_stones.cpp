@@ -31,9 +31,9 @@ std::string shortest(double value) {
   return text;
 }
 
-// Carats as the trade writes them: a stone's weight to 4 significant digits (melee weighs
-// thousandths of a carat), totals to 0.0001 ct. Printing every digit of the float gave rows like
-// 0.436752375.
+}  // namespace
+
+// Printing every digit of the float gave rows like 0.436752375.
 std::string carat_each_text(double carats) {
   char text[32];
   std::snprintf(text, sizeof text, "%.4g", carats);
@@ -45,7 +45,9 @@ std::string carat_total_text(double carats) {
   return text;
 }
 
-}  // namespace
+bool BillOfStones::weighed() const {
+  return std::any_of(rows.begin(), rows.end(), [](const StoneRow& r) { return r.carat_each.has_value(); });
+}
 
 double round_brilliant_carat(double d) {
   if (d >= kSieveChart.front().first && d <= kSieveChart.back().first) {
@@ -88,9 +90,7 @@ void write_stones_csv(const std::filesystem::path& path, const BillOfStones& bil
     else text += ",";
     text += "\n";
   }
-  // Carats only where some row has them (a design of beads or custom shapes has none).
-  const bool has_carats = std::any_of(bill.rows.begin(), bill.rows.end(), [](const StoneRow& r) { return bool(r.carat_each); });
-  text += "total,," + std::to_string(bill.count) + ",," + (has_carats ? carat_total_text(bill.carat_total) : "") + "\n";
+  text += "total,," + std::to_string(bill.count) + ",," + (bill.weighed() ? carat_total_text(bill.carat_total) : "") + "\n";
   write_text_atomically(path, text);
 }
 
@@ -105,7 +105,7 @@ nlohmann::json to_json(const BillOfStones& bill) {
   return {{"units", units_name(bill.units)},
           {"rows", std::move(rows)},
           {"count", bill.count},
-          {"carat_total", bill.carat_total},
+          {"carat_total", bill.weighed() ? nlohmann::json(bill.carat_total) : nlohmann::json(nullptr)},
           {"carat_rule", "round brilliants (gem): melee sieve chart 0.75-3.65 mm, d^2 x depth x 0.0061 outside it "
                          "(docs/stones.md)"}};
 }

@@ -27,7 +27,16 @@ struct BillOfStones {
   std::vector<StoneRow> rows;         // by shape, then by diameter
   long count = 0;
   double carat_total = 0;
+
+  // Whether any row is weighed: a bill of spheres, discs or custom shapes has no total carats
+  // (a "0 ct" would read as weightless stones).
+  bool weighed() const;
 };
+
+// Carats as the trade writes them, in stones.csv, report.html and the studio alike: a stone's
+// weight to 4 significant digits (melee weighs thousandths of a carat), totals to 0.0001 ct.
+std::string carat_each_text(double carats);
+std::string carat_total_text(double carats);
 
 // Groups `elements` by shape and diameter (converted to mm from `units`, rounded to 0.01 mm).
 BillOfStones bill_of_stones(const Elements& elements, Units units);

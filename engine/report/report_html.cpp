@@ -1,5 +1,7 @@
 #include "report/report_html.h"
 
+#include "report/bill_of_stones.h"
+
 #include "io/atomic_file.h"
 
 #include <nlohmann/json.hpp>
@@ -45,6 +47,11 @@ std::string fixed(const json& value, int decimals) {
   char buffer[48];
   std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value.get<double>());
   return buffer;
+}
+
+// As stones.csv writes them (bill_of_stones.h); a dash where a stone is not weighed.
+std::string carats(const json& value, std::string (*text)(double)) {
+  return value.is_number() ? text(value.get<double>()) : "&ndash;";
 }
 
 const json& at(const json& object, const char* key) {
@@ -119,9 +126,9 @@ std::string report_html(const json& report, const std::string& preview_png) {
   if (at(stones, "rows").is_array())
     for (const json& r : at(stones, "rows"))
       row(html, {text_of(at(r, "shape")), fixed(at(r, "diameter_mm"), 2), text_of(at(r, "count")),
-                 fixed(at(r, "carat_each"), 4), fixed(at(r, "carat_total"), 3)});
+                 carats(at(r, "carat_each"), carat_each_text), carats(at(r, "carat_each").is_number() ? at(r, "carat_total") : json(), carat_total_text)});
   row(html, {"<b>total</b>", "", "<b>" + text_of(at(stones, "count")) + "</b>", "",
-             "<b>" + fixed(at(stones, "carat_total"), 3) + "</b>"});
+             "<b>" + carats(at(stones, "carat_total"), carat_total_text) + "</b>"});
   html += "</table>\n<p><small>" + text_of(at(stones, "carat_rule")) + "</small></p>\n";
 
   const json& beads = at(report, "beads");

@@ -4,6 +4,7 @@
 #include "panels.h"
 
 #include "elements/contact_rule.h"
+#include "core/number_text.h"
 #include "report/bill_of_stones.h"
 
 #include "../studio.h"
@@ -76,9 +77,10 @@ void bill_table(const Pavement& p, const BillOfStones& bill) {
       ImGui::TableNextColumn();
       ImGui::Text("%ld", row.count);
       ImGui::TableNextColumn();
-      if (row.carat_each) ImGui::Text("%.4f", *row.carat_each); else ImGui::TextUnformatted("-");
+      // As stones.csv writes them.
+      ImGui::TextUnformatted(row.carat_each ? carat_each_text(*row.carat_each).c_str() : "-");
       ImGui::TableNextColumn();
-      if (row.carat_each) ImGui::Text("%.3f", row.carat_total); else ImGui::TextUnformatted("-");
+      ImGui::TextUnformatted(row.carat_each ? carat_total_text(row.carat_total).c_str() : "-");
     }
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
@@ -88,7 +90,7 @@ void bill_table(const Pavement& p, const BillOfStones& bill) {
     ImGui::Text("%ld", bill.count);
     ImGui::TableNextColumn();
     ImGui::TableNextColumn();
-    ImGui::Text("%.3f", bill.carat_total);
+    ImGui::TextUnformatted(bill.weighed() ? carat_total_text(bill.carat_total).c_str() : "-");
     ImGui::EndTable();
   }
   if (p.design.elements.beads.enabled) ImGui::Text("beads (shared prongs): %zu", p.beads.size());
@@ -116,17 +118,20 @@ void report_panel(const Studio& s) {
   }
   help_marker("Ok when no pair of elements is closer than the sum of their radii plus the gap (checked over "
               "all pairs), none crosses the surface's edge, the pattern is not torn and not mostly bare.");
-  ImGui::TextWrapped("contact: %ld violations; the closest pair has %.3g free between them (surface units; the gap "
-                     "asks for %.3g)",
-                     p.after.contact_violations, p.after.min_clearance, p.design.elements.gap);
-  ImGui::TextWrapped("%zu elements: %ld V, %ld E; %d filled, %d eliminated at the boundary", p.elements.size(),
-              p.after.vertex_elements, p.after.edge_elements, p.filled, p.eliminated);
+  // Short unwrapped lines: ImGui wraps after a '.', which split numbers ("0." / "000736").
+  ImGui::Text("contact: %s", count_text(p.after.contact_violations, "violation", "violations").c_str());
+  const std::string unit(units_name(p.design.units));
+  ImGui::Text("closest pair: %.3g %s free (gap %.3g)", p.after.min_clearance, unit.c_str(), p.design.elements.gap);
+  ImGui::Text("%zu elements: %ld V, %ld E", p.elements.size(), p.after.vertex_elements, p.after.edge_elements);
+  ImGui::Text("%d filled, %d eliminated at the boundary", p.filled, p.eliminated);
   ImGui::Text("pattern: %d points, %d edges; D = %.4g", p.pattern.point_count(), p.pattern.edge_count(),
               p.design.pattern.spacing);
-  ImGui::TextWrapped("solver: %d iterations, %s (last max step %.3g), %d pull-backs", p.solve.iterations,
-              std::string(stop_reason_name(p.solve.reason)).c_str(), p.solve.last_max_step, p.solve.strays_pulled_back);
-  ImGui::TextWrapped("contacts: %d rounds, %d springs, %d iterations, %d removed", p.resolution.rounds,
-              p.resolution.contact_springs, p.resolution.solver_iterations, p.resolution.removed);
+  ImGui::Text("solver: %d iterations, %s", p.solve.iterations, std::string(stop_reason_name(p.solve.reason)).c_str());
+  ImGui::Text("last max step %.3g, %d pull-backs", p.solve.last_max_step, p.solve.strays_pulled_back);
+  ImGui::Text("contacts: %s, %s", count_text(p.resolution.rounds, "round", "rounds").c_str(),
+              count_text(p.resolution.contact_springs, "spring", "springs").c_str());
+  ImGui::Text("%s, %d removed", count_text(p.resolution.solver_iterations, "iteration", "iterations").c_str(),
+              p.resolution.removed);
   ImGui::Text("run %.0f ms (solver %.0f ms)", r.run_ms, p.solve.milliseconds);
   if (r.latency_ms >= 0)
     ImGui::Text("edit to result on screen: %.0f ms", r.latency_ms);

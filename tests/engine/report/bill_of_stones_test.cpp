@@ -76,6 +76,19 @@ TEST_F(BillOfStonesFile, CsvHasOneRowPerSizeAndATotal) {
   EXPECT_EQ(json["count"], 3);
   EXPECT_EQ(json["rows"][1]["carat_each"], nullptr);
   EXPECT_EQ(json["units"], "mm");
+  EXPECT_EQ(json["carat_total"], 0.027);
+}
+
+TEST_F(BillOfStonesFile, ABillWithoutGemsHasNoTotalCarats) {
+  const BillOfStones bill = bill_of_stones(stones({{2.0, ShapeKind::Disc}, {1.0, ShapeKind::Sphere}}), Units::Millimetre);
+  EXPECT_FALSE(bill.weighed());
+  write_stones_csv((dir_ / "stones.csv"), bill);
+  std::ifstream in((dir_ / "stones.csv"));
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_EQ(text.str(), "shape,diameter_mm,count,carat_each,carat_total\nsphere,1,1,,\ndisc,2,1,,\ntotal,,2,,\n");
+  // Not 0 ct: a reader of report.json would take that for weightless stones.
+  EXPECT_EQ(to_json(bill)["carat_total"], nullptr);
 }
 
 }  // namespace
