@@ -518,8 +518,28 @@ Design load_design(const std::filesystem::path& path, std::vector<std::string>* 
   return design;
 }
 
+namespace {
+// The custom shape as the saved file should name it: relative to the file's folder when the shape
+// is near it (in it, below it, or up to two folders above: one project that travels as a whole,
+// and load_design reads a relative path so), otherwise absolute as it is.
+std::string custom_shape_as_saved(const std::filesystem::path& design_path, const std::string& shape) {
+  namespace fs = std::filesystem;
+  if (shape.empty() || !fs::path(shape).is_absolute()) return shape;
+  std::error_code error;
+  const fs::path folder = fs::absolute(design_path, error).parent_path().lexically_normal();
+  if (error) return shape;
+  const fs::path relative = fs::path(shape).lexically_normal().lexically_relative(folder);
+  if (relative.empty()) return shape;
+  int ups = 0;
+  for (const fs::path& part : relative) ups += part == "..";
+  return ups <= 2 ? relative.generic_string() : shape;
+}
+}  // namespace
+
 void save_design(const std::filesystem::path& path, const Design& design) {
-  write_text_atomically(path, to_json<nlohmann::ordered_json>(design).dump(2) + "\n");
+  Design saved = design;
+  saved.elements.custom_shape = custom_shape_as_saved(path, design.elements.custom_shape);
+  write_text_atomically(path, to_json<nlohmann::ordered_json>(saved).dump(2) + "\n");
 }
 
 }  // namespace paver

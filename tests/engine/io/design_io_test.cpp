@@ -496,6 +496,28 @@ TEST_F(DesignIoFile, RelativeCustomShapeIsResolvedAgainstTheDesignFolder) {
   EXPECT_EQ(load_design(absolute_path).elements.custom_shape, "/opt/gem.obj");
 }
 
+TEST_F(DesignIoFile, ACustomShapeNearTheSavedFileIsSavedRelativeToIt) {
+  Design design;
+  design.elements.vertex.shape = ShapeKind::Custom;
+  const fs::path root = fs::absolute(dir_);
+  const auto saved_shape = [&](const fs::path& design_path, const fs::path& shape) {
+    design.elements.custom_shape = shape.string();
+    fs::create_directories(design_path.parent_path());
+    save_design(design_path, design);
+    const std::string shape_text = json::parse(read(design_path))["elements"]["custom_shape"];
+    // Whatever is written, loading gives the same shape back.
+    EXPECT_EQ(fs::path(load_design(design_path).elements.custom_shape).lexically_normal(), shape.lexically_normal());
+    return shape_text;
+  };
+  // A project saved beside its shapes, or an output folder beside them: the tree travels whole.
+  EXPECT_EQ(saved_shape(root / "project" / "design.json", root / "project" / "shapes" / "star.obj"), "shapes/star.obj");
+  EXPECT_EQ(saved_shape(root / "project" / "out" / "design.json", root / "project" / "shapes" / "star.obj"),
+            "../shapes/star.obj");
+  // Far away (here: three folders up and down again): the absolute path is kept.
+  const fs::path far = root / "a" / "b" / "c" / "design.json";
+  EXPECT_EQ(saved_shape(far, root / "x" / "star.obj"), (root / "x" / "star.obj").string());
+}
+
 TEST_F(DesignIoFile, SaveThenLoadGivesTheSameDesign) {
   const Design original = non_default_design();
   const fs::path path = dir_ / "saved.json";
