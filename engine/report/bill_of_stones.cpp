@@ -14,15 +14,18 @@
 namespace paver {
 namespace {
 
-// Melee sieve chart for round brilliant diamonds (diamondconsultants.in, "Sieve Chart"): the
-// middle of each sieve's millimetre range and its weight per stone in carats.
-constexpr std::array<std::pair<double, double>, 34> kSieveChart = {{
+// Weight per stone of round brilliant diamonds, in carats, by girdle diameter (diamondconsultants.in,
+// "Sieve Chart"): the middle of each melee sieve's millimetre range (0.70-0.80 mm up to
+// 3.60-3.70 mm), then the sizes the same chart lists for single stones (0.20 ct 3.8 mm to 1.00 ct
+// 6.5 mm).
+constexpr std::array<std::pair<double, double>, 41> kCaratChart = {{
     {0.75, 0.0033}, {0.85, 0.004}, {1.00, 0.005}, {1.125, 0.006}, {1.175, 0.007}, {1.225, 0.008},
     {1.275, 0.009}, {1.325, 0.010}, {1.375, 0.011}, {1.425, 0.012}, {1.475, 0.013}, {1.525, 0.014},
     {1.575, 0.016}, {1.65, 0.018}, {1.75, 0.021}, {1.85, 0.025}, {1.95, 0.029}, {2.05, 0.035},
     {2.15, 0.039}, {2.25, 0.044}, {2.35, 0.052}, {2.45, 0.058}, {2.55, 0.069}, {2.65, 0.074},
     {2.75, 0.078}, {2.85, 0.086}, {2.95, 0.095}, {3.05, 0.108}, {3.15, 0.116}, {3.25, 0.125},
-    {3.35, 0.135}, {3.45, 0.146}, {3.55, 0.159}, {3.65, 0.175},
+    {3.35, 0.135}, {3.45, 0.146}, {3.55, 0.159}, {3.65, 0.175}, {3.8, 0.20},   {4.1, 0.25},
+    {4.5, 0.33},    {4.8, 0.40},  {5.2, 0.50},   {5.8, 0.75},   {6.5, 1.00},
 }};
 
 std::string shortest(double value) {
@@ -50,15 +53,19 @@ bool BillOfStones::weighed() const {
 }
 
 double round_brilliant_carat(double d) {
-  if (d >= kSieveChart.front().first && d <= kSieveChart.back().first) {
-    const auto upper = std::lower_bound(kSieveChart.begin(), kSieveChart.end(), d,
-                                        [](const auto& row, double size) { return row.first < size; });
-    if (upper->first == d || upper == kSieveChart.begin()) return upper->second;
-    const auto lower = upper - 1;
-    const double t = (d - lower->first) / (upper->first - lower->first);
-    return lower->second + t * (upper->second - lower->second);
-  }
-  return d * d * (kGemDepth * d) * 0.0061;
+  // Beyond the chart the weight goes with d^3 (the round brilliant rule d^2 x depth x 0.0061 with
+  // depth in proportion), scaled to meet the chart at its end: the rule itself is 2.1 times lighter
+  // than the chart at 0.75 mm, and a 0.74 mm stone weighed half a 0.75 mm one.
+  const auto& [first_d, first_ct] = kCaratChart.front();
+  const auto& [last_d, last_ct] = kCaratChart.back();
+  if (d < first_d) return first_ct * std::pow(d / first_d, 3);
+  if (d > last_d) return last_ct * std::pow(d / last_d, 3);
+  const auto upper = std::lower_bound(kCaratChart.begin(), kCaratChart.end(), d,
+                                      [](const auto& row, double size) { return row.first < size; });
+  if (upper->first == d || upper == kCaratChart.begin()) return upper->second;
+  const auto lower = upper - 1;
+  const double t = (d - lower->first) / (upper->first - lower->first);
+  return lower->second + t * (upper->second - lower->second);
 }
 
 BillOfStones bill_of_stones(const Elements& elements, Units units) {
@@ -106,8 +113,8 @@ nlohmann::json to_json(const BillOfStones& bill) {
           {"rows", std::move(rows)},
           {"count", bill.count},
           {"carat_total", bill.weighed() ? nlohmann::json(bill.carat_total) : nlohmann::json(nullptr)},
-          {"carat_rule", "round brilliants (gem): melee sieve chart 0.75-3.65 mm, d^2 x depth x 0.0061 outside it "
-                         "(docs/stones.md)"}};
+          {"carat_rule", "round brilliant diamonds (gem): the trade's chart by diameter from 0.75 to 6.5 mm "
+                         "(diamondconsultants.in sieve chart), in proportion to the diameter cubed beyond it"}};
 }
 
 }  // namespace paver

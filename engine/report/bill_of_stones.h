@@ -41,9 +41,9 @@ std::string carat_total_text(double carats);
 // Groups `elements` by shape and diameter (converted to mm from `units`, rounded to 0.01 mm).
 BillOfStones bill_of_stones(const Elements& elements, Units units);
 
-// Weight of a diamond round brilliant of this girdle diameter, in carats: the trade's melee sieve
-// chart from 0.75 to 3.65 mm (interpolated between its sizes), the round brilliant formula
-// d^2 x depth x 0.0061 outside it, with Paver's gem depth (kGemDepth, 0.61 d). Sources in docs/stones.md.
+// Weight of a diamond round brilliant of this girdle diameter, in carats: the trade's chart from
+// 0.75 to 6.5 mm (melee sieves, then single stones; interpolated between its sizes), and beyond it
+// in proportion to d^3 from the chart's end, so the weight never jumps. Sources in docs/stones.md.
 double round_brilliant_carat(double diameter_mm);
 
 // stones.csv: `shape,diameter_mm,count,carat_each,carat_total`, one row per shape and size, then

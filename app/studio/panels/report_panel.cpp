@@ -94,8 +94,8 @@ void bill_table(const Pavement& p, const BillOfStones& bill) {
     ImGui::EndTable();
   }
   if (p.design.elements.beads.enabled) ImGui::Text("beads (shared prongs): %zu", p.beads.size());
-  help_marker("Carats for round brilliants (gem): the melee sieve chart from 0.75 to 3.65 mm, the d^2 x depth "
-              "x 0.0061 rule outside it (docs/stones.md). Other shapes are counted, not weighed.");
+  help_marker("Carats for round brilliant diamonds (gem): the trade's chart from 0.75 to 6.5 mm, in proportion "
+              "to the diameter cubed beyond it (docs/stones.md). Other shapes are counted, not weighed.");
 }
 
 }  // namespace

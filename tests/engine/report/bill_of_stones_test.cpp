@@ -1,6 +1,7 @@
 // Tests for engine/report/bill_of_stones.cpp: stones grouped by shape and size in millimetres,
 // carats for round brilliants from the sieve chart inside it and the formula outside it, and the
 // file a jeweller orders from.
+#include <cmath>
 #include "report/bill_of_stones.h"
 
 #include "temp_folder.h"
@@ -42,22 +43,28 @@ TEST(BillOfStones, GroupsByShapeAndSizeInMillimetres) {
   EXPECT_DOUBLE_EQ(bill_of_stones(e, Units::Inch).rows[2].diameter_mm, 3.81);
 }
 
-TEST(BillOfStones, CaratsFollowTheSieveChartThenTheFormula) {
+TEST(BillOfStones, CaratsFollowTheTradeChartAndNeverJump) {
   EXPECT_DOUBLE_EQ(round_brilliant_carat(1.0), 0.005);    // chart sizes exactly
   EXPECT_DOUBLE_EQ(round_brilliant_carat(1.325), 0.010);
   EXPECT_NEAR(round_brilliant_carat(1.5), 0.0135, 1e-12);  // halfway between 1.475 and 1.525
-  // Outside the chart: d^2 x depth x 0.0061 with depth 0.61 d. A 6.5 mm stone is the trade's 1 ct.
-  EXPECT_NEAR(round_brilliant_carat(6.5), 6.5 * 6.5 * (0.61 * 6.5) * 0.0061, 1e-12);
-  EXPECT_NEAR(round_brilliant_carat(6.5), 1.0, 0.1);
-  EXPECT_NEAR(round_brilliant_carat(0.5), 0.5 * 0.5 * 0.305 * 0.0061, 1e-12);
-  // Melee: the chart weighs more than the formula, by the 10-35% the trade knows.
-  for (const double d : {1.0, 1.3, 1.5, 2.0, 3.0}) {
-    const double formula = d * d * (0.61 * d) * 0.0061;
-    EXPECT_GT(round_brilliant_carat(d) / formula, 1.0) << d;
-    EXPECT_LT(round_brilliant_carat(d) / formula, 1.45) << d;
+  EXPECT_DOUBLE_EQ(round_brilliant_carat(6.5), 1.0);       // the trade's 1 ct stone
+  EXPECT_DOUBLE_EQ(round_brilliant_carat(5.2), 0.5);
+  // Beyond the chart: in proportion to d^3 from its ends.
+  EXPECT_NEAR(round_brilliant_carat(0.5), 0.0033 * std::pow(0.5 / 0.75, 3), 1e-15);
+  EXPECT_NEAR(round_brilliant_carat(13.0), 8.0, 1e-12);
+  // Near the round brilliant estimate d^2 x 0.61 d x 0.0061 from 1.5 mm up (within 10%); heavier
+  // below, where melee is cut deeper.
+  for (double d = 1.5; d <= 12; d += 0.25) {
+    const double estimate = d * d * (0.61 * d) * 0.0061;
+    EXPECT_NEAR(round_brilliant_carat(d) / estimate, 1.0, 0.10) << d;
   }
-  // Monotone: a larger stone never weighs less.
-  for (double d = 0.5; d < 8; d += 0.01) EXPECT_LE(round_brilliant_carat(d), round_brilliant_carat(d + 0.01)) << d;
+  // Never a jump: 0.001 mm more weighs at most 1.5% more (a 0.74 mm stone weighed half a 0.75 mm
+  // one), and never less.
+  for (double d = 0.3; d < 10; d += 0.001) {
+    const double here = round_brilliant_carat(d), next = round_brilliant_carat(d + 0.001);
+    EXPECT_LE(here, next) << d;
+    EXPECT_LT(next / here, 1.015) << d;
+  }
 }
 
 class BillOfStonesFile : public test::TempFolderTest {};
