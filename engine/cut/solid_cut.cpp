@@ -58,12 +58,15 @@ MeshType to_cgal(const SurfaceMesh& m) {
   return out;
 }
 
-// The boolean's exact points as the files hold them (float32, as STL and 3MF store them):
-// corners that round to the same point become one vertex, a triangle left with two equal corners
-// goes, and so do two triangles left on the same three corners facing apart. The checks then run
-// on this, the solid that is written.
+// The boolean's exact points as the files hold them: corners that round to the same point become
+// one vertex, a triangle left with two equal corners goes, and so do two triangles left on the
+// same three corners facing apart. The checks then run on this, the solid that is written.
+// Rounded to a millionth of a unit first, then to float32: lib3mf writes 3MF coordinates with six
+// decimals, so two float32 corners a nanometre apart became one point in cut.3mf and left zero-area
+// triangles there (6 to 58 per jeweller's job) though cut.stl had none. A millionth is below
+// float32's own step beyond 8 units, and at most half of it below.
 SurfaceMesh from_cgal(const Mesh& m) {
-  const auto snap = [](const auto& c) { return float(CGAL::to_double(c)); };
+  const auto snap = [](const auto& c) { return float(std::round(CGAL::to_double(c) * 1e6) / 1e6); };
   SurfaceMesh out;
   std::map<std::array<float, 3>, int> welded;
   std::unordered_map<std::size_t, int> index;

@@ -69,6 +69,8 @@ TEST(PendantCut, EveryPointIsMetalExactlyWhereTheShellIsAndNoSeatIs) {
   const double thickness = 1;
   const CutSolid cut = cut_pavement(map, stones, {.cutter = CutterKind::Seat, .thickness = thickness});
   EXPECT_EQ(test::unpaired_edges(cut.mesh), 0u);
+  EXPECT_EQ(test::printed_3mf_problems(cut.mesh).merged_vertices, 0u) << "as cut.3mf prints it";
+  EXPECT_EQ(test::printed_3mf_problems(cut.mesh).zero_area_triangles, 0u);
   EXPECT_NEAR(test::signed_volume(cut.mesh), cut.volume, 1e-9 * cut.volume);
 
   const Mesh shell = to_mesh(thick_shell(map.mesh, map.normals, thickness));

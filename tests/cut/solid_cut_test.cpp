@@ -86,6 +86,8 @@ TEST(SolidCut, SeatsInAFlatPlateRemoveExactlyTheirVolumeWithinIt) {
   EXPECT_EQ(cut.cutters, 6);
   EXPECT_EQ(cut.united_cutters, 0);
   EXPECT_EQ(test::unpaired_edges(cut.mesh), 0u) << "closed, edge-manifold and consistently oriented";
+  EXPECT_EQ(test::printed_3mf_problems(cut.mesh).merged_vertices, 0u) << "as cut.3mf prints it";
+  EXPECT_EQ(test::printed_3mf_problems(cut.mesh).zero_area_triangles, 0u);
   EXPECT_NEAR(test::signed_volume(cut.mesh), cut.volume, 1e-6) << "the written mesh has the volume reported";
 }
 
@@ -113,6 +115,8 @@ TEST(SolidCut, AClosedBeadIsAHollowShellWithNoWallAtItsSeams) {
   EXPECT_GT(cut.volume, 0.5 * cut.shell_volume);
   EXPECT_EQ(cut.cutters, int(p.elements.size()));
   EXPECT_EQ(test::unpaired_edges(cut.mesh), 0u) << "closed, edge-manifold and consistently oriented";
+  EXPECT_EQ(test::printed_3mf_problems(cut.mesh).merged_vertices, 0u) << "as cut.3mf prints it";
+  EXPECT_EQ(test::printed_3mf_problems(cut.mesh).zero_area_triangles, 0u);
   EXPECT_NEAR(test::signed_volume(cut.mesh), cut.volume, 1e-6 * cut.volume);
 }
 
@@ -129,6 +133,8 @@ TEST(SolidCut, SpheresAsCuttersTakeOutTheirLowerHalf) {
   const double half_sphere = 0.5 * d * d * d * test::signed_volume(sphere);
   EXPECT_NEAR(cut.volume, 150.0 - 2 * half_sphere, 1e-6 * 150.0);
   EXPECT_EQ(test::unpaired_edges(cut.mesh), 0u);
+  EXPECT_EQ(test::printed_3mf_problems(cut.mesh).merged_vertices, 0u) << "as cut.3mf prints it";
+  EXPECT_EQ(test::printed_3mf_problems(cut.mesh).zero_area_triangles, 0u);
 }
 
 // Stones set closer than their seats' clearance: the touching seats are united before the cut, and
@@ -140,6 +146,8 @@ TEST(SolidCut, TouchingSeatsAreUnitedFirst) {
   const CutSolid cut = cut_pavement(plate, stones, {.cutter = CutterKind::Seat, .thickness = thickness});
   EXPECT_EQ(cut.united_cutters, 2);
   EXPECT_EQ(test::unpaired_edges(cut.mesh), 0u);
+  EXPECT_EQ(test::printed_3mf_problems(cut.mesh).merged_vertices, 0u) << "as cut.3mf prints it";
+  EXPECT_EQ(test::printed_3mf_problems(cut.mesh).zero_area_triangles, 0u);
   const std::vector<glm::dvec2> profile = seat_profile(cutter_reach_above(), cutter_reach_below(thickness, d));
   const double seat_in_plate = d * d * d * solid_of_revolution_volume(profile, kSeatSegments, -thickness / d, 0);
   EXPECT_LT(cut.volume, 100.0 - 2 * seat_in_plate);
@@ -165,6 +173,8 @@ TEST(SolidCut, BeadsJoinTheMetalWithTheirUpperHalves) {
   const double half_bead = 0.5 * bead * bead * bead * test::signed_volume(sphere);
   EXPECT_NEAR(cut.volume, 100.0 - seat_in_plate + 2 * half_bead, 1e-6 * 100);
   EXPECT_EQ(test::unpaired_edges(cut.mesh), 0u);
+  EXPECT_EQ(test::printed_3mf_problems(cut.mesh).merged_vertices, 0u) << "as cut.3mf prints it";
+  EXPECT_EQ(test::printed_3mf_problems(cut.mesh).zero_area_triangles, 0u);
 }
 
 TEST(SolidCut, AShellThatFoldsIntoItselfIsRefusedWithTheThickness) {
