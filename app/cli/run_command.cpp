@@ -95,7 +95,8 @@ int run_run(const RunArgs& args) {
   request.surface_path = args.surface;
   request.design_source = args.design.empty() ? "defaults" : args.design;
   request.design_path = args.design;
-  request.on_warning = [](const std::string& w) { std::cerr << "paver: warning: " << printable(w) << "\n"; };
+  const auto warn = [](const std::string& w) { std::cerr << "paver: warning: " << printable(w) << "\n"; };
+  request.on_warning = warn;
   Design& design = request.design;
   if (!args.design.empty()) {
     std::vector<std::string> notes;
@@ -202,6 +203,8 @@ int run_run(const RunArgs& args) {
       if (previews) previews->write_solid(folder / "cut.png", cut.mesh, r.map->mesh);
       timings.emplace_back("cut", watch.milliseconds());
       cut_summary = sections["cut"] = cut_json(cut, cutter, thickness, r.pavement.design.units);
+      const std::string stand_out = stones_stand_out_warning(cut, thickness, r.pavement.design.units);
+      if (!stand_out.empty()) warn(stand_out);  // the request has been handed to the pipeline
     };
 #else
     throw InputError("--subtract: this paver was built without CGAL (-DPAVER_WITH_CGAL=OFF); rebuild with it");
@@ -317,9 +320,10 @@ int run_run(const RunArgs& args) {
                 pavement.beads.size() == 0 ? " (none: no three stones touch; beads need a tri pattern)" : "");
   }
   if (!cut_summary.is_null()) {
-    std::printf("cut      %s cutters, metal %g thick: %.4g mm3 of %.4g mm3 left (%.4g removed), closed and manifold; "
+    const std::string unit(units_name(pavement.design.units));
+    std::printf("cut      %s cutters, metal %g %s thick: %.4g mm3 of %.4g mm3 left (%.4g removed), closed and manifold; "
                 "%s triangles\n",
-                cut_summary["cutter"].get<std::string>().c_str(), cut_summary["thickness"].get<double>(),
+                cut_summary["cutter"].get<std::string>().c_str(), cut_summary["thickness"].get<double>(), unit.c_str(),
                 cut_summary["volume_mm3"].get<double>(), cut_summary["shell_volume_mm3"].get<double>(),
                 cut_summary["removed_mm3"].get<double>(), std::to_string(cut_summary["triangles"].get<std::size_t>()).c_str());
     std::printf("metal   ");

@@ -48,7 +48,8 @@ void MetalCutter::start(std::shared_ptr<const SurfaceMap> map, std::shared_ptr<c
       std::snprintf(text, sizeof text, "wrote %s/cut.stl and cut.3mf: %d seats, metal %.4g mm3, %.2f g of 18k gold, "
                     "%.0f ms", folder.string().c_str(), cut.cutters, mm3,
                     metal_grams(cut.volume, pavement->design.units, jewellery_alloys()[1]), cut.milliseconds);
-      outcome = {true, text};
+      const std::string stand_out = stones_stand_out_warning(cut, thickness, pavement->design.units);
+      outcome = {true, stand_out.empty() ? std::string(text) : std::string(text) + "; warning: " + stand_out};
     } catch (const std::exception& e) {
       outcome = {false, std::string("cut metal: ") + e.what()};
     }

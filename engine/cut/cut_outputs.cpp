@@ -6,6 +6,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cstdio>
+
 namespace paver {
 
 std::string_view cutter_name(CutterKind kind) { return kind == CutterKind::Seat ? "seat" : "element"; }
@@ -28,8 +31,23 @@ nlohmann::json cut_json(const CutSolid& cut, CutterKind cutter, double thickness
           {"removed_mm3", (cut.shell_volume - cut.volume) * mm3},
           {"triangles", cut.mesh.triangles.size()},
           {"closed_manifold_oriented", true},
+          // Deeper than the metal is thick, the culets stand out of its back (the finger's side of a ring).
+          {"deepest_stone", cut.deepest_stone},
+          {"stones_stand_out_behind", std::max(0.0, cut.deepest_stone - thickness)},
           {"metal", metal_weights_json(cut.volume, units)},
           {"files", {"cut.stl", "cut.3mf"}}};
+}
+
+std::string stones_stand_out_warning(const CutSolid& cut, double thickness, Units units) {
+  if (cut.deepest_stone <= thickness) return {};
+  const std::string unit(units_name(units));
+  char text[320];
+  std::snprintf(text, sizeof text,
+                "the stones reach %.3g %s below the surface and the metal is %.3g %s thick: their culets stand out "
+                "of its back by up to %.3g %s; make the metal at least %.3g %s thick, or the stones smaller",
+                cut.deepest_stone, unit.c_str(), thickness, unit.c_str(), cut.deepest_stone - thickness, unit.c_str(),
+                cut.deepest_stone, unit.c_str());
+  return text;
 }
 
 }  // namespace paver

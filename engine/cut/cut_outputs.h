@@ -9,6 +9,7 @@
 
 #include <atomic>
 #include <filesystem>
+#include <string>
 
 namespace paver {
 
@@ -22,5 +23,9 @@ void write_cut_files(const std::filesystem::path& folder, const CutSolid& cut, c
 // report.json's `cut`: the cutter and thickness, counts, volumes in mm^3 and the metal's weight in
 // every alloy of report/metal_weight.h.
 nlohmann::json cut_json(const CutSolid& cut, CutterKind cutter, double thickness, Units units);
+
+// A warning when the stones reach deeper below the surface than the metal is thick (their culets
+// then stand out of its back: on a ring, against the finger); empty when they do not.
+std::string stones_stand_out_warning(const CutSolid& cut, double thickness, Units units);
 
 }  // namespace paver

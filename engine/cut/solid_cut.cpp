@@ -226,6 +226,8 @@ CutSolid cut_pavement(const SurfaceMap& map, const Elements& elements, const Cut
   double reach = 0;  // the farthest any cutter's point lies from its element's centre
   for (std::size_t i = 0; i < n; ++i) {
     const double d = elements.diameter[i];
+    for (const glm::vec3& v : shapes[elements.shape[i]].positions)
+      result.deepest_stone = std::max(result.deepest_stone, -double(v.z) * d);
     const SurfaceMesh unit = unit_cutter(options.cutter, shapes[elements.shape[i]], cutter_reach_above(),
                                          cutter_reach_below(options.thickness, d));
     for (const glm::dvec3& v : unit.positions) reach = std::max(reach, d * glm::length(v));

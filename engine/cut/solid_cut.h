@@ -30,6 +30,7 @@ struct CutSolid {
   int cutters = 0;
   int united_cutters = 0;       // cutters that touched another and were united with it first
   int beads = 0;                // beads joined to the metal
+  double deepest_stone = 0;     // how far the lowest stone reaches below the surface (a gem's culet), surface units
   double milliseconds = 0;
 };
 

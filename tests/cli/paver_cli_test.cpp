@@ -1266,7 +1266,8 @@ TEST_F(PaverRun, SubtractWritesTheMetalWithItsSeatsAsOneClosedSolid) {
   for (const json& row : cut["metal"])
     EXPECT_NEAR(row["grams"].get<double>(), volume / 1000 * row["density_g_cm3"].get<double>(), 1e-9);
   EXPECT_TRUE(fs::is_regular_file(out / "cut.3mf"));
-  EXPECT_NE(r.out.find("cut      seat cutters, metal 1 thick"), std::string::npos) << describe(r);
+  EXPECT_NE(r.out.find("cut      seat cutters, metal 1 mm thick"), std::string::npos) << describe(r);
+  EXPECT_EQ(r.err.find("culets stand out"), std::string::npos) << "1.5 mm stones are 0.66 mm deep: inside 1 mm of metal";
   EXPECT_NE(r.out.find("18k yellow gold (750)"), std::string::npos) << describe(r);
 
   const fs::path bad = dir() / "bad";

@@ -1,6 +1,7 @@
 // The subtractive solid (engine/cut): the shell, the seat cutter and the boolean, checked against
 // volumes worked out by hand and by an independent edge and volume count.
 #include "cut/seat_cutter.h"
+#include "cut/cut_outputs.h"
 #include "cut/solid_cut.h"
 #include "cut/thick_shell.h"
 
@@ -11,6 +12,7 @@
 #include "surface_maps.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <numbers>
@@ -89,6 +91,20 @@ TEST(SolidCut, SeatsInAFlatPlateRemoveExactlyTheirVolumeWithinIt) {
   EXPECT_EQ(test::printed_3mf_problems(cut.mesh).merged_vertices, 0u) << "as cut.3mf prints it";
   EXPECT_EQ(test::printed_3mf_problems(cut.mesh).zero_area_triangles, 0u);
   EXPECT_NEAR(test::signed_volume(cut.mesh), cut.volume, 1e-6) << "the written mesh has the volume reported";
+  // The gems' culets lie a pavilion and half a girdle below the surface: inside a 1 mm plate.
+  EXPECT_NEAR(cut.deepest_stone, (kGemPavilionDepth + kGemGirdleHalf) * d, 1e-6);
+  EXPECT_EQ(stones_stand_out_warning(cut, thickness, Units::Millimetre), "");
+}
+
+TEST(SolidCut, StonesDeeperThanTheMetalAreWarnedOf) {
+  const double d = 1.5, thin = 0.4;
+  const CutSolid cut = cut_pavement(flat_plate(10, 8), stones_on_plate({{5, 5}}, d, ShapeKind::Gem),
+                                    {.cutter = CutterKind::Seat, .thickness = thin});
+  const std::string warning = stones_stand_out_warning(cut, thin, Units::Millimetre);
+  // 0.66 mm deep in 0.4 mm of metal: the culet stands 0.26 mm out of the back.
+  EXPECT_NE(warning.find("reach 0.66 mm below the surface"), std::string::npos) << warning;
+  EXPECT_NE(warning.find("by up to 0.26 mm"), std::string::npos) << warning;
+  EXPECT_NEAR(cut_json(cut, CutterKind::Seat, thin, Units::Millimetre)["stones_stand_out_behind"].get<double>(), 0.44 * d - thin, 1e-6);
 }
 
 // A closed bead's metal is a hollow shell of the whole surface: thickened from the closed surface
