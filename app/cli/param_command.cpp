@@ -41,8 +41,7 @@ int run_param(const ParamArgs& args) {
       throw InputError("--out " + args.out + ": is a folder; paver param writes one map file: give its name, e.g. " +
                        (std::filesystem::path(args.out) / "uv.obj").string());
     refuse_overwriting_inputs({args.surface}, {args.out});
-    const std::filesystem::path folder = std::filesystem::path(args.out).parent_path();
-    check_output_folder(folder.empty() ? "." : folder);
+    check_output_file(args.out);
   }
   const Stopwatch load_watch;
   LoadedSurface loaded = load_surface(args.surface);

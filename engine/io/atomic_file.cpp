@@ -1,6 +1,7 @@
 #include "io/atomic_file.h"
 
 #include "core/input_error.h"
+#include "io/output_guard.h"
 
 #include <atomic>
 #include <fstream>
@@ -57,11 +58,8 @@ void remove_quietly(const std::filesystem::path& path) {
 
 void write_file_atomically_by_name(const std::filesystem::path& path,
                                    const std::function<void(const std::filesystem::path& temporary)>& write) {
-  if (path.filename().empty()) fail(path, "the path names a folder, not a file");
-  const std::filesystem::path folder = folder_of(path);
+  check_output_file(path);
   std::error_code ec;
-  if (!std::filesystem::is_directory(folder, ec))
-    fail(path, "the folder " + folder.string() + " does not exist (create it first)");
   const std::filesystem::path temporary = temporary_path_beside(path);
   try {
     write(temporary);

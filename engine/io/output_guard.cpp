@@ -4,6 +4,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <string>
 #include <system_error>
 
 #include <unistd.h>
@@ -41,6 +42,27 @@ void check_output_folder(const std::filesystem::path& folder) {
     refuse(existing == fs::absolute(folder, ec) ? "it is a file, not a folder"
                                                  : existing.string() + " is a file, not a folder");
   if (::access(existing.c_str(), W_OK | X_OK) != 0) refuse(existing.string() + " is not writable (" + std::strerror(errno) + ")");
+}
+
+void check_output_file(const std::filesystem::path& path) {
+  namespace fs = std::filesystem;
+  const auto refuse = [&](const std::string& why, const std::string& what_to_do) {
+    throw InputError("cannot write " + path.string() + ": " + why + "; " + what_to_do);
+  };
+  if (path.filename().empty() || path.filename() == "." || path.filename() == "..")
+    refuse("the path names a folder, not a file", "give the file's name");
+  std::error_code ec;
+  const fs::file_status status = fs::symlink_status(path, ec);
+  if (fs::exists(status)) {
+    if (fs::is_symlink(status)) refuse("it is a symbolic link", "write to the file it points to, or choose another name");
+    if (fs::is_directory(status)) refuse("it is a folder", "give a file's name");
+    if (!fs::is_regular_file(status))
+      refuse("it is not a regular file (a device, a pipe or a socket)", "choose another name");
+  }
+  const fs::path folder = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+  if (!fs::is_directory(folder, ec)) refuse("the folder " + folder.string() + " does not exist", "create it first");
+  if (::access(folder.c_str(), W_OK | X_OK) != 0)
+    refuse("the folder " + folder.string() + " is not writable (" + std::strerror(errno) + ")", "choose another folder");
 }
 
 void make_output_folder(const std::filesystem::path& folder) {

@@ -14,6 +14,13 @@ void refuse_overwriting_inputs(const std::vector<std::filesystem::path>& inputs,
 // naming the folder and the problem. Called before the expensive work.
 void check_output_folder(const std::filesystem::path& folder);
 
+// Checks, without writing anything, that one output file can be written at `path` by renaming a
+// new file over it: its folder exists and is writable, and `path` is a regular file or nothing. A
+// device, a pipe, a symbolic link or a folder there is refused (renaming over /dev/null made it a
+// regular file; over a link, it broke the link instead of writing where it points). Throws
+// InputError naming the path. Called before the expensive work, and again by the atomic writer.
+void check_output_file(const std::filesystem::path& path);
+
 // Creates the output folder (and parents); throws InputError naming it on failure.
 void make_output_folder(const std::filesystem::path& folder);
 

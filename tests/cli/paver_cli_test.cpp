@@ -3,6 +3,8 @@
 #include "cli_runner.h"
 
 #include <gtest/gtest.h>
+
+#include <sys/stat.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -777,6 +779,19 @@ TEST_F(PaverParam, AFolderAsOutIsRefusedBeforeTheMap) {
   EXPECT_NE(r.err.find("is a folder; paver param writes one map file"), std::string::npos) << describe(r);
   EXPECT_EQ(r.out.find("vertices"), std::string::npos) << "it loaded and mapped the surface first\n" << describe(r);
   EXPECT_TRUE(fs::is_empty(dir()));
+}
+
+TEST_F(PaverParam, APipeOrAMissingFolderAsOutIsRefusedBeforeTheMap) {
+  // Renaming the map over a device or a pipe replaced it (/dev/null became a regular file).
+  const fs::path pipe = dir() / "uv.obj";
+  ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
+  for (const fs::path& out : {pipe, dir() / "missing" / "uv.obj"}) {
+    const CliResult r = paver({"param", "assets/scanned/bunnyhead.obj", "--out", out.string()});
+    EXPECT_EQ(r.exit_code, 2) << describe(r);
+    EXPECT_NE(r.err.find("cannot write " + out.string()), std::string::npos) << describe(r);
+    EXPECT_EQ(r.out.find("vertices"), std::string::npos) << "it mapped the surface first\n" << describe(r);
+  }
+  EXPECT_TRUE(fs::is_fifo(pipe));
 }
 
 TEST_F(PaverParam, BunnyheadMapIsBijective) {

@@ -5,6 +5,8 @@
 // file is in the way.
 #include "io/output_guard.h"
 
+#include "io/atomic_file.h"
+
 #include "core/input_error.h"
 
 #include "input_error_assertions.h"
@@ -15,6 +17,7 @@
 #include <fstream>
 #include <string>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace paver {
@@ -115,6 +118,26 @@ TEST_F(OutputGuard, AFileInTheWayIsAnInputErrorNamingTheFolder) {
   const fs::path below = file / "run" / "out";
   EXPECT_TRUE(Contains(error_of([&] { make_output_folder(below); }), "cannot create the output folder " + below.string()));
   EXPECT_TRUE(fs::is_regular_file(file)) << "the file in the way is left alone";
+}
+
+TEST_F(OutputGuard, AnOutputFileMustBeARegularFileOrNothing) {
+  EXPECT_NO_THROW(check_output_file(folder_ / "uv.obj"));
+  EXPECT_NO_THROW(check_output_file(surface_)) << "a regular file may be replaced";
+  // A pipe, a link and a device are refused, not replaced: renaming over /dev/null made it a file.
+  const fs::path pipe = folder_ / "pipe.obj", link = folder_ / "link.obj";
+  ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
+  fs::create_symlink(surface_, link);
+  EXPECT_TRUE(Contains(error_of([&] { check_output_file(pipe); }), "not a regular file"));
+  EXPECT_TRUE(Contains(error_of([&] { check_output_file(link); }), "is a symbolic link"));
+  EXPECT_TRUE(Contains(error_of([&] { check_output_file("/dev/null"); }), "cannot write /dev/null: it is not a regular file"));
+  EXPECT_TRUE(Contains(error_of([&] { check_output_file(folder_); }), "it is a folder"));
+  EXPECT_TRUE(Contains(error_of([&] { check_output_file(folder_ / "no" / "uv.obj"); }), "does not exist; create it first"));
+  // The atomic writer checks the same before it writes anything.
+  EXPECT_TRUE(Contains(error_of([&] { write_text_atomically(pipe, "x"); }), "not a regular file"));
+  EXPECT_TRUE(fs::is_fifo(pipe));
+  EXPECT_TRUE(fs::is_symlink(link));
+  for (const auto& entry : fs::directory_iterator(folder_))
+    EXPECT_EQ(entry.path().filename().string().find(".tmp."), std::string::npos) << entry.path();
 }
 
 }  // namespace
