@@ -3,11 +3,14 @@
 #include "core/input_error.h"
 #include "io/output_guard.h"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <cstdint>
 #include <fstream>
 #include <string_view>
 #include <system_error>
@@ -34,6 +37,18 @@ bool listed(const std::vector<std::string>& names, const std::string& name) {
   return std::find(names.begin(), names.end(), name) != names.end();
 }
 
+// Whether `path` is a report.json that Paver wrote: a JSON object with its design and final quality
+// (every version before manifests wrote both). A user's own report.json, or any other file of that
+// name, is not: it made every file with an output's name count as an old run's.
+bool is_paver_report(const fs::path& path) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec) || fs::file_size(path, ec) > (std::uintmax_t(64) << 20)) return false;
+  std::ifstream in(path, std::ios::binary);
+  const nlohmann::json report = nlohmann::json::parse(in, nullptr, false);
+  return report.is_object() && report.contains("design") && report["design"].is_object() &&
+         report.contains("quality_after") && report["quality_after"].is_object();
+}
+
 // The files of `folder` that an earlier run published there (see output_set.h), among `known`.
 std::vector<std::string> previous_run_files(const fs::path& folder, const std::vector<std::string>& known) {
   std::vector<std::string> files;
@@ -44,7 +59,7 @@ std::vector<std::string> previous_run_files(const fs::path& folder, const std::v
       if (listed(known, name) && fs::exists(folder / name, ec)) files.push_back(name);
     return files;
   }
-  if (!fs::is_regular_file(folder / "report.json", ec)) return files;
+  if (!is_paver_report(folder / "report.json")) return files;
   for (const std::string& name : known)
     if (fs::exists(folder / name, ec)) files.push_back(name);
   return files;

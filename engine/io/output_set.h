@@ -13,7 +13,8 @@
 // with the set) lists. A file the program did not write is the user's even when it bears an
 // output's name: it is never removed, and a run that would replace it is refused before any work.
 // A folder written before manifests existed counts every known name in it as the program's when it
-// holds a report.json (what those versions did).
+// holds a report.json that Paver wrote (a JSON object with `design` and `quality_after`), what
+// those versions did; any other report.json is the user's like the rest.
 #include <filesystem>
 #include <string>
 #include <vector>

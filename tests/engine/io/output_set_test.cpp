@@ -144,11 +144,26 @@ TEST_F(OutputSetTest, ReplacingAUsersFileIsRefusedBeforeAnyWork) {
 TEST_F(OutputSetTest, AFolderFromBeforeManifestsIsTheProgramsWhenItHasAReport) {
   const fs::path out = base_ / "out";
   fs::create_directories(out);
-  for (const char* name : {"a.csv", "b.ply", "report.json"}) write(out / name, "old");
+  for (const char* name : {"a.csv", "b.ply"}) write(out / name, "old");
+  write(out / "report.json", R"({"design": {"tessellation": "tri"}, "quality_after": {"fill": 0.97}})");
   write(out / "notes.txt", "mine");
   EXPECT_NO_THROW(OutputSet::refuse_replacing_users_files(out, {out / "b.ply"}, kKnown));
   publish_run(out, "new", {"a.csv", "report.json"});
   EXPECT_EQ(names(out), (std::set<std::string>{"a.csv", "notes.txt", "report.json"})) << "the old b.ply goes";
+}
+
+TEST_F(OutputSetTest, AUsersOwnReportJsonDoesNotMakeTheFolderTheProgramsOwn) {
+  // A report.json that Paver did not write made every file with an output's name an old run's.
+  for (const std::string mine : {"mine\n", R"({"design": "my notes"})", R"([1, 2])"}) {
+    const fs::path out = base_ / "out";
+    fs::remove_all(out);
+    fs::create_directories(out);
+    write(out / "report.json", mine);
+    write(out / "a.csv", "my table");
+    EXPECT_THROW(OutputSet::refuse_replacing_users_files(out, {out / "a.csv"}, kKnown), InputError) << mine;
+    EXPECT_THROW(OutputSet::refuse_replacing_users_files(out, {out / "report.json"}, kKnown), InputError) << mine;
+    EXPECT_EQ(read(out / "a.csv"), "my table");
+  }
 }
 
 TEST_F(OutputSetTest, StagingOfKilledRunsIsRemovedButNotOfLiveOnes) {
