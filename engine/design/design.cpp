@@ -130,6 +130,13 @@ void validate_pattern(const Validator& v, const PatternDesign& pattern) {
     const std::string key = "pattern.operators[" + std::to_string(i) + "]";
     v.require(op.from >= 0, key + ".from", ">= 0 (a unit-cell vertex index)", op.from);
     v.require(op.to >= 0, key + ".to", ">= 0 (a unit-cell vertex index)", op.to);
+    // An edge joins a vertex to one in a nearby cell. One a million cells away built a million-cell
+    // spring and its lattice until memory ran out (23 GB).
+    for (int k = 0; k < 2; ++k)
+      v.require(std::abs(op.offset[k]) <= kMaxOperatorOffset, key + ".offset[" + std::to_string(k) + "]",
+                "between -" + std::to_string(kMaxOperatorOffset) + " and " + std::to_string(kMaxOperatorOffset) +
+                    " (cells away: an edge joins nearby vertices)",
+                op.offset[k]);
     if (op.is_virtual && op.kind != EdgeOperator::Kind::Add)
       v.fail("'" + key + ".virtual' may only be true for an \"add\" operator; this one is \"" +
              std::string(operator_name(op.kind)) + "\"");

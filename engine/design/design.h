@@ -37,10 +37,13 @@ std::string_view units_name(Units u);  // "mm", "cm", "m", "in"
 std::optional<Units> units_from_name(std::string_view name);
 double millimetres_per_unit(Units u);
 
+// How many cells away an edge operator's `to` may lie, in each direction.
+inline constexpr int kMaxOperatorOffset = 3;
+
 struct PatternDesign {
   Tessellation tessellation = Tessellation::Hexagon;
   double spacing = 0;                     // D in surface units; 0 = derive from the surface
-  std::vector<EdgeOperator> operators;    // applied in order to the unit cell
+  std::vector<EdgeOperator> operators;    // applied in order to the unit cell; offsets within kMaxOperatorOffset
   bool bracing = true;                    // add virtual edges across non-triangular faces
   Topology topology = Topology::Auto;
 };

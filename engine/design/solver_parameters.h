@@ -45,34 +45,37 @@ struct SliderRange {
 
 constexpr double kNoLimit = std::numeric_limits<double>::infinity();
 
+// The ranges are bounded so that every value, and the forces and lengths it makes, stays within
+// float32, the GPU's type: c = 1e30 made positions non-finite (an internal error, not a refusal).
+// A hundred D of extra room or a stiffness of a million is far past any design that paves.
 // X(type, name, label, default, valid range, slider range, unit, help). The label and the help say
 // in plain words what a designer changes (the studio's field and tooltip); the paper's symbol and
 // equation follow in brackets. The paper's defaults for c, m, alpha, beta, gamma, the lambdas, the
 // mu's and filter_max; dt, threshold, filter_base, stray_patience and coarse_levels are our
 // measured choices where the paper is silent or ambiguous (docs/solver.md).
 #define PAVER_SOLVER_PARAMETERS(X)                                                                              \
-  X(double, c, "extra spacing", 0.0, ValueRange::at_least(0), SliderRange({0, 1}), "x pattern length D_ab",    \
+  X(double, c, "extra spacing", 0.0, ValueRange::closed(0, 100), SliderRange({0, 1}), "x pattern length D_ab",    \
     "Extra room between neighbouring elements everywhere, as a fraction of their distance in the regular "    \
     "pattern (D_ab: D along a tessellation edge): 0.1 sets every pair 10% farther apart (the paper's c, "     \
     "eq. 5). c + m must stay >= 0.")                                                                          \
-  X(double, m, "extra spacing where curved", 0.0, ValueRange::any(), SliderRange({-1, 1}),                     \
+  X(double, m, "extra spacing where curved", 0.0, ValueRange::closed(-100, 100), SliderRange({-1, 1}),                     \
     "x pattern length D_ab",                                                                                  \
     "Extra room where the surface bends most, fading to none where it is flat, as a fraction of the pair's "  \
     "distance in the pattern; negative packs elements closer where it is curved (the paper's m, eq. 5).")    \
-  X(double, alpha, "close-range stiffness", 10.0, ValueRange::above(0), SliderRange({0.1, 50}), "no unit",     \
+  X(double, alpha, "close-range stiffness", 10.0, ValueRange::open_closed(0, 1e6), SliderRange({0.1, 50}), "no unit",     \
     "How hard a spring pushes back when two elements come much closer than their target (alpha in the "       \
     "spring stiffness k_c(r) = alpha / r^12 - beta / r^6 + gamma, eq. 8).")                                    \
-  X(double, beta, "near-range softening", 5.0, ValueRange::any(), SliderRange({0, 50}), "no unit",             \
+  X(double, beta, "near-range softening", 5.0, ValueRange::closed(-1e6, 1e6), SliderRange({0, 50}), "no unit",             \
     "How much a spring softens just inside its target length (beta, the r^6 term of eq. 8).")                 \
-  X(double, gamma, "base stiffness", 1.0, ValueRange::any(), SliderRange({0, 10}), "no unit",                  \
+  X(double, gamma, "base stiffness", 1.0, ValueRange::closed(-1e6, 1e6), SliderRange({0, 10}), "no unit",                  \
     "The springs' stiffness at their target length (gamma in eq. 8).")                                         \
-  X(double, lambda_r, "keep the spacing", 0.94, ValueRange::at_least(0), SliderRange({0, 1}), "weight",        \
+  X(double, lambda_r, "keep the spacing", 0.94, ValueRange::closed(0, 1e6), SliderRange({0, 1}), "weight",        \
     "How strongly each element keeps its distance to its pattern neighbours, against the two pulls below "    \
     "(the restoring force's weight lambda_r, eq. 13).")                                                        \
-  X(double, lambda_l, "even out", 0.04, ValueRange::at_least(0), SliderRange({0, 1}), "weight",                \
+  X(double, lambda_l, "even out", 0.04, ValueRange::closed(0, 1e6), SliderRange({0, 1}), "weight",                \
     "How strongly each element moves towards the middle of its neighbours, evening the pattern out "          \
     "(lambda_l, eqs. 10-11, 13).")                                                                             \
-  X(double, lambda_g, "hold together", 0.02, ValueRange::at_least(0), SliderRange({0, 1}), "weight",           \
+  X(double, lambda_g, "hold together", 0.02, ValueRange::closed(0, 1e6), SliderRange({0, 1}), "weight",           \
     "How strongly the whole pattern is pulled towards the map's centre, so that it neither drifts nor "       \
     "spreads off the surface (lambda_g, eqs. 12-13); 0.001 for curvature-aware designs.")                      \
   X(double, dt, "step size", 0.3, ValueRange::open_closed(0, 1), SliderRange({0.001, 1}), "no unit",          \
@@ -81,7 +84,7 @@ constexpr double kNoLimit = std::numeric_limits<double>::infinity();
     "(docs/solver.md).")                                                                                       \
   X(int, iterations, "iteration limit", 200, ValueRange::closed(0, 1000000), SliderRange({0, 100000}),         \
     "iterations", "The most iterations a run takes; it stops sooner once settled (below).")                    \
-  X(double, threshold, "settled below", 1e-3, ValueRange::above(0), SliderRange({1e-6, 0.1}), "x spacing D",   \
+  X(double, threshold, "settled below", 1e-3, ValueRange::open_closed(0, 1), SliderRange({1e-6, 0.1}), "x spacing D",   \
     "The run stops when every settled element moves less than this fraction of D in an iteration.")            \
   X(double, mu_compressed, "squeezed springs adapt", 1.0, ValueRange::closed(0, 1), SliderRange({0, 1}),       \
     "rate, 0 to 1",                                                                                             \
@@ -92,7 +95,7 @@ constexpr double kNoLimit = std::numeric_limits<double>::infinity();
     "How fast a spring pulled longer than its target lets the target follow, where the map stretches the "    \
     "surface: 1 at once, 0 never (the adaptive filter's mu, eq. 16). The paper uses 0.5; 0.75 measured "       \
     "fuller pavements on large patterns (docs/solver.md).")                                                     \
-  X(double, filter_max, "most a spring adapts", 1.5, ValueRange::at_least(1), SliderRange({1, 4}),             \
+  X(double, filter_max, "most a spring adapts", 1.5, ValueRange::closed(1, 1000), SliderRange({1, 4}),             \
     "x rest length", "A spring's target may follow the map up to this many times its rest length l_ab, and "   \
     "never below it (eq. 15).")                                                                                \
   X(FilterBase, filter_base, "rest length from", FilterBase::Current, ValueRange::any(), SliderRange({0, 0}),  \
