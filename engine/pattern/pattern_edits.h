@@ -23,7 +23,10 @@ struct EditedParticle {
 
 // Appends the added elements to `pattern` (Pattern::added_points) and lists every edited particle.
 // Throws InputError naming the edit when it names a particle the pattern does not have (edits made
-// for another spacing, pattern or placement), or a uv off `map`.
-std::vector<EditedParticle> add_edited_points(const SurfaceMap& map, Pattern& pattern, const ElementEdits& edits);
+// for another spacing, pattern or placement), a uv off `map`, or when two stones it holds in place
+// (added, or moved and pinned; `held_diameter` each) would overlap (closer than the diameter plus
+// `gap`).
+std::vector<EditedParticle> add_edited_points(const SurfaceMap& map, Pattern& pattern, const ElementEdits& edits,
+                                              double held_diameter, double gap);
 
 }  // namespace paver

@@ -193,7 +193,9 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
   } else {
     pavement.pattern = build_pattern(map, pavement.cell, design.placement);
   }
-  const std::vector<EditedParticle> edited = add_edited_points(map, pavement.pattern, design.edits);
+  const std::vector<EditedParticle> edited =
+      add_edited_points(map, pavement.pattern, design.edits, design.elements.vertex.scale * design.pattern.spacing,
+                        design.elements.gap);
   pavement.points = pavement.pattern.points;
   pavement.timings.emplace_back("pattern", watch.milliseconds());
   // Before any element is placed or measured: the caller's bounds (run_pipeline's output size)

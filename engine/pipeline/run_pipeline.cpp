@@ -32,13 +32,30 @@ void refuse_large_output(const ElementMeshSize& size, const PipelineRequest& req
   throw InputError(text);
 }
 
+// Runs `check`, naming the design file in front of an error about one of its keys (the pattern's
+// cell, its elements' overlaps, its edits), as the file's own validation does: the user has to
+// know which file to open.
+template <class Check>
+auto naming_the_design_file(const PipelineRequest& request, Check&& check) {
+  try {
+    return check();
+  } catch (const InputError& e) {
+    const std::string message = e.what(), source = request.design_path.string();
+    const bool about_a_key = message.rfind("pattern.", 0) == 0 || message.rfind("elements.", 0) == 0 ||
+                             message.rfind("edits.", 0) == 0 || message.rfind("placement", 0) == 0 ||
+                             message.rfind("the design's elements", 0) == 0;
+    if (source.empty() || !about_a_key) throw;
+    throw InputError(source + ": " + message);
+  }
+}
+
 }  // namespace
 
 PipelineResult run_pipeline(PipelineRequest request) {
   PipelineResult result;
   const Design& design = request.design;
   validate_design(design, request.design_source);
-  check_design_cell(design);
+  naming_the_design_file(request, [&] { return check_design_cell(design); });
   result.info = RunInfo{request.surface_path.string(), request.design_source, design.pattern.spacing <= 0};
   if (uses_custom_shape(design.elements))
     result.custom_shape = request.custom_shape ? std::move(request.custom_shape)
@@ -81,7 +98,7 @@ PipelineResult run_pipeline(PipelineRequest request) {
       if (caller_hook) caller_hook(pattern, used);
     };
   }
-  result.pavement = make_pavement(*result.map, design, request.pavement);
+  result.pavement = naming_the_design_file(request, [&] { return make_pavement(*result.map, design, request.pavement); });
   check_stop();  // the solves ended early: a partial pavement is not a result
   if (result.pavement.elements.size() == 0) {
     const Pavement& p = result.pavement;

@@ -467,7 +467,12 @@ TEST_F(PaverRunErrors, SpacingOffsetAndNumbersOutOfAnyUse) {
   const fs::path far = dir() / "far.json";
   write_file_text(far, R"({"version": 1, "placement": {"offset": [1e12, 0]}})");
   const CliResult offset = paver({"run", "assets/surfaces/dome.obj", "--design", far.string(), "--out", out.string()});
-  expect_input_error(offset, out, {"placement: the offset (1e+12, 0)", "use an offset within the map's size"});
+  // Named with its file, as the file's own validation names it.
+  expect_input_error(offset, out, {"far.json: placement: the offset (1e+12, 0)", "use an offset within the map's size"});
+  const fs::path cell = dir() / "cell.json";
+  write_file_text(cell, R"({"version": 2, "elements": {"edge": [{"scale": 0.3, "cell_edges": [99]}]}})");
+  expect_input_error(paver({"run", "assets/surfaces/dome.obj", "--design", cell.string(), "--out", out.string()}), out,
+                     {"cell.json: elements.edge[0].cell_edges: edge 99 does not exist"});
 
   const fs::path overflow = dir() / "overflow.json";
   write_file_text(overflow, R"({"version": 1, "pattern": {"spacing": 1e999}})");

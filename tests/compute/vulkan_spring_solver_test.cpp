@@ -194,7 +194,8 @@ TEST(VulkanPipeline, EditedDesignPavesTheSame) {
   design.edits.moved.push_back({e.id[inner[0]], e.uv[inner[0]], true});
   design.edits.moved.push_back({e.id[inner[1]], e.uv[inner[1]] + glm::dvec2(0.3 * D, 0), true});
   design.edits.deleted.push_back({e.id[inner[2]], e.uv[inner[2]]});
-  design.edits.added.push_back({kFirstAddedId, e.uv[inner[0]] + glm::dvec2(0, 0.5 * D)});
+  // Beside the pinned one, not on it: two held stones that overlap are refused.
+  design.edits.added.push_back({kFirstAddedId, e.uv[inner[0]] + glm::dvec2(0, 1.5 * D)});
   PavementOptions gpu_options;
   gpu_options.solver = gpu::vulkan_solver_factory(gpu_or_null().session);
   const Pavement cpu = make_pavement(map, design);

@@ -196,6 +196,29 @@ TEST_F(ElementEdits, EditsForAnotherPatternOrAnAutoTopologyAreRefused) {
   EXPECT_TRUE(test::Contains(test::error_of([&] { make_pavement(*map_, design); }), "pattern.topology is \"auto\""));
 }
 
+TEST_F(ElementEdits, HeldStonesOnEachOtherAreRefusedNamingBoth) {
+  // Two stones held in place that overlap cannot both stay: one was dropped as "still colliding"
+  // with the verdict ok, and thousands stacked on one spot took minutes.
+  const Pavement& base = *base_;
+  const double D = base.design.pattern.spacing;
+  const glm::dvec2 centre = base.elements.uv[index_by_id(base.elements).at(pick(base, 1).centre)];
+  Design design = base.design;
+  design.edits.added.push_back({design.edits.next_added_id(), centre});
+  design.edits.added.push_back({design.edits.next_added_id(), centre + glm::dvec2(0.5 * D, 0)});
+  EXPECT_TRUE(test::Contains(test::error_of([&] { make_pavement(*map_, design); }),
+                             "edits.added[0] and edits.added[1] hold two stones"));
+  // A pinned move onto an added stone, likewise; an unpinned one relaxes and may stay.
+  design.edits.added.pop_back();
+  design.edits.moved.push_back({pick(base, 3).other, centre + glm::dvec2(0.2 * D, 0), true});
+  EXPECT_TRUE(test::Contains(test::error_of([&] { make_pavement(*map_, design); }),
+                             "edits.moved[0] and edits.added[0] hold two stones"));
+  design.edits.moved[0].pinned = false;
+  EXPECT_NO_THROW(make_pavement(*map_, design));
+  // Stacked by the thousand: refused at once.
+  for (int i = 0; i < 3000; ++i) design.edits.added.push_back({design.edits.next_added_id(), centre});
+  EXPECT_TRUE(test::Contains(test::error_of([&] { make_pavement(*map_, design); }), "hold two stones 0 apart"));
+}
+
 TEST(ElementEditsDesign, IdsAndPointsAreChecked) {
   Design design;
   design.edits.added.push_back({5, {0, 0}});
