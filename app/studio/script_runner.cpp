@@ -255,6 +255,9 @@ void ScriptRunner::frame(Studio& s) {
   if (since_ == std::chrono::steady_clock::time_point{}) since_ = now;
   if (now - since_ > kTimeout)
     return fail(s, where + std::string(command_name(c.kind)) + " did not finish in 10 minutes", 1);
+  // Nothing would ever pave: it waited the whole timeout.
+  if (needs_final_pavement(c.kind) && !s.doc.surface.map && !s.loader.busy())
+    return fail(s, where + std::string(command_name(c.kind)) + " needs a surface: put an 'open FILE' line before it", 2);
   try {
     if (phase_ == Phase::Ready) {
       if (!ready(s, c)) return;

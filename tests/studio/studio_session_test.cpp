@@ -399,6 +399,18 @@ TEST_F(StudioSession, AMissingFileInAScriptExitsWithTwo) {
   }
 }
 
+// A command that waits for a pavement before any surface is open waited out the 10-minute timeout.
+TEST_F(StudioSession, ACommandThatNeedsASurfaceBeforeAnyIsOpenFails) {
+  for (const std::string& line : {std::string("optimize"), std::string("export out")}) {
+    const fs::path script = dir_ / "no_surface.txt";
+    std::ofstream(script) << line << "\nquit\n";
+    const Outcome r = studio("--script " + quote(script.string()) + " --backend cpu --width 640 --height 480", dir_);
+    EXPECT_EQ(r.exit_code, 2) << line << "\n" << describe(r);
+    EXPECT_NE(r.err.find("no_surface.txt:1: " + line.substr(0, line.find(' ')) + " needs a surface"), std::string::npos)
+        << describe(r);
+  }
+}
+
 // The smallest spacing the pattern stage accepts on the pendant (2.7M elements) is beyond the
 // studio's budget: a script stops at once with the figures instead of taking gigabytes and
 // minutes (the window asks "run anyway?" instead).
