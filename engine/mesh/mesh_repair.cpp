@@ -16,6 +16,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <tuple>
 #include <cmath>
 #include <cstdint>
 #include <numeric>
@@ -139,6 +140,26 @@ struct Components {
 };
 
 // Keeps the triangles of the largest component (through shared vertices; see the top comment).
+// Points every corner at the first vertex with its position; returns how many vertices that left
+// unused. The positions stay (unreferenced ones are dropped later, without a second warning).
+long long weld_equal_positions(const std::vector<glm::dvec3>& positions, std::vector<std::vector<int>>& polygons) {
+  std::vector<int> order(positions.size());
+  std::iota(order.begin(), order.end(), 0);
+  const auto key = [&](int i) { return std::tie(positions[i].x, positions[i].y, positions[i].z); };
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return key(a) < key(b); });
+  std::vector<int> first(positions.size());
+  long long welded = 0;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const bool same = k > 0 && key(order[k]) == key(order[k - 1]);
+    first[order[k]] = same ? first[order[k - 1]] : order[k];
+    welded += same;
+  }
+  if (welded == 0) return 0;
+  for (std::vector<int>& polygon : polygons)
+    for (int& corner : polygon) corner = first[corner];
+  return welded;
+}
+
 Components keep_largest_component(std::vector<glm::ivec3>& triangles, size_t vertex_count) {
   DisjointSets sets(vertex_count);
   for (const glm::ivec3& t : triangles) {
@@ -291,13 +312,21 @@ std::vector<std::vector<int>> boundary_loops(const std::vector<glm::ivec3>& tria
 
 }  // namespace
 
-LoadedSurface check_and_repair(std::vector<glm::dvec3> positions, const std::vector<std::vector<int>>& polygons,
+LoadedSurface check_and_repair(std::vector<glm::dvec3> positions, const std::vector<std::vector<int>>& given_polygons,
                                const std::string& source, int collapsed_faces) {
   LoadedSurface loaded;
-  if (polygons.empty() && collapsed_faces == 0)
+  if (given_polygons.empty() && collapsed_faces == 0)
     fail(source, "contains no faces (" + count_of(static_cast<long long>(positions.size()), "vertex", "vertices") +
                      "); Paver needs a surface, not a point cloud: export the faces too");
-  check_indices_and_coordinates(positions, polygons, source);
+  check_indices_and_coordinates(positions, given_polygons, source);
+  // Corners at exactly the same position are one vertex, whatever the format (STL's reader did
+  // this alone): an OBJ or PLY exported with every face's corners apart paved one triangle of 800,
+  // the "largest component", with the verdict ok.
+  std::vector<std::vector<int>> polygons = given_polygons;
+  const long long welded = weld_equal_positions(positions, polygons);
+  if (welded > 0)
+    loaded.warnings.push_back(source + ": joined " + count_of(welded, "vertex", "vertices") +
+                              " at exactly the position of another (faces exported apart)");
 
   Triangulation triangulation = triangulate(positions, polygons, degenerate_area(positions, polygons));
   std::vector<glm::ivec3>& triangles = triangulation.triangles;
@@ -311,7 +340,7 @@ LoadedSurface check_and_repair(std::vector<glm::dvec3> positions, const std::vec
 
   std::vector<char> used(positions.size(), 0);
   for (const glm::ivec3& t : triangles) used[t.x] = used[t.y] = used[t.z] = 1;
-  const long long unreferenced = std::count(used.begin(), used.end(), 0);
+  const long long unreferenced = std::count(used.begin(), used.end(), 0) - welded;  // welded ones were said
   if (unreferenced > 0)
     loaded.warnings.push_back(source + ": dropped " +
                               count_of(unreferenced, "unreferenced vertex", "unreferenced vertices") +

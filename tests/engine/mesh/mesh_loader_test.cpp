@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+
 #include <glm/geometric.hpp>
 
 #include <cmath>
@@ -228,6 +230,38 @@ TEST_F(MeshLoaderTest, ReadsAsciiPly) {
 std::string stl_facet(const char* a, const char* b, const char* c) {
   return std::string("facet normal 0 0 1\nouter loop\nvertex ") + a + "\nvertex " + b + "\nvertex " + c +
          "\nendloop\nendfacet\n";
+}
+
+TEST_F(MeshLoaderTest, ObjAndPlyFacesExportedApartAreJoinedLikeStls) {
+  // Every face with corners of its own: it paved one triangle of the grid, the "largest component".
+  std::string obj, ply_vertices, ply_faces;
+  int faces = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j)
+      for (const auto& t : {std::array<std::array<int, 2>, 3>{{{i, j}, {i + 1, j}, {i + 1, j + 1}}},
+                            std::array<std::array<int, 2>, 3>{{{i, j}, {i + 1, j + 1}, {i, j + 1}}}}) {
+        for (const auto& [x, y] : t) {
+          obj += "v " + std::to_string(x) + " " + std::to_string(y) + " 0\n";
+          ply_vertices += std::to_string(x) + " " + std::to_string(y) + " 0\n";
+        }
+        const int k = 3 * faces++;
+        obj += "f " + std::to_string(k + 1) + " " + std::to_string(k + 2) + " " + std::to_string(k + 3) + "\n";
+        ply_faces += "3 " + std::to_string(k) + " " + std::to_string(k + 1) + " " + std::to_string(k + 2) + "\n";
+      }
+  const std::string ply = "ply\nformat ascii 1.0\nelement vertex " + std::to_string(3 * faces) +
+                          "\nproperty float x\nproperty float y\nproperty float z\nelement face " +
+                          std::to_string(faces) + "\nproperty list uchar int vertex_indices\nend_header\n" +
+                          ply_vertices + ply_faces;
+  for (const LoadedSurface& loaded : {load_surface(write("soup.obj", obj)), load_surface(write("soup.ply", ply))}) {
+    EXPECT_EQ(loaded.mesh.face_count(), 32);
+    EXPECT_EQ(loaded.mesh.vertex_count(), 25);
+    EXPECT_EQ(loaded.dropped_components, 0);
+    ASSERT_FALSE(loaded.warnings.empty());
+    EXPECT_NE(loaded.warnings[0].find("joined 71 vertices at exactly the position of another"), std::string::npos)
+        << loaded.warnings[0];
+    EXPECT_EQ(loaded.warnings.size(), 1u) << "no second warning for the vertices the join left unused";
+    expect_valid_surface(loaded.mesh);
+  }
 }
 
 TEST_F(MeshLoaderTest, ReadsAsciiStlAndMergesCorners) {
