@@ -26,19 +26,32 @@ std::string format_number(double v) {
 
 namespace {
 
-// Points the lattice would put on the map at D = 1: counted from the cell at unit spacing, so that
+// Points the lattice would put on an area at D = 1: counted from the cell at unit spacing, so that
 // a spacing whose square underflows still gets a finite answer (points scale as 1 / D^2).
-double point_count_at_unit_spacing(const SurfaceMap& map, const UnitCell& cell, const Placement& placement) {
+double point_count_at_unit_spacing(double map_area, const UnitCell& cell, const Placement& placement) {
   const glm::dvec2 u1 = cell.a1 / cell.spacing, u2 = cell.a2 / cell.spacing;
   // The map's area seen in the pattern plane grows with the square of the placement scale.
-  const double area = map_area(map) * placement.scale * placement.scale;
+  const double area = map_area * placement.scale * placement.scale;
   return area / std::abs(u1.x * u2.y - u1.y * u2.x) * double(cell.vertices.size());
 }
 
 }  // namespace
 
 double estimate_point_count(const SurfaceMap& map, const UnitCell& cell, const Placement& placement) {
-  return point_count_at_unit_spacing(map, cell, placement) / (cell.spacing * cell.spacing);
+  return point_count_at_unit_spacing(map_area(map), cell, placement) / (cell.spacing * cell.spacing);
+}
+
+void refuse_too_many_points(double area, const UnitCell& cell, const Placement& placement, double slack) {
+  const double at_unit = point_count_at_unit_spacing(area, cell, placement);
+  const double estimate = at_unit / (cell.spacing * cell.spacing);
+  if (estimate <= slack * kMaxPatternPoints) return;
+  // Rounded up to the three digits printed, so the spacing suggested is itself accepted.
+  const double smallest = std::sqrt(at_unit / kMaxPatternPoints);
+  const double digit = std::pow(10.0, std::floor(std::log10(smallest)) - 2);
+  const double ok_spacing = std::ceil(smallest / digit) * digit;
+  throw InputError("spacing D = " + format_number(cell.spacing) + " would create about " + format_number(estimate) +
+                   " elements on this surface (area " + format_number(area) + "); the limit is " +
+                   format_number(kMaxPatternPoints) + ": use a spacing of at least " + format_number(ok_spacing));
 }
 
 Pattern build_pattern(const SurfaceMap& map, const UnitCell& cell, const Placement& placement) {
@@ -48,17 +61,7 @@ Pattern build_pattern(const SurfaceMap& map, const UnitCell& cell, const Placeme
     throw InputError("spacing D = " + format_number(cell.spacing) + " is larger than the surface (its map is about " +
                      format_number(map_size) + " across): no two elements fit; use a spacing below " +
                      format_number(map_size));
-  const double estimate = estimate_point_count(map, cell, placement);
-  if (!(estimate <= kMaxPatternPoints)) {
-    // Rounded up to the three digits printed, so the spacing suggested is itself accepted.
-    const double smallest = std::sqrt(point_count_at_unit_spacing(map, cell, placement) / kMaxPatternPoints);
-    const double digit = std::pow(10.0, std::floor(std::log10(smallest)) - 2);
-    const double ok_spacing = std::ceil(smallest / digit) * digit;
-    throw InputError("spacing D = " + format_number(cell.spacing) + " would create about " +
-                     format_number(estimate) + " elements on this surface (area " +
-                     format_number(map_area(map)) + "); the limit is " + format_number(kMaxPatternPoints) +
-                     ": use a spacing of at least " + format_number(ok_spacing));
-  }
+  refuse_too_many_points(map_area(map), cell, placement);
 
   // Range of lattice cells that covers the map: express the map's boundary in lattice coordinates.
   const glm::dvec2 a1 = cell.a1, a2 = cell.a2;

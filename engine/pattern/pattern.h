@@ -59,6 +59,11 @@ inline constexpr double kMaxLatticeSlots = 5e7;
 // Estimated number of lattice points over the map (area / cell area * vertices per cell).
 double estimate_point_count(const SurfaceMap& map, const UnitCell& cell, const Placement& placement);
 
+// Throws InputError, naming the smallest sensible spacing, when `cell` at its spacing would put more
+// than `slack` x kMaxPatternPoints points on `area` (the map's; or the surface's, with slack, to
+// refuse a spacing before the map is made).
+void refuse_too_many_points(double area, const UnitCell& cell, const Placement& placement, double slack = 1);
+
 // Propagates the cell over the map and trims it. Throws InputError when the spacing would
 // create more than kMaxPatternPoints points, naming the smallest sensible spacing.
 Pattern build_pattern(const SurfaceMap& map, const UnitCell& cell, const Placement& placement);

@@ -70,7 +70,8 @@ void check_surface_proportions(const std::filesystem::path& path, const SurfaceM
 }
 
 MappedSurface map_surface_file(const std::filesystem::path& path, const PipelineProgress& progress,
-                               const StopRequested& stop, const PipelineWarning& warn, CutAxis cut) {
+                               const StopRequested& stop, const PipelineWarning& warn, CutAxis cut,
+                               const std::function<void(const SurfaceMesh&)>& check_loaded) {
   const auto report = [&](float fraction, const std::string& stage) {
     if (progress) progress(fraction, stage);
   };
@@ -85,6 +86,7 @@ MappedSurface map_surface_file(const std::filesystem::path& path, const Pipeline
   out.timings.emplace_back("load", watch.milliseconds());
   check_surface_size(path, loaded.mesh);
   check_surface_proportions(path, loaded.mesh);
+  if (check_loaded) check_loaded(loaded.mesh);
   if (stopped()) return out;
 
   watch = Stopwatch();

@@ -39,8 +39,11 @@ struct MappedSurface {
 // Throws InputError for a file Paver cannot pave (naming the file), std::runtime_error naming the
 // file when the map fails.
 // A closed surface is cut into charts across `cut` (map/surface_charts.h) and mapped as their atlas.
+// `check_loaded` sees the surface once it is loaded and checked, before the map: the caller's
+// refusals that need only the surface (a spacing far too small for its area) cost no map.
 MappedSurface map_surface_file(const std::filesystem::path& path, const PipelineProgress& progress = {},
                                const StopRequested& stop = {}, const PipelineWarning& warn = {},
-                               CutAxis cut = CutAxis::Auto);
+                               CutAxis cut = CutAxis::Auto,
+                               const std::function<void(const SurfaceMesh&)>& check_loaded = {});
 
 }  // namespace paver

@@ -55,7 +55,7 @@ PipelineResult run_pipeline(PipelineRequest request) {
   PipelineResult result;
   const Design& design = request.design;
   validate_design(design, request.design_source);
-  naming_the_design_file(request, [&] { return check_design_cell(design); });
+  const UnitCell cell = naming_the_design_file(request, [&] { return check_design_cell(design); });
   result.info = RunInfo{request.surface_path.string(), request.design_source, design.pattern.spacing <= 0};
   if (uses_custom_shape(design.elements))
     result.custom_shape = request.custom_shape ? std::move(request.custom_shape)
@@ -81,9 +81,15 @@ PipelineResult run_pipeline(PipelineRequest request) {
     result.timings = std::move(request.map_timings);
   } else {
     const StopRequested stop_requested = [&] { return stop && stop->load(); };
+    // A spacing far too small for the surface's area is refused before the map (a minute on a
+    // million faces). The map's area equals the surface's (scale_to_surface_area) up to a band's
+    // closure and an atlas's seams: twice the limit leaves the borderline to build_pattern.
+    const auto refuse_tiny_spacing = [&](const SurfaceMesh& mesh) {
+      if (design.pattern.spacing > 0) refuse_too_many_points(surface_area(mesh), cell, design.placement, 2);
+    };
     MappedSurface mapped =
         map_surface_file(request.surface_path, request.progress, stop_requested, request.on_warning,
-                         design.placement.cut_axis);
+                         design.placement.cut_axis, refuse_tiny_spacing);
     result.map = std::move(mapped.map);
     result.warnings = std::move(mapped.warnings);
     result.timings = std::move(mapped.timings);

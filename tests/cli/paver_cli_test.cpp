@@ -700,6 +700,8 @@ TEST_F(PaverRunErrors, SpacingTooSmall) {
   const fs::path out = dir() / "out";
   const CliResult r = paver({"run", "assets/surfaces/dome.obj", "--spacing", "1e-6", "--out", out.string()});
   expect_input_error(r, out, {"would create about"});
+  // Before the map (a minute on a million faces): the surface's area is enough to tell.
+  EXPECT_EQ(r.err.find("paver: mapping"), std::string::npos) << describe(r);
 }
 
 TEST_F(PaverRunErrors, BadSpacingFlagIsBlamedOnTheFlag) {
