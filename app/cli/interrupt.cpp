@@ -53,6 +53,9 @@ void install_interrupt_handlers() {
   action.sa_flags = SA_RESTART;
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);
+  // Past a file size limit (ulimit -f) the write fails with EFBIG and is reported like a full disk,
+  // the staging folder removed; by default the signal killed the run silently and left it behind.
+  signal(SIGXFSZ, SIG_IGN);
   // A parent may have blocked them (signal masks are inherited); a blocked Ctrl-C would never arrive.
   sigset_t ours;
   sigemptyset(&ours);

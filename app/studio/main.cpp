@@ -11,6 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <optional>
@@ -30,6 +31,9 @@ int main(int argc, char** argv) {
   app.add_option("--width", window_options.width, "Window width")->check(CLI::Range(320, 16384))->capture_default_str();
   app.add_option("--height", window_options.height, "Window height")->check(CLI::Range(240, 16384))->capture_default_str();
   if (const auto exit_code = paver::app::parse_command_line(app, argc, argv, "paver-studio [SURFACE] [--design F] [--script F]")) return *exit_code;
+  // Past a file size limit an export fails and says so, as `paver run` does, instead of the
+  // signal ending the studio with the user's unsaved design.
+  std::signal(SIGXFSZ, SIG_IGN);
 
   try {
     // The script is read first: a typo fails before a window opens.

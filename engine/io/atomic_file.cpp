@@ -4,6 +4,7 @@
 #include "io/output_guard.h"
 
 #include <atomic>
+#include <cerrno>
 #include <fstream>
 #include <string>
 #include <system_error>
@@ -83,12 +84,18 @@ void write_file_atomically(const std::filesystem::path& path,
   write_file_atomically_by_name(path, [&](const std::filesystem::path& temporary) {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
     if (!out.is_open()) fail(path, "the folder " + folder_of(path).string() + " is not writable");
+    errno = 0;
     write(out);
     // A full disk or an I/O error only shows in the stream state, often not before flush or close.
     out.flush();
     const bool written = static_cast<bool>(out);
     out.close();
-    if (!written || out.fail()) fail(path, "writing failed (is the disk full?)");
+    if (!written || out.fail()) {
+      const int error = errno;
+      fail(path, error == EFBIG    ? "writing failed: the file is larger than this process may write (ulimit -f)"
+                 : error == ENOSPC ? "writing failed: the disk is full"
+                                   : "writing failed (is the disk full?)");
+    }
   });
 }
 

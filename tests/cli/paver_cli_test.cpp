@@ -417,6 +417,20 @@ TEST_F(PaverRun, TheCutAxisIsSavedWithTheDesign) {
 
 // Files of the user's in the output folder stay, even under an output's name: a run that does not
 // write that name leaves it alone, and one that would replace it is refused before any work.
+// Past a file size limit the run killed itself with SIGXFSZ (exit 153, no word) and left its
+// staging folder behind: now the write fails like a full disk's and nothing is left.
+TEST_F(PaverRun, AFileSizeLimitIsReportedAndLeavesNothing) {
+  const fs::path out = dir() / "out";
+  const CliResult r = run_program("/bin/sh",
+                                  {"-c", "ulimit -f 200; exec \"$0\" \"$@\"", PAVER_CLI, "run",
+                                   "assets/surfaces/pendant.obj", "--quiet", "--out", out.string()},
+                                  dir());
+  EXPECT_EQ(r.exit_code, 2) << describe(r);
+  EXPECT_NE(r.err.find("larger than this process may write (ulimit -f)"), std::string::npos) << describe(r);
+  for (const auto& entry : fs::directory_iterator(dir()))
+    EXPECT_EQ(entry.path().filename().string().find("out"), std::string::npos) << "left behind: " << entry.path();
+}
+
 TEST_F(PaverRun, KeepsTheUsersFilesInTheOutputFolder) {
   const fs::path out = dir() / "out";
   fs::create_directories(out);
