@@ -10,6 +10,8 @@
 #include "core/number_text.h"
 #include "core/printable.h"
 #include "core/stopwatch.h"
+
+#include <cctype>
 #include "core/interrupted.h"
 #include "mesh/mesh_loader.h"
 #include "io/uv_map_export.h"
@@ -42,6 +44,12 @@ int run_param(const ParamArgs& args) {
                        (std::filesystem::path(args.out) / "uv.obj").string());
     refuse_overwriting_inputs({args.surface}, {args.out});
     check_output_file(args.out);
+    // The map is written as an OBJ whatever the name says (a uv.ply held OBJ text).
+    std::string extension = std::filesystem::path(args.out).extension().string();
+    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (extension != ".obj")
+      throw InputError("--out " + args.out + ": paver param writes the map as an OBJ (its texture coordinates); " +
+                       "give the file the .obj extension");
   }
   const Stopwatch load_watch;
   LoadedSurface loaded = load_surface(args.surface);

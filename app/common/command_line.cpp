@@ -45,7 +45,12 @@ std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, cons
 
 const CLI::Validator& not_empty() {
   static const CLI::Validator validator(
-      [](const std::string& value) { return value.empty() ? std::string("must not be empty") : std::string(); }, "",
+      [](const std::string& value) {
+        // "--design --quiet" took the flag for the design's file name ("--quiet: no such design file").
+        if (value.rfind("--", 0) == 0) return "is missing its value (" + value + " is an option, not a value)";
+        return value.empty() ? std::string("must not be empty") : std::string();
+      },
+      "",
       "NOT_EMPTY");
   return validator;
 }

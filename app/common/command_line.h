@@ -14,6 +14,7 @@ namespace paver::app {
 std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, const std::string& usage);
 
 // Refuses a text option given as "" (`--pattern ""` was taken as not given at all).
+// Refuses an empty value, and one that is an option ("--design --quiet" took the flag for a file).
 const CLI::Validator& not_empty();
 
 // --backend cpu|vulkan|auto (default auto), as choose_backend takes it.

@@ -357,6 +357,7 @@ void export_outputs(Studio& s, const fs::path& folder) {
   const std::vector<fs::path> inputs = {s.doc.surface.path, s.doc.design_path, s.doc.design.elements.custom_shape};
   const std::vector<fs::path> outputs = run_output_paths(folder, kStudioExportFormats);
   refuse_overwriting_inputs(inputs, outputs);
+  check_output_folder(folder);  // a file there: "it is a file, not a folder", as `paver run` says
   OutputSet::refuse_replacing_users_files(folder, outputs, run_output_names());
   StageTimings timings = s.doc.surface.timings;
   timings.insert(timings.end(), pavement.timings.begin(), pavement.timings.end());

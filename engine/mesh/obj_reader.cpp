@@ -51,6 +51,18 @@ long long corner_vertex(std::string_view corner, const std::string& source, int 
 }  // namespace
 
 PolygonSoup read_obj(std::string_view text, const std::string& source) {
+  // A UTF-8 byte order mark (some Windows tools write one) hid the first line's keyword.
+  if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.remove_prefix(3);
+  // Another format under an .obj name read as an OBJ without faces ("not a point cloud"): say what
+  // it is. A text OBJ starts with a printable character or a blank.
+  const auto starts = [&](std::string_view magic) { return text.rfind(magic, 0) == 0; };
+  if (starts("ply") || starts("OFF") || starts("solid "))
+    fail(source, std::string("is not an OBJ file: it starts like ") +
+                     (starts("ply") ? "a PLY" : starts("OFF") ? "an OFF" : "an STL") + " file; give it that extension");
+  const unsigned char first = text.empty() ? ' ' : static_cast<unsigned char>(text.front());
+  if (!((first >= 0x20 && first < 0x7f) || (first >= 0x09 && first <= 0x0d)))
+    fail(source, "is not a text OBJ file (it starts with binary data); export the surface as OBJ, or give the file "
+                 "its format's extension (.ply, .stl)");
   PolygonSoup soup;
   CoordinateReader coordinates(source, "vertex", "vertices", 1);
   // Indices past the vertices defined so far: allowed, but checked once the file is read.

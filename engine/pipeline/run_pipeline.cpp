@@ -115,8 +115,8 @@ PipelineResult run_pipeline(PipelineRequest request) {
     const std::string what_to_do = margin > 0 ? "use a smaller margin (--margin, elements.margin: now " +
                                                     number_text(margin) + "), a smaller spacing or smaller element scales"
                                               : "use a smaller spacing or smaller element scales";
-    throw InputError("no element fits on this surface: the pattern put " + std::to_string(p.pattern.point_count()) +
-                     " points on it at D = " + number_text(p.design.pattern.spacing) + ", and every element " + why +
+    throw InputError("no element fits on this surface: the pattern put " +
+                     count_text(p.pattern.point_count(), "point", "points") + " on it at D = " + number_text(p.design.pattern.spacing) + ", and every element " + why +
                      "; " + what_to_do);
   }
   result.timings.insert(result.timings.end(), result.pavement.timings.begin(), result.pavement.timings.end());

@@ -813,6 +813,20 @@ TEST_F(PaverParam, APipeOrAMissingFolderAsOutIsRefusedBeforeTheMap) {
     EXPECT_EQ(r.out.find("vertices"), std::string::npos) << "it mapped the surface first\n" << describe(r);
   }
   EXPECT_TRUE(fs::is_fifo(pipe));
+  // The map is an OBJ: a .ply name held OBJ text.
+  const CliResult ply = paver({"param", "assets/scanned/bunnyhead.obj", "--out", (dir() / "uv.ply").string()});
+  EXPECT_EQ(ply.exit_code, 2) << describe(ply);
+  EXPECT_NE(ply.err.find("give the file the .obj extension"), std::string::npos) << describe(ply);
+  // A value forgotten before the next flag.
+  const CliResult swallowed = paver({"run", "assets/surfaces/dome.obj", "--design", "--quiet"});
+  EXPECT_EQ(swallowed.exit_code, 2) << describe(swallowed);
+  EXPECT_NE(swallowed.err.find("--design: is missing its value (--quiet is an option"), std::string::npos)
+      << describe(swallowed);
+  // Another format under an .obj name.
+  const fs::path renamed = dir() / "renamed.obj";
+  write_file_text(renamed, "ply\nformat ascii 1.0\nend_header\n");
+  const CliResult wrong = paver({"param", renamed.string()});
+  EXPECT_NE(wrong.err.find("is not an OBJ file: it starts like a PLY file"), std::string::npos) << describe(wrong);
 }
 
 TEST_F(PaverParam, BunnyheadMapIsBijective) {

@@ -29,6 +29,13 @@ TEST(ObjReader, RepeatedCornersKeepTheFirst) {
   EXPECT_EQ(soup.collapsed_faces, 1);
 }
 
+TEST(ObjReader, AByteOrderMarkIsSkipped) {
+  // It hid the first vertex ("refers to vertex 3 but the file defines only 2").
+  const PolygonSoup soup = read_obj("\xEF\xBB\xBFv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "bom.obj");
+  EXPECT_EQ(soup.positions.size(), 3u);
+  EXPECT_EQ(soup.polygons, (std::vector<std::vector<int>>{{0, 1, 2}}));
+}
+
 TEST(ObjReader, FacesMayReferToVerticesDefinedLater) {
   const PolygonSoup soup = read_obj("f 1 2 3\nv 0 0 0\nv 1 0 0\nv 0 1 0\n", "later.obj");
   EXPECT_EQ(soup.polygons, (std::vector<std::vector<int>>{{0, 1, 2}}));

@@ -30,7 +30,10 @@ TEST_F(ReadMeshFileTest, ExtensionChoosesTheReaderWhateverItsCase) {
   const PolygonSoup off = read_mesh_file(write("tri.OFF", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"), "tri.OFF");
   EXPECT_EQ(off.polygons, (std::vector<std::vector<int>>{{0, 1, 2}}));
   const std::string as_obj = error_of([&] { read_mesh_file(write("tri.obj", "OFF\n3 1 0\n"), "tri.obj"); });
-  EXPECT_TRUE(Contains(as_obj, "tri.obj: contains no faces"));
+  EXPECT_TRUE(Contains(as_obj, "tri.obj: is not an OBJ file: it starts like an OFF file; give it that extension"));
+  // A program renamed .obj: said so, not "contains no faces (0 vertices)".
+  const std::string binary = error_of([&] { read_mesh_file(write("prog.obj", std::string("\x7f" "ELF\2\1\1\0", 8)), "prog.obj"); });
+  EXPECT_TRUE(Contains(binary, "prog.obj: is not a text OBJ file (it starts with binary data)")) << binary;
 }
 
 TEST_F(ReadMeshFileTest, TooLargeFileIsRefusedBeforeReading) {
