@@ -308,10 +308,12 @@ int run_run(const RunArgs& args) {
   for (const StoneRow& row : bill.rows) {
     std::printf("stones   %ld %s of %.2f mm", row.count, std::string(shape_name(row.shape)).c_str(), row.diameter_mm);
     // Three significant digits each, so that count x each gives the total to its last digit.
-    if (row.carat_each) std::printf(", %.3g ct each, %.3f ct", *row.carat_each, row.carat_total);
+    if (row.carat_each) std::printf(", %.3g ct each, %s ct", *row.carat_each, carat_total_text(row.carat_total).c_str());
     std::printf("\n");
   }
-  if (bill.weighed()) std::printf("stones   total %ld, %.3f ct (stones.csv)\n", bill.count, bill.carat_total);
+  // Totals as stones.csv writes them (12.9195 there printed 12.919 here).
+  if (bill.weighed())
+    std::printf("stones   total %ld, %s ct (stones.csv)\n", bill.count, carat_total_text(bill.carat_total).c_str());
   if (pavement.design.elements.beads.enabled) {
     const nlohmann::json beads = beads_json(pavement);
     std::printf("beads    %zu shared prongs of %.2f to %.2f mm, between every three stones in contact%s\n",

@@ -269,6 +269,8 @@ nlohmann::json to_json(const PavementQuality& q) {
   if (!q.structure_measured)
     for (const char* key : {"interior_vertex_elements", "regular_valence_share", "spacing_curvature_spearman"})
       json[key] = nullptr;
+  // No interior element (a narrow ring): no share, rather than a share of 0 that reads as all defects.
+  if (q.interior_vertex_elements == 0) json["regular_valence_share"] = nullptr;
   return json;
 }
 

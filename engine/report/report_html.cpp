@@ -138,7 +138,10 @@ std::string report_html(const json& report, const std::string& preview_png) {
 
   const json& cut = at(report, "cut");
   if (cut.is_object()) {
-    html += "<h2>Metal with seats (" + text_of(at(cut, "files")) + ")</h2>\n<p>" + text_of(at(cut, "cutter")) +
+    std::string files;
+    if (at(cut, "files").is_array())
+      for (const json& f : at(cut, "files")) files += (files.empty() ? "" : ", ") + text_of(f);
+    html += "<h2>Metal with seats (" + files + ")</h2>\n<p>" + text_of(at(cut, "cutter")) +
             " cutters, metal " + text_of(at(cut, "thickness")) + " " + escaped(units) + " thick: " +
             fixed(at(cut, "volume_mm3"), 1) + " mm&sup3; of " + fixed(at(cut, "shell_volume_mm3"), 1) +
             " mm&sup3; left; a closed, manifold solid.</p>\n<table>\n";

@@ -67,6 +67,17 @@ PavementQuality measure(const Elements& elements) {
   return measure_pavement(flat_map(), Pattern{}, {}, elements, QualityBasis{});
 }
 
+TEST(PavementQualityJson, NoInteriorElementsMeansNoValenceShare) {
+  // A narrow ring has none: a share of 0 read as "every stone a defect" in report.html.
+  PavementQuality q;
+  q.structure_measured = true;
+  q.interior_vertex_elements = 0;
+  EXPECT_TRUE(to_json(q)["regular_valence_share"].is_null());
+  q.interior_vertex_elements = 10;
+  q.regular_valence_share = 0.9;
+  EXPECT_DOUBLE_EQ(to_json(q)["regular_valence_share"].get<double>(), 0.9);
+}
+
 TEST(PavementQualityKnownSet, CountsElementsByKind) {
   const PavementQuality q = measure(known_set());
   EXPECT_EQ(q.elements, 17);

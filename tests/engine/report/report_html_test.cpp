@@ -19,7 +19,7 @@ nlohmann::json sample_report() {
     "stones": {"count": 367, "carat_total": 4.9545, "carat_rule": "sieve chart",
                "rows": [{"shape": "gem", "diameter_mm": 1.5, "count": 367, "carat_each": 0.0135, "carat_total": 4.9545}]},
     "beads": {"enabled": true, "count": 614, "diameter_mm_min": 0.256, "diameter_mm_max": 0.362},
-    "cut": {"cutter": "seat", "thickness": 1, "volume_mm3": 649.8, "shell_volume_mm3": 857.6, "files": ["cut.stl"],
+    "cut": {"cutter": "seat", "thickness": 1, "volume_mm3": 649.8, "shell_volume_mm3": 857.6, "files": ["cut.stl", "cut.3mf"],
             "metal": [{"alloy": "18k yellow gold (750)", "density_g_cm3": 15.5, "grams": 10.07}]},
     "quality_after": {"elements": 367, "contact_violations": 2, "min_clearance": -0.001, "boundary_crossings": 0,
                       "fill": 0.98, "neighbor_ratio": {"p95": 1.07}, "regular_valence_share": 1.0}
@@ -34,6 +34,7 @@ TEST(ReportHtml, ShowsTheVerdictTheStonesTheBeadsAndTheMetalFromTheReport) {
   EXPECT_TRUE(has(html, "<td>gem</td><td>1.50</td><td>367</td><td>0.0135</td><td>4.9545</td>")) << html;
   EXPECT_TRUE(has(html, "<b>4.9545</b>"));
   EXPECT_TRUE(has(html, "<b>614</b>, 0.26 to 0.36 mm"));
+  EXPECT_TRUE(has(html, "<h2>Metal with seats (cut.stl, cut.3mf)</h2>")) << "it read (&ndash;)";
   EXPECT_TRUE(has(html, "<td>18k yellow gold (750)</td><td>15.50</td><td>10.07</td>"));
   EXPECT_TRUE(has(html, "&lt;pendant &amp; co&gt;")) << "text from files is escaped";
   EXPECT_FALSE(has(html, "<pendant"));
