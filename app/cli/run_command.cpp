@@ -270,6 +270,7 @@ int run_run(const RunArgs& args) {
                 pavement.relaxation.packing_iterations, pavement.relaxation.jammed, pavement.relaxation.milliseconds);
   std::printf("\n");
   if (!pavement.topology_choice.empty()) std::printf("topology %s\n", pavement.topology_choice.c_str());
+  if (!result.cut_axis_choice.empty()) std::printf("cut axis %s\n", result.cut_axis_choice.c_str());
   if (is_band(map)) {
     if (pavement.band_closure)
       std::printf("band     seamless (period %.6g, map s1/s2 mean %.3f): %s\n", map.seamless->period,

@@ -76,6 +76,10 @@ struct PipelineResult {
   RunInfo info;
   StageTimings timings;                       // every stage, load to export
   PavementCounts counts;
+  // A closed surface whose cut across its longest axis paved NOT OK is cut across x, y and z too
+  // and the best kept (fewest verdict problems, then the highest fill): which, and why. Empty when
+  // the first cut was kept without a try.
+  std::string cut_axis_choice;
 };
 
 // Throws InputError for bad input (before the surface is read, except for the surface's own

@@ -395,6 +395,25 @@ TEST_F(PaverRun, NeverOverwritesItsInputs) {
 
 // A closed surface's cut axis is part of the design: the design.json a `--cut x` run writes repeats
 // it without the flag, and the flag overrides the design's.
+// The longest axis left a bare belt on the bead with 1 mm stones (NOT OK); auto tries the others
+// and keeps the best, and its design repeats it.
+TEST_F(PaverRun, AClosedSurfacesCutIsChosenByItsVerdict) {
+  const fs::path auto_out = dir() / "auto", longest = dir() / "z";
+  const CliResult chosen = paver({"run", "assets/surfaces/bead.obj", "--stone", "1", "--gap", "0.1", "--formats", "ply",
+                                  "--out", auto_out.string()});
+  EXPECT_EQ(chosen.exit_code, 0) << describe(chosen);
+  EXPECT_NE(chosen.out.find("cut axis "), std::string::npos) << describe(chosen);
+  EXPECT_NE(chosen.out.find("cut across the longest axis, the pavement had 1 problem"), std::string::npos)
+      << describe(chosen);
+  const std::string axis = read_json(auto_out / "design.json")["placement"]["cut_axis"];
+  EXPECT_TRUE(axis == "x" || axis == "y") << axis;
+  // Asked for by name, an axis is used as it is, NOT OK or not.
+  const CliResult asked = paver({"run", "assets/surfaces/bead.obj", "--stone", "1", "--gap", "0.1", "--cut", "z",
+                                 "--formats", "ply", "--out", longest.string()});
+  EXPECT_EQ(asked.exit_code, 3) << describe(asked);
+  EXPECT_EQ(asked.out.find("cut axis "), std::string::npos) << describe(asked);
+}
+
 TEST_F(PaverRun, TheCutAxisIsSavedWithTheDesign) {
   const fs::path across_x = dir() / "x", again = dir() / "again", overridden = dir() / "auto";
   ASSERT_EQ(paver({"run", "assets/surfaces/bead.obj", "--cut", "x", "--formats", "ply", "--out", across_x.string()})
@@ -407,11 +426,15 @@ TEST_F(PaverRun, TheCutAxisIsSavedWithTheDesign) {
             0);
   EXPECT_TRUE(read_file_text(across_x / "placements.csv") == read_file_text(again / "placements.csv"));
   // (the saved design's lattice need not suit the other cut: written either way, ok or NOT OK)
-  const int overridden_exit = paver({"run", "assets/surfaces/bead.obj", "--design", design, "--cut", "auto", "--formats",
-                                     "ply", "--out", overridden.string()})
-                                  .exit_code;
-  ASSERT_TRUE(overridden_exit == 0 || overridden_exit == 3) << overridden_exit;
-  EXPECT_EQ(read_json(overridden / "design.json")["placement"]["cut_axis"], "auto");
+  const CliResult auto_cut = paver({"run", "assets/surfaces/bead.obj", "--design", design, "--cut", "auto", "--formats",
+                                     "ply", "--out", overridden.string()});
+  ASSERT_TRUE(auto_cut.exit_code == 0 || auto_cut.exit_code == 3) << describe(auto_cut);
+  // Auto keeps the longest axis, or names the axis it kept after trying the others.
+  const size_t line = auto_cut.out.find("cut axis ");
+  const std::string kept = line == std::string::npos || auto_cut.out.compare(line + 9, 3, "the") == 0
+                               ? "auto"
+                               : auto_cut.out.substr(line + 9, 1);
+  EXPECT_EQ(read_json(overridden / "design.json")["placement"]["cut_axis"], kept) << describe(auto_cut);
   EXPECT_FALSE(read_file_text(across_x / "placements.csv") == read_file_text(overridden / "placements.csv"));
 }
 
@@ -599,7 +622,7 @@ TEST_F(PaverRunErrors, SurfacesThePatternCannotPave) {
   write_file_text(dir() / "strip.obj", strip.str());
   // Elements wider than the strip: none survives.
   expect_input_error(paver({"run", (dir() / "strip.obj").string(), "--out", out.string()}), out,
-                     {"no element fits on this surface", "use a smaller spacing"});
+                     {"no element fits on this surface", "use smaller stones (--stone, the element scales) or a smaller spacing"});
   // A margin that leaves no room is named as the cause.
   expect_input_error(paver({"run", "assets/surfaces/pendant.obj", "--margin", "20", "--out", out.string()}), out,
                      {"every element crossed its boundary or the margin along it",
