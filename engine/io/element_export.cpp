@@ -290,8 +290,13 @@ void write_elements_obj(const std::filesystem::path& path, const Elements& eleme
     });
 
     long long first = 1;  // OBJ counts vertices from 1
+    // Stones and beads as two groups, so a CAD tool can select the metal's beads apart from the
+    // stones (they could only be told apart by connectivity).
+    const char* group = nullptr;
     for (std::size_t i = 0; i < elements.size(); ++i) {
       const ShapeMesh& shape = shapes[elements.shape[i]];
+      const char* wanted = elements.kind[i] == ElementKind::Bead ? "g beads\n" : "g stones\n";
+      if (wanted != group) w.text(group = wanted);
       for (const glm::ivec3& t : shape.triangles) {
         w.text("f ");
         w.integer(first + t.x);

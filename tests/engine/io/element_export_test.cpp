@@ -225,6 +225,24 @@ TEST_F(ElementExport, ObjHasTheSameCounts) {
   EXPECT_EQ(faces, total_faces(e));
 }
 
+TEST_F(ElementExport, ObjGroupsStonesAndBeads) {
+  // A CAD tool selects the beads (the metal's) apart from the stones by group.
+  Elements e = sample_elements();
+  e.push_back(ElementKind::Bead, -1, -1, {0, 0}, {1, 1, 1}, {0, 0, 1}, 0.3, ShapeKind::Sphere);
+  e.push_back(ElementKind::Bead, -1, -1, {0, 0}, {2, 1, 1}, {0, 0, 1}, 0.3, ShapeKind::Sphere);
+  write_elements_obj(folder_ / "groups.obj", e);
+  std::ifstream in(folder_ / "groups.obj");
+  std::vector<std::string> groups;
+  std::size_t faces_before_beads = 0, faces = 0;
+  for (std::string line; std::getline(in, line);) {
+    if (line.starts_with("g ")) groups.push_back(line);
+    if (line == "g beads") faces_before_beads = faces;
+    faces += line.starts_with("f ");
+  }
+  EXPECT_EQ(groups, (std::vector<std::string>{"g stones", "g beads"}));
+  EXPECT_EQ(faces_before_beads, total_faces(sample_elements()));
+}
+
 TEST_F(ElementExport, ObjAndPlyAgreeOnPositions) {
   const Elements e = sample_elements();
   write_elements_ply(folder_ / "a.ply", e);
