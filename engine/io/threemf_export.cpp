@@ -153,12 +153,18 @@ void write_pavement_3mf(const std::filesystem::path& path, const SurfaceMesh* su
 
   // The stones are components of one object with one build item: lib3mf 1.8 adds build items in
   // time linear in their number (quadratic overall: 10 s for 40,000), components in constant time.
-  if (elements.size() > 0) {
+  // The beads (the metal's prongs) are an object of their own, not stones.
+  const auto add_group = [&](const char* name, bool beads) {
+    const auto in_group = [&](std::size_t i) { return (elements.kind[i] == ElementKind::Bead) == beads; };
+    bool any = false;
+    for (std::size_t i = 0; i < elements.size() && !any; ++i) any = in_group(i);
+    if (!any) return;
     Handle stones, item;
     w.check(NMR::lib3mf_model_addcomponentsobject(model.get(), stones.out()), model, "adding the stones");
-    w.check(NMR::lib3mf_object_setnameutf8(stones.get(), "stones"), stones, "naming the stones");
+    w.check(NMR::lib3mf_object_setnameutf8(stones.get(), name), stones, "naming the stones");
     for (std::size_t i = 0; i < elements.size(); ++i) {
       if ((i & 0xffff) == 0 && options.stop && options.stop->load()) throw Interrupted();
+      if (!in_group(i)) continue;
       const ElementFrame f = element_frame(elements.normal[i]);
       const double d = elements.diameter[i];
       NMR::MODELTRANSFORM transform{};
@@ -174,7 +180,9 @@ void write_pavement_3mf(const std::filesystem::path& path, const SurfaceMesh* su
     }
     w.check(NMR::lib3mf_model_addbuilditem(model.get(), stones.get(), &to_middle, item.out()), model,
             "adding the stones");
-  }
+  };
+  add_group("stones", false);
+  add_group("beads", true);
 
   if (options.stop && options.stop->load()) throw Interrupted();
   write_file_atomically_by_name(path, [&](const std::filesystem::path& temporary) {

@@ -13,7 +13,7 @@
 namespace paver::test {
 
 // What lib3mf reads back from a file: the unit, the mesh objects (name, type, size) and the
-// components of the "stones" object.
+// components of the "stones" and "beads" objects.
 struct ReadBack3mf {
   DWORD unit = 0;
   struct Mesh {
@@ -27,7 +27,8 @@ struct ReadBack3mf {
     DWORD object = 0;
     NMR::MODELTRANSFORM transform{};
   };
-  std::vector<Component> components;
+  std::vector<Component> components;       // of the "stones" object
+  std::vector<Component> bead_components;  // of the "beads" object, when there are beads
   std::vector<NMR::MODELTRANSFORM> build_items;
 };
 
@@ -85,13 +86,15 @@ inline ReadBack3mf read_3mf(const std::filesystem::path& path) {
   while (NMR::lib3mf_resourceiterator_movenext(groups, &more) == LIB3MF_OK && more) {
     NMR::PLib3MFBase* object = nullptr;
     NMR::lib3mf_resourceiterator_getcurrent(groups, &object);
-    EXPECT_EQ(object_name_3mf(object), "stones");
+    const std::string name = object_name_3mf(object);
+    EXPECT_TRUE(name == "stones" || name == "beads") << name;
+    std::vector<ReadBack3mf::Component>& into = name == "beads" ? r.bead_components : r.components;
     DWORD count = 0;
     NMR::lib3mf_componentsobject_getcomponentcount(object, &count);
     for (DWORD c = 0; c < count; ++c) {
       NMR::PLib3MFBase* component = nullptr;
       NMR::lib3mf_componentsobject_getcomponent(object, c, &component);
-      ReadBack3mf::Component& k = r.components.emplace_back();
+      ReadBack3mf::Component& k = into.emplace_back();
       NMR::lib3mf_component_getobjectresourceid(component, &k.object);
       NMR::lib3mf_component_gettransform(component, &k.transform);
       NMR::lib3mf_release(component);

@@ -84,6 +84,20 @@ TEST_F(ThreeMfExport, APieceFarFromTheOriginKeepsItsStonesInPlaceOnIt) {
   }
 }
 
+TEST_F(ThreeMfExport, BeadsAreAnObjectOfTheirOwn) {
+  // The metal's beads sat inside the object named "stones".
+  Elements elements = test::every_shape_elements();
+  const std::size_t stones = elements.size();
+  elements.push_back(ElementKind::Bead, -1, -1, {0, 0}, {1, 1, 0}, {0, 0, 1}, 0.3, ShapeKind::Sphere);
+  elements.push_back(ElementKind::Bead, -1, -1, {0, 0}, {2, 1, 0}, {0, 0, 1}, 0.3, ShapeKind::Sphere);
+  const SurfaceMesh surface = test::unit_square_surface();
+  write_pavement_3mf(dir_ / "beads.3mf", &surface, elements, Units::Millimetre);
+  const test::ReadBack3mf r = test::read_3mf(dir_ / "beads.3mf");
+  EXPECT_EQ(r.components.size(), stones);
+  EXPECT_EQ(r.bead_components.size(), 2u);
+  EXPECT_EQ(r.build_items.size(), 3u) << "the surface, the stones and the beads";
+}
+
 TEST_F(ThreeMfExport, TheModelUnitIsTheDesigns) {
   const Elements elements = test::every_shape_elements();
   for (const auto& [units, unit] : {std::pair{Units::Inch, NMR::MODELUNIT_INCH}, std::pair{Units::Metre, NMR::MODELUNIT_METER},
