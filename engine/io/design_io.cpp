@@ -15,6 +15,7 @@
 #include <fstream>
 #include <initializer_list>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string_view>
 #include <system_error>
@@ -489,8 +490,31 @@ nlohmann::json design_to_json(const Design& design) { return to_json<nlohmann::j
 
 Design design_from_text(std::string_view text, const std::string& source, std::vector<std::string>* notes) {
   nlohmann::json json;
+  // A key given twice in one object: JSON keeps the last without a word, so a designer's earlier
+  // value was silently lost. Refused, naming the key by its path.
+  struct OpenObject {
+    std::set<std::string> keys;
+    std::string last;
+  };
+  std::vector<OpenObject> open;
+  std::string duplicate;
+  const nlohmann::json::parser_callback_t find_duplicates = [&](int, nlohmann::json::parse_event_t event,
+                                                                 nlohmann::json& parsed) {
+    using Event = nlohmann::json::parse_event_t;
+    if (event == Event::object_start) open.emplace_back();
+    if (event == Event::object_end && !open.empty()) open.pop_back();
+    if (event == Event::key && !open.empty() && parsed.is_string()) {
+      const std::string key = parsed.get<std::string>();
+      if (!open.back().keys.insert(key).second && duplicate.empty())
+        for (const OpenObject& o : open) duplicate += (duplicate.empty() ? "" : ".") + (&o == &open.back() ? key : o.last);
+      open.back().last = key;
+    }
+    return true;
+  };
   try {
-    json = nlohmann::json::parse(text);
+    json = nlohmann::json::parse(text, find_duplicates);
+    if (!duplicate.empty())
+      throw InputError(source + ": '" + duplicate + "' is given twice; JSON keeps only the last, so remove one of them");
   } catch (const nlohmann::json::parse_error& error) {
     throw InputError(source + ":" + line_and_column(text, error.byte) + ": JSON syntax error: " +
                      short_reason(error.what()));

@@ -467,6 +467,16 @@ TEST_F(DesignIoFile, SyntaxErrorNamesLineAndColumn) {
   EXPECT_FALSE(contains(message, "column"));
 }
 
+TEST_F(DesignIoFile, AKeyGivenTwiceIsRefusedByItsPath) {
+  // JSON keeps the last value without a word: the designer's first one was lost.
+  const fs::path path = write("design.json", R"({"version": 2, "pattern": {"spacing": 6, "tessellation": "hex", "spacing": 3}})");
+  const std::string message = input_error([&] { load_design(path); });
+  EXPECT_TRUE(contains(message, path.string() + ": 'pattern.spacing' is given twice")) << message;
+  // The same key in two objects is no duplicate.
+  EXPECT_NO_THROW(load_design(write("ok.json", R"({"version": 2, "placement": {"offset": [0, 0]},
+                                                   "edits": {"moved": [], "deleted": [], "added": []}})")));
+}
+
 TEST_F(DesignIoFile, TruncatedFileNamesTheEnd) {
   const fs::path path = write("design.json", "{\n  \"version\": 1,\n");
   const std::string message = input_error([&] { load_design(path); });
