@@ -62,6 +62,37 @@ OffsetCurve offset_curve(const SurfaceMap& map, const BoundaryWalk& rims, int lo
   return curve;
 }
 
+// Where an element goes along `curve`: sample `sample` and `t` of the way to the next one.
+struct CurvePoint {
+  std::size_t sample;
+  double t;
+  glm::dvec3 position;
+};
+
+// The elements' places along `curve`, from sample 0: each `step` (3D chord) beyond the one before,
+// between the two samples that straddle it (placing on whole samples lost a fraction of a sample
+// per element: a bangle's rim one element); the last ones are dropped until the loop closes with
+// `step` between the last and the first. Across a gap in the curve (dropped samples) an element
+// goes on the first sample past it.
+std::vector<CurvePoint> walk_by_chord(const OffsetCurve& curve, double step) {
+  const std::size_t n = curve.position.size();
+  std::vector<CurvePoint> chosen;
+  if (n == 0) return chosen;
+  chosen.push_back({0, 0, curve.position[0]});
+  for (std::size_t k = 1; k < n; ++k) {
+    const double reach = glm::length(curve.position[k] - chosen.back().position);
+    if (reach < step) continue;
+    const double before = glm::length(curve.position[k - 1] - chosen.back().position);
+    const bool gap = curve.arc[k] - curve.arc[k - 1] > 2 * (curve.length / double(n)) + 1e-12;
+    const double t = gap || reach <= before ? 1.0 : std::clamp((step - before) / (reach - before), 0.0, 1.0);
+    chosen.push_back({k - 1, t, curve.position[k - 1] * (1 - t) + curve.position[k] * t});
+    --k;  // the next element is measured from this one, which may lie before sample k
+    if (t >= 1) ++k;
+  }
+  while (chosen.size() > 1 && glm::length(chosen.back().position - curve.position[0]) < step) chosen.pop_back();
+  return chosen;
+}
+
 // Cells of at least `reach` over the surface's box (every element lies on it).
 CellGrid surface_grid(const SurfaceMesh& mesh, double reach) {
   glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
@@ -100,61 +131,45 @@ RimRowReport place_rim_rows(const SurfaceMap& map, Elements& elements, const Des
     const OffsetCurve curve =
         offset_curve(map, rims, l, offset, diameter / kSamplesPerDiameter, boundary, diameter, margin);
     if (curve.position.size() < 3 || !(curve.length > neighbours)) continue;
-    // As many as close the loop evenly (fewer while a chord over a bend comes out short). Where
-    // samples were dropped (a neck, a concave step) an element that falls in the gap goes to the
-    // gap's nearer end, and does not count against the spacing: a local gap, not a thinner row.
-    const double sample_step = diameter / kSamplesPerDiameter;
-    for (int count = int(curve.length / neighbours); count >= 1; --count) {
-      Elements trial;
-      std::vector<std::uint8_t> snapped;  // put on a gap's end: its spacing to the next is not the row's
-      std::size_t sample = 0;
-      for (int i = 0; i < count; ++i) {
-        const double at = curve.length * i / count;
-        while (sample + 1 < curve.arc.size() && curve.arc[sample + 1] <= at) ++sample;
-        const std::size_t next = (sample + 1) % curve.uv.size();
-        const double span = (sample + 1 < curve.arc.size() ? curve.arc[sample + 1] : curve.length) - curve.arc[sample];
-        const double w = span > 0 ? std::clamp((at - curve.arc[sample]) / span, 0.0, 1.0) : 0.0;
-        glm::dvec2 uv = curve.uv[sample] * (1 - w) + nearest_image(map, curve.uv[next], curve.uv[sample]) * w;
-        bool on_gap_end = false;
-        if (lift_points(map, std::span(&uv, 1), lifted) > 0 ||
-            (span > 2 * sample_step && !keeps_margin(boundary.nearest(lifted.position[0]).distance, diameter, margin))) {
-          // In a gap of the curve: on its nearer end (one that lands where another is is left out below).
-          uv = w < 0.5 ? curve.uv[sample] : curve.uv[next];
-          if (lift_points(map, std::span(&uv, 1), lifted) > 0) continue;
-          on_gap_end = true;
-        }
-        trial.push_back(ElementKind::Vertex, -1, 0, wrap_point(map, uv), lifted.position[0], lifted.normal[0], diameter,
-                        spec.vertex.shape);
-        snapped.push_back(on_gap_end ? 1 : 0);
-      }
-      const int placed_here = int(trial.size());
-      bool spaced = true;
-      for (int i = 0; i < placed_here && spaced && placed_here > 1; ++i) {
-        const int j = (i + 1) % placed_here;
-        if (snapped[i] || snapped[j]) continue;
-        spaced = !elements_collide(glm::length(trial.position[i] - trial.position[j]), diameter, diameter, spec.gap);
-      }
-      if (!spaced && count > 1) continue;
-      // Against every row element kept so far, this rim's too (a tight bend folds the offset curve;
-      // two holes lie close): one that would touch is left out.
-      ElementHash placed(row, surface_grid(mesh, neighbours));
-      int kept = 0;
-      for (int i = 0; i < placed_here; ++i) {
-        bool clear = keeps_margin(boundary.nearest(trial.position[i]).distance, diameter, margin);
-        placed.for_each_near(trial.position[i], [&](int j) {
-          if (elements_collide(glm::length(trial.position[i] - row.position[j]), diameter, row.diameter[j], spec.gap))
-            clear = false;
-        });
-        if (!clear) continue;
-        row.push_back(ElementKind::Vertex, -1, 0, trial.uv[i], trial.position[i], trial.normal[i], diameter,
-                      spec.vertex.shape);
-        placed.insert(int(row.size()) - 1);
-        ++kept;
-      }
-      report.placed += kept;
-      if (kept > 0) ++report.loops;
-      break;
+    // Along the curve by 3D chord: each element at the first sample a step beyond the one before,
+    // and the last a step from the first. The step is then widened as far as it keeps the count,
+    // so the row closes evenly. Spacing the count evenly by arc length instead let the shortest
+    // chord (over a stepped rim's corner) set the spacing of the whole row: a sparse, ragged ring
+    // (a pierced pendant's holes, a jeweller's trial).
+    const std::vector<CurvePoint> tight = walk_by_chord(curve, neighbours);
+    double lo = neighbours, hi = 2 * neighbours;
+    for (int halving = 0; halving < 40 && tight.size() > 1; ++halving) {
+      const double mid = 0.5 * (lo + hi);
+      (walk_by_chord(curve, mid).size() >= tight.size() ? lo : hi) = mid;
     }
+    const std::vector<CurvePoint> chosen = tight.size() > 1 ? walk_by_chord(curve, lo) : tight;
+    Elements trial;
+    for (const CurvePoint& at : chosen) {
+      const std::size_t next = (at.sample + 1) % curve.uv.size();
+      glm::dvec2 uv = curve.uv[at.sample] * (1 - at.t) + nearest_image(map, curve.uv[next], curve.uv[at.sample]) * at.t;
+      uv = wrap_point(map, uv);
+      if (lift_points(map, std::span(&uv, 1), lifted) > 0) continue;
+      trial.push_back(ElementKind::Vertex, -1, 0, uv, lifted.position[0], lifted.normal[0], diameter, spec.vertex.shape);
+    }
+    const int placed_here = int(trial.size());
+    // Against every row element kept so far, this rim's too (a tight bend folds the offset curve;
+    // two holes lie close): one that would touch is left out.
+    ElementHash placed(row, surface_grid(mesh, neighbours));
+    int kept = 0;
+    for (int i = 0; i < placed_here; ++i) {
+      bool clear = keeps_margin(boundary.nearest(trial.position[i]).distance, diameter, margin);
+      placed.for_each_near(trial.position[i], [&](int j) {
+        if (elements_collide(glm::length(trial.position[i] - row.position[j]), diameter, row.diameter[j], spec.gap))
+          clear = false;
+      });
+      if (!clear) continue;
+      row.push_back(ElementKind::Vertex, -1, 0, trial.uv[i], trial.position[i], trial.normal[i], diameter,
+                    spec.vertex.shape);
+      placed.insert(int(row.size()) - 1);
+      ++kept;
+    }
+    report.placed += kept;
+    if (kept > 0) ++report.loops;
   }
 
   // The pattern's elements that a row element would touch make way.
