@@ -3,6 +3,7 @@
 // the contact rule over all pairs, crosses no rim and still covers the surface. On the pierced
 // pendant (three holes), the ring band (two rims, seamless) and the bead (seams are no rims).
 #include "all_pairs.h"
+#include "elements/rim_rows.h"
 #include "map/boundary_index.h"
 #include "mesh/mesh_loader.h"
 #include "pattern/default_spacing.h"
@@ -115,6 +116,36 @@ TEST(RimRows, EveryHoleOfThePiercedPendantGetsARowAndThePavementStaysSound) {
       for (int l = 1; l < 4; ++l) ringed += rows.per_loop[l], trimmed_ring += trimmed.per_loop[l];
       EXPECT_GT(ringed, trimmed_ring) << what;
     }
+}
+
+TEST(RimRows, AJewellersRowsAroundSteppedHolesTouchAlongThem) {
+  // The jeweller's pierced pendant: 1.3 mm stones, 0.1 mm gap, 0.3 mm margin. Spaced by arc length,
+  // the shortest chord (over a corner of a stepped rim) set the whole row's spacing: stones with
+  // gaps between them all round. By chord they touch (through the gap) along each row.
+  const auto map = test::bundled_map("pendant_pierced");
+  Design design;
+  design.elements.gap = 0.1;
+  design.elements.margin = 0.3;
+  set_stone_size(design, 1.3);
+  design.elements.rim_rows = RimRows::Holes;
+  Elements rows;
+  const RimRowReport report = place_rim_rows(*map, rows, design);
+  ASSERT_EQ(report.loops, 3);
+  const double contact = 1.3 + 0.1;
+  std::vector<double> ratio;  // to the nearest other row stone, over the contact distance
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < rows.size(); ++j)
+      if (j != i) nearest = std::min(nearest, glm::length(rows.position[i] - rows.position[j]));
+    EXPECT_GE(nearest / contact, 1.0 - 1e-9) << i;
+    ratio.push_back(nearest / contact);
+  }
+  std::sort(ratio.begin(), ratio.end());
+  // The count's leftover spread evenly (on the smallest hole, 9 stones, about a ninth); where a
+  // stepped rim's concave corner drops its curve, one stone per hole may sit farther.
+  EXPECT_LT(ratio[ratio.size() / 2], 1.06);
+  EXPECT_LT(ratio[ratio.size() - 5], 1.13);
+  EXPECT_GE(report.placed, 32);
 }
 
 TEST(RimRows, AllRimsIncludesTheOuterEdge) {
