@@ -80,9 +80,12 @@ PlyHeader parse_ply_header(std::string_view bytes, const std::string& source) {
                                                             : PlyHeader::Format::BinaryBigEndian;
     } else if (keyword == "element") {
       PlyElement element;
-      if (tokens.size() != 3 || !parse_integer(tokens[2], element.count) || element.count < 0 ||
-          element.count > INT_MAX)
+      if (tokens.size() != 3 || !parse_integer(tokens[2], element.count))
         bad("expected 'element <name> <count>'");
+      // A count past what a mesh file can hold said "expected 'element <name> <count>'".
+      if (element.count < 0 || element.count > INT_MAX)
+        bad("the count " + std::string(tokens[2]) + " of '" + std::string(tokens[1]) + "' is " +
+            (element.count < 0 ? "negative" : "beyond what Paver reads (" + std::to_string(INT_MAX) + ")"));
       element.name = std::string(tokens[1]);
       const int index = int(header.elements.size());
       for (auto [name, slot, count] : {std::tuple("vertex", &header.vertex_element, &header.vertices),

@@ -97,6 +97,13 @@ TEST(PlyReader, BinaryWithAbsurdCountsIsRefusedBeforeAllocating) {
   EXPECT_TRUE(Contains(message, "but only 10 follow the header"));
 }
 
+TEST(PlyReader, ACountBeyondAnIntSaysSo) {
+  // It said "expected 'element <name> <count>'", though the line was just that.
+  const std::string message = error_of(
+      [] { read_ply("ply\nformat ascii 1.0\nelement vertex 4000000000\nproperty float x\nend_header\n", "big.ply"); });
+  EXPECT_TRUE(Contains(message, "line 3: the count 4000000000 of 'vertex' is beyond what Paver reads")) << message;
+}
+
 TEST(PlyReader, BinaryIndexOutOfRangeNamesItsOffset) {
   const std::string header = float_ply_header(3, 1);
   ByteWriter out;
