@@ -191,8 +191,9 @@ Result<std::shared_ptr<VulkanContext>> VulkanContext::create(const ContextOption
     vk::raii::PhysicalDevices devices(*d.instance);
     if (devices.empty()) return Error{"Vulkan found no device; install a driver (e.g. mesa-vulkan-drivers)"};
     std::string wanted = options.device;
+    bool from_environment = false;
     if (wanted.empty())
-      if (const char* env = std::getenv("PAVER_VULKAN_DEVICE")) wanted = env;
+      if (const char* env = std::getenv("PAVER_VULKAN_DEVICE")) wanted = env, from_environment = true;
     int best = -1, best_rank = 1 << 30;
     std::string seen;
     for (int i = 0; i < int(devices.size()); ++i) {
@@ -207,7 +208,9 @@ Result<std::shared_ptr<VulkanContext>> VulkanContext::create(const ContextOption
       return Error{wanted.empty() ? std::string("no Vulkan 1.2 device with a ") +
                                         (options.graphics ? "graphics and compute" : "compute") + " queue" +
                                         (options.can_present ? " that can present" : "") + " among: " + seen
-                                  : "no Vulkan device matches \"" + wanted + "\"; found: " + seen};
+                                  : "no Vulkan device matches \"" + wanted + "\"" +
+                                        // The user has to know where the name came from to change it.
+                                        (from_environment ? " (from $PAVER_VULKAN_DEVICE)" : "") + "; found: " + seen};
     d.physical_device.emplace(std::move(devices[best]));
     d.info = describe(*d.physical_device);
     d.queue_family = *queue_family(&*d.instance, *d.physical_device, options);

@@ -14,6 +14,8 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -262,6 +264,14 @@ TEST(VulkanContext, DeviceSelectionByName) {
   ASSERT_FALSE(missing.ok());
   EXPECT_NE(missing.error().message.find("no-such-device-xyz"), std::string::npos);
   EXPECT_NE(missing.error().message.find(name), std::string::npos) << "the error lists what was found";
+  EXPECT_EQ(missing.error().message.find("PAVER_VULKAN_DEVICE"), std::string::npos) << "named by the caller";
+  // Named by the environment: the message says so, or the user looks for it in the command.
+  ::setenv("PAVER_VULKAN_DEVICE", "no-such-device-xyz", 1);
+  auto from_environment = gpu::VulkanContext::create(gpu::ContextOptions{});
+  ::unsetenv("PAVER_VULKAN_DEVICE");
+  ASSERT_FALSE(from_environment.ok());
+  EXPECT_NE(from_environment.error().message.find("(from $PAVER_VULKAN_DEVICE)"), std::string::npos)
+      << from_environment.error().message;
 }
 
 // The messenger really reports: an invalid call on a separate validated context is caught. Without
