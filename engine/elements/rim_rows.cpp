@@ -86,8 +86,7 @@ std::vector<CurvePoint> walk_by_chord(const OffsetCurve& curve, double step) {
     const bool gap = curve.arc[k] - curve.arc[k - 1] > 2 * (curve.length / double(n)) + 1e-12;
     const double t = gap || reach <= before ? 1.0 : std::clamp((step - before) / (reach - before), 0.0, 1.0);
     chosen.push_back({k - 1, t, curve.position[k - 1] * (1 - t) + curve.position[k] * t});
-    --k;  // the next element is measured from this one, which may lie before sample k
-    if (t >= 1) ++k;
+    if (t < 1) --k;  // the next element is measured from this one, which lies before sample k
   }
   while (chosen.size() > 1 && glm::length(chosen.back().position - curve.position[0]) < step) chosen.pop_back();
   return chosen;

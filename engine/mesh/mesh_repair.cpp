@@ -139,9 +139,10 @@ struct Components {
   long long dropped_faces = 0;
 };
 
-// Keeps the triangles of the largest component (through shared vertices; see the top comment).
-// Points every corner at the first vertex with its position; returns how many vertices that left
-// unused. The positions stay (unreferenced ones are dropped later, without a second warning).
+// Points every corner at the first vertex with its position (as the STL reader's Welder joins
+// corners: exactly equal, 0 and -0 alike); returns how many vertices that left unused. The
+// positions stay, so that messages keep naming the file's own vertex numbers; the unused ones are
+// dropped later, without a second warning.
 long long weld_equal_positions(const std::vector<glm::dvec3>& positions, std::vector<std::vector<int>>& polygons) {
   std::vector<int> order(positions.size());
   std::iota(order.begin(), order.end(), 0);
@@ -160,6 +161,7 @@ long long weld_equal_positions(const std::vector<glm::dvec3>& positions, std::ve
   return welded;
 }
 
+// Keeps the triangles of the largest component (through shared vertices; see the top comment).
 Components keep_largest_component(std::vector<glm::ivec3>& triangles, size_t vertex_count) {
   DisjointSets sets(vertex_count);
   for (const glm::ivec3& t : triangles) {

@@ -69,6 +69,27 @@ void check_surface_proportions(const std::filesystem::path& path, const SurfaceM
   throw InputError(path.string() + text);
 }
 
+std::shared_ptr<const SurfaceMap> map_closed_mesh(const SurfaceMesh& closed, const std::filesystem::path& path,
+                                                  CutAxis cut, const PipelineProgress& progress,
+                                                  const StopRequested& stop) {
+  try {
+    std::optional<SurfaceMap> atlas = map_closed_surface(
+        closed, cut, path.string(),
+        [&](int chart, int charts) {
+          if (progress)
+            progress(0.05f + 0.9f * float(chart) / float(charts),
+                     "mapping: chart " + std::to_string(chart + 1) + " of " + std::to_string(charts));
+        },
+        [&] { return stop && stop(); });
+    if (!atlas) return nullptr;
+    return std::make_shared<const SurfaceMap>(std::move(*atlas));
+  } catch (const InputError&) {
+    throw;  // names the file and the chart already
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(path.string() + ": " + e.what());
+  }
+}
+
 MappedSurface map_surface_file(const std::filesystem::path& path, const PipelineProgress& progress,
                                const StopRequested& stop, const PipelineWarning& warn, CutAxis cut,
                                const std::function<void(const SurfaceMesh&)>& check_loaded) {
@@ -91,21 +112,9 @@ MappedSurface map_surface_file(const std::filesystem::path& path, const Pipeline
 
   watch = Stopwatch();
   if (loaded.mesh.boundary_loops.empty()) {
-    try {
-      std::optional<SurfaceMap> atlas = map_closed_surface(
-          loaded.mesh, cut, path.string(),
-          [&](int chart, int charts) {
-            report(0.05f + 0.9f * float(chart) / float(charts),
-                   "mapping: chart " + std::to_string(chart + 1) + " of " + std::to_string(charts));
-          },
-          stopped);
-      if (!atlas) return out;
-      out.map = std::make_shared<const SurfaceMap>(std::move(*atlas));
-    } catch (const InputError&) {
-      throw;  // names the file and the chart already
-    } catch (const std::runtime_error& e) {
-      throw std::runtime_error(path.string() + ": " + e.what());
-    }
+    out.closed_surface = std::make_shared<const SurfaceMesh>(std::move(loaded.mesh));
+    out.map = map_closed_mesh(*out.closed_surface, path, cut, progress, stop);
+    if (!out.map) return out;
     out.timings.emplace_back("parameterize", watch.milliseconds());
     report(1.0f, "mapped");
     return out;

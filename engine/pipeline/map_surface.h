@@ -34,7 +34,16 @@ struct MappedSurface {
   std::shared_ptr<const SurfaceMap> map;  // null when stopped
   std::vector<std::string> warnings;      // the loader's repairs (dropped faces, components)
   StageTimings timings;                   // "load", "parameterize"
+  // A closed surface as loaded and checked, to be cut across another axis (map_closed_mesh)
+  // without reading the file again; null for an open surface.
+  std::shared_ptr<const SurfaceMesh> closed_surface;
 };
+
+// A closed surface, loaded from `path`, cut across `cut` and mapped as an atlas; null when
+// stopped. Errors name `path`.
+std::shared_ptr<const SurfaceMap> map_closed_mesh(const SurfaceMesh& closed, const std::filesystem::path& path,
+                                                  CutAxis cut, const PipelineProgress& progress = {},
+                                                  const StopRequested& stop = {});
 
 // Throws InputError for a file Paver cannot pave (naming the file), std::runtime_error naming the
 // file when the map fails.

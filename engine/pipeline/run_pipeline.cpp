@@ -58,8 +58,8 @@ auto naming_the_design_file(const PipelineRequest& request, Check&& check) {
 // a bare belt along the seam (fill 0.83, NOT OK) where a cut across x gave 0.86 and ok. When the
 // first cut's pavement is NOT OK, the three axes are tried and the best kept; the kept design names
 // its axis, so that its design.json repeats it without the tries.
-void try_other_cut_axes(const PipelineRequest& request, const Design& design, PipelineResult& result,
-                        const std::function<void(const SurfaceMesh&)>& check_loaded) {
+void try_other_cut_axes(const PipelineRequest& request, const Design& design, const SurfaceMesh& closed,
+                        PipelineResult& result) {
   const auto score = [](const Pavement& p) {
     return std::make_pair(-int(judge_pavement(p.after).problems.size()), p.after.fill);
   };
@@ -77,12 +77,12 @@ void try_other_cut_axes(const PipelineRequest& request, const Design& design, Pi
   const std::atomic<bool>* stop = request.pavement.stop;
   for (const CutAxis axis : {CutAxis::X, CutAxis::Y, CutAxis::Z}) {
     if (stop && stop->load()) return;
-    MappedSurface mapped = map_surface_file(request.surface_path, {}, [&] { return stop && stop->load(); }, {},
-                                            axis, check_loaded);
-    if (!mapped.map) return;
+    std::shared_ptr<const SurfaceMap> map =
+        map_closed_mesh(closed, request.surface_path, axis, {}, [&] { return stop && stop->load(); });
+    if (!map) return;
     Design cut = design;
     cut.placement.cut_axis = axis;
-    Pavement pavement = make_pavement(*mapped.map, cut, request.pavement);
+    Pavement pavement = make_pavement(*map, cut, request.pavement);
     const auto tried = score(pavement);
     if (tried <= best) continue;
     best = tried;
@@ -90,7 +90,7 @@ void try_other_cut_axes(const PipelineRequest& request, const Design& design, Pi
           count_text(-first.first, "problem", "problems") + " (fill " + number_text(std::round(first.second * 1000) / 1000) +
           "); across " + std::string(cut_axis_name(axis)) + ", " + count_text(-tried.first, "problem", "problems") +
           " (fill " + number_text(std::round(tried.second * 1000) / 1000) + ")";
-    result.map = std::move(mapped.map);
+    result.map = std::move(map);
     result.pavement = std::move(pavement);
   }
   result.cut_axis_choice = why.empty() ? "the longest axis: no other cut did better" : why;
@@ -129,9 +129,10 @@ PipelineResult run_pipeline(PipelineRequest request) {
   // A spacing far too small for the surface's area is refused before the map (a minute on a
   // million faces). The map's area equals the surface's (scale_to_surface_area) up to a band's
   // closure and an atlas's seams: twice the limit leaves the borderline to build_pattern.
-  const std::function<void(const SurfaceMesh&)> refuse_tiny_spacing = [&](const SurfaceMesh& mesh) {
+  const auto refuse_tiny_spacing = [&](const SurfaceMesh& mesh) {
     if (design.pattern.spacing > 0) refuse_too_many_points(surface_area(mesh), cell, design.placement, 2);
   };
+  std::shared_ptr<const SurfaceMesh> closed_surface;  // as loaded: another cut maps it again
   if (request.map) {
     result.map = std::move(request.map);
     result.timings = std::move(request.map_timings);
@@ -143,6 +144,7 @@ PipelineResult run_pipeline(PipelineRequest request) {
     result.map = std::move(mapped.map);
     result.warnings = std::move(mapped.warnings);
     result.timings = std::move(mapped.timings);
+    closed_surface = std::move(mapped.closed_surface);
   }
   check_stop();
 
@@ -156,8 +158,8 @@ PipelineResult run_pipeline(PipelineRequest request) {
   }
   result.pavement = naming_the_design_file(request, [&] { return make_pavement(*result.map, design, request.pavement); });
   check_stop();  // the solves ended early: a partial pavement is not a result
-  if (!request.map && is_atlas(*result.map) && design.placement.cut_axis == CutAxis::Auto)
-    try_other_cut_axes(request, design, result, refuse_tiny_spacing);
+  if (closed_surface && design.placement.cut_axis == CutAxis::Auto)
+    try_other_cut_axes(request, design, *closed_surface, result);
   if (result.pavement.elements.size() == 0) {
     const Pavement& p = result.pavement;
     const double margin = p.design.elements.margin;
