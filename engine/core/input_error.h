@@ -11,4 +11,12 @@ public:
   explicit InputError(const std::string& message) : std::runtime_error(message) {}
 };
 
+// An InputError about one of the design's keys found past the file's own validation (its unit cell,
+// its elements' overlaps, its edits, its placement), which does not know the file: the pipeline
+// names the file in front of it.
+class DesignError : public InputError {
+public:
+  using InputError::InputError;
+};
+
 }  // namespace paver

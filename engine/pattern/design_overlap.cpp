@@ -77,7 +77,7 @@ void check_design_overlaps(const UnitCell& cell, const ElementsDesign& design, d
       // triangle lattice) sit at D up to rounding, which must not read as an overlap.
       const double rounding = 1e-9 * spacing;
       if (elements_collide(d + rounding, 2 * all[i].radius, 2 * all[j].radius, gap))
-        throw InputError(std::string(gap > 0 ? "the design's elements are closer than the gap: "
+        throw DesignError(std::string(gap > 0 ? "the design's elements are closer than the gap: "
                                              : "the design's elements overlap: ") +
                          all[i].name + " and " + all[j].name + " are " + format(d / spacing) +
                          " D apart but need " + format(need / spacing) + " D" +

@@ -99,7 +99,7 @@ Pattern build_pattern(const SurfaceMap& map, const UnitCell& cell, const Placeme
   constexpr double kMaxCellIndex = 1e8;
   if (!(std::abs(lo.x) < kMaxCellIndex && std::abs(lo.y) < kMaxCellIndex && std::abs(hi.x) < kMaxCellIndex &&
         std::abs(hi.y) < kMaxCellIndex))
-    throw InputError("placement: the offset (" + format_number(placement.offset.x) + ", " +
+    throw DesignError("placement: the offset (" + format_number(placement.offset.x) + ", " +
                      format_number(placement.offset.y) + ") puts the pattern about " +
                      format_number(std::max({std::abs(lo.x), std::abs(lo.y), std::abs(hi.x), std::abs(hi.y)})) +
                      " cells from the surface's map; the lattice repeats every cell, so use an offset within the "

@@ -42,7 +42,7 @@ void refuse_edits_off_the_map(const ElementEdits& edits, const LiftedPoints& lif
     const bool moved = k < edits.moved.size();
     const std::size_t i = moved ? k : k - edits.moved.size();
     const glm::dvec2 uv = moved ? edits.moved[i].uv : edits.added[i].uv;
-    throw InputError(edit_name(edits, k) + " (id " + std::to_string(moved ? edits.moved[i].id : edits.added[i].id) +
+    throw DesignError(edit_name(edits, k) + " (id " + std::to_string(moved ? edits.moved[i].id : edits.added[i].id) +
                      "): its uv (" + number_text(uv.x) + ", " + number_text(uv.y) +
                      ") is off this surface's map; remove it, or give a uv on the map (placements.csv's u, v)");
   }
@@ -67,7 +67,7 @@ void refuse_held_edits_on_each_other(const ElementEdits& edits, const LiftedPoin
     near.for_each_near(lifted.position[k], [&](int j) {
       const double distance = glm::length(lifted.position[k] - lifted.position[j]);
       if (elements_collide(distance, diameter, diameter, gap))
-        throw InputError(edit_name(edits, std::size_t(j)) + " and " + edit_name(edits, std::size_t(k)) +
+        throw DesignError(edit_name(edits, std::size_t(j)) + " and " + edit_name(edits, std::size_t(k)) +
                          " hold two stones " + number_text(distance) +
                          " apart, closer than their diameter plus the gap (" + number_text(contact) +
                          "); move or remove one of them");
@@ -85,7 +85,7 @@ std::vector<EditedParticle> add_edited_points(const SurfaceMap& map, Pattern& pa
   for (std::size_t i = 0; i < edits.moved.size(); ++i) {
     const MovedParticle& m = edits.moved[i];
     if (m.id >= designed)
-      throw InputError("edits.moved[" + std::to_string(i) + "]: particle " + std::to_string(m.id) +
+      throw DesignError("edits.moved[" + std::to_string(i) + "]: particle " + std::to_string(m.id) +
                        " is not in this pattern, which has " + std::to_string(designed) + " (ids 0.." +
                        std::to_string(designed - 1) +
                        "); the edits were made for another spacing, pattern or placement: remove them");

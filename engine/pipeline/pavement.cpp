@@ -39,7 +39,7 @@ UnitCell make_design_cell(const PatternDesign& pattern) {
     try {
       apply_operator(cell, pattern.operators[i]);
     } catch (const InputError& e) {
-      throw InputError("pattern.operators[" + std::to_string(i) + "]: " + e.what());
+      throw DesignError("pattern.operators[" + std::to_string(i) + "]: " + e.what());
     }
   }
   if (pattern.bracing) add_bracing_edges(cell);
@@ -75,7 +75,7 @@ void check_edits_topology(const Design& design) {
     throw InputError("edits: element edits name the elements of one pattern, but pattern.topology is \"auto\"; "
                      "set it to \"lattice\" or \"adaptive\" (the one the edits were made on)");
   if (topology == Topology::Adaptive && !(edits.moved.empty() && edits.added.empty()))
-    throw InputError(std::string("edits.") + (edits.moved.empty() ? "added" : "moved") +
+    throw DesignError(std::string("edits.") + (edits.moved.empty() ? "added" : "moved") +
                      ": the adaptive pattern's relaxation cannot hold elements in place yet; use pattern.topology "
                      "\"lattice\" to pin, move or add elements (deleting works on both)");
 }
@@ -92,12 +92,12 @@ UnitCell check_design_cell(const Design& design) {
   for (size_t s = 0; s < design.elements.edge.size(); ++s)
     for (int e : design.elements.edge[s].cell_edges)
       if (e < 0 || e >= int(unit_cell.edges.size()))
-        throw InputError("elements.edge[" + std::to_string(s) + "].cell_edges: edge " + std::to_string(e) +
+        throw DesignError("elements.edge[" + std::to_string(s) + "].cell_edges: edge " + std::to_string(e) +
                          " does not exist; the unit cell has edges 0.." + std::to_string(unit_cell.edges.size() - 1));
   if (!design.elements.allow_overlap) check_design_overlaps(unit_cell, design.elements, 1.0);
   if (design.pattern.topology == Topology::Adaptive)
     if (const std::string why = adaptive_pattern_unsupported(design); !why.empty())
-      throw InputError("pattern.topology: \"adaptive\" cannot take this design: " + why +
+      throw DesignError("pattern.topology: \"adaptive\" cannot take this design: " + why +
                        "; use \"lattice\"");
   if (design.pattern.spacing <= 0) return unit_cell;
   UnitCell cell = design.pattern.spacing != 1 ? make_design_cell(design.pattern) : unit_cell;

@@ -37,20 +37,16 @@ void refuse_large_output(const ElementMeshSize& size, const PipelineRequest& req
   throw InputError(text);
 }
 
-// Runs `check`, naming the design file in front of an error about one of its keys (the pattern's
-// cell, its elements' overlaps, its edits), as the file's own validation does: the user has to
-// know which file to open.
+// Runs `check`, naming the design file in front of a DesignError (the pattern's cell, its
+// elements' overlaps, its edits), as the file's own validation does: the user has to know which
+// file to open.
 template <class Check>
 auto naming_the_design_file(const PipelineRequest& request, Check&& check) {
   try {
     return check();
-  } catch (const InputError& e) {
-    const std::string message = e.what(), source = request.design_path.string();
-    const bool about_a_key = message.rfind("pattern.", 0) == 0 || message.rfind("elements.", 0) == 0 ||
-                             message.rfind("edits.", 0) == 0 || message.rfind("placement", 0) == 0 ||
-                             message.rfind("the design's elements", 0) == 0;
-    if (source.empty() || !about_a_key) throw;
-    throw InputError(source + ": " + message);
+  } catch (const DesignError& e) {
+    if (request.design_path.empty()) throw;
+    throw DesignError(request.design_path.string() + ": " + e.what());
   }
 }
 
