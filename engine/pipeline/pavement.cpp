@@ -72,7 +72,7 @@ void check_edits_topology(const Design& design) {
   const ElementEdits& edits = design.edits;
   if (edits.empty()) return;
   if (topology == Topology::Auto)
-    throw InputError("edits: element edits name the elements of one pattern, but pattern.topology is \"auto\"; "
+    throw DesignError("edits: element edits name the elements of one pattern, but pattern.topology is \"auto\"; "
                      "set it to \"lattice\" or \"adaptive\" (the one the edits were made on)");
   if (topology == Topology::Adaptive && !(edits.moved.empty() && edits.added.empty()))
     throw DesignError(std::string("edits.") + (edits.moved.empty() ? "added" : "moved") +
