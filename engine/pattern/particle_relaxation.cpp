@@ -22,7 +22,7 @@ namespace {
 constexpr int kIterations = 800;
 constexpr int kPopulationIterations = 400;  // population control only before this
 constexpr int kRetriangulateEvery = 5;
-constexpr double kPressure = 1.1;  // bars push until 1.1x their length (DistMesh: 1.2; 1.1 left fewer defects here)           // DistMesh's Fscale: bars push until 1.2x their length
+constexpr double kPressure = 1.1;  // bars push until 1.1x their length (DistMesh: 1.2; 1.1 left fewer defects here)
 constexpr double kStep = 0.2;               // DistMesh's time step
 constexpr double kMaxMove = 0.2;            // of the local spacing per iteration
 constexpr double kSettled = 2e-4;           // of the local spacing: the largest move when settled
