@@ -106,6 +106,16 @@ std::string report_html(const json& report, const std::string& preview_png) {
           " pattern, D = " + text_of(at(design, "spacing")) + " " + escaped(units) + ", gap " +
           text_of(at(design, "gap")) + ", margin " + text_of(at(design, "margin")) + ".</p>\n";
 
+  // A band's closure changes D (and, with stones kept, the free space between them): say so beside
+  // the design's figures, which are the rule the pavement was checked against.
+  const json& band = at(at(report, "pattern"), "band");
+  if (band.is_object()) {
+    if (at(at(band, "closure"), "text").is_string())
+      html += "<p>Band: " + text_of(at(at(band, "closure"), "text")) + ".</p>\n";
+    else if (at(band, "annulus_because").is_string())
+      html += "<p>Band paved as an annulus: " + text_of(at(band, "annulus_because")) + ".</p>\n";
+  }
+
   const bool ok = at(verdict, "ok").is_boolean() && at(verdict, "ok").get<bool>();
   html += std::string("<h2>Verdict: <span class=\"") + (ok ? "ok\">ok" : "bad\">NOT OK") + "</span></h2>\n";
   if (ok) html += "<p>No contact violations, no boundary crossings, pattern intact.</p>\n";

@@ -41,6 +41,16 @@ TEST(ReportHtml, ShowsTheVerdictTheStonesTheBeadsAndTheMetalFromTheReport) {
   EXPECT_TRUE(has(html, "No picture: run with --png"));
 }
 
+TEST(ReportHtml, SaysHowABandWasClosed) {
+  nlohmann::json report = sample_report();
+  EXPECT_FALSE(has(report_html(report, ""), "Band"));
+  report["pattern"]["band"] = {{"seamless", true},
+                               {"closure", {{"text", "D 1.5 -> 1.52: 40 lattice steps close the band; the stones keep their size, the gap takes the change"}}}};
+  EXPECT_TRUE(has(report_html(report, ""), "<p>Band: D 1.5 -&gt; 1.52: 40 lattice steps close the band; the stones keep their size"));
+  report["pattern"]["band"] = {{"seamless", false}, {"annulus_because", "the design has edge operators"}};
+  EXPECT_TRUE(has(report_html(report, ""), "<p>Band paved as an annulus: the design has edge operators.</p>"));
+}
+
 TEST(ReportHtml, EmbedsThePreviewSoTheFileStandsAlone) {
   const std::string html = report_html(sample_report(), std::string("\x89PNG\r\n", 6));
   EXPECT_TRUE(has(html, "src=\"data:image/png;base64,iVBORw0K\"")) << html.substr(0, 2000);
