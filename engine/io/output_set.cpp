@@ -200,4 +200,11 @@ int OutputSet::remove_stale_staging(const fs::path& folder) {
   return removed;
 }
 
+std::string OutputSet::with_final_names(std::string message) const {
+  const std::string staged = staging_.string(), final_folder = folder_.string();
+  for (std::size_t at = message.find(staged); at != std::string::npos; at = message.find(staged, at + final_folder.size()))
+    message.replace(at, staged.size(), final_folder);
+  return message;
+}
+
 }  // namespace paver

@@ -34,6 +34,10 @@ public:
   // Where to write the files, under their final names.
   const std::filesystem::path& staging() const { return staging_; }
 
+  // `message` with the staging folder's path replaced by the output folder's: a file that could
+  // not be written is named where the user will look for it.
+  std::string with_final_names(std::string message) const;
+
   // Moves the staged files into the output folder as described above; `last` (if staged) goes in
   // after all the others.
   void publish(const std::string& last = "report.json");

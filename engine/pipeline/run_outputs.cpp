@@ -4,6 +4,7 @@
 #include "report/bill_of_stones.h"
 #include "report/report_html.h"
 
+#include "core/input_error.h"
 #include "core/interrupted.h"
 #include "io/output_set.h"
 
@@ -71,16 +72,20 @@ void write_run_outputs(const fs::path& folder, const RunInfo& info, const Surfac
   check_stop();
   OutputSet::remove_stale_staging(folder);  // left by runs that were killed
   OutputSet set(folder, run_output_names());
-  const Stopwatch watch;
-  write_run_files(set.staging(), map, pavement, options);
-  timings.emplace_back("export",
-                       watch.milliseconds());
-  check_stop();
-  nlohmann::json sections = nlohmann::json::object();
-  if (extras) extras(set.staging(), timings, sections);
-  check_stop();
-  const nlohmann::json report = write_run_report(set.staging(), info, map, pavement, timings, &sections);
-  write_report_html(set.staging(), report);
+  try {
+    const Stopwatch watch;
+    write_run_files(set.staging(), map, pavement, options);
+    timings.emplace_back("export", watch.milliseconds());
+    check_stop();
+    nlohmann::json sections = nlohmann::json::object();
+    if (extras) extras(set.staging(), timings, sections);
+    check_stop();
+    const nlohmann::json report = write_run_report(set.staging(), info, map, pavement, timings, &sections);
+    write_report_html(set.staging(), report);
+  } catch (const InputError& e) {
+    // Nothing is published, so the folder is as it was.
+    throw InputError(set.with_final_names(e.what()) + "; " + folder.string() + " is left as it was");
+  }
   check_stop();
   set.publish("report.json");
 }

@@ -450,6 +450,9 @@ TEST_F(PaverRun, AFileSizeLimitIsReportedAndLeavesNothing) {
                                   dir());
   EXPECT_EQ(r.exit_code, 2) << describe(r);
   EXPECT_NE(r.err.find("larger than this process may write (ulimit -f)"), std::string::npos) << describe(r);
+  // The file is named where the user will look for it, not in the staging folder that is gone.
+  EXPECT_NE(r.err.find("cannot write " + (out / "").string()), std::string::npos) << describe(r);
+  EXPECT_EQ(r.err.find("staging"), std::string::npos) << describe(r);
   for (const auto& entry : fs::directory_iterator(dir()))
     EXPECT_EQ(entry.path().filename().string().find("out"), std::string::npos) << "left behind: " << entry.path();
 }
