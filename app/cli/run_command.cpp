@@ -407,7 +407,7 @@ std::function<int()> add_run_command(CLI::App& app) {
       ->check(app::not_empty());
   cmd->add_flag("--no-optimize", args->no_optimize, "Skip the section 5 optimizer (initial pavement only)");
   cmd->add_flag("--no-postprocess", args->no_postprocess, "Skip boundary filling and elimination (5.4)");
-  cmd->add_option("--threads", args->threads, "Solver threads (0 = all cores)")->check(CLI::Range(0, 1024));
+  cmd->add_option("--threads", args->threads, "Solver threads (0 = all cores; no more than the cores are used)")->check(CLI::Range(0, 1024));
   app::add_backend_option(*cmd, args->backend);
   cmd->add_option("--device", args->device, "Vulkan device: a substring of its name (see `paver devices`)")
       ->check(app::not_empty());

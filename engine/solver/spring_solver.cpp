@@ -69,7 +69,9 @@ CpuSpringSolver::CpuSpringSolver(const SolverSurface& surface, SpringSystem& sys
       params_(params),
       constants_(make_solver_constants(params, surface)),
       threshold_(float(params.threshold * spacing)),
-      threads_(threads > 0 ? threads : tbb::this_task_arena::max_concurrency()) {
+      // More threads than cores would gain nothing, and TBB warns on stderr about each one it refuses.
+      threads_(threads > 0 ? std::min(threads, tbb::this_task_arena::max_concurrency())
+                           : tbb::this_task_arena::max_concurrency()) {
   const int n = system.particle_count();
   lifted_.resize(n);
   pulled_back_.assign(n, 0);

@@ -457,6 +457,14 @@ TEST_F(PaverRun, AFileSizeLimitIsReportedAndLeavesNothing) {
     EXPECT_EQ(entry.path().filename().string().find("out"), std::string::npos) << "left behind: " << entry.path();
 }
 
+// TBB printed a warning for every thread past the cores, whatever --quiet said.
+TEST_F(PaverRun, MoreThreadsThanCoresAreQuietlyTheCores) {
+  const CliResult r = paver({"run", "assets/surfaces/dome.obj", "--spacing", "6", "--formats", "ply", "--threads",
+                             "1024", "--quiet", "--out", (dir() / "out").string()});
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  EXPECT_EQ(r.err, "") << describe(r);
+}
+
 TEST_F(PaverRun, KeepsTheUsersFilesInTheOutputFolder) {
   const fs::path out = dir() / "out";
   fs::create_directories(out);
