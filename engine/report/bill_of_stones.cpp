@@ -106,7 +106,7 @@ nlohmann::json to_json(const BillOfStones& bill) {
   for (const StoneRow& row : bill.rows) {
     nlohmann::json item = {{"shape", shape_name(row.shape)}, {"diameter_mm", row.diameter_mm}, {"count", row.count}};
     item["carat_each"] = row.carat_each ? nlohmann::json(*row.carat_each) : nlohmann::json(nullptr);
-    item["carat_total"] = row.carat_total;
+    item["carat_total"] = row.carat_each ? nlohmann::json(row.carat_total) : nlohmann::json(nullptr);  // no "0 ct" for a bead
     rows.push_back(std::move(item));
   }
   return {{"units", units_name(bill.units)},

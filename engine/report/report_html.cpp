@@ -136,7 +136,7 @@ std::string report_html(const json& report, const std::string& preview_png) {
   if (at(stones, "rows").is_array())
     for (const json& r : at(stones, "rows"))
       row(html, {text_of(at(r, "shape")), fixed(at(r, "diameter_mm"), 2), text_of(at(r, "count")),
-                 carats(at(r, "carat_each"), carat_each_text), carats(at(r, "carat_each").is_number() ? at(r, "carat_total") : json(), carat_total_text)});
+                 carats(at(r, "carat_each"), carat_each_text), carats(at(r, "carat_total"), carat_total_text)});
   row(html, {"<b>total</b>", "", "<b>" + text_of(at(stones, "count")) + "</b>", "",
              "<b>" + carats(at(stones, "carat_total"), carat_total_text) + "</b>"});
   html += "</table>\n<p><small>" + text_of(at(stones, "carat_rule")) + "</small></p>\n";
