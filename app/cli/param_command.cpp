@@ -92,9 +92,8 @@ int run_param(const ParamArgs& args) {
   const double param_ms = map_watch.milliseconds();
 
   const auto& q = param.quality;
-  std::printf("%s from %s: %d iterations (%d factorization%s) in %.1f ms (%d steps shortened to stay bijective)\n",
-              std::string(map_energy_name(param.report.energy)).c_str(),
-              std::string(map_start_name(param.report.start_used)).c_str(), param.report.iterations,
+  std::printf("%s: %d iterations (%d factorization%s) in %.1f ms (%d steps shortened to stay bijective)\n",
+              map_method_name(param.report).c_str(), param.report.iterations,
               param.report.factorizations, param.report.factorizations == 1 ? "" : "s", param_ms, param.report.blocked_steps);
   std::printf("  flipped triangles: %d, boundary self-intersections: %d -> %s\n", q.flipped_triangles,
               q.boundary_intersections, q.bijective() ? "bijective" : "NOT bijective");

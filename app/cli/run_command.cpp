@@ -255,9 +255,8 @@ int run_run(const RunArgs& args) {
   std::printf("surface  %s: %d vertices, %d faces, area %.6g, %s\n", printable(args.surface).c_str(),
               is_atlas(map) ? map.closed_surface_vertices : map.mesh.vertex_count(),
               is_atlas(map) ? map.closed_surface_faces : map.mesh.face_count(), surface_area(map.mesh), shape.c_str());
-  std::printf("map      %s from %s, %d iterations: %d flips, %d boundary overlaps, s1/s2 mean %.3f max %.3f\n",
-              std::string(map_energy_name(pr.energy)).c_str(), std::string(map_start_name(pr.start_used)).c_str(),
-              pr.iterations, q.flipped_triangles,
+  std::printf("map      %s, %d iterations: %d flips, %d boundary overlaps, s1/s2 mean %.3f max %.3f\n",
+              map_method_name(pr).c_str(), pr.iterations, q.flipped_triangles,
               q.boundary_intersections, q.stretch_mean, q.stretch_max);
   std::printf("pattern  %s %s, D = %g: %d points, %ld edges (+%ld virtual), %ld edges cross the boundary",
               std::string(tessellation_name(pavement.design.pattern.tessellation)).c_str(),

@@ -8,6 +8,7 @@
 #include "core/stopwatch.h"
 #include "map/hole_patches.h"
 #include "map/lscm.h"
+#include "map/planar_map.h"
 #include "map/tutte_embedding.h"
 #include "mesh/surface_scaling.h"
 #include "mesh/triangle_geometry.h"
@@ -540,6 +541,12 @@ std::string_view map_energy_key(MapEnergy energy) { return kEnergyNaming[int(ene
 std::string_view map_start_name(MapStart start) { return kStartNaming[int(start)].name; }
 std::string_view map_start_key(MapStart start) { return kStartNaming[int(start)].key; }
 
+std::string map_method_name(const MapReport& report) {
+  if (report.planar) return "the projection onto its plane (the surface is flat)";
+  return std::string(map_energy_name(report.energy)) + " from " + std::string(map_start_name(report.start_used));
+}
+std::string_view map_method_key(const MapReport& report) { return report.planar ? "planar" : map_energy_key(report.energy); }
+
 MapOptions map_options_for(const SurfaceMesh& mesh, MapPiece piece) {
   MapOptions options;
   if (piece == MapPiece::Chart || mesh.boundary_loops.size() != 1) options.energy = MapEnergy::Arap;
@@ -547,6 +554,8 @@ MapOptions map_options_for(const SurfaceMesh& mesh, MapPiece piece) {
 }
 
 Parameterization parameterize_surface(const SurfaceMesh& mesh, const MapOptions& options) {
+  if (options.start == MapStart::Auto)
+    if (std::optional<Parameterization> flat = planar_parameterization(mesh)) return std::move(*flat);
   MapSolver solver(mesh, options);
   solver.iterate(options.max_iterations);
   return finish_parameterization(mesh, solver);
@@ -563,6 +572,8 @@ std::optional<Parameterization> parameterize_surface(const SurfaceMesh& mesh, co
                                                   const std::function<bool()>& stop) {
   constexpr int kIterationsPerChunk = 5;  // a few per second on a 1M-face mesh
   const auto stopped = [&] { return stop && stop(); };
+  if (options.start == MapStart::Auto)
+    if (std::optional<Parameterization> flat = planar_parameterization(mesh)) return flat;
   MapSolver solver(mesh, options);
   while (solver.report().iterations < options.max_iterations) {
     if (stopped()) return std::nullopt;

@@ -72,7 +72,13 @@ struct MapReport {
   int factorizations = 0;            // ARAP: 1 (its Laplacian); symmetric Dirichlet: proxies factorized (at most one more than iterations)
   double precompute_ms = 0;
   double solve_ms = 0;
+  bool planar = false;               // a flat surface, projected onto its plane (planar_map.h): no descent
 };
+
+// How the summaries name the method ("symmetric Dirichlet from LSCM", "the projection onto its
+// plane") and report.json keys it ("symmetric_dirichlet", "planar").
+std::string map_method_name(const MapReport& report);
+std::string_view map_method_key(const MapReport& report);
 
 struct Parameterization {
   std::vector<glm::dvec2> uv;        // #V parameter coordinates; 2D area equals 3D area
@@ -123,7 +129,8 @@ enum class MapPiece { Surface, Chart };
 //   gap of 8% of D keeps fill 0.852 on ARAP charts against 0.846 on symmetric Dirichlet ones.
 MapOptions map_options_for(const SurfaceMesh& mesh, MapPiece piece = MapPiece::Surface);
 
-// One call: start map, descent to convergence, then finish_parameterization.
+// One call: start map, descent to convergence, then finish_parameterization. A flat surface with
+// the automatic start is projected onto its plane instead (planar_map.h): the same for both calls.
 Parameterization parameterize_surface(const SurfaceMesh& mesh, const MapOptions& options = {});
 
 // The same, iterated a few steps at a time for long maps: `progress(done, max, energy)` after each chunk,

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numbers>
 #include <unordered_map>
@@ -353,6 +354,8 @@ SurfaceMap make_seamless_surface_map(const SurfaceMap& annulus, const SeamlessBa
 
 void add_seamless_map(SurfaceMap& annulus) {
   if (!is_band(annulus)) return;
+  annulus.seamless_unavailable = not_a_band(annulus);
+  if (!annulus.seamless_unavailable.empty()) return;
   if (annulus.parameterization.hole_centres.size() != 1) {
     annulus.seamless_unavailable = "its map has no hole centre";
     return;
@@ -365,6 +368,28 @@ void add_seamless_map(SurfaceMap& annulus) {
     return;
   }
   annulus.seamless = std::make_shared<const SurfaceMap>(make_seamless_surface_map(annulus, *band));
+}
+
+std::string not_a_band(const SurfaceMap& annulus) {
+  if (annulus.parameterization.report.planar)
+    return "it is flat: its plane holds a regular lattice everywhere, where rows closed around the hole would fan out";
+  const auto loop_length = [&](const std::vector<int>& loop) {
+    double length = 0;
+    for (std::size_t k = 0; k < loop.size(); ++k)
+      length += glm::length(annulus.mesh.positions[loop[(k + 1) % loop.size()]] - annulus.mesh.positions[loop[k]]);
+    return length;
+  };
+  const double a = loop_length(annulus.mesh.boundary_loops[0]), b = loop_length(annulus.mesh.boundary_loops[1]);
+  const double shorter = std::min(a, b), longer = std::max(a, b);
+  if (shorter < kBandRimRatio * longer) {
+    char why[200];
+    std::snprintf(why, sizeof why,
+                  "its inner rim (%.4g long) is under %g of the outer (%.4g): a hole in the surface, which rows closed "
+                  "around it would cross %.1f times closer at the hole than at the edge",
+                  shorter, kBandRimRatio, longer, longer / shorter);
+    return why;
+  }
+  return "";
 }
 
 }  // namespace paver

@@ -36,6 +36,15 @@ std::optional<SeamlessBandMap> map_band_seamlessly(const SurfaceMesh& band, cons
 // The lifting data of a seamless map: a SurfaceMap that wraps (normals and curvature from `annulus`).
 SurfaceMap make_seamless_surface_map(const SurfaceMap& annulus, const SeamlessBandMap& band);
 
+// A band's rows close around it with one count, so their spacing along each row follows the rim's
+// length: where one rim is this much shorter than the other, the surface is a sheet with a hole
+// (a wall with a window), not a band, and is paved like any surface with a hole.
+inline constexpr double kBandRimRatio = 0.25;
+
+// Why a surface with two boundary loops is paved as a sheet with a hole rather than as a band
+// (flat, or rims of very different lengths: above); empty when it is a band.
+std::string not_a_band(const SurfaceMap& annulus);
+
 // Both for a band's annulus map: fills annulus.seamless, or annulus.seamless_unavailable.
 void add_seamless_map(SurfaceMap& annulus);
 

@@ -104,7 +104,7 @@ nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const
                    {"area", surface_area(map.mesh)},
                    {"curvature_min", map.curvature_min},
                    {"curvature_max", map.curvature_max}}},
-      {"parameterization", {{"method", map_energy_key(r.energy)},
+      {"parameterization", {{"method", map_method_key(r)},
                             {"start", map_start_key(r.start_used)},
                             {"iterations", r.iterations},
                             {"blocked_steps", r.blocked_steps},

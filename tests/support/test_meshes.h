@@ -73,6 +73,28 @@ SurfaceMesh band_surface(int nu, int nv, F&& f) {
   return make_surface(std::move(positions), faces, "band_surface").mesh;
 }
 
+// A flat sheet of nu x nv quads over [0,1]^2 with the quads inside each of `windows` (min and
+// max corners in [0,1]^2) left out, mapped through `f(u, v)` to 3D: a wall with windows.
+template <class F>
+SurfaceMesh sheet_with_windows(int nu, int nv, const std::vector<std::pair<glm::dvec2, glm::dvec2>>& windows, F&& f) {
+  std::vector<glm::dvec3> positions;
+  std::vector<std::vector<int>> faces;
+  for (int j = 0; j <= nv; ++j)
+    for (int i = 0; i <= nu; ++i) positions.push_back(f(double(i) / nu, double(j) / nv));
+  auto id = [&](int i, int j) { return j * (nu + 1) + i; };
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      const glm::dvec2 middle((i + 0.5) / nu, (j + 0.5) / nv);
+      bool open = false;
+      for (const auto& [lo, hi] : windows)
+        open = open || (middle.x > lo.x && middle.x < hi.x && middle.y > lo.y && middle.y < hi.y);
+      if (open) continue;
+      faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return make_surface(std::move(positions), faces, "sheet_with_windows").mesh;
+}
+
 }  // namespace paver::test
 
 namespace paver::test {
