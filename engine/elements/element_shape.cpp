@@ -230,8 +230,11 @@ ShapeMesh custom_shape_from_soup(const PolygonSoup& soup, const std::string& sou
 
   // The footprint the contact rule assumes is a disc of the element's diameter: the shape is
   // scaled so that its outline seen along +Z fits the unit disc around its bounding box's centre
-  // (a square fits by its corners, not by its sides).
-  const glm::dvec3 centre = 0.5 * (lo + hi);
+  // (a square fits by its corners, not by its sides). Its height stays as modelled when z = 0
+  // lies within it: that plane is the surface (a boss drawn standing on z = 0 stands on the
+  // surface, not half sunk into it); a shape drawn away from z = 0 is centred on its box.
+  glm::dvec3 centre = 0.5 * (lo + hi);
+  if (lo.z <= 0 && 0 <= hi.z) centre.z = 0;
   double reach = 0;
   for (const glm::dvec3& p : points) reach = std::max(reach, glm::length(glm::dvec2(p - centre)));
   const double width = 2 * reach;

@@ -18,7 +18,8 @@ enum class ShapeKind { Sphere, Gem, HexPrism, Disc, Custom };
 
 struct ShapeMesh {
   std::vector<glm::vec3> positions;   // #V, inside the unit-diameter disc in the XY plane (the contact
-                                      // rule's footprint), centred at the origin
+                                      // rule's footprint), centred at the origin (a custom shape:
+                                      // in XY, and in Z unless the file puts its base elsewhere)
   std::vector<glm::ivec3> triangles;  // #F, counter-clockwise seen from outside
 };
 
@@ -40,7 +41,8 @@ enum class ShapeDetail { Full, Coarse, Minimal };
 ShapeMesh make_builtin_shape(ShapeKind kind, ShapeDetail detail = ShapeDetail::Full);
 
 // Loads an OBJ, OFF, PLY or STL file with the surfaces' readers (mesh/read_mesh_file.h) and
-// normalises it: centred on its bounding box, scaled so its widest XY extent is 1. Throws
+// normalises it: centred on its bounding box in XY, scaled so its outline fits the unit disc; in Z
+// the file's z = 0 is kept as the surface when it lies within the shape, else it is centred. Throws
 // InputError ("custom shape <file>: ...", the place and what is wrong) when it cannot.
 ShapeMesh load_custom_shape(const std::filesystem::path& path);
 // The same normalisation for a file already read; `source` starts its error messages.

@@ -4,6 +4,7 @@
 #include "mesh/mesh_loader.h"
 
 #include "input_error_assertions.h"
+#include "test_meshes.h"
 
 #include <gtest/gtest.h>
 
@@ -207,6 +208,24 @@ TEST(ElementShape, LoadCustomShapeNormalisesAndTriangulates) {
   for (int axis = 0; axis < 3; ++axis) EXPECT_NEAR(box.lo[axis] + box.hi[axis], 0.0, 1e-6);
   expect_closed(shape);
   EXPECT_GT(signed_volume(shape), 0);
+}
+
+// A shape drawn standing on z = 0 (a boss, a cone on its base) keeps that plane as the surface:
+// bounding-box centring sank the bundled boss half into the mould (3.5 mm of its 5.4 mm).
+TEST(ElementShape, LoadCustomShapeKeepsZeroHeightAsTheSurface) {
+  const TempFolder folder;
+  const auto path = folder.file("cone.obj");
+  // A square pyramid 4 wide and 2 high, base on z = 0.
+  write(path, "v -2 -2 0\nv 2 -2 0\nv 2 2 0\nv -2 2 0\nv 0 0 2\nf 1 4 3 2\nf 1 2 5\nf 2 3 5\nf 3 4 5\nf 4 1 5\n");
+  const Box box = bounds(load_custom_shape(path));
+  const double scale = 0.5 / std::sqrt(8.0);  // the corners reach 2 sqrt(2)
+  EXPECT_NEAR(box.lo.z, 0.0, 1e-7) << "its base is on the surface";
+  EXPECT_NEAR(box.hi.z, 2 * scale, 1e-6);
+  EXPECT_NEAR(box.lo.x + box.hi.x, 0.0, 1e-6);
+  // The bundled boss is drawn 0.15 into the surface and 0.5 out of it, at unit diameter.
+  const Box boss = bounds(load_custom_shape(test::source_dir() / "assets/shapes/boss.obj"));
+  EXPECT_NEAR(boss.lo.z, -0.15, 1e-5);
+  EXPECT_NEAR(boss.hi.z, 0.5, 1e-5);
 }
 
 TEST(ElementShape, LoadCustomShapeRejectsBadFiles) {
