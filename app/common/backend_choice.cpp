@@ -2,6 +2,8 @@
 
 #include "core/input_error.h"
 
+#include <cstdlib>
+
 #ifdef PAVER_WITH_VULKAN
 #include "paver/compute/vulkan_context.h"
 #include "paver/compute/vulkan_spring_solver.h"
@@ -14,9 +16,12 @@ BackendChoice choose_backend(const std::string& backend, const std::string& devi
     throw InputError("backend '" + backend + "': use cpu, vulkan or auto");
   BackendChoice choice{cpu_solver_factory(threads), "cpu", ""};
   if (backend == "cpu") return choice;
-  // A device the user named must exist, whatever the backend: falling back silently would hide a typo.
-  const bool must_use_vulkan = backend == "vulkan" || !device.empty();
-  const std::string flag = backend == "vulkan" ? "--backend vulkan" : "--device " + device;
+  // A device the user named, by --device or $PAVER_VULKAN_DEVICE, must exist and is used, whatever
+  // the backend: falling back silently would hide a typo.
+  const char* from_environment = std::getenv("PAVER_VULKAN_DEVICE");
+  const bool named = !device.empty() || (from_environment && *from_environment);
+  const bool must_use_vulkan = backend == "vulkan" || named;
+  const std::string flag = backend == "vulkan" ? "--backend vulkan" : !device.empty() ? "--device " + device : "--backend " + backend;
 #ifdef PAVER_WITH_VULKAN
   gpu::ContextOptions options;
   options.device = device;
@@ -27,7 +32,7 @@ BackendChoice choose_backend(const std::string& backend, const std::string& devi
   }
   // auto takes a real GPU only: on a CPU implementation (lavapipe) the CPU solver is as fast.
   const std::string type = context.value()->device().type;
-  if (backend == "auto" && device.empty() && type != "discrete" && type != "integrated" && type != "virtual")
+  if (backend == "auto" && !named && type != "discrete" && type != "integrated" && type != "virtual")
     return choice;
   auto session = gpu::VulkanSolverSession::create(context.value());
   if (!session) {

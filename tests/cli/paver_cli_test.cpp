@@ -1016,7 +1016,8 @@ TEST_F(PaverCli, DevicesAndBadDeviceName) {
   const CliResult devices = paver({"devices"});
 #ifndef PAVER_WITH_VULKAN
   // Built without Vulkan: it says so, and every Vulkan flag is refused before any work.
-  EXPECT_NE(devices.out.find("built without Vulkan"), std::string::npos) << describe(devices);
+  EXPECT_EQ(devices.exit_code, 2) << describe(devices);
+  EXPECT_NE(devices.err.find("built without Vulkan"), std::string::npos) << describe(devices);
   for (const char* backend : {"vulkan", "auto"}) {
     const CliResult bad = paver({"run", "assets/surfaces/wave.obj", "--backend", backend, "--device", "no-such-gpu-xyz",
                                  "--out", (dir() / "x").string()});
@@ -1028,7 +1029,8 @@ TEST_F(PaverCli, DevicesAndBadDeviceName) {
   return;
 #endif
   if (devices.exit_code != 0) {
-    EXPECT_NE(devices.out.find("no Vulkan"), std::string::npos) << describe(devices);
+    EXPECT_EQ(devices.exit_code, 2) << describe(devices);
+    EXPECT_NE(devices.err.find("paver: error: no Vulkan"), std::string::npos) << describe(devices);
     std::fprintf(stderr, "\n*** NO VULKAN DEVICE: the device half of PaverCli.DevicesAndBadDeviceName is SKIPPED ***\n\n");
     return;
   }
@@ -1044,6 +1046,19 @@ TEST_F(PaverCli, DevicesAndBadDeviceName) {
   EXPECT_NE(bad_auto.err.find("--device no-such-gpu-xyz"), std::string::npos) << describe(bad_auto);
   EXPECT_EQ(bad_auto.err.find("paver: loading"), std::string::npos) << "the run went ahead: " << describe(bad_auto);
   EXPECT_FALSE(fs::exists(dir() / "y")) << describe(bad_auto);
+  // $PAVER_VULKAN_DEVICE names a device as --device does: no match is the same error (the run
+  // went on on the CPU), and `paver devices` says so on stderr with exit 2 (it printed to stdout, exit 1).
+  const CliResult bad_environment =
+      run_program("/usr/bin/env", {"PAVER_VULKAN_DEVICE=no-such-gpu-xyz", PAVER_CLI, "run", "assets/surfaces/wave.obj",
+                                   "--out", (dir() / "z").string()},
+                  dir());
+  EXPECT_EQ(bad_environment.exit_code, 2) << describe(bad_environment);
+  EXPECT_NE(bad_environment.err.find("PAVER_VULKAN_DEVICE"), std::string::npos) << describe(bad_environment);
+  EXPECT_FALSE(fs::exists(dir() / "z")) << describe(bad_environment);
+  const CliResult listed = run_program("/usr/bin/env", {"PAVER_VULKAN_DEVICE=no-such-gpu-xyz", PAVER_CLI, "devices"}, dir());
+  EXPECT_EQ(listed.exit_code, 2) << describe(listed);
+  EXPECT_NE(listed.err.find("paver: error: --backend vulkan: "), std::string::npos) << describe(listed);
+  EXPECT_FALSE(listed.out.empty()) << "the devices are still listed: " << describe(listed);
 }
 
 }  // namespace
