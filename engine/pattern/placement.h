@@ -17,7 +17,8 @@ std::string_view band_rows_name(BandRows rows);  // "along", "across"
 
 struct Placement {
   glm::dvec2 offset{0, 0};   // pattern-plane units (same as D); default 0
-  double rotation_deg = 0;   // degrees, counter-clockwise; default 0
+  double rotation_deg = 0;   // degrees; the map is turned counter-clockwise into the pattern, so the lattice
+                             // seen on the map turns clockwise (docs/design_file.md); default 0
   double scale = 1;          // > 0; default 1 (the map keeps the surface's area)
   BandRows band_rows = BandRows::Across;  // default "across" (docs/holes_and_bands.md says why)
   CutAxis cut_axis = CutAxis::Auto;       // a closed surface's charts: cut across this axis (paver run --cut)
