@@ -13,7 +13,7 @@ namespace paver::cli {
 
 std::function<int()> add_devices_command(CLI::App& app) {
   app.add_subcommand("devices", "List the Vulkan devices and the one the Vulkan backend picks");
-  return [] {
+  return []() -> int {
 #ifdef PAVER_WITH_VULKAN
     // No Vulkan, or no device that $PAVER_VULKAN_DEVICE names: exit 2 with one line on stderr,
     // like any other input or set-up the user can fix (exit 1 is for Paver's own failures).
