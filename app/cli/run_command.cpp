@@ -10,6 +10,7 @@
 #include "core/number_text.h"
 #include "core/printable.h"
 #include "core/stopwatch.h"
+#include "io/coordinate_precision.h"
 #include "io/design_io.h"
 #include "pipeline/run_pipeline.h"
 #include "pattern/adaptive_pattern.h"
@@ -205,6 +206,8 @@ int run_run(const RunArgs& args) {
       cut_summary = sections["cut"] = cut_json(cut, cutter, thickness, r.pavement.design.units);
       const std::string stand_out = stones_stand_out_warning(cut, thickness, r.pavement.design.units);
       if (!stand_out.empty()) warn(stand_out);  // the request has been handed to the pipeline
+      const std::string rounded = coordinate_rounding_warning(r.pavement.elements, "cut.stl", "cut.3mf");
+      if (!rounded.empty()) warn(rounded);
     };
 #else
     throw InputError("--subtract: this paver was built without CGAL (-DPAVER_WITH_CGAL=OFF); rebuild with it");

@@ -1,6 +1,7 @@
 #include "io/element_export.h"
 
 #include "elements/element_frame.h"
+#include "io/coordinate_precision.h"
 #include "io/shape_table.h"
 
 #include "io/atomic_file.h"
@@ -67,8 +68,9 @@ public:
     char* p = room(kNumberBytes);
     advance(std::to_chars(p, p + kNumberBytes, value, std::chars_format::general, precision).ptr);
   }
-  // Shortest text that reads back as the same float: what the PLY stores, and fast (Ryu).
-  void shortest(float value) {
+  // Shortest text that reads back as the same float (or double): what the PLY stores, and fast (Ryu).
+  template <class Real>
+  void shortest(Real value) {
     char* p = room(kNumberBytes);
     advance(std::to_chars(p, p + kNumberBytes, value).ptr);
   }
@@ -100,6 +102,11 @@ char* put_u32_le(char* p, std::uint32_t v) {
   return p + 4;
 }
 char* put_f32_le(char* p, float v) { return put_u32_le(p, std::bit_cast<std::uint32_t>(v)); }
+char* put_f64_le(char* p, double v) {
+  const std::uint64_t bits = std::bit_cast<std::uint64_t>(v);
+  for (int i = 0; i < 8; ++i) p[i] = static_cast<char>((bits >> (8 * i)) & 0xffu);
+  return p + 8;
+}
 char* put_i32_le(char* p, std::int32_t v) { return put_u32_le(p, static_cast<std::uint32_t>(v)); }
 char* put_u8(char* p, std::uint8_t v) {
   *p = static_cast<char>(v);
@@ -228,11 +235,15 @@ void write_elements_ply(const std::filesystem::path& path, const Elements& eleme
                      " vertices are more than PLY indices can address; use fewer elements or a "
                      "lighter shape");
 
+  // Double only where float32 would not hold the elements (io/coordinate_precision.h), so a file
+  // near the origin stays the float32 PLY every tool reads.
+  const bool wide = !float32_holds(elements);
+  const std::string real = wide ? "double" : "float";
   write_file_atomically(path, [&](std::ostream& out) {
     ChunkedWriter w(out, options.stop);
     w.text("ply\nformat binary_little_endian 1.0\ncomment Paver elements: " +
            std::to_string(elements.size()) + "\nelement vertex " + std::to_string(counts.vertices) +
-           "\nproperty float x\nproperty float y\nproperty float z\n"
+           "\nproperty " + real + " x\nproperty " + real + " y\nproperty " + real + " z\n"
            "property uchar red\nproperty uchar green\nproperty uchar blue\n"
            "element face " + std::to_string(counts.faces) +
            "\nproperty list uchar int vertex_indices\nend_header\n");
@@ -240,10 +251,9 @@ void write_elements_ply(const std::filesystem::path& path, const Elements& eleme
     for_each_placed_element(elements, shapes, [&](std::size_t i, const ShapeMesh&, const std::vector<glm::dvec3>& placed) {
       const Colour colour = options.colours ? (*options.colours)[i] : kind_colour(elements.kind[i]);
       for (const glm::dvec3& p : placed) {
-        char* c = w.room(15);
-        c = put_f32_le(c, static_cast<float>(p.x));
-        c = put_f32_le(c, static_cast<float>(p.y));
-        c = put_f32_le(c, static_cast<float>(p.z));
+        char* c = w.room(27);
+        for (int axis = 0; axis < 3; ++axis)
+          c = wide ? put_f64_le(c, p[axis]) : put_f32_le(c, static_cast<float>(p[axis]));
         for (const std::uint8_t channel : colour) c = put_u8(c, channel);
         w.advance(c);
       }
@@ -277,14 +287,15 @@ void write_elements_obj(const std::filesystem::path& path, const Elements& eleme
     w.text("# Paver elements: " + std::to_string(elements.size()) + "\n# vertices: " +
            std::to_string(counts.vertices) + ", faces: " + std::to_string(counts.faces) + "\n");
 
+    const bool wide = !float32_holds(elements);  // as the PLY
     for_each_placed_element(elements, shapes, [&](std::size_t, const ShapeMesh&, const std::vector<glm::dvec3>& placed) {
       for (const glm::dvec3& p : placed) {
-        w.text("v ");
-        w.shortest(static_cast<float>(p.x));
-        w.character(' ');
-        w.shortest(static_cast<float>(p.y));
-        w.character(' ');
-        w.shortest(static_cast<float>(p.z));
+        w.text("v");
+        for (int axis = 0; axis < 3; ++axis) {
+          w.character(' ');
+          if (wide) w.shortest(p[axis]);
+          else w.shortest(static_cast<float>(p[axis]));
+        }
         w.character('\n');
       }
     });

@@ -1,5 +1,7 @@
 #include "io/threemf_export.h"
 
+#include "core/float32_rounding.h"
+
 #include "core/input_error.h"
 #include "core/interrupted.h"
 #include "elements/element_frame.h"
@@ -11,6 +13,8 @@
 #include <glm/common.hpp>
 
 #include <array>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <string>
 #include <vector>
@@ -77,8 +81,9 @@ void add_mesh_object(const Writer3mf& w, const Handle& model, Handle& object, co
           object, "setting an object's type");
 }
 
-// The middle of the piece's bounding box, rounded to a float so that the build items carry it
-// exactly.
+// The middle of the piece's bounding box, rounded to 6 significant digits (and so to a float that
+// prints back as the same digits), so that the build items carry it exactly as lib3mf prints
+// them: a piece in survey coordinates (5,400,003 m) moved 3 m when its float middle was printed.
 glm::dvec3 middle_of(const SurfaceMesh* surface, const Elements& elements) {
   glm::dvec3 low(std::numeric_limits<double>::infinity()), high(-std::numeric_limits<double>::infinity());
   const auto add = [&](const glm::dvec3& p) {
@@ -90,7 +95,13 @@ glm::dvec3 middle_of(const SurfaceMesh* surface, const Elements& elements) {
   for (const glm::dvec3& p : elements.position) add(p);
   if (!(low.x <= high.x)) return glm::dvec3(0);
   const glm::dvec3 middle = 0.5 * (low + high);
-  return glm::dvec3(float(middle.x), float(middle.y), float(middle.z));
+  glm::dvec3 printable;
+  for (int axis = 0; axis < 3; ++axis) {
+    char digits[32];
+    std::snprintf(digits, sizeof digits, "%.6g", middle[axis]);
+    printable[axis] = rounded_to_float32(std::strtod(digits, nullptr));
+  }
+  return printable;
 }
 
 }  // namespace
@@ -119,7 +130,7 @@ void write_pavement_3mf(const std::filesystem::path& path, const SurfaceMesh* su
 
   // lib3mf writes transforms with 6 significant digits: placed about the middle of the piece, a
   // stone is off by at most 5e-6 of the piece's size (0.15 um on a 30 mm pendant) wherever the
-  // piece sits; the middle itself goes into the build items, which move surface and stones alike.
+  // piece sits; the middle itself, already at 6 digits, goes into the build items exactly.
   const glm::dvec3 middle = middle_of(surface, elements);
   NMR::MODELTRANSFORM to_middle{};
   for (int row = 0; row < 3; ++row) {

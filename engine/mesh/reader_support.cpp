@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <bit>
 #include <cctype>
-#include <cfloat>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -78,27 +77,6 @@ bool strip_plus(std::string_view& token) {
   return !token.empty();
 }
 
-enum class FloatToken { Ok, NotANumber, TooLarge };
-
-// Correctly rounded to single precision, like strtof (not through double, which could round twice).
-FloatToken parse_float(std::string_view token, float& value) {
-  if (!strip_plus(token)) return FloatToken::NotANumber;
-  const char* end = token.data() + token.size();
-  const auto result = std::from_chars(token.data(), end, value);
-  if (result.ptr != end) return FloatToken::NotANumber;
-  if (result.ec == std::errc()) return FloatToken::Ok;
-  if (result.ec != std::errc::result_out_of_range) return FloatToken::NotANumber;
-  const std::string text(token);
-  const double wide = std::strtod(text.c_str(), nullptr);
-  if (std::isinf(wide)) {  // beyond double too: infinity, reported as non-finite
-    value = static_cast<float>(wide);
-    return FloatToken::Ok;
-  }
-  if (std::abs(wide) > double(FLT_MAX)) return FloatToken::TooLarge;
-  value = std::strtof(text.c_str(), nullptr);  // underflow: the nearest subnormal or zero
-  return FloatToken::Ok;
-}
-
 }  // namespace
 
 bool parse_integer(std::string_view token, long long& value) {
@@ -127,17 +105,9 @@ std::string CoordinateReader::item_name(long long item) const {
 }
 
 double CoordinateReader::text(std::string_view token, int line, long long item) {
-  float value = 0.0f;
-  switch (parse_float(token, value)) {
-    case FloatToken::Ok: break;
-    case FloatToken::NotANumber:
-      fail(source_, at_line(line) + quoted(token) +
-                        " is not a number; vertex coordinates must be numbers");
-    case FloatToken::TooLarge:
-      fail(source_, at_line(line) + "coordinate " + quoted(token) +
-                        " is too large: Paver reads coordinates in single precision (at most about 3.4e38); "
-                        "rescale the model");
-  }
+  double value = 0;
+  if (!parse_double(token, value))
+    fail(source_, at_line(line) + quoted(token) + " is not a number; vertex coordinates must be numbers");
   if (!std::isfinite(value)) note_nonfinite(at_line(line), token.substr(0, 40), item);
   return value;
 }
@@ -148,14 +118,8 @@ double CoordinateReader::binary(double value, std::uint64_t offset, long long it
     out << value;
     return out.str();
   };
-  // Converting a finite double beyond the float range is undefined behaviour: refuse it first.
-  if (std::isfinite(value) && std::abs(value) > double(FLT_MAX))
-    fail(source_, at_byte(offset) + item_name(item) + " has the coordinate " + shown() +
-                      ", which is too large: Paver reads coordinates in single precision (at most about "
-                      "3.4e38); rescale the model");
-  const float narrow = static_cast<float>(value);
-  if (!std::isfinite(narrow)) note_nonfinite(at_byte(offset), shown(), item);
-  return narrow;
+  if (!std::isfinite(value)) note_nonfinite(at_byte(offset), shown(), item);
+  return value;
 }
 
 void CoordinateReader::note_nonfinite(const std::string& place, std::string_view shown, long long item) {

@@ -49,10 +49,11 @@ bool parse_integer(std::string_view token, long long& value);
 // Accepts "nan" and "inf" (refused later, with the place), and maps overflow to infinity.
 bool parse_double(std::string_view token, double& value);
 
-// Vertex coordinates are read in single precision, rounded once from the text as strtof does:
-// Paver's readers always have (OpenMesh's were single precision), so a surface keeps exactly the
-// positions it had. A finite value beyond the float range is refused rather than made infinite.
-// NaN and infinity are counted, and finish() refuses the file naming the first one.
+// Vertex coordinates are read in double precision, as written (a binary file's float32 values
+// exactly): a facade in survey coordinates (5.4e6 m) read in single precision lost half a metre,
+// welding its vertices and flattening its discs. load_surface rounds a surface near the origin
+// to float32 as before (mesh_loader.cpp says why). NaN and infinity (a text value beyond
+// double's range too) are counted, and finish() refuses the file naming the first one.
 class CoordinateReader {
 public:
   // `one` and `many` name what holds the coordinates ("vertex", "vertices"); `first_number` is

@@ -3,6 +3,7 @@
 #include "core/input_error.h"
 #include "core/interrupted.h"
 #include "core/number_text.h"
+#include "io/coordinate_precision.h"
 #include "io/output_guard.h"
 #include "io/output_set.h"
 #include "pipeline/run_outputs.h"
@@ -178,6 +179,13 @@ PipelineResult run_pipeline(PipelineRequest request) {
     const auto extras = [&](const std::filesystem::path& folder, StageTimings& timings, nlohmann::json& sections) {
       if (request.write_extras) request.write_extras(result, folder, timings, sections);
     };
+    // STL and 3MF round coordinates: say so when that moves a part far from the origin.
+    if (const std::string w = coordinate_rounding_warning(result.pavement.elements, request.formats.stl ? "elements.stl" : "",
+                                                          request.formats.threemf ? "paved.3mf" : "");
+        !w.empty()) {
+      result.warnings.push_back(w);
+      if (request.on_warning) request.on_warning(w);
+    }
     if (request.on_export) request.on_export();
     write_run_outputs(*request.out, result.info, *result.map, result.pavement, result.timings,
                       {.custom = result.custom_shape.get(), .formats = request.formats, .stop = stop}, extras);

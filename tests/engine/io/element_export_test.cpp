@@ -1,4 +1,5 @@
 #include "io/element_export.h"
+#include "io/coordinate_precision.h"
 #include "core/interrupted.h"
 
 #include "core/input_error.h"
@@ -52,6 +53,7 @@ Elements sample_elements() {
 }
 
 struct Ply {
+  bool doubles = false;  // x, y, z as double (a pavement float32 cannot hold: io/coordinate_precision.h)
   std::size_t header_bytes = 0;
   std::size_t vertex_count = 0;
   std::size_t face_count = 0;
@@ -87,20 +89,30 @@ Ply read_ply(const std::filesystem::path& path) {
       properties.push_back(line);
     }
   }
+  ply.doubles = !properties.empty() && properties[0] == "property double x";
+  const std::string real = ply.doubles ? "double" : "float";
   EXPECT_EQ(properties, (std::vector<std::string>{
-                            "property float x", "property float y", "property float z",
+                            "property " + real + " x", "property " + real + " y", "property " + real + " z",
                             "property uchar red", "property uchar green", "property uchar blue",
                             "property list uchar int vertex_indices"}));
-  EXPECT_EQ(bytes.size(), ply.header_bytes + ply.vertex_count * 15 + ply.face_count * 13);
-  if (bytes.size() != ply.header_bytes + ply.vertex_count * 15 + ply.face_count * 13) return ply;
+  const std::size_t coordinates = ply.doubles ? 24 : 12, stride = coordinates + 3;
+  EXPECT_EQ(bytes.size(), ply.header_bytes + ply.vertex_count * stride + ply.face_count * 13);
+  if (bytes.size() != ply.header_bytes + ply.vertex_count * stride + ply.face_count * 13) return ply;
 
   const char* p = bytes.data() + ply.header_bytes;
-  for (std::size_t i = 0; i < ply.vertex_count; ++i, p += 15) {
-    float xyz[3];
-    std::memcpy(xyz, p, 12);  // the test host is little endian like the file
-    ply.positions.emplace_back(xyz[0], xyz[1], xyz[2]);
-    ply.colours.push_back({static_cast<std::uint8_t>(p[12]), static_cast<std::uint8_t>(p[13]),
-                           static_cast<std::uint8_t>(p[14])});
+  for (std::size_t i = 0; i < ply.vertex_count; ++i, p += stride) {
+    // The test host is little endian like the file.
+    if (ply.doubles) {
+      double xyz[3];
+      std::memcpy(xyz, p, 24);
+      ply.positions.emplace_back(xyz[0], xyz[1], xyz[2]);
+    } else {
+      float xyz[3];
+      std::memcpy(xyz, p, 12);
+      ply.positions.emplace_back(xyz[0], xyz[1], xyz[2]);
+    }
+    ply.colours.push_back({static_cast<std::uint8_t>(p[coordinates]), static_cast<std::uint8_t>(p[coordinates + 1]),
+                           static_cast<std::uint8_t>(p[coordinates + 2])});
   }
   for (std::size_t i = 0; i < ply.face_count; ++i, p += 13) {
     EXPECT_EQ(p[0], 3);
@@ -259,6 +271,61 @@ TEST_F(ElementExport, ObjAndPlyAgreeOnPositions) {
       EXPECT_NEAR(std::stod(f[1 + k]), ply.positions[v][k], 1e-6 * std::max(1.0, std::abs(ply.positions[v][k])));
     ++v;
   }
+}
+
+// Far from the origin for their size, elements are written in double precision (PLY and OBJ):
+// in float32 a facade's discs at survey coordinates (5.4e6 m) were flattened into lines. Near the
+// origin the PLY stays the float32 one every tool reads.
+TEST_F(ElementExport, PlyAndObjKeepFullPrecisionWhereFloat32WouldNot) {
+  Elements far = sample_elements();
+  for (glm::dvec3& p : far.position) p += glm::dvec3(500000, 5400000, 120);
+  ASSERT_FALSE(float32_holds(far));
+  write_elements_ply(folder_ / "far.ply", far);
+  write_elements_obj(folder_ / "far.obj", far);
+  const Ply ply = read_ply(folder_ / "far.ply");
+  EXPECT_TRUE(ply.doubles);
+  ASSERT_EQ(ply.positions.size(), total_vertices(far));
+  // The first element, a sphere of diameter 1 at (500000, 5400000, 120): its vertices span it.
+  const std::size_t sphere = make_builtin_shape(ShapeKind::Sphere).positions.size();
+  double lowest = 1e300, highest = -1e300;
+  for (std::size_t k = 0; k < sphere; ++k)
+    lowest = std::min(lowest, ply.positions[k].y), highest = std::max(highest, ply.positions[k].y);
+  EXPECT_NEAR(highest - lowest, 1.0, 1e-6);
+  std::ifstream obj(folder_ / "far.obj");
+  std::string line;
+  std::size_t v = 0;
+  while (std::getline(obj, line) && v < ply.positions.size()) {
+    if (!line.starts_with("v ")) continue;
+    const std::vector<std::string> f = split(line, ' ');
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(std::stod(f[1 + k]), ply.positions[v][k]) << "line " << line;
+    ++v;
+  }
+  EXPECT_EQ(v, ply.positions.size());
+
+  Elements near = sample_elements();
+  near.position[2] = glm::dvec3(-10, 0.5, 2);  // the one at -1e5 moved in
+  ASSERT_TRUE(float32_holds(near));
+  write_elements_ply(folder_ / "near.ply", near);
+  EXPECT_FALSE(read_ply(folder_ / "near.ply").doubles);
+}
+
+TEST(CoordinatePrecision, StlWarnsFarFromTheOrigin3mfOnlyForAPieceHugeForItsElements) {
+  Elements e;
+  e.push_back(ElementKind::Vertex, 0, 0, {0, 0}, {0, 0, 0}, {0, 0, 1}, 0.4, ShapeKind::Disc);
+  e.push_back(ElementKind::Vertex, 1, 0, {1, 0}, {12, 6, 0}, {0, 0, 1}, 0.4, ShapeKind::Disc);
+  EXPECT_EQ(coordinate_rounding_warning(e, "elements.stl", "paved.3mf"), "") << "a wall near the origin";
+  Elements far = e;
+  for (glm::dvec3& p : far.position) p += glm::dvec3(500000, 5400000, 120);
+  const std::string warning = coordinate_rounding_warning(far, "elements.stl", "paved.3mf");
+  EXPECT_NE(warning.find("elements.stl holds float32 coordinates, which rounds them by up to 0.322"), std::string::npos)
+      << warning;
+  EXPECT_EQ(warning.find("paved.3mf"), std::string::npos) << "3MF rounds about the piece's middle: " << warning;
+  EXPECT_NE(warning.find("move the model near the origin"), std::string::npos);
+  // A piece 100 km across paved with 0.4 m discs: 6 digits about its middle are not enough.
+  Elements huge = e;
+  huge.position[1] = glm::dvec3(1e5, 0, 0);
+  const std::string wide = coordinate_rounding_warning(huge, "", "paved.3mf");
+  EXPECT_NE(wide.find("paved.3mf places each element with 6 significant digits"), std::string::npos) << wide;
 }
 
 // Each element's shape placed by hand: position + diameter * R(normal) * local.

@@ -84,6 +84,28 @@ TEST_F(ThreeMfExport, APieceFarFromTheOriginKeepsItsStonesInPlaceOnIt) {
   }
 }
 
+// The middle goes into the build items as lib3mf prints it, 6 significant digits: a piece in survey
+// coordinates keeps its place too (its float middle, 5400003, printed as 5.4e+06, moved it 3 m).
+TEST_F(ThreeMfExport, APieceInSurveyCoordinatesStaysWhereItIs) {
+  Elements elements = test::every_shape_elements();
+  SurfaceMesh surface = test::unit_square_surface();
+  const glm::dvec3 far(500006.15, 5400003.27, 120.5);
+  for (glm::dvec3& p : elements.position) p += far;
+  for (glm::dvec3& p : surface.positions) p += far;
+  write_pavement_3mf(dir_ / "survey.3mf", &surface, elements, Units::Metre);
+  const test::ReadBack3mf r = test::read_3mf(dir_ / "survey.3mf");
+  ASSERT_EQ(r.build_items.size(), 2u);
+  const test::ReadBack3mf::Mesh* written_surface = nullptr;
+  for (const auto& [id, m] : r.meshes)
+    if (m.name == "surface") written_surface = &m;
+  ASSERT_NE(written_surface, nullptr);
+  // Both build items carry the middle; the surface's vertices are written about it.
+  for (std::size_t v = 0; v < surface.positions.size(); ++v)
+    EXPECT_LT(glm::length(test::apply_3mf(r.build_items.front(), written_surface->positions[v]) - surface.positions[v]),
+              1e-3)
+        << v;
+}
+
 TEST_F(ThreeMfExport, BeadsAreAnObjectOfTheirOwn) {
   // The metal's beads sat inside the object named "stones".
   Elements elements = test::every_shape_elements();

@@ -1,5 +1,5 @@
 // Tests for engine/mesh/obj_reader.cpp beyond what the loader's tests cover: what the soup holds
-// (single-precision positions, corners in file order, repeated corners) and forward references.
+// (double-precision positions, corners in file order, repeated corners) and forward references.
 #include "mesh/obj_reader.h"
 
 #include "input_error_assertions.h"
@@ -15,11 +15,15 @@ namespace {
 using test::Contains;
 using test::error_of;
 
-TEST(ObjReader, PositionsAreSinglePrecision) {
-  const PolygonSoup soup = read_obj("v 0.1 1e-50 -2.5\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "p.obj");
-  EXPECT_EQ(soup.positions[0], glm::dvec3(double(0.1f), 0.0, -2.5));
-  const std::string message = error_of([] { read_obj("v 1e39 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "big.obj"); });
-  EXPECT_TRUE(Contains(message, "big.obj: line 1: coordinate '1e39' is too large"));
+// Survey coordinates keep their centimetres: read in single precision, 5400000.3 became 5400000.5,
+// welding a facade's vertices and flattening its discs.
+TEST(ObjReader, PositionsAreDoublePrecision) {
+  const PolygonSoup soup = read_obj("v 0.1 1e-50 -2.5\nv 500000.3 5400000.3 120.01\nv 0 1 0\nf 1 2 3\n", "p.obj");
+  EXPECT_EQ(soup.positions[0], glm::dvec3(0.1, 1e-50, -2.5));
+  EXPECT_EQ(soup.positions[1], glm::dvec3(500000.3, 5400000.3, 120.01));
+  // Past double's range a value is infinite: refused like any non-finite coordinate.
+  const std::string message = error_of([] { read_obj("v 1e400 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "big.obj"); });
+  EXPECT_TRUE(Contains(message, "big.obj: line 1: vertex 1 (counting from 1) has a non-finite coordinate '1e400'")) << message;
 }
 
 TEST(ObjReader, RepeatedCornersKeepTheFirst) {

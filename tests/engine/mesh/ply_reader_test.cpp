@@ -49,10 +49,10 @@ std::string float_ply_header(int vertices, int faces) {
 TEST(PlyReader, ReadsBigEndianBinary) {
   const PolygonSoup soup = read_ply(typed_ply(true), "square.ply");
   ASSERT_EQ(soup.positions.size(), 4u);
-  // Coordinates are single precision, whatever their type in the file.
-  EXPECT_EQ(soup.positions[0], glm::dvec3(double(0.1f), 0, 0));
-  EXPECT_EQ(soup.positions[1], glm::dvec3(double(1.3f), 0, 0));
-  EXPECT_EQ(soup.positions[2], glm::dvec3(double(1.7f), 1.25, 2));
+  // Coordinates keep their type's precision: the doubles exactly.
+  EXPECT_EQ(soup.positions[0], glm::dvec3(0.1, 0, 0));
+  EXPECT_EQ(soup.positions[1], glm::dvec3(1.3, 0, 0));
+  EXPECT_EQ(soup.positions[2], glm::dvec3(1.7, 1.25, 2));
   EXPECT_EQ(soup.positions[3], glm::dvec3(0, 1, -1));
   EXPECT_EQ(soup.polygons, (std::vector<std::vector<int>>{{0, 1, 2}, {0, 2, 3}}));
 }
