@@ -25,6 +25,7 @@
 #include <random>
 #include <set>
 #include <sstream>
+#include <cstdio>
 #include <string>
 #include <utility>
 #include <vector>
@@ -48,6 +49,35 @@ bool any_warning_contains(const LoadedSurface& loaded, const std::string& part) 
   for (const std::string& warning : loaded.warnings)
     if (warning.find(part) != std::string::npos) return true;
   return false;
+}
+
+// A facade in survey coordinates keeps its centimetres (read in float32 its vertices, 0.3 m
+// apart, welded and its area changed); a surface near the origin is rounded to float32 as Paver
+// always read it, so earlier results repeat bit for bit.
+TEST_F(MeshLoaderTest, FarFromTheOriginKeepsDoublesNearItRoundsToFloat32) {
+  const auto grid = [](double x0, double y0, double z) {
+    std::string obj;
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) {
+        char line[96];
+        std::snprintf(line, sizeof line, "v %.3f %.3f %.3f\n", x0 + 0.3 * i, y0 + 0.3 * j, z);
+        obj += line;
+      }
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 2; ++i) {
+        const int a = 1 + j * 3 + i;
+        obj += "f " + std::to_string(a) + " " + std::to_string(a + 1) + " " + std::to_string(a + 4) + "\n";
+        obj += "f " + std::to_string(a) + " " + std::to_string(a + 4) + " " + std::to_string(a + 3) + "\n";
+      }
+    return obj;
+  };
+  const LoadedSurface far = load_surface(write("utm.obj", grid(500000.0, 5400000.0, 120.1)));
+  ASSERT_EQ(far.mesh.vertex_count(), 9);
+  EXPECT_TRUE(far.warnings.empty()) << far.warnings.front();
+  EXPECT_EQ(far.mesh.positions[4], glm::dvec3(500000.3, 5400000.3, 120.1));
+  EXPECT_NEAR(surface_area(far.mesh), 0.36, 1e-9);
+  const LoadedSurface near = load_surface(write("near.obj", grid(0.1, 0, 0.1)));
+  EXPECT_EQ(near.mesh.positions[0], glm::dvec3(double(0.1f), 0, double(0.1f)));
 }
 
 std::uint64_t directed(int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); }
