@@ -67,7 +67,7 @@ namespace {
 void check_edits_topology(const Design& design) {
   const Topology topology = design.pattern.topology;
   if (!design.guidance.empty() && topology == Topology::Adaptive)
-    throw InputError("guidance: the adaptive pattern cannot follow a guidance field yet; use pattern.topology "
+    throw DesignError("guidance: the adaptive pattern cannot follow a guidance field yet; use pattern.topology "
                      "\"lattice\" (or \"auto\", which keeps the lattice when a field is painted)");
   const ElementEdits& edits = design.edits;
   if (edits.empty()) return;

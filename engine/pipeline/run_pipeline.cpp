@@ -144,6 +144,12 @@ PipelineResult run_pipeline(PipelineRequest request) {
     closed_surface = std::move(mapped.closed_surface);
   }
   check_stop();
+  if (design.placement.cut_axis != CutAxis::Auto && result.map && !is_atlas(*result.map)) {
+    const std::string unused = "placement.cut_axis (--cut) " + std::string(cut_axis_name(design.placement.cut_axis)) +
+                               " is for a closed surface, which is cut into charts; this one is open, so it is not used";
+    result.warnings.push_back(unused);
+    if (request.on_warning) request.on_warning(unused);
+  }
 
   if (request.out) {
     std::function<void(const Pattern&, const Design&)> caller_hook = std::move(request.pavement.on_pattern);

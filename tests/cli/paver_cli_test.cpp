@@ -414,6 +414,18 @@ TEST_F(PaverRun, AClosedSurfacesCutIsChosenByItsVerdict) {
   EXPECT_EQ(asked.out.find("cut axis "), std::string::npos) << describe(asked);
 }
 
+// A cut axis is for closed surfaces: on an open one it was silently ignored.
+TEST_F(PaverRun, ACutAxisOnAnOpenSurfaceIsSaidToBeUnused) {
+  const CliResult r = paver({"run", "assets/surfaces/dome.obj", "--spacing", "6", "--cut", "x", "--formats", "ply",
+                             "--quiet", "--out", (dir() / "out").string()});
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  EXPECT_NE(r.err.find("paver: warning: placement.cut_axis (--cut) x is for a closed surface"), std::string::npos)
+      << describe(r);
+  const CliResult plain = paver({"run", "assets/surfaces/dome.obj", "--spacing", "6", "--formats", "ply", "--quiet",
+                                 "--out", (dir() / "plain").string()});
+  EXPECT_EQ(plain.err, "") << describe(plain);
+}
+
 TEST_F(PaverRun, TheCutAxisIsSavedWithTheDesign) {
   const fs::path across_x = dir() / "x", again = dir() / "again", overridden = dir() / "auto";
   ASSERT_EQ(paver({"run", "assets/surfaces/bead.obj", "--cut", "x", "--formats", "ply", "--out", across_x.string()})
@@ -540,7 +552,7 @@ TEST_F(PaverRunErrors, EditsAndGuidanceTheTopologyCannotTakeAreRefused) {
   write_file_text(adaptive, R"({"version": 1, "pattern": {"topology": "adaptive"},
                                 "guidance": [{"uv": [0, 0], "radius": 5, "strength": 0.3}]})");
   expect_input_error(paver({"run", "assets/surfaces/dome.obj", "--design", adaptive.string(), "--out", out.string()}),
-                     out, {"guidance: the adaptive pattern cannot follow a guidance field yet"});
+                     out, {"adaptive_guidance.json: guidance: the adaptive pattern cannot follow a guidance field yet"});
   const fs::path stale = dir() / "stale.json";
   write_file_text(stale, R"({"version": 1, "pattern": {"topology": "lattice"},
                              "edits": {"moved": [{"id": 99999999, "uv": [0, 0]}]}})");
