@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <string>
 
@@ -244,6 +245,13 @@ ShapeMesh custom_shape_from_soup(const PolygonSoup& soup, const std::string& sou
   shape.positions.reserve(points.size());
   for (const glm::dvec3& p : points) shape.positions.emplace_back((p - centre) / width);
   return shape;
+}
+
+long open_edge_count(const ShapeMesh& shape) {
+  std::map<std::pair<int, int>, int> faces_on;
+  for (const glm::ivec3& t : shape.triangles)
+    for (int k = 0; k < 3; ++k) ++faces_on[std::minmax(t[k], t[(k + 1) % 3])];
+  return std::count_if(faces_on.begin(), faces_on.end(), [](const auto& edge) { return edge.second == 1; });
 }
 
 std::string_view shape_name(ShapeKind kind) {

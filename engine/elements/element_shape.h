@@ -48,6 +48,10 @@ ShapeMesh load_custom_shape(const std::filesystem::path& path);
 // The same normalisation for a file already read; `source` starts its error messages.
 ShapeMesh custom_shape_from_soup(const PolygonSoup& soup, const std::string& source);
 
+// Edges of `shape` with one face only: a closed shape has none. An open custom shape exports as
+// open surfaces, which a printer or a boolean cannot take (the pipeline warns).
+long open_edge_count(const ShapeMesh& shape);
+
 std::string_view shape_name(ShapeKind kind);  // "sphere", "gem", "hex_prism", "disc", "custom"
 std::optional<ShapeKind> shape_from_name(std::string_view name);
 

@@ -104,10 +104,19 @@ PipelineResult run_pipeline(PipelineRequest request) {
   validate_design(design, request.design_source);
   const UnitCell cell = naming_the_design_file(request, [&] { return check_design_cell(design); });
   result.info = RunInfo{request.surface_path.string(), request.design_source, design.pattern.spacing <= 0};
-  if (uses_custom_shape(design.elements))
+  if (uses_custom_shape(design.elements)) {
     result.custom_shape = request.custom_shape ? std::move(request.custom_shape)
                                                : std::make_shared<const ShapeMesh>(
                                                      load_custom_shape(design.elements.custom_shape));
+    if (const long open = open_edge_count(*result.custom_shape); open > 0) {
+      const std::string warning = "custom shape " + design.elements.custom_shape + ": " +
+                                  count_text(open, "edge has", "edges have") +
+                                  " one face only, so every element is exported as an open surface, which a printer "
+                                  "or a boolean cannot take; close the shape in the modelling tool";
+      result.warnings.push_back(warning);
+      if (request.on_warning) request.on_warning(warning);
+    }
+  }
 
   // Refuse before any work if an output would replace an input.
   std::vector<std::filesystem::path> outputs;

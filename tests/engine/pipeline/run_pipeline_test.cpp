@@ -176,6 +176,27 @@ TEST_F(RunPipeline, TellsTheLoadersRepairsBeforeMapping) {
   EXPECT_EQ(events.front().rfind("warning: ", 0), 0u) << "the warning must come before the mapping";
 }
 
+// An open custom shape (a pyramid without its base) was accepted silently, and every element was
+// exported open; a closed one gives no warning.
+TEST_F(RunPipeline, AnOpenCustomShapeIsWarnedAbout) {
+  const auto pave_with = [&](const std::string& name, const std::string& obj) {
+    std::ofstream(dir_ / name) << obj;
+    PipelineRequest request = dome_request();
+    request.design.elements.vertex.shape = ShapeKind::Custom;
+    request.design.elements.custom_shape = (dir_ / name).string();
+    request.pavement.optimize = false;
+    std::vector<std::string> warned;
+    request.on_warning = [&](const std::string& w) { warned.push_back(w); };
+    run_pipeline(request);
+    return warned;
+  };
+  const std::string pyramid = "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nv 0 0 1\nf 1 2 5\nf 2 3 5\nf 3 4 5\nf 4 1 5\n";
+  const std::vector<std::string> open = pave_with("open.obj", pyramid);
+  ASSERT_EQ(open.size(), 1u);
+  EXPECT_NE(open[0].find("open.obj: 4 edges have one face only"), std::string::npos) << open[0];
+  EXPECT_TRUE(pave_with("closed.obj", pyramid + "f 1 4 3 2\n").empty());
+}
+
 // Element scale 1e-9 used to hang (boundary segments bucketed into billions of cells of a
 // billionth of the part; the proximity grid's indices overflowed). Now it paves like any other.
 TEST_F(RunPipeline, TinyElementsPaveLikeAnyOther) {
