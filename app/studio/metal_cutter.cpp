@@ -1,5 +1,7 @@
 #include "metal_cutter.h"
 
+#include "available_memory.h"
+
 #include "io/output_guard.h"
 #include "report/metal_weight.h"
 #ifdef PAVER_WITH_CGAL
@@ -37,9 +39,10 @@ void MetalCutter::start(std::shared_ptr<const SurfaceMap> map, std::shared_ptr<c
     try {
       std::atomic<bool> stopped{false};
       std::stop_callback on_stop(stop, [&] { stopped = true; });
-      const CutSolid cut = cut_pavement(*map, pavement->elements,
-                                        {.cutter = CutterKind::Seat, .thickness = thickness, .custom = custom.get(),
-                                         .stop = &stopped, .beads = &pavement->beads});
+      const CutOptions cut_options{.cutter = CutterKind::Seat, .thickness = thickness, .custom = custom.get(),
+                                   .stop = &stopped, .beads = &pavement->beads};
+      refuse_cut_beyond_memory(pavement->elements, cut_options, 0.8 * app::available_memory_bytes());
+      const CutSolid cut = cut_pavement(*map, pavement->elements, cut_options);
       make_output_folder(folder);
       write_cut_files(folder, cut, pavement->elements, pavement->design.units, custom.get(), &stopped);
       const double mm = millimetres_per_unit(pavement->design.units);

@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <numeric>
 #include <stdexcept>
@@ -199,6 +200,40 @@ SurfaceMesh placed_cutter(const SurfaceMesh& unit, const glm::dvec3& centre, con
 double cutter_reach_above() { return 0.6; }
 
 double cutter_reach_below(double thickness, double diameter) { return 1.5 * thickness / diameter + 0.5; }
+
+double estimated_cut_bytes(const Elements& elements, const CutOptions& options) {
+  const ShapeTable shapes(elements, options.custom, "cut");
+  const double seat = double(unit_cutter(CutterKind::Seat, make_builtin_shape(ShapeKind::Gem), cutter_reach_above(),
+                                         cutter_reach_below(1, 1))
+                                 .triangles.size());
+  std::array<double, ShapeTable::kKinds> per_shape;
+  per_shape.fill(-1);
+  double cutters = 0;  // in seat cutters
+  for (std::size_t i = 0; i < elements.size(); ++i) {
+    double& share = per_shape[static_cast<std::size_t>(elements.shape[i])];
+    if (share < 0)
+      share = double(unit_cutter(options.cutter, shapes[elements.shape[i]], cutter_reach_above(), cutter_reach_below(1, 1))
+                         .triangles.size()) /
+              seat;
+    cutters += share;
+  }
+  if (options.beads && options.beads->size() > 0)
+    cutters += double(options.beads->size()) *
+               double(unit_cutter(CutterKind::Element, make_builtin_shape(ShapeKind::Sphere), 0, 0).triangles.size()) / seat;
+  return cutters * kCutBytesPerSeatCutter;
+}
+
+void refuse_cut_beyond_memory(const Elements& elements, const CutOptions& options, double available_bytes) {
+  const double bytes = estimated_cut_bytes(elements, options);
+  if (bytes <= available_bytes) return;
+  char text[320];
+  std::snprintf(text, sizeof text,
+                "--subtract: cutting %zu seats%s would take about %.1f GB (about 0.5 GB a thousand, measured), more "
+                "than the %.1f GB this machine has free for it; use fewer or larger stones, or cut the piece in parts",
+                elements.size(), options.beads && options.beads->size() > 0 ? " and joining the beads" : "", bytes / 1e9,
+                available_bytes / 1e9);
+  throw InputError(text);
+}
 
 CutSolid cut_pavement(const SurfaceMap& map, const Elements& elements, const CutOptions& options) {
   const Stopwatch watch;

@@ -39,6 +39,18 @@ struct CutSolid {
 // CGAL reports rather than returning a broken solid), Interrupted when options.stop is set.
 CutSolid cut_pavement(const SurfaceMap& map, const Elements& elements, const CutOptions& options);
 
+// The memory the cut will take, estimated before it starts from its cutters' triangles: CGAL's
+// exact corefinement took 1.78 GB for 3,933 seat cutters and 3.47 GB for 7,033 on the pendant
+// (docs/benchmarks.md), about 0.5 MB a seat cutter; other cutters and beads count by their
+// triangles against a seat's.
+double estimated_cut_bytes(const Elements& elements, const CutOptions& options);
+inline constexpr double kCutBytesPerSeatCutter = 0.5e6;
+
+// Refuses (InputError, naming the figures and what to do) a cut whose estimate exceeds
+// `available_bytes`: a cut past the machine's memory would swap for hours or be killed, leaving
+// nothing. Called before the cut, so that nothing is written.
+void refuse_cut_beyond_memory(const Elements& elements, const CutOptions& options, double available_bytes);
+
 // How far cutters reach above and below an element, in units of its diameter, so that they pass
 // both faces of metal `thickness` thick.
 double cutter_reach_above();

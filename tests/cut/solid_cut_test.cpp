@@ -6,6 +6,7 @@
 #include "cut/thick_shell.h"
 
 #include "closed_mesh_checks.h"
+#include "input_error_assertions.h"
 #include "core/input_error.h"
 #include "map/surface_map.h"
 #include "pipeline/pavement.h"
@@ -138,6 +139,25 @@ TEST(SolidCut, AClosedBeadIsAHollowShellWithNoWallAtItsSeams) {
 
 // The paper's way (Fig. 14): the element itself is the cutter. A sphere centred on the top face
 // takes out its lower half (the UV sphere has a ring on its equator, so exactly half its volume).
+// A cut past the machine's memory swapped for minutes and was killed (14,000 seats: over 6.4 GB
+// and 11 minutes before it was stopped): it is refused before it starts, with its figures.
+TEST(SolidCut, ACutBeyondTheMemoryIsRefusedWithItsFigures) {
+  Elements stones, beads;
+  for (int i = 0; i < 1000; ++i) {
+    stones.push_back(ElementKind::Vertex, i, 0, {double(i), 0}, {1.2 * i, 0, 0}, {0, 0, 1}, 1.0, ShapeKind::Gem);
+    beads.push_back(ElementKind::Bead, i, 0, {double(i), 0}, {1.2 * i + 0.6, 0.5, 0}, {0, 0, 1}, 0.2, ShapeKind::Sphere);
+  }
+  const CutOptions seats{.cutter = CutterKind::Seat, .thickness = 1};
+  EXPECT_NEAR(estimated_cut_bytes(stones, seats), 1000 * kCutBytesPerSeatCutter, 1.0);
+  CutOptions with_beads = seats;
+  with_beads.beads = &beads;
+  EXPECT_GT(estimated_cut_bytes(stones, with_beads), estimated_cut_bytes(stones, seats));
+  EXPECT_NO_THROW(refuse_cut_beyond_memory(stones, seats, 1e9));
+  const std::string why = test::error_of([&] { refuse_cut_beyond_memory(stones, seats, 0.1e9); });
+  EXPECT_NE(why.find("--subtract: cutting 1000 seats would take about 0.5 GB"), std::string::npos) << why;
+  EXPECT_NE(why.find("than the 0.1 GB this machine has free"), std::string::npos) << why;
+}
+
 TEST(SolidCut, SpheresAsCuttersTakeOutTheirLowerHalf) {
   const double d = 2;
   const SurfaceMap plate = flat_plate(10, 4);
