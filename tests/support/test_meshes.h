@@ -40,39 +40,6 @@ inline std::filesystem::path scanned_mesh(const std::string& name) {
   return source_dir() / "assets/scanned" / (name + ".obj");
 }
 
-// A regular triangulated grid of nu x nv quads over [0,1]^2, mapped through `f(u, v)` to 3D.
-template <class F>
-SurfaceMesh grid_surface(int nu, int nv, F&& f) {
-  std::vector<glm::dvec3> positions;
-  std::vector<std::vector<int>> faces;
-  for (int j = 0; j <= nv; ++j)
-    for (int i = 0; i <= nu; ++i) positions.push_back(f(double(i) / nu, double(j) / nv));
-  auto id = [&](int i, int j) { return j * (nu + 1) + i; };
-  for (int j = 0; j < nv; ++j)
-    for (int i = 0; i < nu; ++i) {
-      faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-      faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-    }
-  return make_surface(std::move(positions), faces, "grid_surface").mesh;
-}
-
-// A band: nu x nv quads over [0,1)^2 closed around u (column nu is column 0), mapped through
-// `f(u, v)` to 3D; two boundary loops, at v = 0 and v = 1.
-template <class F>
-SurfaceMesh band_surface(int nu, int nv, F&& f) {
-  std::vector<glm::dvec3> positions;
-  std::vector<std::vector<int>> faces;
-  for (int j = 0; j <= nv; ++j)
-    for (int i = 0; i < nu; ++i) positions.push_back(f(double(i) / nu, double(j) / nv));
-  auto id = [&](int i, int j) { return j * nu + i % nu; };
-  for (int j = 0; j < nv; ++j)
-    for (int i = 0; i < nu; ++i) {
-      faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-      faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-    }
-  return make_surface(std::move(positions), faces, "band_surface").mesh;
-}
-
 // A flat sheet of nu x nv quads over [0,1]^2 with the quads inside each of `windows` (min and
 // max corners in [0,1]^2) left out, mapped through `f(u, v)` to 3D: a wall with windows.
 template <class F>
@@ -94,6 +61,30 @@ SurfaceMesh sheet_with_windows(int nu, int nv, const std::vector<std::pair<glm::
     }
   return make_surface(std::move(positions), faces, "sheet_with_windows").mesh;
 }
+
+// A regular triangulated grid of nu x nv quads over [0,1]^2, mapped through `f(u, v)` to 3D.
+template <class F>
+SurfaceMesh grid_surface(int nu, int nv, F&& f) {
+  return sheet_with_windows(nu, nv, {}, std::forward<F>(f));
+}
+
+// A band: nu x nv quads over [0,1)^2 closed around u (column nu is column 0), mapped through
+// `f(u, v)` to 3D; two boundary loops, at v = 0 and v = 1.
+template <class F>
+SurfaceMesh band_surface(int nu, int nv, F&& f) {
+  std::vector<glm::dvec3> positions;
+  std::vector<std::vector<int>> faces;
+  for (int j = 0; j <= nv; ++j)
+    for (int i = 0; i < nu; ++i) positions.push_back(f(double(i) / nu, double(j) / nv));
+  auto id = [&](int i, int j) { return j * nu + i % nu; };
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return make_surface(std::move(positions), faces, "band_surface").mesh;
+}
+
 
 }  // namespace paver::test
 
