@@ -199,7 +199,7 @@ int run_run(const RunArgs& args) {
                                    .stop = &interrupt_requested(), .beads = &r.pavement.beads};
       // Before the cut, which cannot report its progress: refused when it would not fit in memory,
       // and its size said (docs/benchmarks.md: it grows faster than the count).
-      refuse_cut_beyond_memory(r.pavement.elements, cut_options, 0.8 * app::available_memory_bytes());
+      refuse_cut_beyond_memory(r.pavement.elements, cut_options, app::available_memory_bytes());
       progress.stage("cut: " + std::to_string(r.pavement.elements.size()) +
                      " cutters in one boolean, which reports no progress (3,933 took 105 s and 7,033 took 422 s "
                      "on 2 cores)");

@@ -41,7 +41,7 @@ void MetalCutter::start(std::shared_ptr<const SurfaceMap> map, std::shared_ptr<c
       std::stop_callback on_stop(stop, [&] { stopped = true; });
       const CutOptions cut_options{.cutter = CutterKind::Seat, .thickness = thickness, .custom = custom.get(),
                                    .stop = &stopped, .beads = &pavement->beads};
-      refuse_cut_beyond_memory(pavement->elements, cut_options, 0.8 * app::available_memory_bytes());
+      refuse_cut_beyond_memory(pavement->elements, cut_options, app::available_memory_bytes());
       const CutSolid cut = cut_pavement(*map, pavement->elements, cut_options);
       make_output_folder(folder);
       write_cut_files(folder, cut, pavement->elements, pavement->design.units, custom.get(), &stopped);

@@ -224,14 +224,14 @@ double estimated_cut_bytes(const Elements& elements, const CutOptions& options) 
 }
 
 void refuse_cut_beyond_memory(const Elements& elements, const CutOptions& options, double available_bytes) {
-  const double bytes = estimated_cut_bytes(elements, options);
-  if (bytes <= available_bytes) return;
+  const double bytes = estimated_cut_bytes(elements, options), usable = kCutMemoryShare * available_bytes;
+  if (bytes <= usable) return;
   char text[320];
   std::snprintf(text, sizeof text,
                 "--subtract: cutting %zu seats%s would take about %.1f GB (about 0.5 GB a thousand, measured), more "
                 "than the %.1f GB this machine has free for it; use fewer or larger stones, or cut the piece in parts",
                 elements.size(), options.beads && options.beads->size() > 0 ? " and joining the beads" : "", bytes / 1e9,
-                available_bytes / 1e9);
+                usable / 1e9);
   throw InputError(text);
 }
 

@@ -47,8 +47,9 @@ double estimated_cut_bytes(const Elements& elements, const CutOptions& options);
 inline constexpr double kCutBytesPerSeatCutter = 0.5e6;
 
 // Refuses (InputError, naming the figures and what to do) a cut whose estimate exceeds
-// `available_bytes`: a cut past the machine's memory would swap for hours or be killed, leaving
-// nothing. Called before the cut, so that nothing is written.
+// kCutMemoryShare of `available_bytes` (the memory the machine can give now): a cut past it would
+// swap for hours or be killed, leaving nothing. Called before the cut, so that nothing is written.
+inline constexpr double kCutMemoryShare = 0.8;
 void refuse_cut_beyond_memory(const Elements& elements, const CutOptions& options, double available_bytes);
 
 // How far cutters reach above and below an element, in units of its diameter, so that they pass

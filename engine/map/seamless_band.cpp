@@ -373,14 +373,9 @@ void add_seamless_map(SurfaceMap& annulus) {
 std::string not_a_band(const SurfaceMap& annulus) {
   if (annulus.parameterization.report.planar)
     return "it is flat: its plane holds a regular lattice everywhere, where rows closed around the hole would fan out";
-  const auto loop_length = [&](const std::vector<int>& loop) {
-    double length = 0;
-    for (std::size_t k = 0; k < loop.size(); ++k)
-      length += glm::length(annulus.mesh.positions[loop[(k + 1) % loop.size()]] - annulus.mesh.positions[loop[k]]);
-    return length;
-  };
-  const double a = loop_length(annulus.mesh.boundary_loops[0]), b = loop_length(annulus.mesh.boundary_loops[1]);
-  const double shorter = std::min(a, b), longer = std::max(a, b);
+  // The outer loop is the longer (SurfaceMesh::boundary_loops).
+  const double longer = loop_length(annulus.mesh.positions, annulus.mesh.outer_loop()),
+               shorter = loop_length(annulus.mesh.positions, annulus.mesh.boundary_loops[1]);
   if (shorter < kBandRimRatio * longer) {
     char why[200];
     std::snprintf(why, sizeof why,

@@ -300,10 +300,8 @@ std::vector<std::vector<int>> boundary_loops(const std::vector<glm::ivec3>& tria
       loop.push_back(v);
     }
   }
-  std::vector<double> length(loops.size(), 0);
-  for (size_t l = 0; l < loops.size(); ++l)
-    for (size_t k = 0; k < loops[l].size(); ++k)
-      length[l] += glm::length(positions[loops[l][(k + 1) % loops[l].size()]] - positions[loops[l][k]]);
+  std::vector<double> length(loops.size());
+  for (size_t l = 0; l < loops.size(); ++l) length[l] = loop_length(positions, loops[l]);
   std::vector<size_t> order(loops.size());
   for (size_t l = 0; l < order.size(); ++l) order[l] = l;
   std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return length[a] > length[b]; });

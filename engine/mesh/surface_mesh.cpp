@@ -35,6 +35,12 @@ std::vector<glm::ivec2> boundary_segments(const SurfaceMesh& mesh) {
   return segments;
 }
 
+double loop_length(const std::vector<glm::dvec3>& positions, const std::vector<int>& loop) {
+  double length = 0;
+  for (std::size_t k = 0; k < loop.size(); ++k) length += glm::length(positions[loop[(k + 1) % loop.size()]] - positions[loop[k]]);
+  return length;
+}
+
 double boundary_length(const SurfaceMesh& mesh) {
   double length = 0;
   for (const glm::ivec2& s : boundary_segments(mesh)) length += glm::length(mesh.positions[s.y] - mesh.positions[s.x]);

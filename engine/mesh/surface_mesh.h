@@ -32,6 +32,9 @@ double bounding_box_diagonal(const SurfaceMesh& mesh);
 // loops' direction: segment k of loop l joins loop[k] and loop[(k + 1) % size].
 std::vector<glm::ivec2> boundary_segments(const SurfaceMesh& mesh);
 
+// 3D length of one closed loop of vertex indices into `positions`.
+double loop_length(const std::vector<glm::dvec3>& positions, const std::vector<int>& loop);
+
 // Total 3D length of all boundary loops.
 double boundary_length(const SurfaceMesh& mesh);
 

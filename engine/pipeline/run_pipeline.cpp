@@ -104,6 +104,11 @@ PipelineResult run_pipeline(PipelineRequest request) {
   validate_design(design, request.design_source);
   const UnitCell cell = naming_the_design_file(request, [&] { return check_design_cell(design); });
   result.info = RunInfo{request.surface_path.string(), request.design_source, design.pattern.spacing <= 0};
+  // A warning known to the run: kept with the result and told to the caller at once.
+  const auto warn = [&](const std::string& warning) {
+    result.warnings.push_back(warning);
+    if (request.on_warning) request.on_warning(warning);
+  };
   if (uses_custom_shape(design.elements)) {
     result.custom_shape = request.custom_shape ? std::move(request.custom_shape)
                                                : std::make_shared<const ShapeMesh>(
@@ -113,8 +118,7 @@ PipelineResult run_pipeline(PipelineRequest request) {
                                   count_text(open, "edge has", "edges have") +
                                   " one face only, so every element is exported as an open surface, which a printer "
                                   "or a boolean cannot take; close the shape in the modelling tool";
-      result.warnings.push_back(warning);
-      if (request.on_warning) request.on_warning(warning);
+      warn(warning);
     }
   }
 
@@ -156,8 +160,7 @@ PipelineResult run_pipeline(PipelineRequest request) {
   if (design.placement.cut_axis != CutAxis::Auto && result.map && !is_atlas(*result.map)) {
     const std::string unused = "placement.cut_axis (--cut) " + std::string(cut_axis_name(design.placement.cut_axis)) +
                                " is for a closed surface, which is cut into charts; this one is open, so it is not used";
-    result.warnings.push_back(unused);
-    if (request.on_warning) request.on_warning(unused);
+    warn(unused);
   }
 
   if (request.out) {
@@ -198,8 +201,7 @@ PipelineResult run_pipeline(PipelineRequest request) {
     if (const std::string w = coordinate_rounding_warning(result.pavement.elements, request.formats.stl ? "elements.stl" : "",
                                                           request.formats.threemf ? "paved.3mf" : "");
         !w.empty()) {
-      result.warnings.push_back(w);
-      if (request.on_warning) request.on_warning(w);
+      warn(w);
     }
     if (request.on_export) request.on_export();
     write_run_outputs(*request.out, result.info, *result.map, result.pavement, result.timings,
