@@ -35,5 +35,7 @@ layout(std430, set = 0, binding = kBindingSpringFlags) readonly buffer SpringFla
 layout(std430, set = 0, binding = kBindingTarget) buffer Target { float target[]; };
 layout(std430, set = 0, binding = kBindingInitialTarget) buffer InitialTarget { float initial_target[]; };
 layout(std430, set = 0, binding = kBindingControl) buffer Control { uint control[]; };
+layout(std430, set = 0, binding = kBindingBoundaryGridStart) readonly buffer BoundaryGridStart { int boundary_grid_start[]; };
+layout(std430, set = 0, binding = kBindingBoundaryGridSegments) readonly buffer BoundaryGridSegments { int boundary_grid_segments[]; };
 
 bool solver_done() { return control[kControlDone] != 0u; }

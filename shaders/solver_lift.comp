@@ -38,22 +38,57 @@ int locate(vec2 p, out vec3 bary) {
   return best;
 }
 
-// As kernels::pull_back: the nearest boundary point, nudged into the map.
+// As kernels::pull_back: the nearest boundary point, nudged into the map; the nearest segment,
+// the lower index on a tie. A map that wraps scans every segment; one that does not searches the
+// binned segments ring by ring.
+struct PullBack {
+  float best;
+  int segment;
+  vec2 result;
+};
+
+void consider(inout PullBack s, vec2 p, int i) {
+  BoundaryCandidate candidate = wrapped_boundary_candidate(P.period, p, boundary_segments[i].xy,
+                                                           boundary_segments[i].zw, boundary_inward[i]);
+  if (candidate.dist2 < s.best || (candidate.dist2 == s.best && i < s.segment)) {
+    s.best = candidate.dist2;
+    s.segment = i;
+    s.result = candidate.nudged;
+  }
+}
+
+void consider_cell(inout PullBack s, vec2 p, int x, int y) {
+  int cell = y * P.grid_nx + x;
+  for (int k = boundary_grid_start[cell]; k < boundary_grid_start[cell + 1]; ++k) consider(s, p, boundary_grid_segments[k]);
+}
+
 vec2 pull_back(vec2 p, out int segment) {
-  segment = 0;
-  float best = uintBitsToFloat(0x7f800000u);  // +inf
-  vec2 result = p;
-  int n = P.boundary_count;
-  for (int i = 0; i < n; ++i) {
-    BoundaryCandidate candidate = wrapped_boundary_candidate(P.period, p, boundary_segments[i].xy,
-                                                             boundary_segments[i].zw, boundary_inward[i]);
-    if (candidate.dist2 < best) {
-      best = candidate.dist2;
-      segment = i;
-      result = candidate.nudged;
+  PullBack s;
+  s.best = uintBitsToFloat(0x7f800000u);  // +inf
+  s.segment = 0;
+  s.result = p;
+  if (P.period > 0.0f) {
+    for (int i = 0; i < P.boundary_count; ++i) consider(s, p, i);
+  } else {
+    int nx = P.grid_nx, ny = P.grid_ny;
+    int cx = clamped_cell(p.x, P.grid_origin.x, P.grid_cell_size, nx);
+    int cy = clamped_cell(p.y, P.grid_origin.y, P.grid_cell_size, ny);
+    for (int r = 0;; ++r) {
+      int x0 = cx - r, x1 = cx + r, y0 = cy - r, y1 = cy + r;
+      for (int y = max(y0, 0); y <= min(y1, ny - 1); ++y) {
+        if (y == y0 || y == y1) {
+          for (int x = max(x0, 0); x <= min(x1, nx - 1); ++x) consider_cell(s, p, x, y);
+        } else {
+          if (x0 >= 0) consider_cell(s, p, x0, y);
+          if (x1 < nx) consider_cell(s, p, x1, y);
+        }
+      }
+      float unsearched = unsearched_distance(p, P.grid_origin, P.grid_cell_size, nx, ny, x0, x1, y0, y1);
+      if (pull_back_search_done(unsearched, s.best, P.grid_cell_size)) break;
     }
   }
-  return result;
+  segment = s.segment;
+  return s.result;
 }
 
 void main() {

@@ -164,7 +164,8 @@ private:
     const Array surface_arrays[] = {
         array(kBindingUv, s.uv), array(kBindingSurfacePosition, s.position), array(kBindingSurfaceCurvature, s.curvature),
         array(kBindingTriangles, s.triangles), array(kBindingGridStart, s.grid_start), array(kBindingGridTriangles, s.grid_triangles),
-        array(kBindingBoundarySegments, s.boundary_segments), array(kBindingBoundaryInward, s.boundary_inward)};
+        array(kBindingBoundarySegments, s.boundary_segments), array(kBindingBoundaryInward, s.boundary_inward),
+        array(kBindingBoundaryGridStart, s.boundary_grid_start), array(kBindingBoundaryGridSegments, s.boundary_grid_segments)};
     // The system changes between solves (a new design, contact springs): always uploaded.
     const Array system_arrays[] = {
         array(kBindingPositionIn, y.position), array(kBindingStrayCount, y.stray_count), array(kBindingTriangleHint, y.triangle_hint),

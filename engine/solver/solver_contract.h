@@ -73,7 +73,9 @@ PAVER_CONST uint32_t kBindingSpringFlags = 21u;     // uint #E
 PAVER_CONST uint32_t kBindingTarget = 22u;          // float #E
 PAVER_CONST uint32_t kBindingInitialTarget = 23u;   // float #E
 PAVER_CONST uint32_t kBindingControl = 24u;         // uint kControlSlots
-PAVER_CONST uint32_t kBindingCount = 25u;
+PAVER_CONST uint32_t kBindingBoundaryGridStart = 25u;     // int: uv grid CSR starts of the boundary bins
+PAVER_CONST uint32_t kBindingBoundaryGridSegments = 26u;  // int: uv grid CSR boundary segments
+PAVER_CONST uint32_t kBindingCount = 27u;
 
 // The control block: one solve's state on the GPU, read back between batches.
 PAVER_CONST uint32_t kControlDone = 0u;         // 1 once converged
@@ -239,6 +241,52 @@ PAVER_FN BoundaryCandidate wrapped_boundary_candidate(float period, vec2 p, vec2
   PAVER_PRECISE vec2 back = vec2(candidate.nudged.x + shift, candidate.nudged.y);
   candidate.nudged = back;
   return candidate;
+}
+
+// The pull-back search (kernels::pull_back, solver_lift.comp) on a map that does not wrap: the
+// boundary segments are binned in the point-location grid's cells, and square rings of cells
+// around p's cell (clamped into the grid) are searched outwards. A scan of every segment made a
+// real GPU wait on the one stray in a warp (about 900 segments on the dense wave, every
+// iteration). The nearest segment wins, the lower index on a tie, exactly as the full scan.
+PAVER_FN int clamped_cell(float coordinate, float origin, float cell_size, int cells) {
+  PAVER_PRECISE float r = (coordinate - origin) / cell_size;
+  r = min_f(max_f(r, 0.0f), float(cells - 1));
+  return int(r);
+}
+
+// How close to p a segment binned only in cells outside the searched block [x0, x1] x [y0, y1]
+// could lie: the distance from p to the nearest side of the block that is not the grid's edge;
+// -1 once the block covers the whole grid.
+PAVER_FN float unsearched_distance(vec2 p, vec2 origin, float cell_size, int nx, int ny, int x0, int x1, int y0,
+                                   int y1) {
+  if (x0 <= 0 && y0 <= 0 && x1 + 1 >= nx && y1 + 1 >= ny) return -1.0f;
+  float nearest = 3.0e38f;
+  if (x1 + 1 < nx) {
+    PAVER_PRECISE float d = origin.x + float(x1 + 1) * cell_size - p.x;
+    nearest = min_f(nearest, d);
+  }
+  if (x0 > 0) {
+    PAVER_PRECISE float d = p.x - (origin.x + float(x0) * cell_size);
+    nearest = min_f(nearest, d);
+  }
+  if (y1 + 1 < ny) {
+    PAVER_PRECISE float d = origin.y + float(y1 + 1) * cell_size - p.y;
+    nearest = min_f(nearest, d);
+  }
+  if (y0 > 0) {
+    PAVER_PRECISE float d = p.y - (origin.y + float(y0) * cell_size);
+    nearest = min_f(nearest, d);
+  }
+  return max_f(nearest, 0.0f);  // p on a side (rounding of its cell): searched on
+}
+
+// Whether the search may stop: every unsearched segment lies farther than the best one found,
+// with a margin far above float32 rounding of the squared distances (a segment that could tie
+// is always searched, so the tie goes to the lower index as in a full scan).
+PAVER_FN bool pull_back_search_done(float unsearched, float best_dist2, float cell_size) {
+  if (unsearched < 0.0f) return true;
+  PAVER_PRECISE float reach = unsearched * unsearched;
+  return unsearched > 1e-5f * cell_size && reach > best_dist2 * 1.001f;
 }
 
 // Eq. 2 and 3: position and curvature at barycentric b of a triangle with corners (xyz, curvature).

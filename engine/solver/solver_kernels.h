@@ -12,6 +12,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -48,20 +49,45 @@ inline int locate(const SolverSurface& s, glm::vec2 p, glm::vec3& bary) {
 }
 
 // The point of the boundary nearest to p, nudged into the map (the NOTES' reading of strays).
-// `segment` receives the boundary segment it lies on.
+// `segment` receives the boundary segment it lies on: the nearest, the lower index on a tie. A map
+// that wraps scans every segment; one that does not searches the binned segments ring by ring
+// (solver_contract.h), which finds the same one.
 inline glm::vec2 pull_back(const SolverSurface& s, glm::vec2 p, int& segment) {
-  const int n = static_cast<int>(s.boundary_segments.size());
   float best = INFINITY;
   glm::vec2 result = p;
-  for (int i = 0; i < n; ++i) {
+  const auto consider = [&](int i) {
     const BoundaryCandidate candidate = wrapped_boundary_candidate(
         s.period, p, glm::vec2(s.boundary_segments[i].x, s.boundary_segments[i].y),
         glm::vec2(s.boundary_segments[i].z, s.boundary_segments[i].w), s.boundary_inward[i]);
-    if (candidate.dist2 < best) {
+    if (candidate.dist2 < best || (candidate.dist2 == best && i < segment)) {
       best = candidate.dist2;
       segment = i;
       result = candidate.nudged;
     }
+  };
+  if (s.period > 0.0f) {
+    for (int i = 0; i < static_cast<int>(s.boundary_segments.size()); ++i) consider(i);
+    return result;
+  }
+  const int nx = s.grid_nx, ny = s.grid_ny;
+  const auto consider_cell = [&](int x, int y) {
+    const int cell = y * nx + x;
+    for (int k = s.boundary_grid_start[cell]; k < s.boundary_grid_start[cell + 1]; ++k) consider(s.boundary_grid_segments[k]);
+  };
+  const int cx = clamped_cell(p.x, s.grid_origin.x, s.grid_cell_size, nx);
+  const int cy = clamped_cell(p.y, s.grid_origin.y, s.grid_cell_size, ny);
+  for (int r = 0;; ++r) {
+    const int x0 = cx - r, x1 = cx + r, y0 = cy - r, y1 = cy + r;
+    for (int y = std::max(y0, 0); y <= std::min(y1, ny - 1); ++y) {
+      if (y == y0 || y == y1) {
+        for (int x = std::max(x0, 0); x <= std::min(x1, nx - 1); ++x) consider_cell(x, y);
+      } else {
+        if (x0 >= 0) consider_cell(x0, y);
+        if (x1 < nx) consider_cell(x1, y);
+      }
+    }
+    const float unsearched = unsearched_distance(p, s.grid_origin, s.grid_cell_size, nx, ny, x0, x1, y0, y1);
+    if (pull_back_search_done(unsearched, best, s.grid_cell_size)) break;
   }
   return result;
 }

@@ -1,7 +1,10 @@
 #include "solver/solver_surface.h"
 
+#include "solver/solver_contract.h"
+
 #include <glm/common.hpp>
 
+#include <algorithm>
 #include <array>
 #include <limits>
 
@@ -27,12 +30,42 @@ std::uint64_t fingerprint_of(const SolverSurface& s) {
   Fnv1a h;
   h.add(s.uv), h.add(s.position), h.add(s.curvature), h.add(s.triangles);
   h.add(s.grid_start), h.add(s.grid_triangles), h.add(s.boundary_segments), h.add(s.boundary_inward);
+  h.add(s.boundary_grid_start), h.add(s.boundary_grid_segments);
   const float values[] = {s.grid_origin.x, s.grid_origin.y, s.grid_cell_size, s.curvature_min, s.curvature_max,
                           s.centre.x, s.centre.y, s.period, s.period_origin};
   const std::int32_t sizes[] = {s.grid_nx, s.grid_ny};
   h.add(values, sizeof values);
   h.add(sizes, sizeof sizes);
   return h.value();
+}
+
+// Bins each boundary segment in the grid cells its bounding box overlaps, one cell more on each
+// side so that float32 rounding of a cell index never hides a segment from its own cell.
+void bin_boundary_segments(SolverSurface& s) {
+  const int cells = s.grid_nx * s.grid_ny;
+  const auto cell_range = [&](int i, int& x0, int& x1, int& y0, int& y1) {
+    const glm::vec4 e = s.boundary_segments[std::size_t(i)];
+    x0 = std::max(0, clamped_cell(std::min(e.x, e.z), s.grid_origin.x, s.grid_cell_size, s.grid_nx) - 1);
+    x1 = std::min(s.grid_nx - 1, clamped_cell(std::max(e.x, e.z), s.grid_origin.x, s.grid_cell_size, s.grid_nx) + 1);
+    y0 = std::max(0, clamped_cell(std::min(e.y, e.w), s.grid_origin.y, s.grid_cell_size, s.grid_ny) - 1);
+    y1 = std::min(s.grid_ny - 1, clamped_cell(std::max(e.y, e.w), s.grid_origin.y, s.grid_cell_size, s.grid_ny) + 1);
+  };
+  s.boundary_grid_start.assign(std::size_t(cells) + 1, 0);
+  const int n = int(s.boundary_segments.size());
+  int x0, x1, y0, y1;
+  for (int i = 0; i < n; ++i) {
+    cell_range(i, x0, x1, y0, y1);
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x) ++s.boundary_grid_start[std::size_t(y * s.grid_nx + x) + 1];
+  }
+  for (int c = 0; c < cells; ++c) s.boundary_grid_start[std::size_t(c) + 1] += s.boundary_grid_start[std::size_t(c)];
+  s.boundary_grid_segments.resize(std::size_t(s.boundary_grid_start.back()));
+  std::vector<std::int32_t> fill(s.boundary_grid_start.begin(), s.boundary_grid_start.end() - 1);
+  for (int i = 0; i < n; ++i) {
+    cell_range(i, x0, x1, y0, y1);
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x) s.boundary_grid_segments[std::size_t(fill[std::size_t(y * s.grid_nx + x)]++)] = i;
+  }
 }
 
 }  // namespace
@@ -93,6 +126,7 @@ SolverSurface make_solver_surface(const SurfaceMap& map) {
       }
     }
   }
+  bin_boundary_segments(s);
   s.curvature_min = float(map.curvature_min);
   s.curvature_max = float(map.curvature_max);
   s.centre = glm::vec2(0.5 * (map.uv_min + map.uv_max));

@@ -31,6 +31,10 @@ struct SolverSurface {
   // point pulled back onto it is nudged towards the centroid of the boundary triangle on it.
   std::vector<glm::vec4> boundary_segments;  // #B segment ends
   std::vector<glm::vec2> boundary_inward;    // #B centroid of the triangle on segment s
+  // The segments binned in the grid's cells (CSR, every cell each segment's box overlaps and one
+  // more around): the pull-back searches the cells near a stray, not every segment.
+  std::vector<std::int32_t> boundary_grid_start;     // #cells + 1
+  std::vector<std::int32_t> boundary_grid_segments;  // CSR segment lists
   float curvature_min = 0, curvature_max = 0;
   glm::vec2 centre{0};                       // O(M^): centre of the map's bounding box (eq. 12)
   // A hash of every array and value above, made once: a GPU solver uploads the surface again
