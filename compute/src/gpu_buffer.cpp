@@ -1,5 +1,6 @@
 #include "paver/compute/gpu_buffer.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace paver::gpu {
@@ -21,31 +22,36 @@ void* GpuBuffer::mapped() {
   return mapped_;
 }
 
-namespace {
-
-GpuBuffer staging_buffer(VulkanContext::Impl& ctx, std::size_t bytes, vk::BufferUsageFlags usage) {
-  return GpuBuffer(ctx, bytes, usage,
-                   vk::MemoryPropertyFlagBits::eHostVisible | vk::MemoryPropertyFlagBits::eHostCoherent,
-                   vk::MemoryPropertyFlagBits::eHostCached);
+std::size_t StagingArena::take(std::size_t bytes) {
+  const std::size_t offset = (used_ + 15) & ~std::size_t(15);
+  const std::size_t needed = offset + bytes;
+  if (!buffer_.valid() || needed > buffer_.size()) {
+    const std::size_t capacity = std::max({needed, std::size_t(2 * buffer_.size()), std::size_t(1) << 16});
+    GpuBuffer larger(*ctx_, capacity, usage_,
+                     vk::MemoryPropertyFlagBits::eHostVisible | vk::MemoryPropertyFlagBits::eHostCoherent,
+                     vk::MemoryPropertyFlagBits::eHostCached);
+    if (used_ > 0) std::memcpy(larger.mapped(), buffer_.mapped(), used_);
+    buffer_ = std::move(larger);
+  }
+  used_ = needed;
+  return offset;
 }
-
-}  // namespace
 
 void Transfers::upload(const GpuBuffer& target, const void* data, std::size_t bytes) {
   if (bytes == 0) return;
-  GpuBuffer staging = staging_buffer(ctx_, bytes, vk::BufferUsageFlagBits::eTransferSrc);
-  std::memcpy(staging.mapped(), data, bytes);
-  uploads_.push_back({std::move(staging), target.handle(), bytes, nullptr});
+  const std::size_t offset = up_.take(bytes);
+  std::memcpy(up_.at(offset), data, bytes);
+  uploads_.push_back({target.handle(), offset, bytes, nullptr});
 }
 
 void Transfers::download(const GpuBuffer& source, void* out, std::size_t bytes) {
   if (bytes == 0) return;
-  downloads_.push_back({staging_buffer(ctx_, bytes, vk::BufferUsageFlagBits::eTransferDst), source.handle(), bytes, out});
+  downloads_.push_back({source.handle(), down_.take(bytes), bytes, out});
 }
 
 void Transfers::record_uploads(vk::raii::CommandBuffer& cb) {
   if (uploads_.empty()) return;
-  for (const Copy& c : uploads_) cb.copyBuffer(c.staging.handle(), c.device, vk::BufferCopy(0, 0, c.bytes));
+  for (const Copy& c : uploads_) cb.copyBuffer(up_.handle(), c.device, vk::BufferCopy(c.offset, 0, c.bytes));
   const vk::MemoryBarrier barrier(vk::AccessFlagBits::eTransferWrite,
                                   vk::AccessFlagBits::eShaderRead | vk::AccessFlagBits::eShaderWrite);
   cb.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer, vk::PipelineStageFlagBits::eComputeShader, {}, barrier, {}, {});
@@ -55,15 +61,17 @@ void Transfers::record_downloads(vk::raii::CommandBuffer& cb) {
   if (downloads_.empty()) return;
   const vk::MemoryBarrier before(vk::AccessFlagBits::eShaderWrite, vk::AccessFlagBits::eTransferRead);
   cb.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eTransfer, {}, before, {}, {});
-  for (const Copy& c : downloads_) cb.copyBuffer(c.device, c.staging.handle(), vk::BufferCopy(0, 0, c.bytes));
+  for (const Copy& c : downloads_) cb.copyBuffer(c.device, down_.handle(), vk::BufferCopy(0, c.offset, c.bytes));
   const vk::MemoryBarrier after(vk::AccessFlagBits::eTransferWrite, vk::AccessFlagBits::eHostRead);
   cb.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer, vk::PipelineStageFlagBits::eHost, {}, after, {}, {});
 }
 
 void Transfers::finish() {
-  for (Copy& c : downloads_) std::memcpy(c.out, c.staging.mapped(), c.bytes);
+  for (const Copy& c : downloads_) std::memcpy(c.out, down_.at(c.offset), c.bytes);
   uploads_.clear();
   downloads_.clear();
+  up_.clear();
+  down_.clear();
 }
 
 }  // namespace paver::gpu

@@ -42,6 +42,7 @@ struct VulkanSolverSession::Impl {
   std::array<GpuBuffer, kBindingCount> buffers;
   GpuBuffer second_positions;
   GpuBuffer params;
+  std::optional<StagingArena> staged_uploads, staged_downloads;
   std::uint64_t surface_key = 0;
   // One solve at a time: solvers made by one factory share these buffers and descriptor sets,
   // and the studio may start a new run before an abandoned one has finished its batch.
@@ -74,6 +75,8 @@ struct VulkanSolverSession::Impl {
                  vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 2, sizes));
     const vk::DescriptorSetLayout layouts[] = {raw_layout, raw_layout};
     sets = vk::raii::DescriptorSets(*ctx->device, vk::DescriptorSetAllocateInfo(**pool, layouts));
+    staged_uploads.emplace(*ctx, vk::BufferUsageFlagBits::eTransferSrc);
+    staged_downloads.emplace(*ctx, vk::BufferUsageFlagBits::eTransferDst);
     params = GpuBuffer(*ctx, sizeof(SolverConstants), vk::BufferUsageFlagBits::eUniformBuffer,
                        vk::MemoryPropertyFlagBits::eHostVisible | vk::MemoryPropertyFlagBits::eHostCoherent, {});
   }
@@ -241,7 +244,7 @@ private:
   SolveReport run(const SolverObserver& observer, const std::atomic<bool>* stop) {
     const Stopwatch watch;
     const int n = system_.particle_count(), e = system_.spring_count();
-    Transfers t(*s_.ctx);
+    Transfers t(*s_.staged_uploads, *s_.staged_downloads);
     upload_inputs(t);
     // The initial lift and spring pass, like CpuSpringSolver's constructor.
     bool init_pending = true;
