@@ -148,6 +148,24 @@ int run_run(const RunArgs& args) {
     // Pavé is a close packing: with no pattern asked for anywhere, stones go on a triangle lattice.
     if (args.pattern.empty() && args.design.empty()) design.pattern.tessellation = Tessellation::Triangle;
   }
+  // The options that shape the pattern and its elements, named with the file in a design error.
+  std::string overrides;
+  const auto given = [&](const std::string& flag, const std::string& value) {
+    overrides += (overrides.empty() ? "" : " ") + flag + (value.empty() ? "" : " " + printable(value));
+  };
+  const auto number = [](double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%g", v);
+    return std::string(b);
+  };
+  if (!args.pattern.empty()) given("--pattern", args.pattern);
+  if (!args.topology.empty()) given("--topology", args.topology);
+  if (args.spacing) given("--spacing", number(*args.spacing));
+  if (args.stone) given("--stone", number(*args.stone));
+  if (args.gap) given("--gap", number(*args.gap));
+  if (args.margin) given("--margin", number(*args.margin));
+  if (args.beads) given("--beads", "");
+  request.design_overrides = overrides;
   // What the flags and the file give together (c + m >= 0), named after where it came from.
   validate_design(design, args.design.empty() ? "command line" : args.design);
 

@@ -68,28 +68,38 @@ void check_design_overlaps(const UnitCell& cell, const ElementsDesign& design, d
         }
       }
     }
+  // The pair that misses its distance by the most, not the first found: the figures and the
+  // largest scale that fits must be those of the nearest neighbours.
+  size_t worst_i = 0, worst_j = 0;
+  double worst_shortfall = 0;
   for (size_t i : own)
     for (size_t j = 0; j < all.size(); ++j) {
       if (j == i) continue;
       const double d = glm::length(all[i].centre - all[j].centre);
-      const double need = contact_distance(2 * all[i].radius, 2 * all[j].radius, gap);
       // The lattice's positions come from cos/sin: elements that touch by design (scale 1 on a
       // triangle lattice) sit at D up to rounding, which must not read as an overlap.
       const double rounding = 1e-9 * spacing;
-      if (elements_collide(d + rounding, 2 * all[i].radius, 2 * all[j].radius, gap))
-        throw DesignError(std::string(gap > 0 ? "the design's elements are closer than the gap: "
-                                             : "the design's elements overlap: ") +
-                         all[i].name + " and " + all[j].name + " are " + format(d / spacing) +
-                         " D apart but need " + format(need / spacing) + " D" +
-                         (gap > 0 ? " (their radii plus elements.gap)" : "") +
-                         // Two elements of one size: the largest scale that fits, the figure a user asks for.
-                         (all[i].radius == all[j].radius && d > gap
-                              ? "; at this spacing and gap their scale can be at most " + format((d - gap) / spacing) +
-                                    " (now " + format(2 * all[i].radius / spacing) + ")"
-                              : "") +
-                         "; reduce their scales, move t" + (gap > 0 ? ", reduce the gap or raise the spacing" : "") +
-                         " (or set elements.allow_overlap to allow it)");
+      if (!elements_collide(d + rounding, 2 * all[i].radius, 2 * all[j].radius, gap)) continue;
+      const double shortfall = contact_distance(2 * all[i].radius, 2 * all[j].radius, gap) - d;
+      if (shortfall > worst_shortfall) worst_shortfall = shortfall, worst_i = i, worst_j = j;
     }
+  if (worst_shortfall <= 0) return;
+  const LayoutElement& a = all[worst_i];
+  const LayoutElement& b = all[worst_j];
+  const double d = glm::length(a.centre - b.centre);
+  const double need = contact_distance(2 * a.radius, 2 * b.radius, gap);
+  throw DesignError(std::string(gap > 0 ? "the design's elements are closer than the gap: "
+                                       : "the design's elements overlap: ") +
+                    a.name + " and " + b.name + " are " + format(d / spacing) + " D apart but need " +
+                    format(need / spacing) + " D" +
+                    (gap > 0 ? " (their radii plus the gap, " + format(gap) + " surface units)" : "") +
+                    // Two elements of one size: the largest scale that fits, the figure a user asks for.
+                    (a.radius == b.radius && d > gap
+                         ? "; at this spacing and gap their scale can be at most " + format((d - gap) / spacing) +
+                               " (now " + format(2 * a.radius / spacing) + ")"
+                         : "") +
+                    "; reduce their scales, move t" + (gap > 0 ? ", reduce the gap or raise the spacing" : "") +
+                    " (or set elements.allow_overlap to allow it)");
 }
 
 }  // namespace paver

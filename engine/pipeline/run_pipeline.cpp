@@ -40,14 +40,17 @@ void refuse_large_output(const ElementMeshSize& size, const PipelineRequest& req
 
 // Runs `check`, naming the design file in front of a DesignError (the pattern's cell, its
 // elements' overlaps, its edits), as the file's own validation does: the user has to know which
-// file to open.
+// file to open, and which of the options given with it changed it.
 template <class Check>
 auto naming_the_design_file(const PipelineRequest& request, Check&& check) {
   try {
     return check();
   } catch (const DesignError& e) {
-    if (request.design_path.empty()) throw;
-    throw DesignError(request.design_path.string() + ": " + e.what());
+    if (request.design_path.empty() && request.design_overrides.empty()) throw;
+    std::string source = request.design_path.string();
+    if (!request.design_overrides.empty())
+      source += (source.empty() ? "" : " with ") + request.design_overrides;
+    throw DesignError(source + ": " + e.what());
   }
 }
 

@@ -39,6 +39,9 @@ struct PipelineRequest {
   Design design;
   std::string design_source = "defaults";  // names the design in errors and the report: its file, "defaults", "studio"
   std::filesystem::path design_path;       // the design file, if any: an input no output may overwrite
+  // The command-line options that changed the design (e.g. "--gap 5"): a DesignError names them
+  // with the file, since the fault may be theirs and not the file's.
+  std::string design_overrides;
   // The design's custom shape, already read (the studio keeps it); read from
   // design.elements.custom_shape when an element uses it and this is empty.
   std::shared_ptr<const ShapeMesh> custom_shape;

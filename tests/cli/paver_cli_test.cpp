@@ -781,6 +781,21 @@ TEST_F(PaverRunErrors, BadSpacingFlagIsBlamedOnTheFlag) {
   }
 }
 
+TEST_F(PaverRunErrors, AGapTooLargeForTheDesignNamesTheFlagWithTheFile) {
+  // The file alone is fine; --gap 2 makes its neighbours (6 apart, stones of 5.4) too close.
+  const fs::path design = dir() / "fine.json";
+  write_file_text(design, R"({"version": 1, "pattern": {"tessellation": "tri", "spacing": 6},
+                              "elements": {"vertex": {"scale": 0.9}}})");
+  const fs::path out = dir() / "out";
+  const CliResult alone = paver({"run", "assets/surfaces/dome.obj", "--design", design.string(), "--out", out.string()});
+  ASSERT_EQ(alone.exit_code, 0) << describe(alone);
+  fs::remove_all(out);
+  const CliResult r =
+      paver({"run", "assets/surfaces/dome.obj", "--design", design.string(), "--gap", "2", "--out", out.string()});
+  expect_input_error(r, out, {"fine.json with --gap 2: the design's elements are closer than the gap",
+                              "are 1 D apart but need 1.23 D (their radii plus the gap, 2 surface units)"});
+}
+
 TEST_F(PaverRunErrors, BadSolverFlagIsBlamedOnTheFlag) {
   const fs::path design = dir() / "fine.json";
   write_file_text(design, R"({"version": 1, "pattern": {"tessellation": "hex", "spacing": 6}})");

@@ -101,12 +101,21 @@ TEST(DesignOverlap, TheGapIsPartOfTheRule) {
     check_design_overlaps(cell_of(Tessellation::Triangle, 10), elements_with(1, {}), 10, 0.5);
   });
   EXPECT_TRUE(Contains(message, "closer than the gap"));
-  EXPECT_TRUE(Contains(message, "are 1 D apart but need 1.05 D (their radii plus elements.gap)"));
+  EXPECT_TRUE(Contains(message, "are 1 D apart but need 1.05 D (their radii plus the gap, 0.5 surface units)"));
   EXPECT_TRUE(Contains(message, "reduce the gap or raise the spacing"));
   // The neighbour is the same cell vertex one cell over, and the scale that fits is given.
   EXPECT_TRUE(Contains(message, "the V-element on cell vertex 0 and the V-element on cell vertex 0 of the cell at ("))
       << message;
   EXPECT_TRUE(Contains(message, "their scale can be at most 0.95 (now 1)")) << message;
+}
+
+TEST(DesignOverlap, AGapOfManySpacingsNamesTheNearestNeighbours) {
+  // A gap of 50 D reaches every element of the layout: the pair named, and the scale that fits,
+  // must be the neighbours 1 D apart, not the first pair found.
+  const std::string message = error_of([] {
+    check_design_overlaps(cell_of(Tessellation::Triangle, 1), elements_with(1, {}), 1, 50);
+  });
+  EXPECT_TRUE(Contains(message, "are 1 D apart but need 51 D")) << message;
 }
 
 TEST(DesignOverlap, TwoEElementsOnOneEdgeAreNamedWithTheirIndices) {
