@@ -16,6 +16,7 @@
 #include <mutex>
 #include <cstring>
 #include <span>
+#include <utility>
 
 namespace paver::gpu {
 namespace {
@@ -180,7 +181,10 @@ private:
     for (const Array& a : surface_arrays) surface_changed |= d.reserve(a.binding, a.bytes);
     if (surface_changed) {
       for (const Array& a : surface_arrays) t.upload(d.buffers[a.binding], a.data, a.bytes);
-      d.surface_key = key;
+      // Known to be on the GPU only once the submission ran (submit): a solve that throws before
+      // it leaves the next one to upload the surface again.
+      d.surface_key = 0;
+      uploading_surface_ = key;
       ++d.surface_uploads;
     }
     for (const Array& a : system_arrays) d.reserve(a.binding, a.bytes);
@@ -239,6 +243,7 @@ private:
       t.record_downloads(cb);
     });
     t.finish();
+    if (uploading_surface_ != 0) s_.surface_key = std::exchange(uploading_surface_, 0);
   }
 
   SolveReport run(const SolverObserver& observer, const std::atomic<bool>* stop) {
@@ -318,6 +323,7 @@ private:
   float threshold_;
   int batch_;
   std::vector<std::uint32_t> pulled_;
+  std::uint64_t uploading_surface_ = 0;  // the surface key of uploads not yet submitted
   std::array<std::uint32_t, kControlSlots> control_{};
 };
 

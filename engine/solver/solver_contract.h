@@ -250,7 +250,9 @@ PAVER_FN BoundaryCandidate wrapped_boundary_candidate(float period, vec2 p, vec2
 // iteration). The nearest segment wins, the lower index on a tie, exactly as the full scan.
 PAVER_FN int clamped_cell(float coordinate, float origin, float cell_size, int cells) {
   PAVER_PRECISE float r = (coordinate - origin) / cell_size;
-  r = min_f(max_f(r, 0.0f), float(cells - 1));
+  // max_f(0, NaN) is 0: a NaN point (never lifted; the solvers stop on one first) gets cell 0 and
+  // a search that ends, not an undefined int().
+  r = min_f(max_f(0.0f, r), float(cells - 1));
   return int(r);
 }
 
