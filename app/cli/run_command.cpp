@@ -44,6 +44,7 @@ struct RunArgs {
   std::string topology;
   std::string rim_rows;
   std::string cut;  // empty: the design's
+  std::string align;  // empty: the design's (placement.align, default none)
   std::optional<double> spacing;
   std::optional<double> gap;
   std::optional<double> margin;
@@ -105,6 +106,11 @@ int run_run(const RunArgs& args) {
     design = load_design(args.design, &notes);
     for (const std::string& note : notes) request.on_warning(note);
   }
+  if (!args.align.empty()) {
+    const std::optional<AlignAxis> axis = align_axis_from_name(args.align);
+    if (!axis) throw InputError("--align " + printable(args.align) + ": use x, y, z or none");
+    design.placement.align = *axis;
+  }
   if (!args.cut.empty()) {  // else the design's (placement.cut_axis, default auto)
     const std::optional<CutAxis> cut_axis = cut_axis_from_name(args.cut);
     if (!cut_axis) throw InputError("--cut " + printable(args.cut) + ": use auto, x, y or z");
@@ -160,6 +166,7 @@ int run_run(const RunArgs& args) {
   };
   if (!args.pattern.empty()) given("--pattern", args.pattern);
   if (!args.topology.empty()) given("--topology", args.topology);
+  if (!args.align.empty()) given("--align", args.align);
   if (args.spacing) given("--spacing", number(*args.spacing));
   if (args.stone) given("--stone", number(*args.stone));
   if (args.gap) given("--gap", number(*args.gap));
@@ -297,6 +304,10 @@ int run_run(const RunArgs& args) {
   std::printf("\n");
   if (!pavement.topology_choice.empty()) std::printf("topology %s\n", pavement.topology_choice.c_str());
   if (!result.cut_axis_choice.empty()) std::printf("cut axis %s\n", result.cut_axis_choice.c_str());
+  if (const auto& a = pavement.row_alignment)
+    std::printf("align    rows along %s: the pattern turned %.1f degrees (the axis's direction on the map varies by "
+                "%.2f, 0 = the same everywhere)\n",
+                std::string(align_axis_name(a->axis)).c_str(), a->rotation_deg, a->spread);
   if (is_band(map)) {
     if (pavement.band_closure)
       std::printf("band     seamless (period %.6g, map s1/s2 mean %.3f): %s\n", map.seamless->period,
@@ -406,6 +417,10 @@ std::function<int()> add_run_command(CLI::App& app) {
                   "auto (default: the lattice, or the adaptive pattern where the lattice tears or leaves bare patches), "
                   "lattice (the paper's) or adaptive: particles grown on the surface with point defects, for maps "
                   "that distort a lattice (tri and hex; docs/topology.md)")
+      ->check(app::not_empty());
+  cmd->add_option("--align", args->align,
+                  "Rows along a world axis: x, y, z, or none (the map's own orientation; the default): the pattern "
+                  "is turned so that its rows follow the axis as it lies on the surface (placement.align)")
       ->check(app::not_empty());
   cmd->add_option("--cut", args->cut,
                   "A closed surface (a bead, a figurine) is cut into charts by a plane across this axis through its "

@@ -53,6 +53,7 @@ constexpr std::array kFields = {
     Field{"placement.offset[]", "Pattern > Placement > offset"},
     Field{"placement.rotation_deg", "Pattern > Placement > rotation"},
     Field{"placement.scale", "Pattern > Placement > scale"},
+    Field{"placement.align", "Pattern > Placement > rows along axis"},
     Field{"edits.moved", "Elements > Single stones > edits (moved)"},
     Field{"edits.moved[].", "Elements > Single stones > edits (moved)"},
     Field{"edits.added", "Elements > Single stones > edits (added)"},

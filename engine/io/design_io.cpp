@@ -32,6 +32,7 @@ constexpr Tessellation kTessellations[] = {Tessellation::Triangle, Tessellation:
 constexpr Topology kTopologies[] = {Topology::Lattice, Topology::Adaptive, Topology::Auto};
 constexpr Units kUnits[] = {Units::Millimetre, Units::Centimetre, Units::Metre, Units::Inch};
 constexpr BandRows kBandRows[] = {BandRows::Along, BandRows::Across};
+constexpr AlignAxis kAlignAxes[] = {AlignAxis::None, AlignAxis::X, AlignAxis::Y, AlignAxis::Z};
 constexpr CutAxis kCutAxes[] = {CutAxis::Auto, CutAxis::X, CutAxis::Y, CutAxis::Z};
 constexpr RimRows kRimRows[] = {RimRows::None, RimRows::Holes, RimRows::All};
 constexpr FilterBase kFilterBases[] = {FilterBase::Current, FilterBase::Initial};
@@ -150,6 +151,9 @@ public:
   void read(const json& value, const std::string& path, BandRows& out) const {
     read_name(value, path, out, kBandRows, band_rows_name);
   }
+  void read(const json& value, const std::string& path, AlignAxis& out) const {
+    read_name(value, path, out, kAlignAxes, align_axis_name);
+  }
   void read(const json& value, const std::string& path, CutAxis& out) const {
     read_name(value, path, out, kCutAxes, cut_axis_name);
   }
@@ -258,12 +262,13 @@ public:
   }
 
   void read(const json& value, const std::string& path, Placement& out) const {
-    check_object(value, path, {"offset", "rotation_deg", "scale", "band_rows", "cut_axis"});
+    check_object(value, path, {"offset", "rotation_deg", "scale", "band_rows", "cut_axis", "align"});
     field(value, path, "offset", out.offset);
     field(value, path, "rotation_deg", out.rotation_deg);
     field(value, path, "scale", out.scale);
     field(value, path, "band_rows", out.band_rows);
     field(value, path, "cut_axis", out.cut_axis);
+    field(value, path, "align", out.align);
   }
 
   void read(const json& value, const std::string& path, SolverParams& out) const {
@@ -366,6 +371,7 @@ Json to_json(const Design& design) {
   placement["scale"] = design.placement.scale;
   placement["band_rows"] = std::string(band_rows_name(design.placement.band_rows));
   placement["cut_axis"] = std::string(cut_axis_name(design.placement.cut_axis));
+  placement["align"] = std::string(align_axis_name(design.placement.align));
 
   Json solver = Json::object();
   for (const SolverParameter& p : solver_parameters()) {

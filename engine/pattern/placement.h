@@ -6,6 +6,7 @@
 
 #include <glm/vec2.hpp>
 
+#include <optional>
 #include <string_view>
 
 namespace paver {
@@ -15,6 +16,12 @@ namespace paver {
 enum class BandRows { Along, Across };
 std::string_view band_rows_name(BandRows rows);  // "along", "across"
 
+// Rows along a world axis (pattern/row_alignment.h): the rotation is then the axis's, plus
+// rotation_deg. None: the map's own orientation.
+enum class AlignAxis { None, X, Y, Z };
+std::string_view align_axis_name(AlignAxis axis);  // "none", "x", "y", "z"
+std::optional<AlignAxis> align_axis_from_name(std::string_view name);
+
 struct Placement {
   glm::dvec2 offset{0, 0};   // pattern-plane units (same as D); default 0
   double rotation_deg = 0;   // degrees; the map is turned counter-clockwise into the pattern, so the lattice
@@ -22,6 +29,7 @@ struct Placement {
   double scale = 1;          // > 0; default 1 (the map keeps the surface's area)
   BandRows band_rows = BandRows::Across;  // default "across" (docs/holes_and_bands.md says why)
   CutAxis cut_axis = CutAxis::Auto;       // a closed surface's charts: cut across this axis (paver run --cut)
+  AlignAxis align = AlignAxis::None;      // rows along this world axis; not on a seamless band (its rows close)
 
   glm::dvec2 map_to_pattern(glm::dvec2 q) const;
   glm::dvec2 pattern_to_map(glm::dvec2 p) const;

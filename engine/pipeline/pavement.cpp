@@ -182,6 +182,16 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
     pavement.seamless = true;
   }
   pavement.cell = check_design_cell(design);
+  if (design.placement.align != AlignAxis::None && !pavement.seamless) {
+    const std::optional<RowAlignment> aligned = align_rows(map, pavement.cell, design.placement.align);
+    if (!aligned)
+      throw DesignError("placement.align: the " + std::string(align_axis_name(design.placement.align)) +
+                        " axis is normal to the surface almost everywhere, so rows cannot follow it; use another "
+                        "axis or none");
+    design.placement.rotation_deg += aligned->rotation_deg;
+    design.placement.align = AlignAxis::None;
+    pavement.row_alignment = aligned;
+  }
   if (pavement.seamless)
     design.placement.offset = best_offset_across(map, pavement.cell, design, pavement.band_closure->step);
   const QualityBasis basis = quality_basis(map, pavement.cell, design.elements, design.solver, design.guidance);

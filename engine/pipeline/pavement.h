@@ -11,6 +11,7 @@
 #include "design/design.h"
 #include "elements/elements.h"
 #include "pattern/band_closure.h"
+#include "pattern/row_alignment.h"
 #include "pattern/pattern.h"
 #include "report/pavement_quality.h"
 #include "solver/spring_solver.h"
@@ -69,6 +70,9 @@ struct Pavement {
   // A band's lattice is paved on its seamless map (SurfaceMap::seamless): then `points` are in
   // that map's frame, and `band_closure` says how the lattice was closed around it.
   bool seamless = false;
+  // Rows along a world axis (placement.align): the rotation added to rotation_deg; the design
+  // above then holds the sum, with align none, so that its design.json repeats the same lattice.
+  std::optional<RowAlignment> row_alignment;
   std::optional<BandClosure> band_closure;
   PavementQuality before;            // the initial pavement, post-processed the same way
   PavementQuality paper;             // after the paper's optimizer and post-processing alone

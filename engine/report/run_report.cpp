@@ -132,6 +132,11 @@ nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const
                    {"topology", topology_name(pavement.design.pattern.topology)},
                    {"topology_choice", pavement.topology_choice},
                    {"band", band_json(map, pavement)},
+                   {"row_alignment", pavement.row_alignment
+                                         ? json{{"axis", std::string(align_axis_name(pavement.row_alignment->axis))},
+                                                {"rotation_deg", pavement.row_alignment->rotation_deg},
+                                                {"spread", pavement.row_alignment->spread}}
+                                         : json(nullptr)},
                    {"defects", pattern.defects.size()},
                    {"relaxation", {{"iterations", pavement.relaxation.iterations},
                                    {"seeds_kept", pavement.relaxation.seeds_kept},

@@ -214,6 +214,30 @@ TEST_F(PaverRun, AClosedBeadIsCutIntoChartsAndPavedAsOneSurface) {
   EXPECT_NE(wrong.err.find("--cut w: use auto, x, y or z"), std::string::npos) << describe(wrong);
 }
 
+// --align x on the curved facade: the summary and report.json give the turn, and design.json
+// holds it as rotation_deg with align none, so that running it again lays the same elements.
+TEST_F(PaverRun, AlignTurnsTheRowsAndTheSavedDesignRepeatsThem) {
+  const fs::path out = dir() / "aligned";
+  const CliResult r = paver({"run", "assets/surfaces/facade.obj", "--pattern", "grid", "--spacing", "14", "--align",
+                             "x", "--formats", "ply", "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  EXPECT_NE(r.out.find("align    rows along x: the pattern turned"), std::string::npos) << describe(r);
+  const nlohmann::json report = nlohmann::json::parse(read_file_text(out / "report.json"));
+  const double turn = report["pattern"]["row_alignment"]["rotation_deg"].get<double>();
+  EXPECT_GT(std::abs(turn), 10.0) << "the facade's map is turned off the floor";
+  const nlohmann::json saved = nlohmann::json::parse(read_file_text(out / "design.json"));
+  EXPECT_EQ(saved["placement"]["align"], "none");
+  EXPECT_DOUBLE_EQ(saved["placement"]["rotation_deg"].get<double>(), turn);
+  const fs::path again = dir() / "again";
+  const CliResult rerun = paver({"run", "assets/surfaces/facade.obj", "--design", (out / "design.json").string(),
+                                 "--formats", "ply", "--out", again.string()});
+  ASSERT_EQ(rerun.exit_code, 0) << describe(rerun);
+  EXPECT_EQ(read_file_text(again / "placements.csv"), read_file_text(out / "placements.csv"));
+  const CliResult wrong = paver({"run", "assets/surfaces/facade.obj", "--align", "up", "--out", (dir() / "w").string()});
+  EXPECT_EQ(wrong.exit_code, 2);
+  EXPECT_NE(wrong.err.find("--align up: use x, y, z or none"), std::string::npos) << describe(wrong);
+}
+
 TEST_F(PaverRun, DomeHexWritesEveryOutputOnTheSurface) {
   const fs::path out = dir() / "dome";
   const CliResult r = paver({"run", "assets/surfaces/dome.obj", "--pattern", "hex", "--spacing", "6", "--out",

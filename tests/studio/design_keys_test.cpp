@@ -47,6 +47,7 @@ TEST(DesignKeys, EveryKindOfValue) {
   EXPECT_TRUE(set_design_key(d, "elements.beads.enabled", "true").elements.beads.enabled);
   EXPECT_EQ(set_design_key(d, "elements.beads.scale", "1.25").elements.beads.scale, 1.25);
   EXPECT_EQ(set_design_key(d, "units", "in").units, Units::Inch);
+  EXPECT_EQ(set_design_key(d, "placement.align", "x").placement.align, AlignAxis::X);
   EXPECT_EQ(d.solver.dt, SolverParams{}.dt) << "the given design is untouched";
 }
 

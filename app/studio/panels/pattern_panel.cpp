@@ -159,9 +159,21 @@ void placement_section(Document& doc, Design& d) {
   bool changed = typed_number("offset u", p.offset.x);
   changed |= typed_number("offset v", p.offset.y);
   help_marker("Moves the pattern over the map, in surface units (the left drag in the 2D view).");
+  const char* align_names[] = {"none (the map's)", "x", "y", "z"};
+  int align = int(p.align);
+  if (ImGui::Combo("rows along axis", &align, align_names, 4)) {
+    p.align = AlignAxis(align);
+    changed = true;
+  }
+  help_marker("Turns the pattern so that its rows follow a world axis (x, y or z) as it lies on the surface, "
+              "on average over the surface: rows level on a facade. The rotation below is then added to it. "
+              "Not on a band, whose rows close around it.");
+  if (p.align != AlignAxis::None && doc.result.pavement && doc.result.pavement->row_alignment)
+    ImGui::TextDisabled("turned %.1f degrees to follow %s", doc.result.pavement->row_alignment->rotation_deg,
+                        std::string(align_axis_name(p.align)).c_str());
   changed |= typed_number("rotation (degrees)", p.rotation_deg);
-  help_marker("Turns the pattern counter-clockwise over the map (the round handle in the 2D view). On a band "
-              "the band sets the rows' direction instead.");
+  help_marker("Turns the pattern counter-clockwise over the map (the round handle in the 2D view); with rows "
+              "along an axis, on top of that. On a band the band sets the rows' direction instead.");
   changed |= typed_number("scale", p.scale);
   help_marker("Scales the map under the pattern, no unit: above 1 the map grows and more elements fit at the same "
               "D (the square handle). It must stay above 0.");

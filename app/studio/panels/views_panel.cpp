@@ -214,6 +214,20 @@ struct Handles {
   float radius;
 };
 
+// The placement the last pavement used: with placement.align, the document's rotation plus the
+// alignment's, so that the handles and the lattice preview show the lattice as laid.
+double aligned_rotation_deg(const Document& doc) {
+  const auto& pavement = doc.result.pavement;
+  if (doc.design.placement.align == AlignAxis::None || !pavement || !pavement->row_alignment) return 0;
+  return pavement->row_alignment->rotation_deg;
+}
+
+Placement shown_placement(const Document& doc) {
+  Placement p = doc.design.placement;
+  p.rotation_deg += aligned_rotation_deg(doc);
+  return p;
+}
+
 // The pattern as seen in the map turns by -rotation (q = R(-rotation) (p - offset) / scale), so
 // the round handle sits at angle -rotation: the lattice turns with it. The square handle's
 // distance from the centre is proportional to the scale.
@@ -417,7 +431,7 @@ void interact_2d(Studio& s, const MapFrame& f, const Handles& h, bool with_handl
       p.offset -= p.map_to_pattern(delta) - p.map_to_pattern(glm::dvec2(0));
     } else if (s.ui.map_drag == MapDrag::Rotation) {
       const double angle = std::atan2(-(io.MousePos.y - h.centre.y), io.MousePos.x - h.centre.x);
-      p.rotation_deg = -glm::degrees(angle);
+      p.rotation_deg = -glm::degrees(angle) - aligned_rotation_deg(s.doc);
     } else {
       const float along = ((io.MousePos.x - h.centre.x) - (io.MousePos.y - h.centre.y)) * 0.7071f;
       p.scale = std::clamp(double(along / (h.radius * 0.7071f)), 0.05, 3.0);
@@ -493,7 +507,7 @@ void view(Studio& s, int which, ImVec2 size, bool large) {
     draw->PopClipRect();
   } else {
     const MapFrame frame{origin, size, s.views.map_view};
-    const Handles handles = placement_handles(frame, *s.doc.surface.map, s.doc.design.placement);
+    const Handles handles = placement_handles(frame, *s.doc.surface.map, shown_placement(s.doc));
     interact_2d(s, frame, handles, large);
     if (large) {
       draw->PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
@@ -501,11 +515,15 @@ void view(Studio& s, int which, ImVec2 size, bool large) {
         const double spacing = s.doc.design.pattern.spacing > 0 ? s.doc.design.pattern.spacing
                                : s.doc.result.pavement  ? s.doc.result.pavement->design.pattern.spacing
                                                         : 0;
-        if (spacing > 0) lattice_preview(draw, frame, s.doc.design, spacing);
+        if (spacing > 0) {
+          Design shown = s.doc.design;
+          shown.placement = shown_placement(s.doc);
+          lattice_preview(draw, frame, shown, spacing);
+        }
       }
       if (s.ui.brush != Brush::Off) draw_brush_2d(s, draw, frame);
       if (!s.ui.edit_elements && s.ui.brush == Brush::Off)
-        draw_handles(draw, placement_handles(frame, *s.doc.surface.map, s.doc.design.placement), s.ui.map_drag);
+        draw_handles(draw, placement_handles(frame, *s.doc.surface.map, shown_placement(s.doc)), s.ui.map_drag);
       draw_selection_2d(s, draw, frame);
       draw->PopClipRect();
     }
