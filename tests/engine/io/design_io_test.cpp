@@ -50,6 +50,7 @@ Design non_default_design() {
   d.placement.rotation_deg = -37.5;
   d.placement.scale = 1.7;
   d.placement.cut_axis = CutAxis::Y;
+  d.placement.align = AlignAxis::Z;
   d.solver.c = 0.05;
   d.solver.m = -0.025;
   d.solver.alpha = 11;
@@ -110,6 +111,7 @@ void expect_same(const Design& a, const Design& b) {
   EXPECT_EQ(a.placement.rotation_deg, b.placement.rotation_deg);
   EXPECT_EQ(a.placement.scale, b.placement.scale);
   EXPECT_EQ(a.placement.cut_axis, b.placement.cut_axis);
+  EXPECT_EQ(a.placement.align, b.placement.align);
   const SolverParams& s = a.solver;
   const SolverParams& t = b.solver;
   EXPECT_EQ(s.c, t.c);
@@ -173,9 +175,10 @@ TEST(DesignIo, WritesEveryKey) {
   EXPECT_EQ(j.at("elements").at("rim_rows"), "none");
   EXPECT_EQ(j.at("elements").at("beads").size(), 2u);
   EXPECT_EQ(j.at("elements").at("vertex").size(), 3u);
-  EXPECT_EQ(j.at("placement").size(), 5u);
+  EXPECT_EQ(j.at("placement").size(), 6u);
   EXPECT_EQ(j.at("placement").at("band_rows"), "across");
   EXPECT_EQ(j.at("placement").at("cut_axis"), "auto");
+  EXPECT_EQ(j.at("placement").at("align"), "none");
   EXPECT_EQ(j.at("solver").size(), 17u);
   EXPECT_EQ(j.at("solver").at("coarse_levels"), 8);
   const json full = design_to_json(non_default_design());
