@@ -304,10 +304,15 @@ int run_run(const RunArgs& args) {
   std::printf("\n");
   if (!pavement.topology_choice.empty()) std::printf("topology %s\n", pavement.topology_choice.c_str());
   if (!result.cut_axis_choice.empty()) std::printf("cut axis %s\n", result.cut_axis_choice.c_str());
-  if (const auto& a = pavement.row_alignment)
-    std::printf("align    rows along %s: the pattern turned %.1f degrees (the axis's direction on the map varies by "
-                "%.2f, 0 = the same everywhere)\n",
-                std::string(align_axis_name(a->axis)).c_str(), a->rotation_deg, a->spread);
+  if (const auto& a = pavement.row_alignment) {
+    char total[64] = "";
+    if (pavement.design.placement.rotation_deg != a->rotation_deg)
+      std::snprintf(total, sizeof total, ", %.1f with placement.rotation_deg", pavement.design.placement.rotation_deg);
+    std::printf("align    rows along %s: the pattern turned %.1f degrees%s; the axis meets the surface at %.0f "
+                "degrees on average and its direction on the map varies by %.1f degrees\n",
+                std::string(align_axis_name(a->axis)).c_str(), a->rotation_deg, total, a->axis_to_surface_deg,
+                a->spread_deg);
+  }
   if (is_band(map)) {
     if (pavement.band_closure)
       std::printf("band     seamless (period %.6g, map s1/s2 mean %.3f): %s\n", map.seamless->period,

@@ -2,6 +2,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -47,7 +48,12 @@ std::optional<RowAlignment> align_rows(const SurfaceMap& map, const UnitCell& ce
   const double mean = 0.5 * std::atan2(sum_sin, sum_cos);
   RowAlignment out;
   out.axis = axis;
-  out.spread = 1 - std::hypot(sum_cos, sum_sin) / weight;
+  // The doubled angles' mean resultant length R gives the circular standard deviation
+  // sqrt(-2 ln R) of the doubled angle; half of it is the lines'.
+  const double resultant = std::clamp(std::hypot(sum_cos, sum_sin) / weight, 1e-12, 1.0);
+  out.spread_deg = 0.5 * std::sqrt(-2 * std::log(resultant)) * 180.0 / std::numbers::pi;
+  // weight / area is the mean of cos^2 of the angle between the axis and the surface.
+  out.axis_to_surface_deg = std::acos(std::sqrt(std::clamp(weight / area, 0.0, 1.0))) * 180.0 / std::numbers::pi;
   // The map is turned by the placement's rotation into the pattern: the axis's mean direction
   // there must be a1's.
   const double a1 = std::atan2(cell.a1.y, cell.a1.x);

@@ -14,10 +14,18 @@ namespace paver {
 struct RowAlignment {
   AlignAxis axis = AlignAxis::None;
   double rotation_deg = 0;  // added to placement.rotation_deg
-  // How well one rotation serves the whole surface: the area-weighted spread of the axis's
-  // direction on the map, 0 (the same everywhere) to 1 (no preferred direction).
-  double spread = 0;
+  // How well one rotation serves the whole surface: the spread (circular standard deviation,
+  // area-weighted) of the axis's direction on the map, in degrees; 0 where it is the same
+  // everywhere (a facade), about 20 on a vase wrapped 270 degrees around the other axis.
+  double spread_deg = 0;
+  // How steeply the axis meets the surface, on average: 0 when it lies in the surface, 90 along
+  // the normal (rows along it then follow only the surface's slope).
+  double axis_to_surface_deg = 0;
 };
+
+// Above these a run warns: the rows follow the axis poorly (pipeline/run_pipeline.cpp).
+inline constexpr double kAlignSpreadWarnDeg = 15;
+inline constexpr double kAlignSteepWarnDeg = 60;
 
 // The rotation for `axis` on `map`, or nothing when the axis is (nearly) normal to the surface
 // everywhere (no direction to follow): a wall cannot have rows along its own normal.

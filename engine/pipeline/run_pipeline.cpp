@@ -54,6 +54,31 @@ auto naming_the_design_file(const PipelineRequest& request, Check&& check) {
   }
 }
 
+// What placement.align could not do well: a band's rows close around it instead, an axis that
+// meets the surface steeply, or one whose direction turns over the map (a vase around the other
+// axis): rows that do not follow it, said rather than printed as "rows along x".
+std::vector<std::string> row_alignment_warnings(AlignAxis asked, const Pavement& pavement) {
+  std::vector<std::string> out;
+  if (asked == AlignAxis::None) return out;
+  const std::string axis = std::string(align_axis_name(asked));
+  if (pavement.seamless) {
+    out.push_back("placement.align (--align) " + axis + " is not used: this band is paved seamlessly, and its rows "
+                  "close around it (placement.band_rows says which way)");
+    return out;
+  }
+  const auto& a = pavement.row_alignment;
+  if (!a) return out;
+  if (a->axis_to_surface_deg > kAlignSteepWarnDeg)
+    out.push_back("placement.align (--align) " + axis + ": the axis meets this surface at " +
+                  std::to_string(std::lround(a->axis_to_surface_deg)) + " degrees on average (90 = along its normal), so rows "
+                  "along it follow only the surface's slope; an axis lying in the surface does better");
+  if (a->spread_deg > kAlignSpreadWarnDeg)
+    out.push_back("placement.align (--align) " + axis + ": the axis's direction turns by about " +
+                  std::to_string(std::lround(a->spread_deg)) + " degrees over this surface's map, so one turn of the pattern "
+                  "lays only some of its rows along it (a surface wrapped around another axis: try that axis)");
+  return out;
+}
+
 // The longest axis is the usual best cut of a closed surface, not always: a bead cut across it kept
 // a bare belt along the seam (fill 0.83, NOT OK) where a cut across x gave 0.86 and ok. When the
 // first cut's pavement is NOT OK, the three axes are tried and the best kept; the kept design names
@@ -176,6 +201,7 @@ PipelineResult run_pipeline(PipelineRequest request) {
   }
   result.pavement = naming_the_design_file(request, [&] { return make_pavement(*result.map, design, request.pavement); });
   check_stop();  // the solves ended early: a partial pavement is not a result
+  for (const std::string& w : row_alignment_warnings(design.placement.align, result.pavement)) warn(w);
   if (closed_surface && design.placement.cut_axis == CutAxis::Auto)
     try_other_cut_axes(request, design, *closed_surface, result);
   if (result.pavement.elements.size() == 0) {

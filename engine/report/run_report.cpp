@@ -135,7 +135,8 @@ nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const
                    {"row_alignment", pavement.row_alignment
                                          ? json{{"axis", std::string(align_axis_name(pavement.row_alignment->axis))},
                                                 {"rotation_deg", pavement.row_alignment->rotation_deg},
-                                                {"spread", pavement.row_alignment->spread}}
+                                                {"spread_deg", pavement.row_alignment->spread_deg},
+                                                {"axis_to_surface_deg", pavement.row_alignment->axis_to_surface_deg}}
                                          : json(nullptr)},
                    {"defects", pattern.defects.size()},
                    {"relaxation", {{"iterations", pavement.relaxation.iterations},

@@ -6,6 +6,7 @@
 #include "io/design_io.h"
 #include "pattern/row_alignment.h"
 #include "pipeline/pavement.h"
+#include "pipeline/run_pipeline.h"
 #include "surface_maps.h"
 #include "test_meshes.h"
 
@@ -62,7 +63,8 @@ TEST(RowAlignment, AlignXLaysTheFacadesRowsLevel) {
   EXPECT_LT(after, 2.0) << "rows along x";
   ASSERT_TRUE(aligned.row_alignment.has_value());
   EXPECT_EQ(aligned.row_alignment->axis, AlignAxis::X);
-  EXPECT_LT(aligned.row_alignment->spread, 0.05) << "a facade's x runs one way on its map";
+  EXPECT_LT(aligned.row_alignment->spread_deg, 2.0) << "a facade's x runs one way on its map";
+  EXPECT_LT(aligned.row_alignment->axis_to_surface_deg, 15.0) << "x lies nearly in the facade";
   EXPECT_FALSE(plain.row_alignment.has_value());
   // As many elements either way: turning the lattice costs no coverage here.
   EXPECT_NEAR(double(aligned.elements.size()), double(plain.elements.size()), 0.05 * double(plain.elements.size()));
@@ -101,6 +103,27 @@ TEST(RowAlignment, AnAxisNormalToAFlatWallIsRefused) {
   }
   design.placement.align = AlignAxis::Y;
   EXPECT_NO_THROW((void)make_pavement(map, design));
+}
+
+// What a run says when the axis cannot be followed well, rather than printing "rows along z".
+TEST(RowAlignment, ASteepAxisATurningAxisAndABandAreSaid) {
+  const auto warnings_for = [](const std::string& surface, Tessellation t, AlignAxis axis) {
+    PipelineRequest request;
+    request.map = test::bundled_map(surface);
+    request.design.pattern.tessellation = t;
+    request.design.placement.align = axis;
+    return run_pipeline(request).warnings;
+  };
+  const auto said = [](const std::vector<std::string>& warnings, const std::string& part) {
+    return std::any_of(warnings.begin(), warnings.end(), [&](const std::string& w) { return w.find(part) != std::string::npos; });
+  };
+  // z meets the facade within about 11 degrees of its normal.
+  EXPECT_TRUE(said(warnings_for("facade", Tessellation::Grid, AlignAxis::Z), "follow only the surface's slope"));
+  EXPECT_FALSE(said(warnings_for("facade", Tessellation::Grid, AlignAxis::X), "placement.align"));
+  // The vase wraps 270 degrees around z (its height): x turns with it on the map.
+  EXPECT_TRUE(said(warnings_for("vase", Tessellation::Triangle, AlignAxis::X), "turns by about"));
+  // A band's rows close around it.
+  EXPECT_TRUE(said(warnings_for("bangle", Tessellation::Triangle, AlignAxis::Y), "is not used: this band is paved seamlessly"));
 }
 
 TEST(RowAlignment, TheKeyIsReadWrittenAndCheckedByName) {
