@@ -159,18 +159,13 @@ int run_run(const RunArgs& args) {
   const auto given = [&](const std::string& flag, const std::string& value) {
     overrides += (overrides.empty() ? "" : " ") + flag + (value.empty() ? "" : " " + printable(value));
   };
-  const auto number = [](double v) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%g", v);
-    return std::string(b);
-  };
   if (!args.pattern.empty()) given("--pattern", args.pattern);
   if (!args.topology.empty()) given("--topology", args.topology);
   if (!args.align.empty()) given("--align", args.align);
-  if (args.spacing) given("--spacing", number(*args.spacing));
-  if (args.stone) given("--stone", number(*args.stone));
-  if (args.gap) given("--gap", number(*args.gap));
-  if (args.margin) given("--margin", number(*args.margin));
+  if (args.spacing) given("--spacing", number_text(*args.spacing));
+  if (args.stone) given("--stone", number_text(*args.stone));
+  if (args.gap) given("--gap", number_text(*args.gap));
+  if (args.margin) given("--margin", number_text(*args.margin));
   if (args.beads) given("--beads", "");
   request.design_overrides = overrides;
   // What the flags and the file give together (c + m >= 0), named after where it came from.

@@ -256,29 +256,29 @@ PAVER_FN int clamped_cell(float coordinate, float origin, float cell_size, int c
   return int(r);
 }
 
+// Along one axis: how far p's coordinate lies inside the searched cells [lo, hi] of n, from the
+// nearer of their sides that is not the grid's edge (3e38 when both are).
+PAVER_FN float unsearched_gap(float coordinate, float origin, float cell_size, int n, int lo, int hi) {
+  float nearest = 3.0e38f;
+  if (hi + 1 < n) {
+    PAVER_PRECISE float d = origin + float(hi + 1) * cell_size - coordinate;
+    nearest = min_f(nearest, d);
+  }
+  if (lo > 0) {
+    PAVER_PRECISE float d = coordinate - (origin + float(lo) * cell_size);
+    nearest = min_f(nearest, d);
+  }
+  return nearest;
+}
+
 // How close to p a segment binned only in cells outside the searched block [x0, x1] x [y0, y1]
 // could lie: the distance from p to the nearest side of the block that is not the grid's edge;
 // -1 once the block covers the whole grid.
 PAVER_FN float unsearched_distance(vec2 p, vec2 origin, float cell_size, int nx, int ny, int x0, int x1, int y0,
                                    int y1) {
   if (x0 <= 0 && y0 <= 0 && x1 + 1 >= nx && y1 + 1 >= ny) return -1.0f;
-  float nearest = 3.0e38f;
-  if (x1 + 1 < nx) {
-    PAVER_PRECISE float d = origin.x + float(x1 + 1) * cell_size - p.x;
-    nearest = min_f(nearest, d);
-  }
-  if (x0 > 0) {
-    PAVER_PRECISE float d = p.x - (origin.x + float(x0) * cell_size);
-    nearest = min_f(nearest, d);
-  }
-  if (y1 + 1 < ny) {
-    PAVER_PRECISE float d = origin.y + float(y1 + 1) * cell_size - p.y;
-    nearest = min_f(nearest, d);
-  }
-  if (y0 > 0) {
-    PAVER_PRECISE float d = p.y - (origin.y + float(y0) * cell_size);
-    nearest = min_f(nearest, d);
-  }
+  PAVER_PRECISE float nearest = min_f(unsearched_gap(p.x, origin.x, cell_size, nx, x0, x1),
+                                      unsearched_gap(p.y, origin.y, cell_size, ny, y0, y1));
   return max_f(nearest, 0.0f);  // p on a side (rounding of its cell): searched on
 }
 
