@@ -45,6 +45,7 @@ struct RunArgs {
   std::string rim_rows;
   std::string cut;  // empty: the design's
   std::string align;  // empty: the design's (placement.align, default none)
+  bool fit_offset = false;  // else the design's (placement.fit_offset, default false)
   std::optional<double> spacing;
   std::optional<double> gap;
   std::optional<double> margin;
@@ -111,6 +112,7 @@ int run_run(const RunArgs& args) {
     if (!axis) throw InputError("--align " + printable(args.align) + ": use x, y, z or none");
     design.placement.align = *axis;
   }
+  if (args.fit_offset) design.placement.fit_offset = true;
   if (!args.cut.empty()) {  // else the design's (placement.cut_axis, default auto)
     const std::optional<CutAxis> cut_axis = cut_axis_from_name(args.cut);
     if (!cut_axis) throw InputError("--cut " + printable(args.cut) + ": use auto, x, y or z");
@@ -162,6 +164,7 @@ int run_run(const RunArgs& args) {
   if (!args.pattern.empty()) given("--pattern", args.pattern);
   if (!args.topology.empty()) given("--topology", args.topology);
   if (!args.align.empty()) given("--align", args.align);
+  if (args.fit_offset) given("--fit-offset", "");
   if (args.spacing) given("--spacing", number_text(*args.spacing));
   if (args.stone) given("--stone", number_text(*args.stone));
   if (args.gap) given("--gap", number_text(*args.gap));
@@ -308,6 +311,19 @@ int run_run(const RunArgs& args) {
                 std::string(align_axis_name(a->axis)).c_str(), a->rotation_deg, total, a->axis_to_surface_deg,
                 a->spread_deg);
   }
+  if (const auto& f = pavement.offset_fit) {
+    const OffsetCandidate& c = f->chosen;
+    std::printf("offset   fitted: the lattice shifted (%.4g, %.4g) cells to (%.4g, %.4g): ", c.shift_in_cells.x,
+                c.shift_in_cells.y, c.offset.x, c.offset.y);
+    if (c.kept >= 0)
+      std::printf("%ld elements kept against %ld at the design's offset (the best of %zu shifts paved in full, out of %d "
+                  "laid out)\n",
+                  c.kept, f->at_design.kept, f->finalists.size(), f->tries);
+    else
+      std::printf("%zu elements laid out against %zu at the design's offset (the best of %d shifts; a pattern this "
+                  "large is not paved at each)\n",
+                  c.laid_out, f->at_design.laid_out, f->tries);
+  }
   if (is_band(map)) {
     if (pavement.band_closure)
       std::printf("band     seamless (period %.6g, map s1/s2 mean %.3f): %s\n", map.seamless->period,
@@ -422,6 +438,9 @@ std::function<int()> add_run_command(CLI::App& app) {
                   "Rows along a world axis: x, y, z, or none (the map's own orientation; the default): the pattern "
                   "is turned so that its rows follow the axis as it lies on the surface (placement.align)")
       ->check(app::not_empty());
+  cmd->add_flag("--fit-offset", args->fit_offset,
+                "Shift the lattice within one cell to where the most elements fit (placement.fit_offset): with "
+                "rows along an axis, whole rows meet a window's edge or miss it");
   cmd->add_option("--cut", args->cut,
                   "A closed surface (a bead, a figurine) is cut into charts by a plane across this axis through its "
                   "centre: auto (its longest axis), x, y or z; default: the design's placement.cut_axis, else auto")

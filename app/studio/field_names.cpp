@@ -54,6 +54,7 @@ constexpr std::array kFields = {
     Field{"placement.rotation_deg", "Pattern > Placement > rotation"},
     Field{"placement.scale", "Pattern > Placement > scale"},
     Field{"placement.align", "Pattern > Placement > rows along axis"},
+    Field{"placement.fit_offset", "Pattern > Placement > fit offset"},
     Field{"edits.moved", "Elements > Single stones > edits (moved)"},
     Field{"edits.moved[].", "Elements > Single stones > edits (moved)"},
     Field{"edits.added", "Elements > Single stones > edits (added)"},

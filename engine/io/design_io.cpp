@@ -262,13 +262,14 @@ public:
   }
 
   void read(const json& value, const std::string& path, Placement& out) const {
-    check_object(value, path, {"offset", "rotation_deg", "scale", "band_rows", "cut_axis", "align"});
+    check_object(value, path, {"offset", "rotation_deg", "scale", "band_rows", "cut_axis", "align", "fit_offset"});
     field(value, path, "offset", out.offset);
     field(value, path, "rotation_deg", out.rotation_deg);
     field(value, path, "scale", out.scale);
     field(value, path, "band_rows", out.band_rows);
     field(value, path, "cut_axis", out.cut_axis);
     field(value, path, "align", out.align);
+    field(value, path, "fit_offset", out.fit_offset);
   }
 
   void read(const json& value, const std::string& path, SolverParams& out) const {
@@ -372,6 +373,7 @@ Json to_json(const Design& design) {
   placement["band_rows"] = std::string(band_rows_name(design.placement.band_rows));
   placement["cut_axis"] = std::string(cut_axis_name(design.placement.cut_axis));
   placement["align"] = std::string(align_axis_name(design.placement.align));
+  placement["fit_offset"] = design.placement.fit_offset;
 
   Json solver = Json::object();
   for (const SolverParameter& p : solver_parameters()) {

@@ -30,6 +30,7 @@ struct Placement {
   BandRows band_rows = BandRows::Across;  // default "across" (docs/holes_and_bands.md says why)
   CutAxis cut_axis = CutAxis::Auto;       // a closed surface's charts: cut across this axis (paver run --cut)
   AlignAxis align = AlignAxis::None;      // rows along this world axis; not on a seamless band (its rows close)
+  bool fit_offset = false;                // shift `offset` within one cell for the most elements (pipeline/offset_fit.h)
 
   glm::dvec2 map_to_pattern(glm::dvec2 q) const;
   glm::dvec2 pattern_to_map(glm::dvec2 p) const;

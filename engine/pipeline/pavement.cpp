@@ -14,25 +14,19 @@
 #include "elements/element_deletion.h"
 #include "elements/element_ids.h"
 #include "pattern/pattern_edits.h"
+#include "pipeline/offset_fit.h"
 #include "core/input_error.h"
 #include "report/verdict.h"
 
-#include <tbb/parallel_for.h>
 #include <glm/geometric.hpp>
 
 #include <array>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <cstdio>
 #include <string>
 
 namespace paver {
-namespace {
-
-
-}  // namespace
-
 UnitCell make_design_cell(const PatternDesign& pattern) {
   UnitCell cell = make_unit_cell(pattern.tessellation, pattern.spacing);
   for (size_t i = 0; i < pattern.operators.size(); ++i) {
@@ -109,39 +103,34 @@ UnitCell check_design_cell(const Design& design) {
 
 namespace {
 
-// Rows that run along a band's rims are kept or lost whole at each rim, so where the lattice sits
-// across the band decides how many fit: of shifts across (a sixteenth of a row apart, on top of
-// the design's offset), those whose laid-out elements keep the most after the boundary
-// post-processing. Shifts that keep the same rows form a run; its middle leaves the rows as far
-// from one rim as from the other (the first of them put a ring's rows 0.03 mm from one rim and
-// 0.49 mm from the other).
-glm::dvec2 best_offset_across(const SurfaceMap& map, const UnitCell& cell, const Design& design, glm::ivec2 step) {
-  constexpr int kTries = 16;
-  const double angle = design.placement.rotation_deg * std::numbers::pi / 180.0;
-  const glm::dvec2 across(-std::sin(angle), std::cos(angle));  // the band's v in the pattern plane
-  // Rows along the repeating step lie this far apart: a shift by it gives the same lattice.
-  const double band_step = std::abs(cell.cell_area()) / glm::length(double(step.x) * cell.a1 + double(step.y) * cell.a2);
-  // The tries are independent: side by side (a large band's layout is mostly serial).
-  std::array<std::size_t, kTries> count{};
-  tbb::parallel_for(0, kTries, [&](int k) {
-    Placement placement = design.placement;
-    placement.offset += (band_step * k / kTries) * across;
-    const Pattern pattern = build_pattern(map, cell, placement);
-    count[k] = place_all_elements(map, pattern, pattern.points, design, true).elements.size();
-  });
-  const std::size_t most = *std::max_element(count.begin(), count.end());
-  // The longest run of shifts that keep the most, around the circle (a shift by a whole row
-  // repeats the lattice); its middle, half-way between two shifts when its length is even.
-  int best_start = 0, best_length = 0;
-  for (int start = 0; start < kTries; ++start) {
-    if (count[start] != most || count[(start + kTries - 1) % kTries] == most) continue;  // not a run's start
-    int length = 0;
-    while (length < kTries && count[(start + length) % kTries] == most) ++length;
-    if (length > best_length) best_start = start, best_length = length;
+Pavement pave_with_topology(const SurfaceMap& map, Design design, const PavementOptions& options);
+
+// The laid-out count only forecasts the kept one: the optimizer moves elements and resolution
+// removes some (on the bundled torus, the shift that laid out 4 more kept 9 fewer). So the
+// finalists are paved in full, quietly (no stage names, no observer: the chosen one is paved again
+// with them), and the one that keeps the most elements, an ok verdict first, is laid. The design's
+// own offset is among them: a fit never keeps fewer elements at the same verdict.
+void pave_finalists(const SurfaceMap& map, const Design& design, const PavementOptions& options, OffsetFit& fit) {
+  PavementOptions quiet = options;
+  quiet.on_stage = {};
+  quiet.observer = {};
+  int best = -1;
+  bool best_ok = false;
+  for (int f = 0; f < static_cast<int>(fit.finalists.size()); ++f) {
+    if (options.stop && options.stop->load()) return;  // the caller ends the run
+    OffsetCandidate& c = fit.finalists[f];
+    Design shifted = design;
+    shifted.placement.offset = c.offset;
+    const Pavement paved = pave_with_topology(map, std::move(shifted), quiet);
+    c.kept = static_cast<long>(paved.elements.size());
+    if (c.shift_in_cells == glm::dvec2(0)) fit.at_design.kept = c.kept;
+    const bool ok = judge_pavement(paved.after).ok;
+    // At the same verdict and count the design's own offset stays: a fit that gains nothing moves nothing.
+    const bool more = c.kept > fit.finalists[std::max(best, 0)].kept;
+    const bool as_many_unshifted = c.kept == fit.finalists[std::max(best, 0)].kept && c.shift_in_cells == glm::dvec2(0);
+    if (best < 0 || (ok && !best_ok) || (ok == best_ok && (more || as_many_unshifted))) best = f, best_ok = ok;
   }
-  if (best_length == 0) best_length = kTries;  // every shift keeps as many: any will do
-  const double middle = best_start + 0.5 * (best_length - 1);
-  return design.placement.offset + (band_step * middle / kTries) * across;
+  if (best >= 0) fit.chosen = fit.finalists[best];
 }
 
 // The pavement of one topology (lattice or adaptive).
@@ -153,6 +142,7 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
     return Stopwatch();
   };
   Stopwatch watch = start("pattern");
+  double pattern_ms = 0;
   if (design.pattern.spacing <= 0)
     design.pattern.spacing = default_spacing(map.mesh, design.pattern.tessellation);
   const bool adaptive = design.pattern.topology == Topology::Adaptive;
@@ -192,6 +182,20 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
     design.placement.align = AlignAxis::None;
     pavement.row_alignment = aligned;
   }
+  // After the rows are turned: the shift is over the turned lattice's cell. A band paved seamlessly
+  // takes its own shift across (below), and an adaptive pattern is grown, not laid (it stays asked,
+  // and the run says it was not used).
+  if (design.placement.fit_offset && !pavement.seamless && !adaptive) {
+    pattern_ms = watch.milliseconds();  // the fit is timed on its own
+    watch = start("offset_fit");
+    design.placement.fit_offset = false;  // the finalists are paved at fixed offsets
+    OffsetFit fit = fit_offset(map, pavement.cell, design);
+    pave_finalists(map, design, options, fit);
+    design.placement.offset = fit.chosen.offset;
+    pavement.offset_fit = std::move(fit);
+    pavement.timings.emplace_back("offset_fit", watch.milliseconds());
+    watch = start("pattern");
+  }
   if (pavement.seamless)
     design.placement.offset = best_offset_across(map, pavement.cell, design, pavement.band_closure->step);
   const QualityBasis basis = quality_basis(map, pavement.cell, design.elements, design.solver, design.guidance);
@@ -207,7 +211,7 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
       add_edited_points(map, pavement.pattern, design.edits, design.elements.vertex.scale * design.pattern.spacing,
                         design.elements.gap);
   pavement.points = pavement.pattern.points;
-  pavement.timings.emplace_back("pattern", watch.milliseconds());
+  pavement.timings.emplace_back("pattern", pattern_ms + watch.milliseconds());
   // Before any element is placed or measured: the caller's bounds (run_pipeline's output size)
   // refuse a design here at the cost of its pattern alone.
   if (options.on_pattern) options.on_pattern(pavement.pattern, design);

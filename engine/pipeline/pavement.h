@@ -12,6 +12,7 @@
 #include "elements/elements.h"
 #include "pattern/band_closure.h"
 #include "pattern/row_alignment.h"
+#include "pipeline/offset_fit.h"
 #include "pattern/pattern.h"
 #include "report/pavement_quality.h"
 #include "solver/spring_solver.h"
@@ -73,6 +74,8 @@ struct Pavement {
   // Rows along a world axis (placement.align): the rotation added to rotation_deg; the design
   // above then holds the sum, with align none, so that its design.json repeats the same lattice.
   std::optional<RowAlignment> row_alignment;
+  // placement.fit_offset: the offset found; the design above holds it, with fit_offset false.
+  std::optional<OffsetFit> offset_fit;
   std::optional<BandClosure> band_closure;
   PavementQuality before;            // the initial pavement, post-processed the same way
   PavementQuality paper;             // after the paper's optimizer and post-processing alone

@@ -18,6 +18,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include <utility>
 
@@ -77,6 +78,19 @@ std::vector<std::string> row_alignment_warnings(AlignAxis asked, const Pavement&
                   std::to_string(std::lround(a->spread_deg)) + " degrees over this surface's map, so one turn of the pattern "
                   "lays only some of its rows along it (a surface wrapped around another axis: try that axis)");
   return out;
+}
+
+// placement.fit_offset where no lattice is laid over the map to shift: a band paved seamlessly
+// (its rows are shifted across it for the most elements anyway) and an adaptive pattern.
+std::optional<std::string> offset_fit_warning(const Design& design, const Pavement& pavement) {
+  if (!design.placement.fit_offset || pavement.offset_fit) return std::nullopt;
+  if (pavement.seamless)
+    return "placement.fit_offset (--fit-offset) is not used: this band is paved seamlessly, and its rows are "
+           "shifted across it for the most elements already";
+  if (pavement.design.pattern.topology == Topology::Adaptive)
+    return "placement.fit_offset (--fit-offset) is not used: the adaptive pattern is grown over the surface, not "
+           "laid as a lattice that a shift could move";
+  return std::nullopt;
 }
 
 // The longest axis is the usual best cut of a closed surface, not always: a bead cut across it kept
@@ -202,6 +216,7 @@ PipelineResult run_pipeline(PipelineRequest request) {
   result.pavement = naming_the_design_file(request, [&] { return make_pavement(*result.map, design, request.pavement); });
   check_stop();  // the solves ended early: a partial pavement is not a result
   for (const std::string& w : row_alignment_warnings(design.placement.align, result.pavement)) warn(w);
+  if (const auto w = offset_fit_warning(design, result.pavement)) warn(*w);
   if (closed_surface && design.placement.cut_axis == CutAxis::Auto)
     try_other_cut_axes(request, design, *closed_surface, result);
   if (result.pavement.elements.size() == 0) {

@@ -58,6 +58,23 @@ namespace {
 
 // How a band was paved (docs/holes_and_bands.md): seamless, with the lattice closed around it, or
 // as an annulus and why. null for a surface that is not a band.
+nlohmann::json offset_candidate_json(const OffsetCandidate& c) {
+  return {{"offset", {c.offset.x, c.offset.y}},
+          {"shift_in_cells", {c.shift_in_cells.x, c.shift_in_cells.y}},
+          {"laid_out", c.laid_out},
+          {"kept", c.kept >= 0 ? nlohmann::json(c.kept) : nlohmann::json(nullptr)}};
+}
+
+// placement.fit_offset: the offset laid, the design's own, and the finalists paved in full.
+nlohmann::json offset_fit_json(const OffsetFit& fit) {
+  nlohmann::json finalists = nlohmann::json::array();
+  for (const OffsetCandidate& c : fit.finalists) finalists.push_back(offset_candidate_json(c));
+  return {{"chosen", offset_candidate_json(fit.chosen)},
+          {"at_design_offset", offset_candidate_json(fit.at_design)},
+          {"tries", fit.tries},
+          {"finalists", std::move(finalists)}};
+}
+
 nlohmann::json band_json(const SurfaceMap& map, const Pavement& pavement) {
   if (!is_band(map)) return nullptr;
   nlohmann::json band = {{"seamless", pavement.seamless}};
@@ -138,6 +155,7 @@ nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const
                                                 {"spread_deg", pavement.row_alignment->spread_deg},
                                                 {"axis_to_surface_deg", pavement.row_alignment->axis_to_surface_deg}}
                                          : json(nullptr)},
+                   {"offset_fit", pavement.offset_fit ? offset_fit_json(*pavement.offset_fit) : json(nullptr)},
                    {"defects", pattern.defects.size()},
                    {"relaxation", {{"iterations", pavement.relaxation.iterations},
                                    {"seeds_kept", pavement.relaxation.seeds_kept},

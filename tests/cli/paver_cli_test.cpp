@@ -238,6 +238,33 @@ TEST_F(PaverRun, AlignTurnsTheRowsAndTheSavedDesignRepeatsThem) {
   EXPECT_NE(wrong.err.find("--align up: use x, y, z or none"), std::string::npos) << describe(wrong);
 }
 
+// --fit-offset on the facade with windows, rows along x: the summary and report.json say where the
+// lattice went and what it gained, and design.json holds the offset with fit_offset false.
+TEST_F(PaverRun, FitOffsetSaysWhatItGainedAndTheSavedDesignHoldsTheOffset) {
+  const fs::path out = dir() / "fitted";
+  const CliResult r = paver({"run", "assets/surfaces/facade_windows.obj", "--design",
+                             "assets/designs/facade_windows_grid_discs.json", "--align", "x", "--fit-offset",
+                             "--formats", "ply", "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  EXPECT_NE(r.out.find("offset   fitted: the lattice shifted"), std::string::npos) << describe(r);
+  const nlohmann::json report = nlohmann::json::parse(read_file_text(out / "report.json"));
+  const nlohmann::json& fit = report["pattern"]["offset_fit"];
+  ASSERT_TRUE(fit.is_object()) << report["pattern"].dump();
+  EXPECT_EQ(fit["tries"], 64);
+  EXPECT_GT(fit["chosen"]["kept"].get<long>(), fit["at_design_offset"]["kept"].get<long>());
+  EXPECT_EQ(fit["chosen"]["kept"], report["elements"]["total"]);
+  const nlohmann::json saved = nlohmann::json::parse(read_file_text(out / "design.json"));
+  EXPECT_EQ(saved["placement"]["fit_offset"], false);
+  EXPECT_EQ(saved["placement"]["offset"], fit["chosen"]["offset"]);
+  // Without the flag no fit is made or reported.
+  const CliResult plain = paver({"run", "assets/surfaces/facade_windows.obj", "--design",
+                                 "assets/designs/facade_windows_grid_discs.json", "--formats", "ply", "--out",
+                                 (dir() / "plain").string()});
+  ASSERT_EQ(plain.exit_code, 0) << describe(plain);
+  EXPECT_EQ(plain.out.find("offset   fitted"), std::string::npos);
+  EXPECT_TRUE(nlohmann::json::parse(read_file_text(dir() / "plain" / "report.json"))["pattern"]["offset_fit"].is_null());
+}
+
 TEST_F(PaverRun, DomeHexWritesEveryOutputOnTheSurface) {
   const fs::path out = dir() / "dome";
   const CliResult r = paver({"run", "assets/surfaces/dome.obj", "--pattern", "hex", "--spacing", "6", "--out",

@@ -171,6 +171,19 @@ void placement_section(Document& doc, Design& d) {
   if (p.align != AlignAxis::None && doc.result.pavement && doc.result.pavement->row_alignment)
     ImGui::TextDisabled("turned %.1f degrees to follow %s", doc.result.pavement->row_alignment->rotation_deg,
                         std::string(align_axis_name(p.align)).c_str());
+  if (ImGui::Checkbox("fit offset", &p.fit_offset)) changed = true;
+  help_marker("Shifts the pattern within one cell, on top of the offset above, to where the most elements fit: "
+              "with rows along an axis, whole rows meet a window's edge or miss it. Lays out up to 64 shifts and, "
+              "for a pattern of up to 20,000 points, paves the best few in full.");
+  if (p.fit_offset && doc.result.pavement && doc.result.pavement->offset_fit) {
+    const OffsetFit& f = *doc.result.pavement->offset_fit;
+    if (f.chosen.kept >= 0)
+      ImGui::TextDisabled("laid at (%.4g, %.4g): %ld elements kept, %ld at the offset above", f.chosen.offset.x,
+                          f.chosen.offset.y, f.chosen.kept, f.at_design.kept);
+    else
+      ImGui::TextDisabled("laid at (%.4g, %.4g): %zu elements laid out, %zu at the offset above", f.chosen.offset.x,
+                          f.chosen.offset.y, f.chosen.laid_out, f.at_design.laid_out);
+  }
   changed |= typed_number("rotation (degrees)", p.rotation_deg);
   help_marker("Turns the pattern counter-clockwise over the map (the round handle in the 2D view); with rows "
               "along an axis, on top of that. On a band the band sets the rows' direction instead.");

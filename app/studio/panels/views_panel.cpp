@@ -215,7 +215,8 @@ struct Handles {
 };
 
 // The placement the last pavement used: with placement.align, the document's rotation plus the
-// alignment's, so that the handles and the lattice preview show the lattice as laid.
+// alignment's, and with placement.fit_offset the offset it found, so that the handles and the
+// lattice preview show the lattice as laid.
 double aligned_rotation_deg(const Document& doc) {
   const auto& pavement = doc.result.pavement;
   if (doc.design.placement.align == AlignAxis::None || !pavement || !pavement->row_alignment) return 0;
@@ -225,6 +226,8 @@ double aligned_rotation_deg(const Document& doc) {
 Placement shown_placement(const Document& doc) {
   Placement p = doc.design.placement;
   p.rotation_deg += aligned_rotation_deg(doc);
+  const auto& pavement = doc.result.pavement;
+  if (p.fit_offset && pavement && pavement->offset_fit) p.offset = pavement->offset_fit->chosen.offset;
   return p;
 }
 

@@ -51,6 +51,7 @@ Design non_default_design() {
   d.placement.scale = 1.7;
   d.placement.cut_axis = CutAxis::Y;
   d.placement.align = AlignAxis::Z;
+  d.placement.fit_offset = true;
   d.solver.c = 0.05;
   d.solver.m = -0.025;
   d.solver.alpha = 11;
@@ -112,6 +113,7 @@ void expect_same(const Design& a, const Design& b) {
   EXPECT_EQ(a.placement.scale, b.placement.scale);
   EXPECT_EQ(a.placement.cut_axis, b.placement.cut_axis);
   EXPECT_EQ(a.placement.align, b.placement.align);
+  EXPECT_EQ(a.placement.fit_offset, b.placement.fit_offset);
   const SolverParams& s = a.solver;
   const SolverParams& t = b.solver;
   EXPECT_EQ(s.c, t.c);
@@ -175,10 +177,11 @@ TEST(DesignIo, WritesEveryKey) {
   EXPECT_EQ(j.at("elements").at("rim_rows"), "none");
   EXPECT_EQ(j.at("elements").at("beads").size(), 2u);
   EXPECT_EQ(j.at("elements").at("vertex").size(), 3u);
-  EXPECT_EQ(j.at("placement").size(), 6u);
+  EXPECT_EQ(j.at("placement").size(), 7u);
   EXPECT_EQ(j.at("placement").at("band_rows"), "across");
   EXPECT_EQ(j.at("placement").at("cut_axis"), "auto");
   EXPECT_EQ(j.at("placement").at("align"), "none");
+  EXPECT_EQ(j.at("placement").at("fit_offset"), false);
   EXPECT_EQ(j.at("solver").size(), 17u);
   EXPECT_EQ(j.at("solver").at("coarse_levels"), 8);
   const json full = design_to_json(non_default_design());

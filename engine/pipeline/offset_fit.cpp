@@ -1,0 +1,95 @@
+#include "pipeline/offset_fit.h"
+
+#include "pattern/pattern.h"
+#include "pipeline/pavement.h"  // place_all_elements
+
+#include <tbb/parallel_for.h>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+namespace paver {
+
+OffsetFit fit_offset(const SurfaceMap& map, const UnitCell& cell, const Design& design) {
+  const double points = std::max(1.0, estimate_point_count(map, cell, design.placement));
+  const int k = std::clamp(static_cast<int>(std::sqrt(kOffsetFitPointBudget / points)), 2, 8);
+  const int tries = k * k;
+  std::vector<OffsetCandidate> candidate(static_cast<std::size_t>(tries));
+  // The tries are independent: side by side.
+  tbb::parallel_for(0, tries, [&](int t) {
+    OffsetCandidate& c = candidate[t];
+    c.shift_in_cells = glm::dvec2(double(t / k) / k, double(t % k) / k);
+    c.offset = design.placement.offset + c.shift_in_cells.x * cell.a1 + c.shift_in_cells.y * cell.a2;
+    Placement placement = design.placement;
+    placement.offset = c.offset;
+    const Pattern pattern = build_pattern(map, cell, placement);
+    c.laid_out = place_all_elements(map, pattern, pattern.points, design, true).elements.size();
+  });
+  // A shift by a whole cell repeats the lattice, so the neighbours wrap around.
+  const auto at = [&](int i, int j) { return candidate[((i + k) % k) * k + (j + k) % k].laid_out; };
+  std::vector<std::size_t> around(candidate.size());
+  std::vector<int> steps(candidate.size());  // from no shift, around the cell
+  for (int t = 0; t < tries; ++t) {
+    const int i = t / k, j = t % k;
+    for (int di = -1; di <= 1; ++di)
+      for (int dj = -1; dj <= 1; ++dj) around[t] += at(i + di, j + dj);
+    steps[t] = std::min(i, k - i) + std::min(j, k - j);
+  }
+  std::vector<int> ranked(candidate.size());
+  for (int t = 0; t < tries; ++t) ranked[t] = t;
+  std::stable_sort(ranked.begin(), ranked.end(), [&](int a, int b) {
+    if (candidate[a].laid_out != candidate[b].laid_out) return candidate[a].laid_out > candidate[b].laid_out;
+    if (around[a] != around[b]) return around[a] > around[b];
+    return steps[a] < steps[b];
+  });
+  OffsetFit fit;
+  fit.tries = tries;
+  fit.chosen = candidate[ranked[0]];
+  fit.at_design = candidate[0];
+  if (points <= kOffsetFitPavedPoints) {
+    for (int r = 0; r < std::min(kOffsetFitFinalists, tries); ++r) fit.finalists.push_back(candidate[ranked[r]]);
+    if (std::find(ranked.begin(), ranked.begin() + fit.finalists.size(), 0) == ranked.begin() + fit.finalists.size())
+      fit.finalists.push_back(candidate[0]);
+  }
+  return fit;
+}
+
+// Of shifts across (a sixteenth of a row apart, on top of
+// the design's offset), those whose laid-out elements keep the most after the boundary
+// post-processing. Shifts that keep the same rows form a run; its middle leaves the rows as far
+// from one rim as from the other (the first of them put a ring's rows 0.03 mm from one rim and
+// 0.49 mm from the other).
+glm::dvec2 best_offset_across(const SurfaceMap& map, const UnitCell& cell, const Design& design, glm::ivec2 step) {
+  constexpr int kTries = 16;
+  const double angle = design.placement.rotation_deg * std::numbers::pi / 180.0;
+  const glm::dvec2 across(-std::sin(angle), std::cos(angle));  // the band's v in the pattern plane
+  // Rows along the repeating step lie this far apart: a shift by it gives the same lattice.
+  const double band_step = std::abs(cell.cell_area()) / glm::length(double(step.x) * cell.a1 + double(step.y) * cell.a2);
+  // The tries are independent: side by side (a large band's layout is mostly serial).
+  std::array<std::size_t, kTries> count{};
+  tbb::parallel_for(0, kTries, [&](int k) {
+    Placement placement = design.placement;
+    placement.offset += (band_step * k / kTries) * across;
+    const Pattern pattern = build_pattern(map, cell, placement);
+    count[k] = place_all_elements(map, pattern, pattern.points, design, true).elements.size();
+  });
+  const std::size_t most = *std::max_element(count.begin(), count.end());
+  // The longest run of shifts that keep the most, around the circle (a shift by a whole row
+  // repeats the lattice); its middle, half-way between two shifts when its length is even.
+  int best_start = 0, best_length = 0;
+  for (int start = 0; start < kTries; ++start) {
+    if (count[start] != most || count[(start + kTries - 1) % kTries] == most) continue;  // not a run's start
+    int length = 0;
+    while (length < kTries && count[(start + length) % kTries] == most) ++length;
+    if (length > best_length) best_start = start, best_length = length;
+  }
+  if (best_length == 0) best_length = kTries;  // every shift keeps as many: any will do
+  const double middle = best_start + 0.5 * (best_length - 1);
+  return design.placement.offset + (band_step * middle / kTries) * across;
+}
+
+}  // namespace paver

@@ -1,0 +1,56 @@
+#pragma once
+// Where the lattice sits over the map (placement.offset) decides how many elements fit: on a
+// facade with windows, rows laid along x lost a tenth of their discs at one offset and none at
+// another, a quarter of a cell away. These searches shift the lattice by fractions of a cell and
+// keep the shift whose laid-out elements keep the most after the boundary post-processing, before
+// any optimization (the count before optimizing follows the final count: docs/design_file.md).
+#include "design/design.h"
+#include "map/surface_map.h"
+#include "pattern/unit_cell.h"
+
+#include <glm/vec2.hpp>
+
+#include <cstddef>
+#include <vector>
+
+namespace paver {
+
+// One shift of the lattice: where it puts the lattice and how many elements it keeps.
+struct OffsetCandidate {
+  glm::dvec2 offset{0, 0};          // the design's offset plus the shift
+  glm::dvec2 shift_in_cells{0, 0};  // the shift, in fractions of a1 and a2
+  std::size_t laid_out = 0;         // elements kept after the boundary post-processing, before optimizing
+  long kept = -1;                   // elements of the whole pavement; -1 when it was not paved
+};
+
+// placement.fit_offset: K x K shifts over one lattice cell (i/K a1 + j/K a2, on top of the
+// design's offset) are laid out and counted; for a pattern of up to kOffsetFitPavedPoints points
+// the best few and the design's own offset are then paved in full (the optimizer moves elements
+// and resolution removes some, so the laid-out count only forecasts the kept one) and the one that
+// keeps the most, with an ok verdict first, is laid.
+struct OffsetFit {
+  OffsetCandidate chosen;
+  OffsetCandidate at_design;              // no shift
+  int tries = 0;                          // K x K; K is 8, fewer for a large pattern (kOffsetFitPointBudget)
+  std::vector<OffsetCandidate> finalists; // ranked by laid-out count, the design's offset among them; empty
+                                          // when the pattern is too large to pave them all
+};
+
+// The tries lay out about this many lattice points in all: K = sqrt(budget / points), from 2 to 8.
+inline constexpr double kOffsetFitPointBudget = 4e6;
+// Finalists are paved only for patterns up to this many points: each costs a whole pavement.
+inline constexpr double kOffsetFitPavedPoints = 20000;
+// The best shifts paved in full, besides the design's own offset.
+inline constexpr int kOffsetFitFinalists = 3;
+
+// Lays out the shifts and ranks them: the most laid-out elements first; among equals, the shift
+// whose neighbouring shifts keep the most too (the middle of a plateau, not its edge), then the one
+// nearest the design's own offset. `chosen` is the first; `finalists` are the best few and the
+// design's offset, for the caller to pave (pipeline/pavement.cpp), when the pattern is small enough.
+OffsetFit fit_offset(const SurfaceMap& map, const UnitCell& cell, const Design& design);
+
+// A band paved seamlessly: its rows run along the rims and are kept or lost whole at each, so only
+// the shift across the band matters; `step` is the lattice step that closes around it.
+glm::dvec2 best_offset_across(const SurfaceMap& map, const UnitCell& cell, const Design& design, glm::ivec2 step);
+
+}  // namespace paver
