@@ -708,6 +708,39 @@ TEST_F(StudioSession, AClosedSurfaceCutAcrossAnAxisExportsWhatTheCliWrites) {
   EXPECT_EQ(report["surface"]["cut_normal"], nlohmann::json::array({1.0, 0.0, 0.0})) << report["surface"].dump();
 }
 
+// Rows along an axis and a fitted offset, set as the Placement section sets them: the studio lays
+// what `paver run --align x --fit-offset` lays, byte for byte, and its exported design.json holds
+// the turn and the offset found (align none, fit_offset false).
+TEST_F(StudioSession, RowsAlongAnAxisWithAFittedOffsetExportWhatTheCliWrites) {
+  const fs::path exported = dir_ / "export", script = dir_ / "facade.txt";
+  std::ofstream(script) << "open assets/surfaces/facade_windows.obj\n"
+                           "design assets/designs/facade_windows_grid_discs.json\n"
+                           "set placement.align x\n"
+                           "set placement.fit_offset true\n"
+                           "optimize\n"
+                           "export " << exported.string() << "\n"
+                        << "quit\n";
+  const Outcome r = run_script(script);
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  ASSERT_TRUE(fs::is_regular_file(exported / "placements.csv")) << describe(r);
+  const nlohmann::json report = nlohmann::json::parse(read_text(exported / "report.json"));
+  EXPECT_TRUE(report["pattern"]["row_alignment"].is_object()) << report["pattern"].dump();
+  ASSERT_TRUE(report["pattern"]["offset_fit"].is_object()) << report["pattern"].dump();
+  const nlohmann::json design = nlohmann::json::parse(read_text(exported / "design.json"));
+  EXPECT_EQ(design["placement"]["align"], "none");
+  EXPECT_EQ(design["placement"]["fit_offset"], false);
+  EXPECT_EQ(design["placement"]["offset"], report["pattern"]["offset_fit"]["chosen"]["offset"]);
+  const fs::path cli_out = dir_ / "cli";
+  const Outcome cli = run_in_source(quote(PAVER_CLI) +
+                                        " run assets/surfaces/facade_windows.obj --design "
+                                        "assets/designs/facade_windows_grid_discs.json --align x --fit-offset "
+                                        "--backend cpu --formats ply --out " + quote(cli_out.string()),
+                                    dir_);
+  ASSERT_EQ(cli.exit_code, 0) << describe(cli);
+  EXPECT_TRUE(read_text(exported / "placements.csv") == read_text(cli_out / "placements.csv"))
+      << "placements.csv differs from paver run --align x --fit-offset's";
+}
+
 // The studio's Cut metal (in the background) writes the metal `paver run --subtract` writes for
 // the same design, byte for byte.
 TEST_F(StudioSession, CutMetalWritesWhatTheCliSubtractWrites) {
