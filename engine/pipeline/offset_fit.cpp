@@ -19,8 +19,9 @@ OffsetFit fit_offset(const SurfaceMap& map, const UnitCell& cell, const Design& 
   const int k = std::clamp(static_cast<int>(std::sqrt(kOffsetFitPointBudget / points)), 2, 8);
   const int tries = k * k;
   std::vector<OffsetCandidate> candidate(static_cast<std::size_t>(tries));
-  // The tries are independent: side by side.
-  tbb::parallel_for(0, tries, [&](int t) {
+  // The tries are independent: side by side, but one at a time for a large pattern, whose every
+  // try holds a pattern and its elements (about 200 bytes a point) besides the run's own.
+  const auto lay_out = [&](int t) {
     OffsetCandidate& c = candidate[t];
     c.shift_in_cells = glm::dvec2(double(t / k) / k, double(t % k) / k);
     c.offset = design.placement.offset + c.shift_in_cells.x * cell.a1 + c.shift_in_cells.y * cell.a2;
@@ -28,7 +29,11 @@ OffsetFit fit_offset(const SurfaceMap& map, const UnitCell& cell, const Design& 
     placement.offset = c.offset;
     const Pattern pattern = build_pattern(map, cell, placement);
     c.laid_out = place_all_elements(map, pattern, pattern.points, design, true).elements.size();
-  });
+  };
+  if (points <= kOffsetFitParallelPoints)
+    tbb::parallel_for(0, tries, lay_out);
+  else
+    for (int t = 0; t < tries; ++t) lay_out(t);
   // A shift by a whole cell repeats the lattice, so the neighbours wrap around.
   const auto at = [&](int i, int j) { return candidate[((i + k) % k) * k + (j + k) % k].laid_out; };
   std::vector<std::size_t> around(candidate.size());

@@ -38,6 +38,8 @@ struct OffsetFit {
 
 // The tries lay out about this many lattice points in all: K = sqrt(budget / points), from 2 to 8.
 inline constexpr double kOffsetFitPointBudget = 4e6;
+// Larger patterns are laid out one shift at a time, to bound the memory the tries hold.
+inline constexpr double kOffsetFitParallelPoints = 250000;
 // Finalists are paved only for patterns up to this many points: each costs a whole pavement.
 inline constexpr double kOffsetFitPavedPoints = 20000;
 // The best shifts paved in full, besides the design's own offset.
