@@ -23,9 +23,14 @@ std::size_t require_element(const Pavement& pavement, int id) {
   return *index;
 }
 
-// Ids name one pattern: an auto design keeps the topology its pavement was laid with.
-void fix_topology(Design& design, const Pavement& pavement) {
+// Ids name one pattern layout: an auto design keeps the topology its pavement was laid with, and a
+// fitted offset stays where the fit put it (a fit is not made under edits: pipeline/offset_fit.h).
+void fix_layout(Design& design, const Pavement& pavement) {
   if (design.pattern.topology == Topology::Auto) design.pattern.topology = pavement.design.pattern.topology;
+  if (design.placement.fit_offset && pavement.offset_fit) {
+    design.placement.offset = pavement.offset_fit->chosen.offset;
+    design.placement.fit_offset = false;
+  }
 }
 
 MovedParticle* moved_entry(Design& design, int particle) {
@@ -161,7 +166,7 @@ Design with_pinned(Design design, const Pavement& pavement, int id, bool pinned)
     if (!pinned) throw InputError(id_text(id) + " is one you added: it stays where you put it; drag or delete it");
     return design;
   }
-  fix_topology(design, pavement);
+  fix_layout(design, pavement);
   for (const int particle : carriers(design, pavement, index, pinned ? "pin" : "unpin")) {
     if (MovedParticle* m = moved_entry(design, particle)) {
       m->pinned = pinned;
@@ -181,7 +186,7 @@ Design with_dragged(Design design, const Pavement& pavement, int id, glm::dvec2 
     a->uv = pavement.elements.uv[index] + offset;
     return design;
   }
-  fix_topology(design, pavement);
+  fix_layout(design, pavement);
   for (const int particle : carriers(design, pavement, index, "drag")) {
     const glm::dvec2 to = pavement.points[std::size_t(particle)] + offset;
     if (MovedParticle* m = moved_entry(design, particle))
@@ -196,7 +201,7 @@ Design without_element(Design design, const Pavement& pavement, int id) {
   const std::size_t index = require_element(pavement, id);
   if (pavement.elements.kind[index] == ElementKind::Bead)
     throw InputError(id_text(id) + " is a bead: beads follow the stones; turn them off in the elements panel");
-  fix_topology(design, pavement);
+  fix_layout(design, pavement);
   design.edits.deleted.push_back({id, pavement.elements.uv[index]});
   return design;
 }
@@ -205,7 +210,7 @@ Design with_added_element(Design design, const Pavement& pavement, glm::dvec2 uv
   refuse_adaptive(design, pavement, "add");
   if (!design.elements.vertex.enabled)
     throw InputError("an added element is a vertex element, but vertex elements are off; turn them on first");
-  fix_topology(design, pavement);
+  fix_layout(design, pavement);
   const int id = design.edits.next_added_id();
   design.edits.added.push_back({id, uv});
   if (added_id) *added_id = id;

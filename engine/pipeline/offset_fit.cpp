@@ -14,17 +14,22 @@
 
 namespace paver {
 
-OffsetFit fit_offset(const SurfaceMap& map, const UnitCell& cell, const Design& design) {
+OffsetFit fit_offset(const SurfaceMap& map, const UnitCell& cell, const Design& design, const std::atomic<bool>* stop) {
   const double points = std::max(1.0, estimate_point_count(map, cell, design.placement));
   const int k = std::clamp(static_cast<int>(std::sqrt(kOffsetFitPointBudget / points)), 2, 8);
   const int tries = k * k;
   std::vector<OffsetCandidate> candidate(static_cast<std::size_t>(tries));
   // The tries are independent: side by side, but one at a time for a large pattern, whose every
   // try holds a pattern and its elements (about 200 bytes a point) besides the run's own.
-  const auto lay_out = [&](int t) {
+  const auto stopped = [&] { return stop && stop->load(); };
+  for (int t = 0; t < tries; ++t) {
     OffsetCandidate& c = candidate[t];
     c.shift_in_cells = glm::dvec2(double(t / k) / k, double(t % k) / k);
     c.offset = design.placement.offset + c.shift_in_cells.x * cell.a1 + c.shift_in_cells.y * cell.a2;
+  }
+  const auto lay_out = [&](int t) {
+    if (stopped()) return;
+    OffsetCandidate& c = candidate[t];
     Placement placement = design.placement;
     placement.offset = c.offset;
     const Pattern pattern = build_pattern(map, cell, placement);
@@ -53,8 +58,12 @@ OffsetFit fit_offset(const SurfaceMap& map, const UnitCell& cell, const Design& 
   });
   OffsetFit fit;
   fit.tries = tries;
-  fit.chosen = candidate[ranked[0]];
   fit.at_design = candidate[0];
+  if (stopped()) {  // the counts are partial: no shift; the caller ends the run
+    fit.chosen = candidate[0];
+    return fit;
+  }
+  fit.chosen = candidate[ranked[0]];
   if (points <= kOffsetFitPavedPoints) {
     for (int r = 0; r < std::min(kOffsetFitFinalists, tries); ++r) fit.finalists.push_back(candidate[ranked[r]]);
     if (std::find(ranked.begin(), ranked.begin() + fit.finalists.size(), 0) == ranked.begin() + fit.finalists.size())
@@ -63,7 +72,22 @@ OffsetFit fit_offset(const SurfaceMap& map, const UnitCell& cell, const Design& 
   return fit;
 }
 
-// Of shifts across (a sixteenth of a row apart, on top of
+int choose_finalist(const std::vector<OffsetCandidate>& finalists, const std::vector<bool>& ok) {
+  int best = -1;
+  for (int f = 0; f < static_cast<int>(finalists.size()); ++f) {
+    if (best < 0 || (ok[f] && !ok[best])) {
+      best = f;
+      continue;
+    }
+    if (ok[f] != ok[best]) continue;
+    const long kept = finalists[f].kept, best_kept = finalists[best].kept;
+    if (kept > best_kept || (kept == best_kept && finalists[f].shift_in_cells == glm::dvec2(0))) best = f;
+  }
+  return best;
+}
+
+// Rows that run along a band's rims are kept or lost whole at each rim, so where the lattice sits
+// across the band decides how many fit: of shifts across (a sixteenth of a row apart, on top of
 // the design's offset), those whose laid-out elements keep the most after the boundary
 // post-processing. Shifts that keep the same rows form a run; its middle leaves the rows as far
 // from one rim as from the other (the first of them put a ring's rows 0.03 mm from one rim and

@@ -10,6 +10,7 @@
 
 #include <glm/vec2.hpp>
 
+#include <atomic>
 #include <cstddef>
 #include <vector>
 
@@ -38,8 +39,9 @@ struct OffsetFit {
 
 // The tries lay out about this many lattice points in all: K = sqrt(budget / points), from 2 to 8.
 inline constexpr double kOffsetFitPointBudget = 4e6;
-// Larger patterns are laid out one shift at a time, to bound the memory the tries hold.
-inline constexpr double kOffsetFitParallelPoints = 250000;
+// Larger patterns are laid out one shift at a time: each try side by side holds a pattern and its
+// elements (about 200 bytes a point), and a machine may run dozens of them.
+inline constexpr double kOffsetFitParallelPoints = 50000;
 // Finalists are paved only for patterns up to this many points: each costs a whole pavement.
 inline constexpr double kOffsetFitPavedPoints = 20000;
 // The best shifts paved in full, besides the design's own offset.
@@ -49,7 +51,14 @@ inline constexpr int kOffsetFitFinalists = 3;
 // whose neighbouring shifts keep the most too (the middle of a plateau, not its edge), then the one
 // nearest the design's own offset. `chosen` is the first; `finalists` are the best few and the
 // design's offset, for the caller to pave (pipeline/pavement.cpp), when the pattern is small enough.
-OffsetFit fit_offset(const SurfaceMap& map, const UnitCell& cell, const Design& design);
+// When `stop` becomes true the remaining shifts are skipped and the design's offset is chosen.
+OffsetFit fit_offset(const SurfaceMap& map, const UnitCell& cell, const Design& design,
+                     const std::atomic<bool>* stop = nullptr);
+
+// Of finalists paved in full (kept counts set) and whether each one's verdict is ok: the index of
+// the one to lay. An ok verdict first, then the most kept; at the same verdict and count the
+// design's own offset (no shift), else the better-ranked one: a fit that gains nothing moves nothing.
+int choose_finalist(const std::vector<OffsetCandidate>& finalists, const std::vector<bool>& ok);
 
 // A band paved seamlessly: its rows run along the rims and are kept or lost whole at each, so only
 // the shift across the band matters; `step` is the lattice step that closes around it.

@@ -107,30 +107,25 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
 
 // The laid-out count only forecasts the kept one: the optimizer moves elements and resolution
 // removes some (on the bundled torus, the shift that laid out 4 more kept 9 fewer). So the
-// finalists are paved in full, quietly (no stage names, no observer: the chosen one is paved again
-// with them), and the one that keeps the most elements, an ok verdict first, is laid. The design's
-// own offset is among them: a fit never keeps fewer elements at the same verdict.
+// finalists are paved in full, quietly (no stage names, observer or pattern hook: the chosen one is
+// paved again with them), and choose_finalist picks the one to lay.
 void pave_finalists(const SurfaceMap& map, const Design& design, const PavementOptions& options, OffsetFit& fit) {
+  if (fit.finalists.empty()) return;
   PavementOptions quiet = options;
   quiet.on_stage = {};
   quiet.observer = {};
-  int best = -1;
-  bool best_ok = false;
-  for (int f = 0; f < static_cast<int>(fit.finalists.size()); ++f) {
+  quiet.on_pattern = {};
+  std::vector<bool> ok;
+  for (OffsetCandidate& c : fit.finalists) {
     if (options.stop && options.stop->load()) return;  // the caller ends the run
-    OffsetCandidate& c = fit.finalists[f];
     Design shifted = design;
     shifted.placement.offset = c.offset;
     const Pavement paved = pave_with_topology(map, std::move(shifted), quiet);
     c.kept = static_cast<long>(paved.elements.size());
     if (c.shift_in_cells == glm::dvec2(0)) fit.at_design.kept = c.kept;
-    const bool ok = judge_pavement(paved.after).ok;
-    // At the same verdict and count the design's own offset stays: a fit that gains nothing moves nothing.
-    const bool more = c.kept > fit.finalists[std::max(best, 0)].kept;
-    const bool as_many_unshifted = c.kept == fit.finalists[std::max(best, 0)].kept && c.shift_in_cells == glm::dvec2(0);
-    if (best < 0 || (ok && !best_ok) || (ok == best_ok && (more || as_many_unshifted))) best = f, best_ok = ok;
+    ok.push_back(judge_pavement(paved.after).ok);
   }
-  if (best >= 0) fit.chosen = fit.finalists[best];
+  fit.chosen = fit.finalists[choose_finalist(fit.finalists, ok)];
 }
 
 // The pavement of one topology (lattice or adaptive).
@@ -185,16 +180,18 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
   // After the rows are turned: the shift is over the turned lattice's cell. A band paved seamlessly
   // takes its own shift across (below), and an adaptive pattern is grown, not laid (it stays asked,
   // and the run says it was not used).
-  if (design.placement.fit_offset && !pavement.seamless && !adaptive) {
+  // Not under element edits, which name the elements of the lattice at the design's offset (the
+  // studio folds a fitted offset into the design at the first edit): the run says it was not used.
+  if (design.placement.fit_offset && !pavement.seamless && !adaptive && design.edits.empty()) {
     pattern_ms = watch.milliseconds();  // the fit is timed on its own
     watch = start("offset_fit");
     design.placement.fit_offset = false;  // the finalists are paved at fixed offsets
-    OffsetFit fit = fit_offset(map, pavement.cell, design);
+    OffsetFit fit = fit_offset(map, pavement.cell, design, options.stop);
     pave_finalists(map, design, options, fit);
     design.placement.offset = fit.chosen.offset;
     pavement.offset_fit = std::move(fit);
     pavement.timings.emplace_back("offset_fit", watch.milliseconds());
-    watch = start("pattern");
+    watch = Stopwatch();  // the pattern stage goes on (its name was said)
   }
   if (pavement.seamless)
     design.placement.offset = best_offset_across(map, pavement.cell, design, pavement.band_closure->step);

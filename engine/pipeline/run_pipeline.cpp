@@ -80,8 +80,9 @@ std::vector<std::string> row_alignment_warnings(AlignAxis asked, const Pavement&
   return out;
 }
 
-// placement.fit_offset where no lattice is laid over the map to shift: a band paved seamlessly
-// (its rows are shifted across it for the most elements anyway) and an adaptive pattern.
+// placement.fit_offset where no lattice is laid over the map to shift (a band paved seamlessly,
+// whose rows are shifted across it for the most elements anyway, and an adaptive pattern), or
+// where element edits name the elements of the lattice at the design's offset.
 std::optional<std::string> offset_fit_warning(const Design& design, const Pavement& pavement) {
   if (!design.placement.fit_offset || pavement.offset_fit) return std::nullopt;
   if (pavement.seamless)
@@ -90,6 +91,10 @@ std::optional<std::string> offset_fit_warning(const Design& design, const Paveme
   if (pavement.design.pattern.topology == Topology::Adaptive)
     return "placement.fit_offset (--fit-offset) is not used: the adaptive pattern is grown over the surface, not "
            "laid as a lattice that a shift could move";
+  if (!design.edits.empty())
+    return "placement.fit_offset (--fit-offset) is not used: this design's element edits name the elements of the "
+           "lattice at its offset (placement.offset); fit the offset first, then edit (the studio keeps the fitted "
+           "offset in the design at the first edit)";
   return std::nullopt;
 }
 

@@ -56,8 +56,7 @@ PavementCounts count_pavement(const Pavement& pavement) {
 
 namespace {
 
-// How a band was paved (docs/holes_and_bands.md): seamless, with the lattice closed around it, or
-// as an annulus and why. null for a surface that is not a band.
+// One shift of placement.fit_offset.
 nlohmann::json offset_candidate_json(const OffsetCandidate& c) {
   return {{"offset", {c.offset.x, c.offset.y}},
           {"shift_in_cells", {c.shift_in_cells.x, c.shift_in_cells.y}},
@@ -75,6 +74,8 @@ nlohmann::json offset_fit_json(const OffsetFit& fit) {
           {"finalists", std::move(finalists)}};
 }
 
+// How a band was paved (docs/holes_and_bands.md): seamless, with the lattice closed around it, or
+// as an annulus and why. null for a surface that is not a band.
 nlohmann::json band_json(const SurfaceMap& map, const Pavement& pavement) {
   if (!is_band(map)) return nullptr;
   nlohmann::json band = {{"seamless", pavement.seamless}};

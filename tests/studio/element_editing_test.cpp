@@ -89,6 +89,29 @@ TEST(ElementEditing, AddAndDeleteRecordIdsThatAreNeverReused) {
   EXPECT_EQ(design.edits.deleted[0].uv, p.elements.uv[v]);
 }
 
+// The first edit on a fitted pavement keeps the fitted offset in the design (a fit is not made under
+// edits): the edited design lays the same lattice, less the deleted stone.
+TEST(ElementEditing, AnEditKeepsTheFittedOffsetInTheDesign) {
+  Design design = load_design(test::source_dir() / "assets/designs/pendant_tri_gems.json");
+  design.placement.fit_offset = true;
+  const SurfaceMap& map = *test::bundled_map("pendant");
+  const Pavement fitted = make_pavement(map, design);
+  ASSERT_TRUE(fitted.offset_fit.has_value());
+  ASSERT_NE(fitted.offset_fit->chosen.shift_in_cells, glm::dvec2(0)) << "the case: the fit moved the lattice";
+  const std::size_t v = first_of(fitted, ElementKind::Vertex, true);
+  const Design edited = without_element(design, fitted, fitted.elements.id[v]);
+  EXPECT_FALSE(edited.placement.fit_offset);
+  EXPECT_EQ(edited.placement.offset, fitted.offset_fit->chosen.offset);
+  const Pavement after = make_pavement(map, edited);
+  EXPECT_EQ(after.deletions_missed, 0);
+  std::size_t same = 0;
+  for (std::size_t i = 0; i < fitted.elements.size(); ++i)
+    same += std::count(after.elements.position.begin(), after.elements.position.end(), fitted.elements.position[i]) > 0;
+  EXPECT_GE(double(same), 0.9 * double(fitted.elements.size())) << "the stones around stay where they were";
+  EXPECT_EQ(std::count(after.elements.uv.begin(), after.elements.uv.end(), fitted.elements.uv[v]), 0)
+      << "the deleted stone is gone";
+}
+
 // A box takes the elements whose centres it holds, whichever way it was drawn.
 TEST(ElementEditing, ABoxSelectsTheElementsWhoseCentresItHolds) {
   const Pavement& p = gems();

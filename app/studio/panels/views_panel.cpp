@@ -227,7 +227,9 @@ Placement shown_placement(const Document& doc) {
   Placement p = doc.design.placement;
   p.rotation_deg += aligned_rotation_deg(doc);
   const auto& pavement = doc.result.pavement;
-  if (p.fit_offset && pavement && pavement->offset_fit) p.offset = pavement->offset_fit->chosen.offset;
+  // The shift the fit found, on top of the offset being dragged now.
+  if (p.fit_offset && pavement && pavement->offset_fit)
+    p.offset += pavement->offset_fit->chosen.offset - pavement->offset_fit->at_design.offset;
   return p;
 }
 

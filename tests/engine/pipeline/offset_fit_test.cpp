@@ -1,5 +1,6 @@
 // placement.fit_offset on the bundled facade with windows, grid rows laid along x (where whole
-// rows meet a window's edge or miss it), and where it is not used (a band, an adaptive pattern).
+// rows meet a window's edge or miss it), with element edits, and where it is not used (a band, an
+// adaptive pattern).
 #include "io/design_io.h"
 #include "pipeline/offset_fit.h"
 #include "pipeline/pavement.h"
@@ -82,6 +83,44 @@ TEST(OffsetFit, TheFittedPavementKeepsTheMostAndItsDesignRepeatsIt) {
   const Pavement repeated = make_pavement(map, again);
   EXPECT_FALSE(repeated.offset_fit.has_value());
   EXPECT_EQ(repeated.elements.position, fitted.elements.position);
+}
+
+// Element edits name the elements of the lattice at the design's offset: under them no fit is made,
+// and the run says so (the studio keeps a fitted offset in the design at the first edit).
+TEST(OffsetFit, UnderElementEditsNoFitIsMadeAndTheRunSaysSo) {
+  PipelineRequest request;
+  request.map = test::bundled_map("facade_windows");
+  request.design = windows_grid_along_x();
+  request.design.pattern.topology = Topology::Lattice;  // edits name the elements of one topology
+  request.design.placement.fit_offset = true;
+  request.design.edits.deleted.push_back({3, {0, 0}});
+  const PipelineResult result = run_pipeline(request);
+  EXPECT_FALSE(result.pavement.offset_fit.has_value());
+  EXPECT_EQ(result.pavement.design.placement.offset, glm::dvec2(0));
+  EXPECT_TRUE(std::any_of(result.warnings.begin(), result.warnings.end(), [](const std::string& w) {
+    return w.find("fit_offset (--fit-offset) is not used: this design's element edits") != std::string::npos;
+  }));
+}
+
+// Which paved finalist is laid: an ok verdict first, then the most kept; at the same verdict and
+// count the design's own offset, else the better-ranked one.
+TEST(OffsetFit, TheFinalistLaidIsOkFirstThenKeepsTheMostThenTheDesignsOwn) {
+  const auto finalist = [](double shift, long kept) {
+    OffsetCandidate c;
+    c.shift_in_cells = {shift, 0};
+    c.kept = kept;
+    return c;
+  };
+  // ranked by laid-out count: 0.5, 0.25, then the design's own (no shift)
+  const std::vector<OffsetCandidate> f = {finalist(0.5, 100), finalist(0.25, 104), finalist(0, 102)};
+  EXPECT_EQ(choose_finalist(f, {true, true, true}), 1) << "the most kept";
+  EXPECT_EQ(choose_finalist(f, {true, false, true}), 2) << "an ok verdict before more elements";
+  EXPECT_EQ(choose_finalist(f, {false, false, false}), 1) << "among NOT OK ones too, the most kept";
+  EXPECT_EQ(choose_finalist(f, {true, false, false}), 0) << "the only ok one";
+  const std::vector<OffsetCandidate> tie = {finalist(0.5, 102), finalist(0.25, 102), finalist(0, 102)};
+  EXPECT_EQ(choose_finalist(tie, {true, true, true}), 2) << "a fit that gains nothing moves nothing";
+  const std::vector<OffsetCandidate> tie_shifted = {finalist(0.5, 103), finalist(0.25, 103), finalist(0, 99)};
+  EXPECT_EQ(choose_finalist(tie_shifted, {true, true, true}), 0) << "between shifts, the better ranked";
 }
 
 TEST(OffsetFit, ABandAndAnAdaptivePatternSayItWasNotUsed) {
