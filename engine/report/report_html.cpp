@@ -116,6 +116,24 @@ std::string report_html(const json& report, const std::string& preview_png) {
       html += "<p>Band paved as an annulus: " + text_of(at(band, "annulus_because")) + ".</p>\n";
   }
 
+  // Where the lattice was laid, when the design asked for rows along an axis or a fitted offset:
+  // a facade's designer checks the rows and the count it bought.
+  const json& aligned = at(at(report, "pattern"), "row_alignment");
+  if (aligned.is_object())
+    html += "<p>Rows along " + text_of(at(aligned, "axis")) + ": the pattern turned " +
+            fixed(at(aligned, "rotation_deg"), 1) + " degrees; the axis meets the surface at " +
+            fixed(at(aligned, "axis_to_surface_deg"), 0) + " degrees on average.</p>\n";
+  const json& fit = at(at(report, "pattern"), "offset_fit");
+  if (fit.is_object()) {
+    const json &chosen = at(fit, "chosen"), &own = at(fit, "at_design_offset");
+    const bool paved = at(chosen, "kept").is_number();
+    html += "<p>Offset fitted: the lattice shifted (" + text_of(at(chosen, "shift_in_cells")[0]) + ", " +
+            text_of(at(chosen, "shift_in_cells")[1]) + ") of a cell, " +
+            (paved ? text_of(at(chosen, "kept")) + " elements kept against " + text_of(at(own, "kept"))
+                   : text_of(at(chosen, "laid_out")) + " laid out against " + text_of(at(own, "laid_out"))) +
+            " at the design's offset.</p>\n";
+  }
+
   const bool ok = at(verdict, "ok").is_boolean() && at(verdict, "ok").get<bool>();
   html += std::string("<h2>Verdict: <span class=\"") + (ok ? "ok\">ok" : "bad\">NOT OK") + "</span></h2>\n";
   if (ok) html += "<p>No contact violations, no boundary crossings, pattern intact.</p>\n";

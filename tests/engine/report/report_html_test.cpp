@@ -51,6 +51,23 @@ TEST(ReportHtml, SaysHowABandWasClosed) {
   EXPECT_TRUE(has(report_html(report, ""), "<p>Band paved as an annulus: the design has edge operators.</p>"));
 }
 
+TEST(ReportHtml, SaysHowTheRowsWereTurnedAndWhereTheOffsetWasFitted) {
+  nlohmann::json report = sample_report();
+  EXPECT_FALSE(has(report_html(report, ""), "Rows along"));
+  EXPECT_FALSE(has(report_html(report, ""), "Offset fitted"));
+  report["pattern"]["row_alignment"] = {{"axis", "x"}, {"rotation_deg", 26.42}, {"axis_to_surface_deg", 7.2}};
+  report["pattern"]["offset_fit"] = {
+      {"chosen", {{"shift_in_cells", {0, 0.5}}, {"laid_out", 820}, {"kept", 808}}},
+      {"at_design_offset", {{"shift_in_cells", {0, 0}}, {"laid_out", 782}, {"kept", 762}}}};
+  const std::string html = report_html(report, "");
+  EXPECT_TRUE(has(html, "<p>Rows along x: the pattern turned 26.4 degrees; the axis meets the surface at 7 degrees")) << html;
+  EXPECT_TRUE(has(html, "<p>Offset fitted: the lattice shifted (0, 0.5) of a cell, 808 elements kept against 762 at the "
+                        "design's offset.</p>")) << html;
+  // A pattern too large to pave the finalists: the laid-out counts.
+  report["pattern"]["offset_fit"]["chosen"]["kept"] = nullptr;
+  EXPECT_TRUE(has(report_html(report, ""), "820 laid out against 782"));
+}
+
 TEST(ReportHtml, EmbedsThePreviewSoTheFileStandsAlone) {
   const std::string html = report_html(sample_report(), std::string("\x89PNG\r\n", 6));
   EXPECT_TRUE(has(html, "src=\"data:image/png;base64,iVBORw0K\"")) << html.substr(0, 2000);
