@@ -171,6 +171,28 @@ int run_run(const RunArgs& args) {
   if (args.margin) given("--margin", number_text(*args.margin));
   if (args.beads) given("--beads", "");
   request.design_overrides = overrides;
+  // Element edits name the elements of the layout they were made on: a flag that lays the pattern
+  // out anew sends them to other elements, said before the run rather than found in its result.
+  if (!design.edits.empty()) {
+    std::string relaid;
+    for (const auto& [flag, given_flag] : {std::pair{"--pattern", !args.pattern.empty()},
+                                           {"--topology", !args.topology.empty()},
+                                           {"--spacing", args.spacing.has_value()},
+                                           {"--align", !args.align.empty()}})
+      if (given_flag) relaid += (relaid.empty() ? "" : ", ") + std::string(flag);
+    if (!relaid.empty())
+      warn(relaid + " lays the pattern out anew under this design's element edits, which name the elements of the "
+           "layout they were made on: they may land on other elements (edit again after the change)");
+  }
+  // A design.json written by a run with --align holds the turn in rotation_deg already.
+  if (!args.align.empty() && design.placement.align != AlignAxis::None && design.placement.rotation_deg != 0 &&
+      !args.design.empty()) {
+    char degrees[32];
+    std::snprintf(degrees, sizeof degrees, "%.1f", design.placement.rotation_deg);
+    warn("--align " + printable(args.align) + ": " + args.design + " turns the pattern by placement.rotation_deg " +
+         degrees + " degrees on top of the alignment; a design.json written by a run with --align holds that run's "
+         "turn there already, so give --align only to a design without it");
+  }
   // What the flags and the file give together (c + m >= 0), named after where it came from.
   validate_design(design, args.design.empty() ? "command line" : args.design);
 
@@ -308,7 +330,7 @@ int run_run(const RunArgs& args) {
       std::snprintf(total, sizeof total, ", %.1f with placement.rotation_deg", pavement.design.placement.rotation_deg);
     std::printf("align    rows along %s: the pattern turned %.1f degrees%s; the axis meets the surface at %.0f "
                 "degrees on average and its direction on the map varies by %.1f degrees\n",
-                std::string(align_axis_name(a->axis)).c_str(), a->rotation_deg, total, a->axis_to_surface_deg,
+                std::string(align_axis_name(a->axis)).c_str(), std::abs(a->rotation_deg) < 0.05 ? 0.0 : a->rotation_deg, total, a->axis_to_surface_deg,
                 a->spread_deg);
   }
   if (const auto& f = pavement.offset_fit) {
@@ -331,9 +353,13 @@ int run_run(const RunArgs& args) {
     else
       std::printf("band     paved as an annulus: %s\n", band_annulus_reason(map, pavement).c_str());
   }
+  // The backend that ran the main solve: auto takes the CPU for a small system, and the adaptive
+  // pattern's optimizer runs on the CPU whatever was asked.
+  const std::string ran = pavement.solve.backend.empty() ? backend.name : pavement.solve.backend;
+  const bool on_device = ran == "vulkan" && !backend.device.empty();
   std::printf("optimize %s%s%s: %d iterations, %s (last max step %.3g); %d filled, %d eliminated at the boundary, "
               "%d removed still colliding\n",
-              backend.name.c_str(), backend.device.empty() ? "" : " on ", backend.device.c_str(), pavement.solve.iterations, std::string(stop_reason_name(pavement.solve.reason)).c_str(),
+              ran.c_str(), on_device ? " on " : "", on_device ? backend.device.c_str() : "", pavement.solve.iterations, std::string(stop_reason_name(pavement.solve.reason)).c_str(),
               pavement.solve.last_max_step, pavement.filled, pavement.eliminated, pavement.resolution.removed);
   if (!pavement.coarse_start.level_points.empty()) {
     std::printf("         multilevel start:");

@@ -39,7 +39,11 @@ BackendChoice choose_backend(const std::string& backend, const std::string& devi
     if (must_use_vulkan) throw InputError(flag + ": " + session.error().message);
     return choice;
   }
-  return {gpu::vulkan_solver_factory(session.value()), "vulkan", context.value()->device().name};
+  SolverFactory vulkan = gpu::vulkan_solver_factory(session.value());
+  if (backend == "auto" && !named)
+    return {routed_by_size(choice.factory, std::move(vulkan), kAutoGpuLeastParticles), "auto",
+            context.value()->device().name};
+  return {std::move(vulkan), "vulkan", context.value()->device().name};
 #else
   if (must_use_vulkan) throw InputError(flag + ": this paver was built without Vulkan");
   return choice;

@@ -96,13 +96,19 @@ glm::dvec2 best_offset_across(const SurfaceMap& map, const UnitCell& cell, const
   constexpr int kTries = 16;
   const double angle = design.placement.rotation_deg * std::numbers::pi / 180.0;
   const glm::dvec2 across(-std::sin(angle), std::cos(angle));  // the band's v in the pattern plane
-  // Rows along the repeating step lie this far apart: a shift by it gives the same lattice.
+  // Rows along the repeating step lie this far apart: a shift by it lays the rows where rows were
+  // (the stones along them may move), so the tries span it.
   const double band_step = std::abs(cell.cell_area()) / glm::length(double(step.x) * cell.a1 + double(step.y) * cell.a2);
+  // The tries start where the design's offset has no part across the band: the design.json a run
+  // writes holds the offset found, and run again it must find the same one (from its own offset
+  // the tries moved the rows half a row further on every run where all shifts keep as many). The
+  // search replaces the design's offset across the band; along it, the offset is the design's.
+  const glm::dvec2 base = design.placement.offset - glm::dot(design.placement.offset, across) * across;
   // The tries are independent: side by side (a large band's layout is mostly serial).
   std::array<std::size_t, kTries> count{};
   tbb::parallel_for(0, kTries, [&](int k) {
     Placement placement = design.placement;
-    placement.offset += (band_step * k / kTries) * across;
+    placement.offset = base + (band_step * k / kTries) * across;
     const Pattern pattern = build_pattern(map, cell, placement);
     count[k] = place_all_elements(map, pattern, pattern.points, design, true).elements.size();
   });
@@ -118,7 +124,7 @@ glm::dvec2 best_offset_across(const SurfaceMap& map, const UnitCell& cell, const
   }
   if (best_length == 0) best_length = kTries;  // every shift keeps as many: any will do
   const double middle = best_start + 0.5 * (best_length - 1);
-  return design.placement.offset + (band_step * middle / kTries) * across;
+  return base + (band_step * middle / kTries) * across;
 }
 
 }  // namespace paver

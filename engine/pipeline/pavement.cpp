@@ -233,6 +233,7 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
     // last resort for what still collides.
     watch = start("optimize");
     pavement.solve = relax_pattern_on_surface(map, pavement.pattern, pavement.points, design, {}, options.stop);
+    pavement.solve.backend = "cpu";  // the adaptive pattern's optimizer has no GPU path
     pavement.timings.emplace_back("optimize", watch.milliseconds());
     watch = start("measure_paper");
     pavement.elements = place(pavement.points, {});
@@ -262,7 +263,9 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
     if (!is_atlas(map))
       pavement.coarse_start =
           coarse_start(surface, system, pattern_at, design.solver, design.pattern.spacing, factory, options.stop);
-    pavement.solve = factory(surface, system, design.solver, design.pattern.spacing)->solve(options.observer, options.stop);
+    const std::unique_ptr<SpringSolverBackend> solver = factory(surface, system, design.solver, design.pattern.spacing);
+    pavement.solve = solver->solve(options.observer, options.stop);
+    pavement.solve.backend = std::string(solver->backend_name());
     pavement.timings.emplace_back("optimize", watch.milliseconds());
     for (int i = 0; i < system.particle_count(); ++i) pavement.points[i] = glm::dvec2(system.position[i]);
 
@@ -436,12 +439,14 @@ Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptio
                                                   ", but the adaptive pattern cannot take this design (" + unsupported + ")";
     return first;
   }
-  // The same design, spacing as resolved, grown on the surface; kept when it judges better.
+  // The same design, spacing as resolved, grown on the surface; kept when it judges better. Its
+  // placement is the design's own: the lattice's resolved one holds the lattice's fitted offset
+  // and folded alignment (a band's closing rotation too), which the adaptive pattern makes and
+  // reports itself, or does not use.
   Design grown = first.design;
-  if (first.band_closure) {  // the annulus needs no closing: the design's own spacing and placement
+  grown.placement = design.placement;
+  if (first.band_closure)  // the annulus needs no closing: the design's own spacing
     grown.pattern.spacing = first.band_closure->spacing_before;
-    grown.placement = design.placement;
-  }
   grown.pattern.topology = Topology::Adaptive;
   Pavement second = pave_with_topology(map, std::move(grown), options);
   const Verdict lattice_verdict = judge_pavement(first.after), adaptive_verdict = judge_pavement(second.after);

@@ -30,6 +30,7 @@ struct SolveReport {
   float last_max_step = 0;      // max |dp dt| of the last iteration over settled particles, map units
   int strays_pulled_back = 0;   // particle lifts that needed a pull back onto the map
   double milliseconds = 0;
+  std::string backend;          // which ran it (SpringSolverBackend::backend_name), set by the pipeline
 };
 
 class SpringSolverBackend {
@@ -49,5 +50,9 @@ using SolverFactory = std::function<std::unique_ptr<SpringSolverBackend>(
 
 // The CPU reference solver with `threads` threads (0 = all cores).
 SolverFactory cpu_solver_factory(int threads = 0);
+
+// `large` for a system of at least `least_particles` particles, else `small`: a GPU's fixed cost
+// per solve (uploads, submissions) is more than a small system's whole solve on the CPU.
+SolverFactory routed_by_size(SolverFactory small, SolverFactory large, int least_particles);
 
 }  // namespace paver

@@ -42,6 +42,14 @@ SolverFactory cpu_solver_factory(int threads) {
   };
 }
 
+SolverFactory routed_by_size(SolverFactory small, SolverFactory large, int least_particles) {
+  return [small = std::move(small), large = std::move(large), least_particles](
+             const SolverSurface& surface, SpringSystem& system, const SolverParams& params, double spacing) {
+    return system.particle_count() >= least_particles ? large(surface, system, params, spacing)
+                                                      : small(surface, system, params, spacing);
+  };
+}
+
 SolverConstants make_solver_constants(const SolverParams& p, const SolverSurface& surface) {
   SolverConstants k{};
   k.c = float(p.c), k.m = float(p.m);

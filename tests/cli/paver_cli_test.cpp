@@ -233,6 +233,12 @@ TEST_F(PaverRun, AlignTurnsTheRowsAndTheSavedDesignRepeatsThem) {
                                  "--formats", "ply", "--out", again.string()});
   ASSERT_EQ(rerun.exit_code, 0) << describe(rerun);
   EXPECT_EQ(read_file_text(again / "placements.csv"), read_file_text(out / "placements.csv"));
+  // --align given again to the written design, which holds the turn: it turns twice, and says so.
+  const CliResult twice = paver({"run", "assets/surfaces/facade.obj", "--design", (out / "design.json").string(),
+                                 "--align", "x", "--formats", "ply", "--out", (dir() / "twice").string()});
+  ASSERT_EQ(twice.exit_code, 0) << describe(twice);
+  EXPECT_NE(twice.err.find("turns the pattern by placement.rotation_deg"), std::string::npos) << describe(twice);
+  EXPECT_EQ(r.err.find("placement.rotation_deg"), std::string::npos) << "not for a design without a turn";
   const CliResult wrong = paver({"run", "assets/surfaces/facade.obj", "--align", "up", "--out", (dir() / "w").string()});
   EXPECT_EQ(wrong.exit_code, 2);
   EXPECT_NE(wrong.err.find("--align up: use x, y, z or none"), std::string::npos) << describe(wrong);
@@ -263,6 +269,21 @@ TEST_F(PaverRun, FitOffsetSaysWhatItGainedAndTheSavedDesignHoldsTheOffset) {
   ASSERT_EQ(plain.exit_code, 0) << describe(plain);
   EXPECT_EQ(plain.out.find("offset   fitted"), std::string::npos);
   EXPECT_TRUE(nlohmann::json::parse(read_file_text(dir() / "plain" / "report.json"))["pattern"]["offset_fit"].is_null());
+}
+
+// A flag that lays the pattern out anew under a design's element edits is said before the run:
+// the edits name elements of the layout they were made on.
+TEST_F(PaverRun, ALayoutFlagUnderElementEditsIsSaid) {
+  const CliResult r = paver({"run", "assets/surfaces/pendant.obj", "--design", "assets/designs/pendant_hex_edits.json",
+                             "--spacing", "0.86", "--formats", "ply", "--out", (dir() / "relaid").string()});
+  // It runs (the moved stone, laid out anew, tears the pattern here: exit 3, NOT OK), and says why.
+  EXPECT_NE(r.exit_code, 2) << describe(r);
+  EXPECT_NE(r.err.find("--spacing lays the pattern out anew under this design's element edits"), std::string::npos)
+      << describe(r);
+  const CliResult plain = paver({"run", "assets/surfaces/pendant.obj", "--design", "assets/designs/pendant_hex_edits.json",
+                                 "--margin", "0.01", "--formats", "ply", "--out", (dir() / "kept").string()});
+  ASSERT_EQ(plain.exit_code, 0) << describe(plain);
+  EXPECT_EQ(plain.err.find("lays the pattern out anew"), std::string::npos) << "--margin keeps the layout";
 }
 
 TEST_F(PaverRun, DomeHexWritesEveryOutputOnTheSurface) {

@@ -190,6 +190,8 @@ TEST(VulkanPipeline, SamePavementAsTheCpu) {
     gpu_options.solver = gpu::vulkan_solver_factory(gpu_or_null().session);
     const Pavement cpu = make_pavement(map_of(surface), design, cpu_options);
     const Pavement gpu = make_pavement(map_of(surface), design, gpu_options);
+    EXPECT_EQ(gpu.solve.backend, "vulkan") << name;
+    EXPECT_EQ(cpu.solve.backend, "cpu") << name;
     EXPECT_EQ(gpu.elements.size(), cpu.elements.size()) << name;
     EXPECT_EQ(gpu.after.contact_violations, 0) << name;
     EXPECT_EQ(gpu.after.contact_violations, cpu.after.contact_violations) << name;

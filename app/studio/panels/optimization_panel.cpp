@@ -74,8 +74,12 @@ void optimization_panel(Studio& s) {
   ImGui::SameLine();
   ImGui::RadioButton("auto", &backend, 2);
   if (backend != before) set_backend(s, backend == 0 ? "cpu" : backend == 1 ? "vulkan" : "auto");
-  ImGui::TextDisabled("using %s%s%s", s.run.choice.name.c_str(), s.run.choice.device.empty() ? "" : " on ",
-                      s.run.choice.device.c_str());
+  if (s.run.choice.name == "auto")
+    ImGui::TextDisabled("using %s from %d particles, the CPU below", s.run.choice.device.c_str(),
+                        app::kAutoGpuLeastParticles);
+  else
+    ImGui::TextDisabled("using %s%s%s", s.run.choice.name.c_str(), s.run.choice.device.empty() ? "" : " on ",
+                        s.run.choice.device.c_str());
   run_controls(s);
 
   section("Parameters (section 5)");

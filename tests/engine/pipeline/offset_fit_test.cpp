@@ -123,6 +123,41 @@ TEST(OffsetFit, TheFinalistLaidIsOkFirstThenKeepsTheMostThenTheDesignsOwn) {
   EXPECT_EQ(choose_finalist(tie_shifted, {true, true, true}), 0) << "between shifts, the better ranked";
 }
 
+// A band's rows are shifted across it for the most elements on every run; the design.json a run
+// writes holds the shift, and run again it lays the same stones (the tries once started from the
+// design's offset and moved the rows half a row further on every run).
+TEST(BandOffset, TheWrittenDesignOfABandRepeatsItsStones) {
+  const SurfaceMap& map = *test::bundled_map("bangle");
+  const Design design = load_design(test::source_dir() / "assets/designs/bangle_tri_gems.json");
+  const Pavement first = make_pavement(map, design);
+  ASSERT_TRUE(first.seamless);
+  Design written = design_from_json(design_to_json(first.design), "design.json");
+  const Pavement second = make_pavement(map, written);
+  // The same offset, but for a rounding: the band's closure is made again from the written D.
+  EXPECT_NEAR(second.design.placement.offset.x, first.design.placement.offset.x, 1e-12);
+  EXPECT_NEAR(second.design.placement.offset.y, first.design.placement.offset.y, 1e-12);
+  EXPECT_EQ(second.elements.position, first.elements.position);
+}
+
+// Topology auto that grows the adaptive pattern where the lattice tore starts it from the design's
+// own placement: rows along an axis are its own turn (and reported), and the lattice's fitted
+// offset is not carried over (it once cost 21 of 980 elements here, under a warning that the fit
+// was not used).
+TEST(OffsetFit, AutosAdaptivePatternOnTheBunnyHeadStartsFromTheDesignsOwnPlacement) {
+  const SurfaceMap& map = *test::named_map("bunnyhead_three_loops");
+  Design design;
+  design.pattern.tessellation = Tessellation::Triangle;
+  design.placement.align = AlignAxis::X;
+  const Pavement plain = make_pavement(map, design);
+  ASSERT_EQ(plain.design.pattern.topology, Topology::Adaptive) << "the case: auto grew the adaptive pattern";
+  EXPECT_TRUE(plain.row_alignment.has_value()) << "its own turn, reported";
+  design.placement.fit_offset = true;
+  const Pavement fitted = make_pavement(map, design);
+  ASSERT_EQ(fitted.design.pattern.topology, Topology::Adaptive);
+  EXPECT_FALSE(fitted.offset_fit.has_value());
+  EXPECT_EQ(fitted.elements.position, plain.elements.position) << "the lattice's fit is not the adaptive pattern's";
+}
+
 TEST(OffsetFit, ABandAndAnAdaptivePatternSayItWasNotUsed) {
   const auto warnings_for = [](const std::string& surface, Topology topology) {
     PipelineRequest request;
