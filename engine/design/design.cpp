@@ -68,6 +68,12 @@ double millimetres_per_unit(Units u) {
 }
 
 void set_stone_size(Design& design, double stone) {
+  if (design.elements.vertex.enabled && !design.elements.edge.empty()) {
+    // Edge stones sit between the vertex ones: at D = stone + gap they would collide with them. The
+    // design's proportions are kept instead, and its vertex stones get this size.
+    design.pattern.spacing = stone / design.elements.vertex.scale;
+    return;
+  }
   design.pattern.spacing = stone + design.elements.gap;
   design.elements.vertex.enabled = true;
   design.elements.vertex.scale = stone / design.pattern.spacing;

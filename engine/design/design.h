@@ -99,7 +99,8 @@ struct Design {
 
 // Paves stones of diameter `stone` (surface units, > 0) with the design's gap between neighbours:
 // the vertex elements become round brilliants (gem) of that size and D = stone + gap, so that
-// stones on neighbouring lattice vertices are exactly the gap apart (docs/stones.md).
+// stones on neighbouring lattice vertices are exactly the gap apart (docs/stones.md). A design
+// with edge elements keeps its proportions and shapes instead: D = stone / the vertex scale.
 void set_stone_size(Design& design, double stone);
 
 // Whether the design has stones (gem elements), whose diameter a change of D must not touch.

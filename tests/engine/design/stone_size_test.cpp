@@ -1,0 +1,46 @@
+// set_stone_size (paver run --stone, the studio's stone diameter): a pavé of vertex stones gets
+// D = stone + gap; a design with edge stones between them keeps its proportions, so the bundled
+// gem pendants take a stone size instead of refusing it.
+#include "design/design.h"
+#include "io/design_io.h"
+#include "pipeline/pavement.h"
+#include "surface_maps.h"
+#include "test_meshes.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+namespace paver {
+namespace {
+
+TEST(StoneSize, APaveOfVertexStonesIsTheStonePlusTheGapApart) {
+  Design design;
+  design.elements.gap = 0.1;
+  set_stone_size(design, 1.5);
+  EXPECT_DOUBLE_EQ(design.pattern.spacing, 1.6);
+  EXPECT_DOUBLE_EQ(design.elements.vertex.scale * design.pattern.spacing, 1.5);
+  EXPECT_EQ(design.elements.vertex.shape, ShapeKind::Gem);
+}
+
+TEST(StoneSize, ADesignWithEdgeStonesKeepsItsProportions) {
+  Design design = load_design(test::source_dir() / "assets/designs/pendant_pierced_tri_gems.json");
+  const double vertex_scale = design.elements.vertex.scale, edge_scale = design.elements.edge.at(0).scale;
+  set_stone_size(design, 1.2);
+  EXPECT_DOUBLE_EQ(design.pattern.spacing, 1.2 / vertex_scale);
+  EXPECT_EQ(design.elements.vertex.scale, vertex_scale);
+  EXPECT_EQ(design.elements.edge.at(0).scale, edge_scale);
+  // It paves: every vertex stone is 1.2, and no pair is in contact.
+  const Pavement p = make_pavement(*test::bundled_map("pendant_pierced"), design);
+  long vertex_stones = 0;
+  for (std::size_t i = 0; i < p.elements.size(); ++i)
+    if (p.elements.kind[i] == ElementKind::Vertex) {
+      ++vertex_stones;
+      EXPECT_NEAR(p.elements.diameter[i], 1.2, 1e-9);
+    }
+  EXPECT_GT(vertex_stones, 100);
+  EXPECT_EQ(p.after.contact_violations, 0);
+}
+
+}  // namespace
+}  // namespace paver
