@@ -13,6 +13,15 @@
 #include <vector>
 
 namespace paver {
+namespace {
+
+// Elements kept after the boundary post-processing with the lattice laid at `placement`.
+std::size_t laid_out_count(const SurfaceMap& map, const UnitCell& cell, const Design& design, const Placement& placement) {
+  const Pattern pattern = build_pattern(map, cell, placement);
+  return place_all_elements(map, pattern, pattern.points, design, true).elements.size();
+}
+
+}  // namespace
 
 OffsetFit fit_offset(const SurfaceMap& map, const UnitCell& cell, const Design& design, const std::atomic<bool>* stop) {
   const double points = std::max(1.0, estimate_point_count(map, cell, design.placement));
@@ -32,8 +41,7 @@ OffsetFit fit_offset(const SurfaceMap& map, const UnitCell& cell, const Design& 
     OffsetCandidate& c = candidate[t];
     Placement placement = design.placement;
     placement.offset = c.offset;
-    const Pattern pattern = build_pattern(map, cell, placement);
-    c.laid_out = place_all_elements(map, pattern, pattern.points, design, true).elements.size();
+    c.laid_out = laid_out_count(map, cell, design, placement);
   };
   if (points <= kOffsetFitParallelPoints)
     tbb::parallel_for(0, tries, lay_out);
@@ -109,8 +117,7 @@ glm::dvec2 best_offset_across(const SurfaceMap& map, const UnitCell& cell, const
   tbb::parallel_for(0, kTries, [&](int k) {
     Placement placement = design.placement;
     placement.offset = base + (band_step * k / kTries) * across;
-    const Pattern pattern = build_pattern(map, cell, placement);
-    count[k] = place_all_elements(map, pattern, pattern.points, design, true).elements.size();
+    count[k] = laid_out_count(map, cell, design, placement);
   });
   const std::size_t most = *std::max_element(count.begin(), count.end());
   // The longest run of shifts that keep the most, around the circle (a shift by a whole row

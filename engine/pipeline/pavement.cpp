@@ -177,11 +177,11 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
     design.placement.align = AlignAxis::None;
     pavement.row_alignment = aligned;
   }
-  // After the rows are turned: the shift is over the turned lattice's cell. A band paved seamlessly
-  // takes its own shift across (below), and an adaptive pattern is grown, not laid (it stays asked,
-  // and the run says it was not used).
-  // Not under element edits, which name the elements of the lattice at the design's offset (the
-  // studio folds a fitted offset into the design at the first edit): the run says it was not used.
+  // After the rows are turned: the shift is over the turned lattice's cell. Not on a band paved
+  // seamlessly (it takes its own shift across, below), not for an adaptive pattern (grown, not
+  // laid), and not under element edits, which name the elements of the lattice at the design's
+  // offset (the studio folds a fitted offset into the design at the first edit). There the key
+  // stays asked, and the run says it was not used.
   if (design.placement.fit_offset && !pavement.seamless && !adaptive && design.edits.empty()) {
     pattern_ms = watch.milliseconds();  // the fit is timed on its own
     watch = start("offset_fit");

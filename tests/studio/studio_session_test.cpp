@@ -98,6 +98,16 @@ protected:
   Outcome run_script(const fs::path& script) const {
     return studio("--script " + quote(script.string()) + " --backend cpu --width 1280 --height 800", dir_);
   }
+  // `paver run ARGS` on the CPU into dir_/cli lays placements.csv byte for byte as the studio
+  // exported it into `exported`.
+  void expect_the_cli_lays_what_was_exported(const std::string& args, const fs::path& exported) const {
+    const fs::path cli_out = dir_ / "cli";
+    const Outcome cli =
+        run_in_source(quote(PAVER_CLI) + " run " + args + " --backend cpu --formats ply --out " + quote(cli_out.string()), dir_);
+    ASSERT_EQ(cli.exit_code, 0) << describe(cli);
+    EXPECT_TRUE(read_text(exported / "placements.csv") == read_text(cli_out / "placements.csv"))
+        << "placements.csv differs from paver run " << args << "'s";
+  }
   // The pendant paved by `paver run` with the studio's starting design as a lattice, into
   // dir_/base: the element ids a session's edits name.
   void pave_lattice_pendant() const {
@@ -695,14 +705,8 @@ TEST_F(StudioSession, AClosedSurfaceCutAcrossAnAxisExportsWhatTheCliWrites) {
   const Outcome r = run_script(script);
   ASSERT_EQ(r.exit_code, 0) << describe(r);
   ASSERT_TRUE(fs::is_regular_file(exported / "placements.csv")) << describe(r);
-  const fs::path cli_out = dir_ / "cli";
-  const Outcome cli = run_in_source(quote(PAVER_CLI) + " run assets/surfaces/bead.obj --design " +
-                                        quote((exported / "design.json").string()) +
-                                        " --backend cpu --formats ply --out " + quote(cli_out.string()),
-                                    dir_);
-  ASSERT_EQ(cli.exit_code, 0) << describe(cli);
-  EXPECT_TRUE(read_text(exported / "placements.csv") == read_text(cli_out / "placements.csv"))
-      << "placements.csv differs from paver run's on the exported design";
+  expect_the_cli_lays_what_was_exported("assets/surfaces/bead.obj --design " + quote((exported / "design.json").string()),
+                                        exported);
   EXPECT_EQ(nlohmann::json::parse(read_text(exported / "design.json"))["placement"]["cut_axis"], "x");
   const nlohmann::json report = nlohmann::json::parse(read_text(exported / "report.json"));
   EXPECT_EQ(report["surface"]["cut_normal"], nlohmann::json::array({1.0, 0.0, 0.0})) << report["surface"].dump();
@@ -730,15 +734,9 @@ TEST_F(StudioSession, RowsAlongAnAxisWithAFittedOffsetExportWhatTheCliWrites) {
   EXPECT_EQ(design["placement"]["align"], "none");
   EXPECT_EQ(design["placement"]["fit_offset"], false);
   EXPECT_EQ(design["placement"]["offset"], report["pattern"]["offset_fit"]["chosen"]["offset"]);
-  const fs::path cli_out = dir_ / "cli";
-  const Outcome cli = run_in_source(quote(PAVER_CLI) +
-                                        " run assets/surfaces/facade_windows.obj --design "
-                                        "assets/designs/facade_windows_grid_discs.json --align x --fit-offset "
-                                        "--backend cpu --formats ply --out " + quote(cli_out.string()),
-                                    dir_);
-  ASSERT_EQ(cli.exit_code, 0) << describe(cli);
-  EXPECT_TRUE(read_text(exported / "placements.csv") == read_text(cli_out / "placements.csv"))
-      << "placements.csv differs from paver run --align x --fit-offset's";
+  expect_the_cli_lays_what_was_exported("assets/surfaces/facade_windows.obj --design "
+                                        "assets/designs/facade_windows_grid_discs.json --align x --fit-offset",
+                                        exported);
 }
 
 // The studio's Cut metal (in the background) writes the metal `paver run --subtract` writes for
