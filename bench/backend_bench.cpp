@@ -1,11 +1,15 @@
 // paver-backend-bench: the solver on every backend in one run, so ratios compare like with like.
 //   ms per iteration and iterations/s at 1k, 10k, 100k and 1M particles (hexagonal pattern on the
 //   dense wave, 100k faces) for the CPU with one thread, the CPU with all threads, and Vulkan on
-//   every device found; and the end-to-end pavement time of each bundled design per backend.
+//   every device found; and the end-to-end pavement time of each bundled design per backend,
+//   with `auto` (the CLI's routing by size) beside them when there is a GPU. `--sweep 100,400,..`
+//   adds the whole pavement of the torus design at about those particle counts, to see where a
+//   GPU starts to pay (kAutoGpuLeastParticles).
 // Prints a table (with GPU/CPU ratios) and writes JSON: paver-backend-bench [--json FILE]
-//   [--sizes 1000,10000] [--skip-designs]
+//   [--sizes 1000,10000] [--skip-designs] [--skip-cpu] [--sweep 100,200,400]
 #include "paver/compute/vulkan_context.h"
 #include "paver/compute/vulkan_spring_solver.h"
+#include "backend_choice.h"
 #include "io/atomic_file.h"
 #include "io/design_io.h"
 #include "mesh/mesh_loader.h"
@@ -95,6 +99,7 @@ std::vector<int> parse_sizes(const std::string& text) {
 int main(int argc, char** argv) {
   std::string json_path;
   std::vector<int> sizes = {1000, 10000, 100000, 1000000};
+  std::vector<int> sweep;
   bool designs = true, skip_cpu = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -102,8 +107,10 @@ int main(int argc, char** argv) {
     else if (a == "--sizes" && i + 1 < argc) sizes = parse_sizes(argv[++i]);
     else if (a == "--skip-designs") designs = false;
     else if (a == "--skip-cpu") skip_cpu = true;
+    else if (a == "--sweep" && i + 1 < argc) sweep = parse_sizes(argv[++i]);
     else {
-      std::fprintf(stderr, "usage: paver-backend-bench [--json FILE] [--sizes 1000,10000,...] [--skip-designs] [--skip-cpu]\n");
+      std::fprintf(stderr, "usage: paver-backend-bench [--json FILE] [--sizes 1000,10000,...] [--skip-designs] [--skip-cpu] "
+                           "[--sweep 100,200,...]\n");
       return 2;
     }
   }
@@ -163,31 +170,62 @@ int main(int argc, char** argv) {
     std::printf("\n");
   }
 
-  if (designs) {
-    std::printf("\nWhole pavement per bundled design, ms (map built once, not counted)\n%-26s", "design");
-    for (const auto& b : backends) std::printf(" | %28.28s", b.name.c_str());
+  // The whole pavement: every backend above, and the CLI's `auto` beside them on a GPU.
+  std::vector<Backend> pavers = backends;
+  if (backends.size() > (skip_cpu ? 0u : 2u))
+    pavers.push_back({"auto (gpu from " + std::to_string(paver::app::kAutoGpuLeastParticles) + ")",
+                      paver::app::choose_backend("auto", "", 0).factory, true});
+  const auto print_header = [&](const char* first) {
+    std::printf("%-26s", first);
+    for (const auto& b : pavers) std::printf(" | %28.28s", b.name.c_str());
     std::printf(" | identical\n");
+  };
+  // Paves `request` with each backend; prints a row and adds one JSON entry per backend to `rows`.
+  const auto pave_with_each = [&](paver::PipelineRequest request, const std::string& label, nlohmann::json& rows) {
+    std::printf("%-26s", label.c_str());
+    std::vector<paver::Elements> results;
+    for (const auto& b : pavers) {
+      request.pavement.solver = b.factory;
+      paver::PipelineResult r;
+      const double ms = 1e3 * seconds_of([&] { r = paver::run_pipeline(request); });
+      const paver::Pavement& p = r.pavement;
+      results.push_back(p.elements);
+      std::printf(" | %25.1f ms", ms);
+      std::fflush(stdout);
+      rows.push_back({{"design", label}, {"backend", b.name}, {"ran_on", p.solve.backend}, {"ms", ms},
+                      {"particles", p.points.size()}, {"elements", p.elements.size()},
+                      {"iterations", p.solve.iterations}, {"collisions", p.after.contact_violations}});
+    }
+    bool same = true;
+    for (const auto& e : results) same = same && e.position == results.front().position;
+    std::printf(" | %s\n", same ? "yes" : "no");
+  };
+  const auto bundled_request = [](const std::string& name, const std::string& surface_file) {
+    paver::PipelineRequest request;
+    request.map = std::make_shared<const paver::SurfaceMap>(paver::build_surface_map(
+        paver::load_surface(fs::path(PAVER_SOURCE_DIR) / "assets/surfaces" / surface_file).mesh));
+    request.design = paver::load_design(fs::path(PAVER_SOURCE_DIR) / "assets/designs" / (name + ".json"));
+    return request;
+  };
+
+  if (designs) {
+    std::printf("\nWhole pavement per bundled design, ms (map built once, not counted)\n");
+    print_header("design");
     out["designs"] = nlohmann::json::array();
-    for (const auto& [name, surface_file] : design_surfaces()) {
-      paver::PipelineRequest request;
-      request.map = std::make_shared<const paver::SurfaceMap>(paver::build_surface_map(
-          paver::load_surface(fs::path(PAVER_SOURCE_DIR) / "assets/surfaces" / surface_file).mesh));
-      request.design = paver::load_design(fs::path(PAVER_SOURCE_DIR) / "assets/designs" / (name + ".json"));
-      std::printf("%-26s", name.c_str());
-      std::vector<paver::Elements> results;
-      for (const auto& b : backends) {
-        request.pavement.solver = b.factory;
-        paver::Pavement p;
-        const double ms = 1e3 * seconds_of([&] { p = paver::run_pipeline(request).pavement; });
-        results.push_back(p.elements);
-        std::printf(" | %25.1f ms", ms);
-        std::fflush(stdout);
-        out["designs"].push_back({{"design", name}, {"backend", b.name}, {"ms", ms}, {"elements", p.elements.size()},
-                                  {"iterations", p.solve.iterations}, {"collisions", p.after.contact_violations}});
-      }
-      bool same = true;
-      for (const auto& r : results) same = same && r.position == results.front().position;
-      std::printf(" | %s\n", same ? "yes" : "no");
+    for (const auto& [name, surface_file] : design_surfaces())
+      pave_with_each(bundled_request(name, surface_file), name, out["designs"]);
+  }
+  if (!sweep.empty()) {
+    // The torus design (479 particles at D = 7) with D scaled for about n particles each.
+    const paver::PipelineRequest torus = bundled_request("torus_tri_d7", design_surfaces().at("torus_tri_d7"));
+    const double torus_particles = 479;
+    std::printf("\nWhole pavement of torus_tri_d7 against its size, ms\n");
+    print_header("about n particles");
+    out["sweep"] = nlohmann::json::array();
+    for (int n : sweep) {
+      paver::PipelineRequest request = torus;
+      request.design.pattern.spacing *= std::sqrt(torus_particles / std::max(1, n));
+      pave_with_each(request, std::to_string(n), out["sweep"]);
     }
   }
   if (!json_path.empty()) {

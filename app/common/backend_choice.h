@@ -9,11 +9,11 @@
 
 namespace paver::app {
 
-// Measured on an NVIDIA H100 machine against its 16 CPU cores (docs/benchmarks.md): a solve on the
-// GPU costs about 7 ms whatever its size (uploads, two submissions), so the bundled pendant's 186
-// particles took 67-80 ms there against 42 ms on the CPU, while the torus's 479 took 77-88 ms
-// against 95 and the wave's 543 (3,000 iterations) 179-205 ms against 385.
-inline constexpr int kAutoGpuLeastParticles = 400;
+// Measured on an NVIDIA H100 machine against its 16 CPU cores, whole pavements, median of three
+// (`paver-backend-bench --sweep`, docs/benchmarks.md): a solve on the GPU has a fixed cost
+// (uploads, two submissions), so the GPU was slower up to 293 particles (1.02x the CPU's time
+// there, 1.11x on the 186-particle pendant) and faster from 304 (0.96x) and 345 (0.64x) on.
+inline constexpr int kAutoGpuLeastParticles = 300;
 
 struct BackendChoice {
   SolverFactory factory;  // empty: the CPU reference
