@@ -80,6 +80,13 @@ void set_stone_size(Design& design, double stone) {
   design.elements.vertex.shape = ShapeKind::Gem;
 }
 
+void set_gap_keeping_stone_size(Design& design, double gap, double stone) {
+  design.elements.gap = gap;
+  if (stone <= 0 || !design.elements.vertex.enabled || !design.elements.edge.empty()) return;
+  design.pattern.spacing = stone + gap;
+  design.elements.vertex.scale = stone / design.pattern.spacing;
+}
+
 bool keeps_stone_sizes(const ElementsDesign& e) {
   if (e.vertex.enabled && e.vertex.shape == ShapeKind::Gem) return true;
   return std::any_of(e.edge.begin(), e.edge.end(), [](const auto& s) { return s.shape == ShapeKind::Gem; });

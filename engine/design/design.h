@@ -103,6 +103,11 @@ struct Design {
 // with edge elements keeps its proportions and shapes instead: D = stone / the vertex scale.
 void set_stone_size(Design& design, double stone);
 
+// Sets the gap between elements while the vertex elements keep their diameter `stone` (surface
+// units; 0 = they have none to keep): as set_stone_size, D = stone + gap, or with edge elements
+// the design's proportions (D unchanged). Unlike set_stone_size it keeps the elements' shape.
+void set_gap_keeping_stone_size(Design& design, double gap, double stone);
+
 // Whether the design has stones (gem elements), whose diameter a change of D must not touch.
 bool keeps_stone_sizes(const ElementsDesign& elements);
 // Rescales the gem elements' scales so that their diameters stay what they were at `spacing_before`

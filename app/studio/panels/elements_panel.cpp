@@ -73,16 +73,15 @@ void jewellery_section(Document& doc, Design& d) {
   }
   help_marker("Round brilliants (gems) of this girdle diameter on the vertices: D becomes stone + gap. "
               "Type a size and press Enter.");
-  if (length_field("gap##stones", d.elements.gap, unit.c_str())) {
-    if (stone > 0) {  // the stones keep their size: D = stone + gap (their shape stays)
-      d.pattern.spacing = stone + d.elements.gap;
-      d.elements.vertex.scale = stone / d.pattern.spacing;
-    }
+  double gap = d.elements.gap;
+  if (length_field("gap##stones", gap, unit.c_str())) {
+    set_gap_keeping_stone_size(d, gap, stone);
     change_design(doc, d);
   }
   help_marker("Required free space between neighbouring elements (0 = touching): two collide when their "
               "centres are closer than the sum of their radii plus the gap. JewelCraft's default is 0.2 mm. "
-              "With a stone size, D grows with it so the stones keep their size.");
+              "With a stone size, D grows with it so the stones keep their size; with stones on the edges too, "
+              "D and the proportions stay.");
   if (length_field("edge margin", d.elements.margin, unit.c_str())) change_design(doc, d);
   help_marker("No stone comes nearer the surface's edge than this (0 = its edge may touch the rim).");
   const char* rim_names[] = {"none (trimmed)", "around the holes", "along every rim"};

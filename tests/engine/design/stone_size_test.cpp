@@ -42,5 +42,35 @@ TEST(StoneSize, ADesignWithEdgeStonesKeepsItsProportions) {
   EXPECT_EQ(p.after.contact_violations, 0);
 }
 
+// The studio's gap field: the stones keep their size, and their shape.
+TEST(StoneSize, ANewGapKeepsAVertexPaveStonesSizeAndShape) {
+  Design design;
+  design.elements.vertex.shape = ShapeKind::Sphere;
+  set_gap_keeping_stone_size(design, 0.2, 1.5);
+  EXPECT_DOUBLE_EQ(design.elements.gap, 0.2);
+  EXPECT_DOUBLE_EQ(design.pattern.spacing, 1.7);
+  EXPECT_DOUBLE_EQ(design.elements.vertex.scale * design.pattern.spacing, 1.5);
+  EXPECT_EQ(design.elements.vertex.shape, ShapeKind::Sphere);
+}
+
+TEST(StoneSize, ANewGapLeavesADesignWithEdgeStonesInProportion) {
+  Design design = load_design(test::source_dir() / "assets/designs/pendant_pierced_tri_gems.json");
+  set_stone_size(design, 1.2);
+  const Design before = design;
+  set_gap_keeping_stone_size(design, 0.1, 1.2);
+  EXPECT_DOUBLE_EQ(design.elements.gap, 0.1);
+  EXPECT_EQ(design.pattern.spacing, before.pattern.spacing);
+  EXPECT_EQ(design.elements.vertex.scale, before.elements.vertex.scale);
+  EXPECT_EQ(design.elements.edge.at(0).scale, before.elements.edge.at(0).scale);
+}
+
+TEST(StoneSize, ANewGapWithoutAStoneSizeTouchesOnlyTheGap) {
+  Design design;
+  design.pattern.spacing = 3;
+  set_gap_keeping_stone_size(design, 0.5, 0);
+  EXPECT_DOUBLE_EQ(design.elements.gap, 0.5);
+  EXPECT_DOUBLE_EQ(design.pattern.spacing, 3);
+}
+
 }  // namespace
 }  // namespace paver
