@@ -31,7 +31,7 @@ using nlohmann::json;
 constexpr Tessellation kTessellations[] = {Tessellation::Triangle, Tessellation::Grid, Tessellation::Hexagon};
 constexpr Topology kTopologies[] = {Topology::Lattice, Topology::Adaptive, Topology::Auto};
 constexpr Units kUnits[] = {Units::Millimetre, Units::Centimetre, Units::Metre, Units::Inch};
-constexpr BandRows kBandRows[] = {BandRows::Along, BandRows::Across};
+constexpr BandRows kBandRows[] = {BandRows::Along, BandRows::Across, BandRows::Auto};
 constexpr AlignAxis kAlignAxes[] = {AlignAxis::None, AlignAxis::X, AlignAxis::Y, AlignAxis::Z};
 constexpr CutAxis kCutAxes[] = {CutAxis::Auto, CutAxis::X, CutAxis::Y, CutAxis::Z};
 constexpr RimRows kRimRows[] = {RimRows::None, RimRows::Holes, RimRows::All};

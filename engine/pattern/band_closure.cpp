@@ -60,7 +60,19 @@ std::string describe_band_closure(const BandClosure& closure) {
   return "D " + std::string(before) + " -> " + after + ": " +
          std::to_string(closure.around) + " lattice steps close the band (rows " +
          (closure.rows_across ? "across" : "along") + " it)" +
-         (closure.stones_kept ? "; the stones keep their size, the gap takes the change" : "");
+         (closure.stones_kept ? "; the stones keep their size, the gap takes the change" : "") +
+         band_rows_choice(closure);
+}
+
+std::string band_rows_choice(const BandClosure& c) {
+  if (c.laid_out_across + c.laid_out_along == 0) return "";
+  const bool paved = c.kept_across + c.kept_along > 0;
+  const std::size_t mine = paved ? (c.rows_across ? c.kept_across : c.kept_along)
+                                 : (c.rows_across ? c.laid_out_across : c.laid_out_along);
+  const std::size_t other = paved ? (c.rows_across ? c.kept_along : c.kept_across)
+                                  : (c.rows_across ? c.laid_out_along : c.laid_out_across);
+  return "; rows auto: " + std::string(c.rows_across ? "across " : "along ") + (paved ? "kept " : "laid out ") +
+         std::to_string(mine) + " elements, " + (c.rows_across ? "along " : "across ") + std::to_string(other);
 }
 
 }  // namespace paver

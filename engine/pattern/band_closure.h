@@ -9,6 +9,7 @@
 
 #include <glm/vec2.hpp>
 
+#include <cstddef>
 #include <string>
 
 namespace paver {
@@ -21,10 +22,16 @@ struct BandClosure {
   double rotation_deg = 0;    // the placement rotation that lines it up with the band
   bool rows_across = false;   // the rows run across the band (else along it)
   bool stones_kept = false;   // gem elements kept their diameter; the gap took the change in D
+  // band_rows auto: the elements each way laid out (before optimization) at its best shift across
+  // the band, and kept once paved (0 when a band too large to pave twice took the way that laid
+  // out more); all 0 when the design named the rows.
+  std::size_t laid_out_across = 0, laid_out_along = 0;
+  std::size_t kept_across = 0, kept_along = 0;
 };
 
 // The closure of `cell` (at the design's spacing) on `map` (which wraps) under `placement`
-// (its scale counts; its rotation is replaced): the nearest whole number of steps, or with
+// (its scale counts; its rotation is replaced; band_rows along or across, not auto, which the
+// caller resolves by trying both): the nearest whole number of steps, or with
 // `never_closer` the largest that does not bring the elements closer (a design at its gap's limit).
 BandClosure close_band(const SurfaceMap& map, const UnitCell& cell, const Placement& placement,
                        bool never_closer = false);
@@ -32,5 +39,7 @@ BandClosure close_band(const SurfaceMap& map, const UnitCell& cell, const Placem
 // "D 0.630 -> 0.628: 90 elements close the band (rows along it)", and "; the stones keep their
 // size" when they did.
 std::string describe_band_closure(const BandClosure& closure);
+// "; rows auto: along kept 13 elements, across 7" for band_rows auto; "" when the rows were named.
+std::string band_rows_choice(const BandClosure& closure);
 
 }  // namespace paver

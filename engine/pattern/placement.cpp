@@ -5,7 +5,9 @@
 
 namespace paver {
 
-std::string_view band_rows_name(BandRows rows) { return rows == BandRows::Across ? "across" : "along"; }
+std::string_view band_rows_name(BandRows rows) {
+  return rows == BandRows::Across ? "across" : rows == BandRows::Along ? "along" : "auto";
+}
 
 std::string_view align_axis_name(AlignAxis axis) {
   switch (axis) {

@@ -12,9 +12,10 @@
 namespace paver {
 
 // On a band paved seamlessly, which way the lattice's rows run: along the band (around it) or
-// across it (rim to rim). Its rotation is then the band's, not `rotation_deg`.
-enum class BandRows { Along, Across };
-std::string_view band_rows_name(BandRows rows);  // "along", "across"
+// across it (rim to rim), or auto: the one that lays out more elements (pipeline/pavement.cpp).
+// Its rotation is then the band's, not `rotation_deg`.
+enum class BandRows { Along, Across, Auto };
+std::string_view band_rows_name(BandRows rows);  // "along", "across", "auto"
 
 // Rows along a world axis (pattern/row_alignment.h): the rotation is then the axis's, plus
 // rotation_deg. None: the map's own orientation.
@@ -27,7 +28,7 @@ struct Placement {
   double rotation_deg = 0;   // degrees; the map is turned counter-clockwise into the pattern, so the lattice
                              // seen on the map turns clockwise (docs/design_file.md); default 0
   double scale = 1;          // > 0; default 1 (the map keeps the surface's area)
-  BandRows band_rows = BandRows::Across;  // default "across" (docs/holes_and_bands.md says why)
+  BandRows band_rows = BandRows::Auto;    // default "auto" (docs/holes_and_bands.md says why)
   CutAxis cut_axis = CutAxis::Auto;       // a closed surface's charts: cut across this axis (paver run --cut)
   AlignAxis align = AlignAxis::None;      // rows along this world axis; not on a seamless band (its rows close)
   bool fit_offset = false;                // shift `offset` within one cell for the most elements (pipeline/offset_fit.h)

@@ -13,15 +13,6 @@
 #include <vector>
 
 namespace paver {
-namespace {
-
-// Elements kept after the boundary post-processing with the lattice laid at `placement`.
-std::size_t laid_out_count(const SurfaceMap& map, const UnitCell& cell, const Design& design, const Placement& placement) {
-  const Pattern pattern = build_pattern(map, cell, placement);
-  return place_all_elements(map, pattern, pattern.points, design, true).elements.size();
-}
-
-}  // namespace
 
 OffsetFit fit_offset(const SurfaceMap& map, const UnitCell& cell, const Design& design, const std::atomic<bool>* stop) {
   const double points = std::max(1.0, estimate_point_count(map, cell, design.placement));
@@ -132,6 +123,11 @@ glm::dvec2 best_offset_across(const SurfaceMap& map, const UnitCell& cell, const
   if (best_length == 0) best_length = kTries;  // every shift keeps as many: any will do
   const double middle = best_start + 0.5 * (best_length - 1);
   return base + (band_step * middle / kTries) * across;
+}
+
+std::size_t laid_out_count(const SurfaceMap& map, const UnitCell& cell, const Design& design, const Placement& placement) {
+  const Pattern pattern = build_pattern(map, cell, placement);
+  return place_all_elements(map, pattern, pattern.points, design, true).elements.size();
 }
 
 }  // namespace paver

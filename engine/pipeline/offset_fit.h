@@ -61,6 +61,10 @@ OffsetFit fit_offset(const SurfaceMap& map, const UnitCell& cell, const Design& 
 // design's own offset (no shift), else the better-ranked one: a fit that gains nothing moves nothing.
 int choose_finalist(const std::vector<OffsetCandidate>& finalists, const std::vector<bool>& ok);
 
+// The elements that `design` lays out under `placement` before any optimization: the lattice
+// placed and post-processed at the boundary (a forecast of the elements kept).
+std::size_t laid_out_count(const SurfaceMap& map, const UnitCell& cell, const Design& design, const Placement& placement);
+
 // A band paved seamlessly: its rows run along the rims and are kept or lost whole at each, so only
 // the shift across the band matters; `step` is the lattice step that closes around it.
 glm::dvec2 best_offset_across(const SurfaceMap& map, const UnitCell& cell, const Design& design, glm::ivec2 step);

@@ -109,6 +109,86 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
 // removes some (on the bundled torus, the shift that laid out 4 more kept 9 fewer). So the
 // finalists are paved in full, quietly (no stage names, observer or pattern hook: the chosen one is
 // paved again with them), and choose_finalist picks the one to lay.
+// A band closed with its rows one way: the design at the closed D and the band's rotation (its
+// rows resolved), and, when found, the shift across the band that lays out the most.
+struct ClosedBand {
+  Design design;
+  BandClosure closure;
+  std::optional<glm::dvec2> offset;
+};
+
+ClosedBand closed_band(const SurfaceMap& map, Design design, BandRows rows) {
+  design.placement.band_rows = rows;
+  // Stones (gem elements) come in catalogue sizes: they keep their diameter, the gap takes the
+  // change, and so D may only grow. Other elements are sized with D, as everywhere.
+  const bool stones = keeps_stone_sizes(design.elements);
+  BandClosure closure = close_band(map, make_design_cell(design.pattern), design.placement, stones);
+  if (stones) {
+    keep_stone_sizes(design.elements, closure.spacing_before, closure.spacing);
+    closure.stones_kept = true;
+  } else if (closure.spacing < design.pattern.spacing) {
+    // Closer elements may break the design's gap, which is in surface units: then one step fewer.
+    Design closer = design;
+    closer.pattern.spacing = closure.spacing;
+    try {
+      check_design_cell(closer);
+    } catch (const InputError&) {
+      closure = close_band(map, make_design_cell(design.pattern), design.placement, true);
+    }
+  }
+  design.pattern.spacing = closure.spacing;
+  design.placement.rotation_deg = closure.rotation_deg;
+  return {std::move(design), closure, std::nullopt};
+}
+
+// band_rows auto: the band closed both ways, each at its best shift across. A band small enough
+// (as the offset fit's finalists) is paved both ways, quietly, and the way with an ok verdict, then
+// the most elements kept, is taken: the laid-out count is only a forecast (the bundled bangle laid
+// out 642 along against 620 across and kept 615 against 620). A larger one takes the way that lays
+// out more. Across on a tie: it filled the bundled bands better at the default spacing, while one
+// row along keeps a ring of large stones whole (docs/holes_and_bands.md).
+ClosedBand closed_band_with_more_elements(const SurfaceMap& map, const Design& design, const PavementOptions& options) {
+  const auto laid_out = [&](ClosedBand& band) -> std::size_t {
+    try {
+      const UnitCell cell = check_design_cell(band.design);
+      band.offset = best_offset_across(map, cell, band.design, band.closure.step);
+      Placement placement = band.design.placement;
+      placement.offset = *band.offset;
+      return laid_out_count(map, cell, band.design, placement);
+    } catch (const InputError&) {
+      band.offset.reset();  // this way round lays nothing (or breaks the design): the other way may not
+      return 0;
+    }
+  };
+  ClosedBand across = closed_band(map, design, BandRows::Across), along = closed_band(map, design, BandRows::Along);
+  const std::size_t across_count = laid_out(across), along_count = laid_out(along);
+  bool take_along = along_count > across_count;
+  std::size_t across_kept = 0, along_kept = 0;
+  if (across_count > 0 && along_count > 0 && double(std::max(across_count, along_count)) <= kOffsetFitPavedPoints &&
+      !(options.stop && options.stop->load())) {
+    PavementOptions quiet = options;
+    quiet.on_stage = {};
+    quiet.observer = {};
+    quiet.on_pattern = {};
+    const auto paved = [&](const ClosedBand& band) {
+      Design named = design;
+      named.placement.band_rows = band.design.placement.band_rows;
+      return pave_with_topology(map, std::move(named), quiet);
+    };
+    const Pavement by_across = paved(across), by_along = paved(along);
+    across_kept = by_across.elements.size();
+    along_kept = by_along.elements.size();
+    const bool across_ok = judge_pavement(by_across.after).ok, along_ok = judge_pavement(by_along.after).ok;
+    take_along = across_ok != along_ok ? along_ok : along_kept > across_kept;
+  }
+  ClosedBand& kept = take_along ? along : across;
+  kept.closure.laid_out_across = across_count;
+  kept.closure.laid_out_along = along_count;
+  kept.closure.kept_across = across_kept;
+  kept.closure.kept_along = along_kept;
+  return std::move(kept);
+}
+
 void pave_finalists(const SurfaceMap& map, const Design& design, const PavementOptions& options, OffsetFit& fit) {
   if (fit.finalists.empty()) return;
   PavementOptions quiet = options;
@@ -141,29 +221,15 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
   if (design.pattern.spacing <= 0)
     design.pattern.spacing = default_spacing(map.mesh, design.pattern.tessellation);
   const bool adaptive = design.pattern.topology == Topology::Adaptive;
+  std::optional<glm::dvec2> band_offset;  // the shift across the band, when auto rows found it
   if (map_wraps(map) && !adaptive) {
     // A band's seamless map: the lattice turned and its D changed a little, so that it closes.
     check_design_cell(design);  // the design's own errors first, at its own spacing
-    // Stones (gem elements) come in catalogue sizes: they keep their diameter, the gap takes the
-    // change, and so D may only grow. Other elements are sized with D, as everywhere.
-    const bool stones = keeps_stone_sizes(design.elements);
-    BandClosure closure = close_band(map, make_design_cell(design.pattern), design.placement, stones);
-    if (stones) {
-      keep_stone_sizes(design.elements, closure.spacing_before, closure.spacing);
-      closure.stones_kept = true;
-    } else if (closure.spacing < design.pattern.spacing) {
-      // Closer elements may break the design's gap, which is in surface units: then one step fewer.
-      Design closer = design;
-      closer.pattern.spacing = closure.spacing;
-      try {
-        check_design_cell(closer);
-      } catch (const InputError&) {
-        closure = close_band(map, make_design_cell(design.pattern), design.placement, true);
-      }
-    }
-    design.pattern.spacing = closure.spacing;
-    design.placement.rotation_deg = closure.rotation_deg;
-    pavement.band_closure = closure;
+    ClosedBand closed = design.placement.band_rows == BandRows::Auto ? closed_band_with_more_elements(map, design, options)
+                                                                      : closed_band(map, design, design.placement.band_rows);
+    design = std::move(closed.design);
+    band_offset = closed.offset;
+    pavement.band_closure = closed.closure;
     pavement.seamless = true;
   }
   pavement.cell = check_design_cell(design);
@@ -194,7 +260,8 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
     watch = Stopwatch();  // the pattern stage goes on (its name was said)
   }
   if (pavement.seamless)
-    design.placement.offset = best_offset_across(map, pavement.cell, design, pavement.band_closure->step);
+    design.placement.offset =
+        band_offset ? *band_offset : best_offset_across(map, pavement.cell, design, pavement.band_closure->step);
   const QualityBasis basis = quality_basis(map, pavement.cell, design.elements, design.solver, design.guidance);
   // The adaptive pattern is grown instead of the lattice (docs/topology.md).
   if (adaptive) {

@@ -178,7 +178,7 @@ TEST(DesignIo, WritesEveryKey) {
   EXPECT_EQ(j.at("elements").at("beads").size(), 2u);
   EXPECT_EQ(j.at("elements").at("vertex").size(), 3u);
   EXPECT_EQ(j.at("placement").size(), 7u);
-  EXPECT_EQ(j.at("placement").at("band_rows"), "across");
+  EXPECT_EQ(j.at("placement").at("band_rows"), "auto");
   EXPECT_EQ(j.at("placement").at("cut_axis"), "auto");
   EXPECT_EQ(j.at("placement").at("align"), "none");
   EXPECT_EQ(j.at("placement").at("fit_offset"), false);
