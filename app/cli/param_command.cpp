@@ -113,10 +113,8 @@ int run_param(const ParamArgs& args) {
 std::function<int()> add_param_command(CLI::App& app) {
   auto args = std::make_shared<ParamArgs>();
   CLI::App* cmd = app.add_subcommand("param", "Parameterize a surface (bijective: symmetric Dirichlet on a disk, ARAP with holes) and report its distortion");
-  cmd->add_option("SURFACE", args->surface, "Open surface: OBJ, OFF, PLY or STL")->required()
-      ->check(app::not_empty());
-  cmd->add_option("--out", args->out, "Write the map as an OBJ with the map as texture coordinates")
-      ->check(app::not_empty());
+  cmd->add_option("SURFACE", args->surface, "Open surface: OBJ, OFF, PLY or STL")->required();
+  cmd->add_option("--out", args->out, "Write the map as an OBJ with the map as texture coordinates");
   cmd->add_option("--start", args->start, "Start map: auto (LSCM if bijective, else Tutte), lscm, tutte")
       ->check(CLI::IsMember({"auto", "lscm", "tutte"}))
       ->capture_default_str();

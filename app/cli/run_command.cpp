@@ -277,6 +277,17 @@ int run_run(const RunArgs& args) {
       timings.emplace_back("png", watch.milliseconds());
     }
   };
+  // STL carries no unit and slicers read millimetres: a ring drawn in inches printed 0.9 mm across
+  // (a jeweller's trial). 3MF names its unit.
+  if (request.design.units != Units::Millimetre && (request.formats.stl || args.subtract)) {
+    const std::string files = request.formats.stl && args.subtract ? "elements.stl and cut.stl are"
+                              : request.formats.stl               ? "elements.stl is"
+                                                                  : "cut.stl is";
+    warn(files + " in " + std::string(units_name(request.design.units)) +
+         " (the surface's unit; STL has none) and slicers read millimetres: scale by " +
+         number_text(millimetres_per_unit(request.design.units)) +
+         " on import, or use the 3MF files, which name their unit");
+  }
   const MeshFormats request_formats = request.formats;
   const PipelineResult result = run_pipeline(std::move(request));
   progress.finish();
@@ -290,7 +301,8 @@ int run_run(const RunArgs& args) {
   for (const std::string& problem : verdict.problems) std::printf("         - %s\n", problem.c_str());
   // A lattice that tore or left bare patches is what the adaptive topology is for.
   const bool lattice_failed = pattern_is_torn(pavement.after) || has_bare_patches(pavement.after);
-  if (lattice_failed && pavement.design.pattern.topology == Topology::Lattice &&
+  // Not when auto tried the adaptive pattern already and it did no better (topology_choice says so).
+  if (lattice_failed && pavement.design.pattern.topology == Topology::Lattice && pavement.topology_choice.empty() &&
       adaptive_pattern_unsupported(pavement.design).empty())
     std::printf("         hint: the map distorts the lattice here; --topology adaptive grows the pattern on the "
                 "surface instead (docs/topology.md)\n");
@@ -449,28 +461,22 @@ int run_run(const RunArgs& args) {
 std::function<int()> add_run_command(CLI::App& app) {
   auto args = std::make_shared<RunArgs>();
   CLI::App* cmd = app.add_subcommand("run", "Pave a surface: map, pattern, elements, export and report");
-  cmd->add_option("SURFACE", args->surface, "Surface: OBJ, OFF, PLY or STL (open, or closed without handles)")->required()
-      ->check(app::not_empty());
-  cmd->add_option("--design", args->design, "design.json (flags below override it)")
-      ->check(app::not_empty());
-  cmd->add_option("--pattern", args->pattern, "Tessellation: tri, grid or hex")
-      ->check(app::not_empty());
+  cmd->add_option("SURFACE", args->surface, "Surface: OBJ, OFF, PLY or STL (open, or closed without handles)")->required();
+  cmd->add_option("--design", args->design, "design.json (flags below override it)");
+  cmd->add_option("--pattern", args->pattern, "Tessellation: tri, grid or hex");
   cmd->add_option("--topology", args->topology,
                   "auto (default: the lattice, or the adaptive pattern where the lattice tears or leaves bare patches), "
                   "lattice (the paper's) or adaptive: particles grown on the surface with point defects, for maps "
-                  "that distort a lattice (tri and hex; docs/topology.md)")
-      ->check(app::not_empty());
+                  "that distort a lattice (tri and hex; docs/topology.md)");
   cmd->add_option("--align", args->align,
                   "Rows along a world axis: x, y, z, or none (the map's own orientation; the default): the pattern "
-                  "is turned so that its rows follow the axis as it lies on the surface (placement.align)")
-      ->check(app::not_empty());
+                  "is turned so that its rows follow the axis as it lies on the surface (placement.align)");
   cmd->add_flag("--fit-offset", args->fit_offset,
                 "Shift the lattice within one cell to where the most elements fit (placement.fit_offset): with "
                 "rows along an axis, whole rows meet a window's edge or miss it");
   cmd->add_option("--cut", args->cut,
                   "A closed surface (a bead, a figurine) is cut into charts by a plane across this axis through its "
-                  "centre: auto (its longest axis), x, y or z; default: the design's placement.cut_axis, else auto")
-      ->check(app::not_empty());
+                  "centre: auto (its longest axis), x, y or z; default: the design's placement.cut_axis, else auto");
   cmd->add_option("--spacing", args->spacing, "Edge length D in surface units (default: from the surface size)");
   cmd->add_option("--gap", args->gap,
                   "Required free space between neighbouring elements, surface units (default 0: touching)");
@@ -478,8 +484,7 @@ std::function<int()> add_run_command(CLI::App& app) {
                   "Free band along the surface's boundary that no element may enter, surface units (default 0)");
   cmd->add_option("--rim-rows", args->rim_rows,
                   "A row of stones that follows a rim, so a hole's edge looks designed, not trimmed: none (default), "
-                  "holes (every loop but the outer edge) or all")
-      ->check(app::not_empty());
+                  "holes (every loop but the outer edge) or all");
   cmd->add_flag("--beads", args->beads,
                 "Add a bead (shared prong) in the gap between every three stones in contact; scale in the design "
                 "file (elements.beads.scale)");
@@ -487,27 +492,22 @@ std::function<int()> add_run_command(CLI::App& app) {
                   "Stone diameter, surface units: the vertex elements become round brilliants of this size, with "
                   "D = stone + gap so that neighbouring stones are exactly the gap apart (instead of --spacing)");
   cmd->add_option("--units", args->units, "Unit of the surface's coordinates: mm (default), cm, m or in; stone sizes "
-                                          "and carats are reported in mm")
-      ->check(app::not_empty());
-  cmd->add_option("--out", args->out, "Output folder")->capture_default_str()
-      ->check(app::not_empty());
+                                          "and carats are reported in mm");
+  cmd->add_option("--out", args->out, "Output folder")->capture_default_str();
   cmd->add_flag("--no-optimize", args->no_optimize, "Skip the section 5 optimizer (initial pavement only)");
   cmd->add_flag("--no-postprocess", args->no_postprocess, "Skip boundary filling and elimination (5.4)");
   cmd->add_option("--threads", args->threads, "Solver threads (0 = all cores; no more than the cores are used)")->check(CLI::Range(0, 1024));
   app::add_backend_option(*cmd, args->backend);
-  cmd->add_option("--device", args->device, "Vulkan device: a substring of its name (see `paver devices`)")
-      ->check(app::not_empty());
+  cmd->add_option("--device", args->device, "Vulkan device: a substring of its name (see `paver devices`)");
   cmd->add_flag("--quiet", args->quiet, "No progress on stderr (warnings and errors still)");
   cmd->add_option("--formats", args->formats,
                   "Mesh files to write, comma-separated: ply, obj, stl, glb (glTF 2.0 binary), 3mf")
-      ->capture_default_str()
-      ->check(app::not_empty());
+      ->capture_default_str();
   cmd->add_flag("--subtract", args->subtract,
                 "Also write the metal with the stones' seats cut out (cut.stl, cut.3mf) and its weight; needs --thickness");
   cmd->add_option("--thickness", args->thickness, "Metal thickness for --subtract, surface units (against the normals)");
   cmd->add_option("--cutter", args->cutter, "What --subtract cuts: seat (girdle, seat cone, hole through) or element")
-      ->capture_default_str()
-      ->check(app::not_empty());
+      ->capture_default_str();
   cmd->add_flag("--png", args->png, "Also render preview.png (3D) and param.png (2D) offscreen with Vulkan");
   cmd->add_option("--max-output-gb", args->max_output_gb,
                   "Refuse to write element meshes (PLY + OBJ) larger than this, in GB")

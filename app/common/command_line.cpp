@@ -8,7 +8,20 @@
 
 namespace paver::app {
 
+namespace {
+
+// Every option that takes a value refuses an empty one, checked before its own checks: CLI11
+// takes `--stone ""` for a number not given, and the run went on with spheres.
+void refuse_empty_values(CLI::App& app) {
+  for (CLI::Option* option : app.get_options())
+    if (option->get_type_size_min() > 0) option->transform(not_empty());
+  for (CLI::App* command : app.get_subcommands({})) refuse_empty_values(*command);
+}
+
+}  // namespace
+
 std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, const std::string& usage) {
+  refuse_empty_values(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

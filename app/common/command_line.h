@@ -13,8 +13,9 @@ namespace paver::app {
 // see --help)". CLI11's own codes (106 ...) and its two-line message would tell a script nothing more.
 std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, const std::string& usage);
 
-// Refuses a text option given as "" (`--pattern ""` was taken as not given at all).
-// Refuses an empty value, and one that is an option ("--design --quiet" took the flag for a file).
+// Refuses an empty value (`--pattern ""` and `--stone ""` were taken as not given at all), and one
+// that is an option ("--design --quiet" took the flag for a file). parse_command_line puts it on
+// every option that takes a value.
 const CLI::Validator& not_empty();
 
 // --backend cpu|vulkan|auto (default auto), as choose_backend takes it.

@@ -6,7 +6,10 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/number_text.h"
+
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <limits>
 #include <vector>
@@ -74,6 +77,20 @@ Elements place_beads(const SurfaceMap& map, const Elements& stones, const Elemen
     outside[b] = !keeps_margin(to_boundary[b], candidates.diameter[b], margin);
   candidates.erase_flagged(outside);
   return candidates;
+}
+
+std::optional<std::string> fine_beads_warning(const Elements& beads, Units units) {
+  const double mm = millimetres_per_unit(units);
+  std::size_t fine = 0;
+  double smallest = std::numeric_limits<double>::infinity();
+  for (const double d : beads.diameter) {
+    smallest = std::min(smallest, d * mm);
+    if (d * mm < kFinestCastBeadMm) ++fine;
+  }
+  if (fine == 0) return std::nullopt;
+  return std::to_string(fine) + " of " + std::to_string(beads.size()) + " beads are under " +
+         number_text(kFinestCastBeadMm) + " mm (the smallest " + number_text(std::round(smallest * 1000) / 1000) +
+         " mm), finer than casting or wax printing holds reliably: raise elements.beads.scale or the gap";
 }
 
 }  // namespace paver

@@ -10,6 +10,8 @@
 #include "pipeline/map_surface.h"
 #include "pattern/pattern.h"
 #include "core/stopwatch.h"
+#include "elements/beads.h"
+#include "elements/element_shape.h"
 #include "report/verdict.h"
 
 #include "io/element_export.h"
@@ -209,6 +211,20 @@ PipelineResult run_pipeline(PipelineRequest request) {
                                " is for a closed surface, which is cut into charts; this one is open, so it is not used";
     warn(unused);
   }
+  if (design.elements.margin > 0 && result.map && is_atlas(*result.map))
+    warn("elements.margin (--margin) " + number_text(design.elements.margin) +
+         " keeps stones off a surface's rims; this surface is closed (its charts' seams are no rims), so it is not "
+         "used");
+  // The mesh files' size before the pattern, which on a band lays out dozens of tries while it
+  // closes and shifts (36 s for 15 GB of files on a ring before the refusal): the vertex elements
+  // alone, from the map's area, at half their estimate, so that only a clear excess is refused
+  // here; the pattern's own count decides the rest (on_pattern below).
+  if (request.out && design.pattern.spacing > 0 && design.elements.vertex.enabled &&
+      design.elements.vertex.shape != ShapeKind::Custom) {
+    const auto n = static_cast<std::size_t>(0.5 * estimate_point_count(*result.map, cell, design.placement));
+    const ShapeMesh shape = make_builtin_shape(design.elements.vertex.shape);
+    refuse_large_output({n, n * shape.positions.size(), n * shape.triangles.size()}, request, result.map->mesh);
+  }
 
   if (request.out) {
     std::function<void(const Pattern&, const Design&)> caller_hook = std::move(request.pavement.on_pattern);
@@ -224,6 +240,7 @@ PipelineResult run_pipeline(PipelineRequest request) {
   if (const auto w = offset_fit_warning(design, result.pavement)) warn(*w);
   if (closed_surface && design.placement.cut_axis == CutAxis::Auto)
     try_other_cut_axes(request, design, *closed_surface, result);
+  if (const auto w = fine_beads_warning(result.pavement.beads, result.pavement.design.units)) warn(*w);
   if (result.pavement.elements.size() == 0) {
     const Pavement& p = result.pavement;
     const double margin = p.design.elements.margin;

@@ -486,6 +486,42 @@ TEST_F(PaverRun, AClosedSurfacesCutIsChosenByItsVerdict) {
   EXPECT_EQ(asked.out.find("cut axis "), std::string::npos) << describe(asked);
 }
 
+// The hint to grow the adaptive pattern is for a lattice asked for by name; under auto, which tried
+// it and kept the lattice because it did no better, the hint sent a jeweller to a worse pavement.
+TEST_F(PaverRun, TheAdaptiveHintIsGivenOnlyWhereAutoDidNotTryItOnTheHead) {
+  const std::vector<std::string> args = {"run", "assets/scanned/bunnyhead_three_loops.obj", "--units", "in",
+                                         "--stone", "0.06", "--gap", "0.004", "--margin", "0.01", "--rim-rows", "holes",
+                                         "--formats", "ply", "--quiet"};
+  const std::string hint = "hint: the map distorts the lattice here; --topology adaptive";
+  std::vector<std::string> automatic = args, lattice = args;
+  automatic.insert(automatic.end(), {"--out", (dir() / "auto").string()});
+  lattice.insert(lattice.end(), {"--topology", "lattice", "--out", (dir() / "lattice").string()});
+  const CliResult tried = paver(automatic);
+  EXPECT_EQ(tried.exit_code, 3) << describe(tried);
+  EXPECT_NE(tried.out.find("the adaptive pattern did no better"), std::string::npos) << describe(tried);
+  EXPECT_EQ(tried.out.find(hint), std::string::npos) << describe(tried);
+  const CliResult asked = paver(lattice);
+  EXPECT_EQ(asked.exit_code, 3) << describe(asked);
+  EXPECT_NE(asked.out.find(hint), std::string::npos) << describe(asked);
+}
+
+// A margin keeps stones off rims, and a closed bead has none: its charts' seams took the margin as
+// rims, and --margin 0.5 cost 12 stones and a NOT OK verdict (a jeweller's trial).
+TEST_F(PaverRun, AMarginOnAClosedSurfaceIsSaidToBeUnusedAndChangesNothing) {
+  const fs::path plain = dir() / "plain", margin = dir() / "margin";
+  const CliResult a = paver({"run", "assets/surfaces/bead.obj", "--stone", "1", "--gap", "0.1", "--cut", "x",
+                             "--formats", "ply", "--quiet", "--out", plain.string()});
+  ASSERT_EQ(a.exit_code, 0) << describe(a);
+  const CliResult b = paver({"run", "assets/surfaces/bead.obj", "--stone", "1", "--gap", "0.1", "--cut", "x",
+                             "--margin", "0.5", "--formats", "ply", "--quiet", "--out", margin.string()});
+  ASSERT_EQ(b.exit_code, 0) << describe(b);
+  EXPECT_NE(b.err.find("paver: warning: elements.margin (--margin) 0.5 keeps stones off a surface's rims; this "
+                       "surface is closed"),
+            std::string::npos)
+      << describe(b);
+  EXPECT_EQ(read_file_text(plain / "placements.csv"), read_file_text(margin / "placements.csv"));
+}
+
 // A cut axis is for closed surfaces: on an open one it was silently ignored.
 TEST_F(PaverRun, ACutAxisOnAnOpenSurfaceIsSaidToBeUnused) {
   const CliResult r = paver({"run", "assets/surfaces/dome.obj", "--spacing", "6", "--cut", "x", "--formats", "ply",
@@ -1293,9 +1329,12 @@ TEST_F(PaverRun, StonesAndGapInMillimetresGiveTheBillOfStones) {
   expect_input_error(paver({"run", "assets/surfaces/pendant.obj", "--subtract", "--thickness", "0", "--out",
                             bad.string()}),
                      bad, {"--thickness 0: must be finite and > 0"});
-  // An empty value is not an absent one.
-  expect_input_error(paver({"run", "assets/surfaces/pendant.obj", "--pattern", "", "--out", bad.string()}), bad,
-                     {"paver: error: --pattern: must not be empty"});
+  // An empty value is not an absent one, for a number either (`--stone ""` paved spheres).
+  for (const char* option : {"--pattern", "--stone", "--gap", "--spacing", "--threads", "--c"})
+    expect_input_error(paver({"run", "assets/surfaces/pendant.obj", option, "", "--out", bad.string()}), bad,
+                       {std::string("paver: error: ") + option + ": must not be empty"});
+  expect_input_error(paver({"param", "assets/surfaces/pendant.obj", "--out", ""}), bad,
+                     {"paver: error: --out: must not be empty"});
 }
 
 // The boundary of an OBJ surface as segments (edges of one face only), read here from the file,
@@ -1339,6 +1378,15 @@ double distance_to_segments(const std::array<double, 3>& p, const std::vector<st
     best = std::min(best, std::sqrt(d2));
   }
   return best;
+}
+
+// Beads of 0.03 mm (the gem pendant's edge stones leave hardly a gap) were written without a word.
+TEST_F(PaverRun, BeadsTooFineToCastAreSaidToBe) {
+  const CliResult r = paver({"run", "assets/surfaces/pendant_pierced.obj", "--design",
+                             "assets/designs/pendant_pierced_tri_gems.json", "--stone", "1.2", "--beads", "--quiet",
+                             "--formats", "ply", "--out", (dir() / "out").string()});
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  EXPECT_NE(r.err.find("beads are under 0.2 mm"), std::string::npos) << describe(r);
 }
 
 // --margin 0.5 keeps every stone's edge half a millimetre from the pendant's rim (a jeweller's
@@ -1390,6 +1438,14 @@ TEST_F(PaverRun, FormatsNarrowTheMeshFiles) {
   for (const char* name : {"elements.ply", "elements.obj", "paved.3mf"})
     EXPECT_FALSE(fs::exists(out / name)) << name << " was not asked for";
   EXPECT_NE(r.out.find("elements.stl, elements.glb, design.json"), std::string::npos) << describe(r);
+  EXPECT_EQ(r.err.find("STL has none"), std::string::npos) << "millimetres are what slicers read\n" << describe(r);
+  // In another unit, STL's lack of one is said, with the factor.
+  const CliResult inches = paver({"run", "assets/surfaces/pendant.obj", "--quiet", "--units", "in", "--formats", "stl", "--out", (dir() / "inches").string()});
+  ASSERT_EQ(inches.exit_code, 0) << describe(inches);
+  EXPECT_NE(inches.err.find("paver: warning: elements.stl is in in (the surface's unit; STL has none) and slicers "
+                            "read millimetres: scale by 25.4 on import"),
+            std::string::npos)
+      << describe(inches);
 
   const fs::path bad = dir() / "bad";
   expect_input_error(paver({"run", "assets/surfaces/pendant.obj", "--formats", "ply,dwg", "--out", bad.string()}), bad,

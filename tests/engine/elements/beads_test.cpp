@@ -64,5 +64,26 @@ TEST(Beads, ScaleGrowsThemAndGridHasNone) {
   EXPECT_EQ(pendant_stones(Tessellation::Triangle, false).beads.size(), 0u) << "only when asked";
 }
 
+// Beads a caster cannot fill are said to be, in millimetres whatever the surface's unit.
+TEST(Beads, FinerThanCastingHoldsAreSaidToBe) {
+  const Pavement p = pendant_stones(Tessellation::Triangle, true);
+  ASSERT_GT(p.beads.size(), 100u);
+  double smallest = 1e300;
+  for (const double d : p.beads.diameter) smallest = std::min(smallest, d);
+  ASSERT_GT(smallest, kFinestCastBeadMm) << "the case: 1.5 mm stones, 0.1 mm gap, beads that cast";
+  EXPECT_FALSE(fine_beads_warning(p.beads, Units::Millimetre).has_value());
+  // Read in centimetres, the same beads are ten times larger.
+  EXPECT_FALSE(fine_beads_warning(p.beads, Units::Centimetre).has_value());
+  Elements fine = p.beads;
+  fine.diameter.front() = 0.15;
+  fine.diameter.back() = 0.0311;
+  const std::optional<std::string> w = fine_beads_warning(fine, Units::Millimetre);
+  ASSERT_TRUE(w.has_value());
+  EXPECT_NE(w->find("2 of " + std::to_string(fine.size()) + " beads are under 0.2 mm (the smallest 0.031 mm)"),
+            std::string::npos)
+      << *w;
+  EXPECT_NE(w->find("raise elements.beads.scale or the gap"), std::string::npos) << *w;
+}
+
 }  // namespace
 }  // namespace paver

@@ -248,6 +248,27 @@ TEST_F(RunPipeline, RefusesTooLargeOutputBeforeTheSolve) {
   EXPECT_EQ(expected.faces, element_mesh_size(initial.elements).faces);
 }
 
+// A band lays out dozens of patterns while it closes and picks its rows and shift: a clear excess
+// is refused from the map's area before any of them (15 GB of files on a ring took 36 s to refuse).
+TEST_F(RunPipeline, AClearlyTooLargeOutputIsRefusedBeforeABandsPatternIsLaidOut) {
+  PipelineRequest request;
+  request.map = test::bundled_map("ring_band");
+  request.design.pattern.tessellation = Tessellation::Triangle;
+  request.design.pattern.spacing = 0.5;
+  request.out = dir_ / "out";
+  request.max_output_bytes = 1e5;
+  std::vector<std::string> stages;
+  request.pavement.on_stage = [&](const std::string& stage) { stages.push_back(stage); };
+  try {
+    run_pipeline(request);
+    FAIL() << "a run far over the output limit was not refused";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("--max-output-gb"), std::string::npos) << error.what();
+  }
+  EXPECT_TRUE(stages.empty()) << "refused at stage " << stages.front();
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+}
+
 // A stop (Ctrl-C) ends the run at the next stage with Interrupted, and nothing is written.
 TEST_F(RunPipeline, AStoppedRunWritesNothing) {
   std::atomic<bool> stop{false};
