@@ -12,7 +12,8 @@ namespace paver::app {
 // Measured on an NVIDIA H100 machine against its 16 CPU cores, whole pavements, median of three
 // (`paver-backend-bench --sweep`, docs/benchmarks.md): a solve on the GPU has a fixed cost
 // (uploads, two submissions), so the GPU was slower up to 293 particles (1.02x the CPU's time
-// there, 1.11x on the 186-particle pendant) and faster from 304 (0.96x) and 345 (0.64x) on.
+// there, 1.11x on the 186-particle pendant) and faster from 304 (0.96x) and 345 (0.64x) on, but
+// for the bangle (744 particles, 1.27x), whose solve settles in 27 iterations.
 inline constexpr int kAutoGpuLeastParticles = 300;
 
 struct BackendChoice {

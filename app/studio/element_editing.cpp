@@ -23,10 +23,13 @@ std::size_t require_element(const Pavement& pavement, int id) {
   return *index;
 }
 
-// Ids name one pattern layout: an auto design keeps the topology its pavement was laid with, and a
-// fitted offset stays where the fit put it (a fit is not made under edits: pipeline/offset_fit.h).
+// Ids name one pattern layout: an auto design keeps the topology its pavement was laid with, a band
+// the way its rows were laid (auto is not chosen under edits: pipeline/pavement.cpp), and a fitted
+// offset stays where the fit put it (a fit is not made under edits: pipeline/offset_fit.h).
 void fix_layout(Design& design, const Pavement& pavement) {
   if (design.pattern.topology == Topology::Auto) design.pattern.topology = pavement.design.pattern.topology;
+  if (design.placement.band_rows == BandRows::Auto && pavement.band_closure)
+    design.placement.band_rows = pavement.band_closure->rows_across ? BandRows::Across : BandRows::Along;
   if (design.placement.fit_offset && pavement.offset_fit) {
     design.placement.offset = pavement.offset_fit->chosen.offset;
     design.placement.fit_offset = false;

@@ -101,9 +101,17 @@ CellGrid surface_grid(const SurfaceMesh& mesh, double reach) {
 
 }  // namespace
 
+bool band_rims_alike(const SurfaceMap& map) {
+  if (!is_band(map)) return false;
+  const double a = loop_length(map.mesh.positions, map.mesh.boundary_loops[0]);
+  const double b = loop_length(map.mesh.positions, map.mesh.boundary_loops[1]);
+  return std::max(a, b) <= kAlikeRims * std::min(a, b);
+}
+
 std::vector<int> rim_row_loops(const SurfaceMap& map, RimRows rows) {
   std::vector<int> loops;
   if (rows == RimRows::None || is_atlas(map)) return loops;
+  if (rows == RimRows::Holes && band_rims_alike(map)) return loops;
   for (int l = rows == RimRows::All ? 0 : 1; l < int(map.mesh.boundary_loops.size()); ++l) loops.push_back(l);
   return loops;
 }

@@ -20,8 +20,14 @@ struct RimRowReport {
 };
 
 // Which of the map's loops are rims the design asks a row for: none, the holes (every loop but
-// the outer, the longest), or all.
+// the outer, the longest), or all. A band whose rims are alike (a ring) has no hole: "holes" lines
+// none of its edges there, where it once lined one and left the ring lopsided.
 std::vector<int> rim_row_loops(const SurfaceMap& map, RimRows rows);
+
+// A band whose two rims are within kAlikeRims of each other's length: a ring's or a bangle's two
+// edges, not an outer edge and a hole (a pendant pierced once has a hole far shorter than its rim).
+inline constexpr double kAlikeRims = 1.25;
+bool band_rims_alike(const SurfaceMap& map);
 
 // Adds the rows to `elements` (source -1, the design's vertex spec) and removes the elements they
 // would touch. `map` is the one the pavement's uv live in. Does nothing for RimRows::None, on an

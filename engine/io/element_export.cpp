@@ -199,18 +199,23 @@ ElementMeshSize element_mesh_size(const Elements& elements, const ElementMeshOpt
   return {elements.size(), counts.vertices, counts.faces};
 }
 
+ElementMeshSize shape_mesh_size(ShapeKind kind, std::size_t count, const ShapeMesh* custom) {
+  if (kind == ShapeKind::Custom && !custom)
+    throw std::invalid_argument("shape_mesh_size: the design uses the custom shape but none was given");
+  const ShapeMesh builtin = kind == ShapeKind::Custom ? ShapeMesh{} : make_builtin_shape(kind);
+  const ShapeMesh& shape = kind == ShapeKind::Custom ? *custom : builtin;
+  return {count, count * shape.positions.size(), count * shape.triangles.size()};
+}
+
 ElementMeshSize expected_element_mesh_size(const Pattern& pattern, const ElementsDesign& design,
                                            const ElementMeshOptions& options) {
   ElementMeshSize size;
   const auto add = [&](ShapeKind kind, std::size_t count) {
     if (count == 0) return;
-    if (kind == ShapeKind::Custom && !options.custom)
-      throw std::invalid_argument("expected_element_mesh_size: the design uses the custom shape but none was given");
-    const ShapeMesh builtin = kind == ShapeKind::Custom ? ShapeMesh{} : make_builtin_shape(kind);
-    const ShapeMesh& shape = kind == ShapeKind::Custom ? *options.custom : builtin;
-    size.elements += count;
-    size.vertices += count * shape.positions.size();
-    size.faces += count * shape.triangles.size();
+    const ElementMeshSize more = shape_mesh_size(kind, count, options.custom);
+    size.elements += more.elements;
+    size.vertices += more.vertices;
+    size.faces += more.faces;
   };
   if (design.vertex.enabled) add(design.vertex.shape, std::size_t(pattern.point_count()));
   for (const EdgeElementDesign& spec : design.edge) {

@@ -38,6 +38,8 @@ struct ElementMeshSize {
   std::size_t elements = 0, vertices = 0, faces = 0;
 };
 ElementMeshSize element_mesh_size(const Elements& elements, const ElementMeshOptions& options = {});
+// `count` elements of one shape (`custom` for ShapeKind::Custom).
+ElementMeshSize shape_mesh_size(ShapeKind kind, std::size_t count, const ShapeMesh* custom = nullptr);
 // The same for a pattern whose elements are not placed yet: one V-element per point (when
 // enabled) and one E-element per designed edge element on each real edge, so that a run can be
 // refused before the solve. Boundary filling and refill add a few more later.

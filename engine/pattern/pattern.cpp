@@ -54,13 +54,19 @@ void refuse_too_many_points(double area, const UnitCell& cell, const Placement& 
                    format_number(kMaxPatternPoints) + ": use a spacing of at least " + format_number(ok_spacing));
 }
 
-Pattern build_pattern(const SurfaceMap& map, const UnitCell& cell, const Placement& placement) {
+void refuse_spacing_larger_than_map(const SurfaceMap& map, double spacing, const Placement& placement) {
   const glm::dvec2 map_extent = map.uv_max - map.uv_min;
   const double map_size = std::max(map_extent.x, map_extent.y) * placement.scale;  // in pattern units
-  if (!(cell.spacing < map_size))
-    throw InputError("spacing D = " + format_number(cell.spacing) + " is larger than the surface (its map is about " +
+  if (!(spacing < map_size))
+    throw InputError("spacing D = " + format_number(spacing) + " is larger than the surface (its map is about " +
                      format_number(map_size) + " across): no two elements fit; use a spacing below " +
                      format_number(map_size));
+}
+
+Pattern build_pattern(const SurfaceMap& map, const UnitCell& cell, const Placement& placement) {
+  refuse_spacing_larger_than_map(map, cell.spacing, placement);
+  const glm::dvec2 map_extent = map.uv_max - map.uv_min;
+  const double map_size = std::max(map_extent.x, map_extent.y) * placement.scale;  // in pattern units
   refuse_too_many_points(map_area(map), cell, placement);
 
   // Range of lattice cells that covers the map: express the map's boundary in lattice coordinates.

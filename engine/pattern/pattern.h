@@ -68,4 +68,9 @@ void refuse_too_many_points(double area, const UnitCell& cell, const Placement& 
 // create more than kMaxPatternPoints points, naming the smallest sensible spacing.
 Pattern build_pattern(const SurfaceMap& map, const UnitCell& cell, const Placement& placement);
 
+// Throws InputError "spacing D = .. is larger than the surface" when no two elements fit across
+// the map; build_pattern checks it, and a band before its closure changes D (a D of 1e9 was said
+// to be 7.69 on a ring).
+void refuse_spacing_larger_than_map(const SurfaceMap& map, double spacing, const Placement& placement);
+
 }  // namespace paver

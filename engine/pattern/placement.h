@@ -12,7 +12,7 @@
 namespace paver {
 
 // On a band paved seamlessly, which way the lattice's rows run: along the band (around it) or
-// across it (rim to rim), or auto: the one that lays out more elements (pipeline/pavement.cpp).
+// across it (rim to rim), or auto: both tried and the better pavement kept (pipeline/pavement.cpp).
 // Its rotation is then the band's, not `rotation_deg`.
 enum class BandRows { Along, Across, Auto };
 std::string_view band_rows_name(BandRows rows);  // "along", "across", "auto"

@@ -1,5 +1,6 @@
 #include "pipeline/offset_fit.h"
 
+#include "core/input_error.h"
 #include "pattern/pattern.h"
 #include "pipeline/pavement.h"  // place_all_elements
 
@@ -126,8 +127,14 @@ glm::dvec2 best_offset_across(const SurfaceMap& map, const UnitCell& cell, const
 }
 
 std::size_t laid_out_count(const SurfaceMap& map, const UnitCell& cell, const Design& design, const Placement& placement) {
-  const Pattern pattern = build_pattern(map, cell, placement);
-  return place_all_elements(map, pattern, pattern.points, design, true).elements.size();
+  try {
+    const Pattern pattern = build_pattern(map, cell, placement);
+    return place_all_elements(map, pattern, pattern.points, design, true).elements.size();
+  } catch (const InputError&) {
+    // No point of this shift lands on the map (a narrow ring at a large D): it lays out nothing,
+    // and another shift may do better. A fault of every shift is said by the pattern built after.
+    return 0;
+  }
 }
 
 }  // namespace paver

@@ -62,7 +62,8 @@ OffsetFit fit_offset(const SurfaceMap& map, const UnitCell& cell, const Design& 
 int choose_finalist(const std::vector<OffsetCandidate>& finalists, const std::vector<bool>& ok);
 
 // The elements that `design` lays out under `placement` before any optimization: the lattice
-// placed and post-processed at the boundary (a forecast of the elements kept).
+// placed and post-processed at the boundary (a forecast of the elements kept); 0 where the
+// pattern cannot be laid there (InputError: no point lands).
 std::size_t laid_out_count(const SurfaceMap& map, const UnitCell& cell, const Design& design, const Placement& placement);
 
 // A band paved seamlessly: its rows run along the rims and are kept or lost whole at each, so only

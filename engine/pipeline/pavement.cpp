@@ -105,10 +105,6 @@ namespace {
 
 Pavement pave_with_topology(const SurfaceMap& map, Design design, const PavementOptions& options);
 
-// The laid-out count only forecasts the kept one: the optimizer moves elements and resolution
-// removes some (on the bundled torus, the shift that laid out 4 more kept 9 fewer). So the
-// finalists are paved in full, quietly (no stage names, observer or pattern hook: the chosen one is
-// paved again with them), and choose_finalist picks the one to lay.
 // A band closed with its rows one way: the design at the closed D and the band's rotation (its
 // rows resolved), and, when found, the shift across the band that lays out the most.
 struct ClosedBand {
@@ -142,11 +138,13 @@ ClosedBand closed_band(const SurfaceMap& map, Design design, BandRows rows) {
 }
 
 // band_rows auto: the band closed both ways, each at its best shift across. A band small enough
-// (as the offset fit's finalists) is paved both ways, quietly, and the way with an ok verdict, then
-// the most elements kept, is taken: the laid-out count is only a forecast (the bundled bangle laid
-// out 642 along against 620 across and kept 615 against 620). A larger one takes the way that lays
-// out more. Across on a tie: it filled the bundled bands better at the default spacing, while one
-// row along keeps a ring of large stones whole (docs/holes_and_bands.md).
+// (as the offset fit's finalists, counted in laid-out elements) is paved both ways, quietly, and
+// the better kept (paves_better: fewer verdict problems, then the higher fill): the laid-out count
+// is only a forecast (the bundled bangle laid out 642 along against 620 across and kept 615
+// against 620). A larger one takes the way that lays out more. Across on a tie: it filled the
+// bundled bands better at the default spacing, while one row along keeps a ring of large stones
+// whole (docs/holes_and_bands.md). Each quiet pavement closes the band and searches its shift
+// again (16 layouts each): bounded by the size limit, and simpler than passing them in.
 ClosedBand closed_band_with_more_elements(const SurfaceMap& map, const Design& design, const PavementOptions& options) {
   const auto laid_out = [&](ClosedBand& band) -> std::size_t {
     try {
@@ -175,11 +173,13 @@ ClosedBand closed_band_with_more_elements(const SurfaceMap& map, const Design& d
       named.placement.band_rows = band.design.placement.band_rows;
       return pave_with_topology(map, std::move(named), quiet);
     };
-    const Pavement by_across = paved(across), by_along = paved(along);
-    across_kept = by_across.elements.size();
-    along_kept = by_along.elements.size();
-    const bool across_ok = judge_pavement(by_across.after).ok, along_ok = judge_pavement(by_along.after).ok;
-    take_along = across_ok != along_ok ? along_ok : along_kept > across_kept;
+    const Pavement by_across = paved(across);
+    if (!(options.stop && options.stop->load())) {  // else the caller ends the run
+      const Pavement by_along = paved(along);
+      across_kept = by_across.elements.size();
+      along_kept = by_along.elements.size();
+      take_along = paves_better(by_along.after, by_across.after);
+    }
   }
   ClosedBand& kept = take_along ? along : across;
   kept.closure.laid_out_across = across_count;
@@ -189,6 +189,10 @@ ClosedBand closed_band_with_more_elements(const SurfaceMap& map, const Design& d
   return std::move(kept);
 }
 
+// The laid-out count only forecasts the kept one: the optimizer moves elements and resolution
+// removes some (on the bundled torus, the shift that laid out 4 more kept 9 fewer). So the
+// finalists are paved in full, quietly (no stage names, observer or pattern hook: the chosen one is
+// paved again with them), and choose_finalist picks the one to lay.
 void pave_finalists(const SurfaceMap& map, const Design& design, const PavementOptions& options, OffsetFit& fit) {
   if (fit.finalists.empty()) return;
   PavementOptions quiet = options;
@@ -225,8 +229,21 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
   if (map_wraps(map) && !adaptive) {
     // A band's seamless map: the lattice turned and its D changed a little, so that it closes.
     check_design_cell(design);  // the design's own errors first, at its own spacing
-    ClosedBand closed = design.placement.band_rows == BandRows::Auto ? closed_band_with_more_elements(map, design, options)
-                                                                      : closed_band(map, design, design.placement.band_rows);
+    refuse_spacing_larger_than_map(map, design.pattern.spacing, design.placement);
+    // Element edits name the elements of one lattice: under them auto takes across, as before auto
+    // (the studio names the way at the first edit, element_editing.cpp).
+    const bool choose_rows = design.placement.band_rows == BandRows::Auto && design.edits.empty();
+    const BandRows named_rows = design.placement.band_rows == BandRows::Along ? BandRows::Along : BandRows::Across;
+    ClosedBand closed;
+    if (choose_rows) {
+      pattern_ms += watch.milliseconds();  // the choice is timed on its own
+      watch = start("band_rows");
+      closed = closed_band_with_more_elements(map, design, options);
+      pavement.timings.emplace_back("band_rows", watch.milliseconds());
+      watch = Stopwatch();  // the pattern stage goes on (its name was said)
+    } else {
+      closed = closed_band(map, design, named_rows);
+    }
     design = std::move(closed.design);
     band_offset = closed.offset;
     pavement.band_closure = closed.closure;
@@ -249,7 +266,7 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
   // offset (the studio folds a fitted offset into the design at the first edit). There the key
   // stays asked, and the run says it was not used.
   if (design.placement.fit_offset && !pavement.seamless && !adaptive && design.edits.empty()) {
-    pattern_ms = watch.milliseconds();  // the fit is timed on its own
+    pattern_ms += watch.milliseconds();  // the fit is timed on its own
     watch = start("offset_fit");
     design.placement.fit_offset = false;  // the finalists are paved at fixed offsets
     OffsetFit fit = fit_offset(map, pavement.cell, design, options.stop);
@@ -485,10 +502,7 @@ Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptio
     // A band whose seamless lattice tore or left bare patches: the lattice on its annulus map too
     // (rows that cross the rims at an angle keep more elements at them); the better one is kept.
     Pavement annulus = pave_with_topology(map, std::move(lattice), options);
-    const Verdict seamless_verdict = judge_pavement(first.after), annulus_verdict = judge_pavement(annulus.after);
-    const bool annulus_better = annulus_verdict.problems.size() < seamless_verdict.problems.size() ||
-                                (annulus_verdict.problems.size() == seamless_verdict.problems.size() &&
-                                 annulus.after.fill > first.after.fill);
+    const bool annulus_better = paves_better(annulus.after, first.after);
     Pavement& kept = annulus_better ? annulus : first;
     const Pavement& dropped = annulus_better ? first : annulus;
     double tried = 0;
@@ -517,9 +531,7 @@ Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptio
   grown.pattern.topology = Topology::Adaptive;
   Pavement second = pave_with_topology(map, std::move(grown), options);
   const Verdict lattice_verdict = judge_pavement(first.after), adaptive_verdict = judge_pavement(second.after);
-  const bool adaptive_better =
-      adaptive_verdict.problems.size() < lattice_verdict.problems.size() ||
-      (adaptive_verdict.problems.size() == lattice_verdict.problems.size() && second.after.fill > first.after.fill);
+  const bool adaptive_better = paves_better(second.after, first.after);
   Pavement& kept = adaptive_better ? second : first;
   const Pavement& dropped = adaptive_better ? first : second;
   kept.topology_choice = "auto: " + std::string(adaptive_better ? "adaptive" : "lattice") + "; " + failure +

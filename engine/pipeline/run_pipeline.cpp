@@ -11,7 +11,7 @@
 #include "pattern/pattern.h"
 #include "core/stopwatch.h"
 #include "elements/beads.h"
-#include "elements/element_shape.h"
+#include "elements/rim_rows.h"
 #include "report/verdict.h"
 
 #include "io/element_export.h"
@@ -30,6 +30,13 @@ namespace {
 // The output bound, checked twice: from the pattern before the solve (so that a design whose
 // files would be too large is refused before the expensive work) and on the final elements
 // (boundary filling and refill add a few).
+// "7.693" for 7.692761536748845: what an error message needs, not a round trip.
+std::string four_digits(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", value);
+  return text;
+}
+
 void refuse_large_output(const ElementMeshSize& size, const PipelineRequest& request, const SurfaceMesh& surface) {
   const double bytes = expected_mesh_bytes(size, request.formats, surface);
   if (bytes <= request.max_output_bytes) return;
@@ -221,9 +228,9 @@ PipelineResult run_pipeline(PipelineRequest request) {
   // here; the pattern's own count decides the rest (on_pattern below).
   if (request.out && design.pattern.spacing > 0 && design.elements.vertex.enabled &&
       design.elements.vertex.shape != ShapeKind::Custom) {
+    refuse_too_many_points(surface_area(result.map->mesh), cell, design.placement);  // its own message first
     const auto n = static_cast<std::size_t>(0.5 * estimate_point_count(*result.map, cell, design.placement));
-    const ShapeMesh shape = make_builtin_shape(design.elements.vertex.shape);
-    refuse_large_output({n, n * shape.positions.size(), n * shape.triangles.size()}, request, result.map->mesh);
+    refuse_large_output(shape_mesh_size(design.elements.vertex.shape, n), request, result.map->mesh);
   }
 
   if (request.out) {
@@ -241,9 +248,12 @@ PipelineResult run_pipeline(PipelineRequest request) {
   if (closed_surface && design.placement.cut_axis == CutAxis::Auto)
     try_other_cut_axes(request, design, *closed_surface, result);
   if (const auto w = fine_beads_warning(result.pavement.beads, result.pavement.design.units)) warn(*w);
+  if (design.elements.rim_rows == RimRows::Holes && band_rims_alike(*result.map))
+    warn("elements.rim_rows (--rim-rows) holes: this band's two rims are its edges, not a hole, so no row is laid; "
+         "--rim-rows all lines both");
   if (result.pavement.elements.size() == 0) {
     const Pavement& p = result.pavement;
-    const double margin = p.design.elements.margin;
+    const double margin = is_atlas(*result.map) ? 0 : p.design.elements.margin;  // none on a closed surface
     const std::string why = p.eliminated == 0 ? "was dropped"
                             : margin > 0     ? "crossed its boundary or the margin along it"
                                              : "crossed its boundary (the surface is narrower than the elements)";
@@ -251,7 +261,10 @@ PipelineResult run_pipeline(PipelineRequest request) {
                                                     number_text(margin) + "), smaller stones or a smaller spacing"
                                               : "use smaller stones (--stone, the element scales) or a smaller spacing";
     throw InputError("no element fits on this surface: the pattern put " +
-                     count_text(p.pattern.point_count(), "point", "points") + " on it at D = " + number_text(p.design.pattern.spacing) + ", and every element " + why +
+                     count_text(p.pattern.point_count(), "point", "points") + " on it at D = " +
+                     number_text(std::stod(four_digits(p.design.pattern.spacing))) +
+                     (p.band_closure ? " (the band closed at " + describe_band_closure(*p.band_closure) + ")" : "") +
+                     ", and every element " + why +
                      "; " + what_to_do);
   }
   result.timings.insert(result.timings.end(), result.pavement.timings.begin(), result.pavement.timings.end());

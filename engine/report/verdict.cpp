@@ -43,4 +43,9 @@ nlohmann::json to_json(const Verdict& verdict) {
   return nlohmann::json{{"ok", verdict.ok}, {"problems", verdict.problems}};
 }
 
+bool paves_better(const PavementQuality& candidate, const PavementQuality& incumbent) {
+  const std::size_t mine = judge_pavement(candidate).problems.size(), theirs = judge_pavement(incumbent).problems.size();
+  return mine < theirs || (mine == theirs && candidate.fill > incumbent.fill);
+}
+
 }  // namespace paver

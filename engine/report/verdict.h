@@ -30,6 +30,11 @@ struct Verdict {
 
 Verdict judge_pavement(const PavementQuality& final_quality);
 
+// Of two pavements of one surface tried for one design (topology auto, a band's annulus, its rows
+// both ways): whether `candidate` is better than `incumbent`: fewer verdict problems, then a
+// higher fill (elements over the ideal count at each one's own D). Equal: not better.
+bool paves_better(const PavementQuality& candidate, const PavementQuality& incumbent);
+
 nlohmann::json to_json(const Verdict& verdict);
 
 }  // namespace paver

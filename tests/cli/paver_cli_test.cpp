@@ -486,6 +486,27 @@ TEST_F(PaverRun, AClosedSurfacesCutIsChosenByItsVerdict) {
   EXPECT_EQ(asked.out.find("cut axis "), std::string::npos) << describe(asked);
 }
 
+// A ring from a jeweller's trial: a spacing larger than the whole band was said to be 7.69 (the
+// band's closure had changed it), and `--rim-rows holes` lined one of its two edges.
+TEST_F(PaverRun, ARingsSpacingAndRimRowsAreSaidAsGiven) {
+  const fs::path out = dir() / "out";
+  const CliResult huge = paver({"run", "assets/surfaces/ring_band.obj", "--spacing", "1e9", "--out", out.string()});
+  EXPECT_EQ(huge.exit_code, 2) << describe(huge);
+  EXPECT_NE(huge.err.find("spacing D = 1e+09 is larger than the surface"), std::string::npos) << describe(huge);
+  const CliResult wide = paver({"run", "assets/surfaces/ring_band.obj", "--spacing", "30", "--out", out.string()});
+  EXPECT_EQ(wide.exit_code, 2) << describe(wide);
+  EXPECT_NE(wide.err.find("(the band closed at D 30 -> "), std::string::npos) << describe(wide);
+  EXPECT_NE(wide.err.find("narrower than the elements"), std::string::npos) << describe(wide);
+  EXPECT_FALSE(fs::exists(out));
+  const CliResult rows = paver({"run", "assets/surfaces/ring_band.obj", "--stone", "1.5", "--gap", "0.1", "--rim-rows",
+                                "holes", "--quiet", "--formats", "ply", "--out", out.string()});
+  ASSERT_EQ(rows.exit_code, 0) << describe(rows);
+  EXPECT_NE(rows.err.find("paver: warning: elements.rim_rows (--rim-rows) holes: this band's two rims are its edges"),
+            std::string::npos)
+      << describe(rows);
+  EXPECT_NE(rows.out.find("rows auto: along kept"), std::string::npos) << describe(rows);
+}
+
 // The hint to grow the adaptive pattern is for a lattice asked for by name; under auto, which tried
 // it and kept the lattice because it did no better, the hint sent a jeweller to a worse pavement.
 TEST_F(PaverRun, TheAdaptiveHintIsGivenOnlyWhereAutoDidNotTryItOnTheHead) {

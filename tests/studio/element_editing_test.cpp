@@ -112,6 +112,25 @@ TEST(ElementEditing, AnEditKeepsTheFittedOffsetInTheDesign) {
       << "the deleted stone is gone";
 }
 
+// The first edit on a ring whose rows auto laid along it names that way in the design: auto is not
+// chosen under edits (they name one lattice's elements), so the edit stays on the lattice it was
+// made on.
+TEST(ElementEditing, AnEditKeepsTheBandsRowsInTheDesign) {
+  Design design;
+  design.pattern.tessellation = Tessellation::Triangle;
+  design.elements.gap = 0.1;
+  set_stone_size(design, 3);
+  const SurfaceMap& map = *test::bundled_map("ring_band");
+  const Pavement laid = make_pavement(map, design);
+  ASSERT_TRUE(laid.band_closure && !laid.band_closure->rows_across) << "the case: auto laid the rows along";
+  const std::size_t v = first_of(laid, ElementKind::Vertex, true);
+  const Design edited = without_element(design, laid, laid.elements.id[v]);
+  EXPECT_EQ(edited.placement.band_rows, BandRows::Along);
+  const Pavement after = make_pavement(map, edited);
+  EXPECT_EQ(after.deletions_missed, 0);
+  EXPECT_EQ(after.elements.size() + 1, laid.elements.size()) << "the same ring, less the deleted stone";
+}
+
 // A box takes the elements whose centres it holds, whichever way it was drawn.
 TEST(ElementEditing, ABoxSelectsTheElementsWhoseCentresItHolds) {
   const Pavement& p = gems();

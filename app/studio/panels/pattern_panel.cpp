@@ -226,7 +226,7 @@ void pattern_panel(Document& doc, UiState& ui) {
               "lattice (tri and hex). Auto: the lattice, unless it tears or leaves bare patches and the "
               "adaptive pattern does better.");
   if (doc.surface.map && is_band(*doc.surface.map)) {
-    const char* row_names[] = {"along the band", "across the band", "auto (the way that lays more)"};
+    const char* row_names[] = {"along the band", "across the band", "auto (the better of the two)"};
     int rows = int(d.placement.band_rows);
     if (ImGui::Combo("band rows", &rows, row_names, 3)) {
       d.placement.band_rows = BandRows(rows);
@@ -234,7 +234,7 @@ void pattern_panel(Document& doc, UiState& ui) {
     }
     help_marker("On a ring or bangle the lattice closes around the band: a whole number of stones goes "
                 "round (D changes a little to make it so). Rows across the band or along it, or auto (the "
-                "default): the way that lays out more elements, so a row of large stones goes all round.");
+                "default): both are paved and the better kept, so a row of large stones goes all round a ring.");
   }
 
   placement_section(doc, d);

@@ -170,6 +170,19 @@ TEST(RimRows, ABandGetsARowAlongEachRimAcrossItsSeam) {
   EXPECT_GE(rows.per_loop[1], 20);
 }
 
+// A ring's two rims are its edges, not a hole: "holes" lined one of them and left the ring
+// lopsided (a jeweller's trial). A bangle's are alike too; the pierced pendant's holes are holes.
+TEST(RimRows, ABandsAlikeRimsAreNoHoles) {
+  for (const char* band : {"ring_band", "bangle"}) {
+    const auto map = test::bundled_map(band);
+    EXPECT_TRUE(band_rims_alike(*map)) << band;
+    EXPECT_TRUE(rim_row_loops(*map, RimRows::Holes).empty()) << band;
+    EXPECT_EQ(rim_row_loops(*map, RimRows::All).size(), 2u) << band;
+  }
+  EXPECT_FALSE(band_rims_alike(*test::bundled_map("pendant_pierced")));
+  EXPECT_FALSE(band_rims_alike(*test::bundled_map("pendant")));
+}
+
 // A plate with a 20-degree tip: the row's offset curve turns sharply there, so elements two apart
 // along it come closer than their neighbours; every row element is checked against every other.
 TEST(RimRows, ASharpTipKeepsTheContactRuleAlongTheRow) {

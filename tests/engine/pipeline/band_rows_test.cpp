@@ -58,8 +58,24 @@ TEST(BandRows, AutoKeepsRowsAcrossWhereTheyKeepMoreOnTheBundledBangle) {
   EXPECT_TRUE(automatic.band_closure->rows_across);
   // Along lays out more (642 against 620) but keeps fewer once optimized: the pavements decide.
   EXPECT_GT(automatic.band_closure->laid_out_along, automatic.band_closure->laid_out_across);
+  EXPECT_GT(automatic.band_closure->kept_across, 0u);
   EXPECT_GE(automatic.band_closure->kept_across, automatic.band_closure->kept_along);
   EXPECT_EQ(automatic.elements.position, paved_with_rows(map, design, BandRows::Across).elements.position);
+}
+
+// Element edits name the elements of one lattice: under them auto does not choose, it takes across.
+TEST(BandRows, UnderEditsAutoTakesRowsAcross) {
+  const SurfaceMap& map = *test::bundled_map("ring_band");
+  Design design = ring_of_stones(5);
+  design.pattern.topology = Topology::Lattice;  // edits name a lattice's elements (auto is refused)
+  const Pavement laid = paved_with_rows(map, design, BandRows::Across);
+  design.edits.deleted.push_back({laid.elements.id.front(), laid.elements.uv.front()});
+  const Pavement edited = make_pavement(map, design);
+  ASSERT_TRUE(edited.band_closure);
+  EXPECT_TRUE(edited.band_closure->rows_across);
+  EXPECT_EQ(edited.band_closure->laid_out_along + edited.band_closure->laid_out_across, 0u) << "no choice made";
+  EXPECT_EQ(edited.deletions_missed, 0);
+  EXPECT_EQ(edited.elements.size() + 1, laid.elements.size());
 }
 
 }  // namespace
