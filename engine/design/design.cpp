@@ -74,10 +74,9 @@ void set_stone_size(Design& design, double stone) {
     design.pattern.spacing = stone / design.elements.vertex.scale;
     return;
   }
-  design.pattern.spacing = stone + design.elements.gap;
   design.elements.vertex.enabled = true;
-  design.elements.vertex.scale = stone / design.pattern.spacing;
   design.elements.vertex.shape = ShapeKind::Gem;
+  set_gap_keeping_stone_size(design, design.elements.gap, stone);
 }
 
 void set_gap_keeping_stone_size(Design& design, double gap, double stone) {

@@ -1,16 +1,15 @@
 #include "elements/beads.h"
 
+#include "core/number_text.h"
 #include "elements/boundary_postprocess.h"
 #include "elements/element_hash.h"
 #include "map/lifting.h"
 
 #include <glm/geometric.hpp>
 
-#include "core/number_text.h"
-
 #include <algorithm>
-#include <cmath>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <vector>
 

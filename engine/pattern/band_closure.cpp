@@ -67,12 +67,11 @@ std::string describe_band_closure(const BandClosure& closure) {
 std::string band_rows_choice(const BandClosure& c) {
   if (c.laid_out_across + c.laid_out_along == 0) return "";
   const bool paved = c.kept_across + c.kept_along > 0;
-  const std::size_t mine = paved ? (c.rows_across ? c.kept_across : c.kept_along)
-                                 : (c.rows_across ? c.laid_out_across : c.laid_out_along);
-  const std::size_t other = paved ? (c.rows_across ? c.kept_along : c.kept_across)
-                                  : (c.rows_across ? c.laid_out_along : c.laid_out_across);
-  return "; rows auto: " + std::string(c.rows_across ? "across " : "along ") + (paved ? "kept " : "laid out ") +
-         std::to_string(mine) + " elements, " + (c.rows_across ? "along " : "across ") + std::to_string(other);
+  const std::string across = std::to_string(paved ? c.kept_across : c.laid_out_across);
+  const std::string along = std::to_string(paved ? c.kept_along : c.laid_out_along);
+  const std::string verb = paved ? " kept " : " laid out ";
+  return "; rows auto: " + (c.rows_across ? "across" + verb + across + " elements, along " + along
+                                          : "along" + verb + along + " elements, across " + across);
 }
 
 }  // namespace paver

@@ -30,13 +30,6 @@ namespace {
 // The output bound, checked twice: from the pattern before the solve (so that a design whose
 // files would be too large is refused before the expensive work) and on the final elements
 // (boundary filling and refill add a few).
-// "7.693" for 7.692761536748845: what an error message needs, not a round trip.
-std::string four_digits(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4g", value);
-  return text;
-}
-
 void refuse_large_output(const ElementMeshSize& size, const PipelineRequest& request, const SurfaceMesh& surface) {
   const double bytes = expected_mesh_bytes(size, request.formats, surface);
   if (bytes <= request.max_output_bytes) return;
@@ -261,9 +254,9 @@ PipelineResult run_pipeline(PipelineRequest request) {
                                                     number_text(margin) + "), smaller stones or a smaller spacing"
                                               : "use smaller stones (--stone, the element scales) or a smaller spacing";
     throw InputError("no element fits on this surface: the pattern put " +
-                     count_text(p.pattern.point_count(), "point", "points") + " on it at D = " +
-                     number_text(std::stod(four_digits(p.design.pattern.spacing))) +
-                     (p.band_closure ? " (the band closed at " + describe_band_closure(*p.band_closure) + ")" : "") +
+                     count_text(p.pattern.point_count(), "point", "points") + " on it " +
+                     (p.band_closure ? "(the band closed at " + describe_band_closure(*p.band_closure) + ")"
+                                     : "at D = " + number_text(p.design.pattern.spacing)) +
                      ", and every element " + why +
                      "; " + what_to_do);
   }

@@ -209,6 +209,20 @@ TEST_F(RunPipeline, TinyElementsPaveLikeAnyOther) {
   EXPECT_GT(result.pavement.after.neighbor_ratio.min, 1e8) << "elements a billionth of D apart by D";
 }
 
+// Runs `request`, which must be refused over its output limit (the error names --max-output-gb);
+// returns the stages that started before the refusal.
+std::vector<std::string> stages_before_output_refusal(PipelineRequest request) {
+  std::vector<std::string> stages;
+  request.pavement.on_stage = [&](const std::string& stage) { stages.push_back(stage); };
+  try {
+    run_pipeline(request);
+    ADD_FAILURE() << "a run over the output limit was not refused";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("--max-output-gb"), std::string::npos) << error.what();
+  }
+  return stages;
+}
+
 // The output bound is checked from the pattern, before the solver runs: a design whose element
 // meshes would pass the limit costs no solve (issue 11: a 23 GB PLY was written after one).
 TEST_F(RunPipeline, RefusesTooLargeOutputBeforeTheSolve) {
@@ -228,14 +242,7 @@ TEST_F(RunPipeline, RefusesTooLargeOutputBeforeTheSolve) {
   ASSERT_GT(solver_iterations, 0);
   solver_iterations = 0;
   request.max_output_bytes = 0.9 * bytes;
-  std::vector<std::string> stages;
-  request.pavement.on_stage = [&](const std::string& stage) { stages.push_back(stage); };
-  try {
-    run_pipeline(request);
-    FAIL() << "a run over the output limit was not refused";
-  } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("--max-output-gb"), std::string::npos) << error.what();
-  }
+  const std::vector<std::string> stages = stages_before_output_refusal(request);
   EXPECT_EQ(solver_iterations, 0) << "the limit must be checked before the solve";
   EXPECT_EQ(stages, std::vector<std::string>{"pattern"}) << "and before any element is placed or measured";
   EXPECT_FALSE(fs::exists(dir_ / "out"));
@@ -257,14 +264,7 @@ TEST_F(RunPipeline, AClearlyTooLargeOutputIsRefusedBeforeABandsPatternIsLaidOut)
   request.design.pattern.spacing = 0.5;
   request.out = dir_ / "out";
   request.max_output_bytes = 1e5;
-  std::vector<std::string> stages;
-  request.pavement.on_stage = [&](const std::string& stage) { stages.push_back(stage); };
-  try {
-    run_pipeline(request);
-    FAIL() << "a run far over the output limit was not refused";
-  } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("--max-output-gb"), std::string::npos) << error.what();
-  }
+  const std::vector<std::string> stages = stages_before_output_refusal(request);
   EXPECT_TRUE(stages.empty()) << "refused at stage " << stages.front();
   EXPECT_FALSE(fs::exists(dir_ / "out"));
 }
