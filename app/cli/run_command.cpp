@@ -17,6 +17,7 @@
 #include "pattern/adaptive_pattern.h"
 #include "report/bill_of_stones.h"
 #include "io/element_export.h"
+#include "io/stl_unit_warning.h"
 #ifdef PAVER_WITH_CGAL
 #include "cut/cut_outputs.h"
 #endif
@@ -277,17 +278,11 @@ int run_run(const RunArgs& args) {
       timings.emplace_back("png", watch.milliseconds());
     }
   };
-  // STL carries no unit and slicers read millimetres: a ring drawn in inches printed 0.9 mm across
-  // (a jeweller's trial). 3MF names its unit.
-  if (request.design.units != Units::Millimetre && (request.formats.stl || args.subtract)) {
-    const std::string files = request.formats.stl && args.subtract ? "elements.stl and cut.stl are"
-                              : request.formats.stl               ? "elements.stl is"
-                                                                  : "cut.stl is";
-    warn(files + " in " + std::string(units_name(request.design.units)) +
-         " (the surface's unit; STL has none) and slicers read millimetres: scale by " +
-         number_text(millimetres_per_unit(request.design.units)) +
-         " on import, or use the 3MF files, which name their unit");
-  }
+  std::vector<std::string> stl_files;
+  if (request.formats.stl) stl_files.push_back("elements.stl");
+  if (args.subtract) stl_files.push_back("cut.stl");
+  const std::string stl_units = stl_unit_warning(request.design.units, stl_files);
+  if (!stl_units.empty()) warn(stl_units);
   const MeshFormats request_formats = request.formats;
   const PipelineResult result = run_pipeline(std::move(request));
   progress.finish();

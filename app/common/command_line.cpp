@@ -11,17 +11,20 @@ namespace paver::app {
 namespace {
 
 // Every option that takes a value refuses an empty one, checked before its own checks: CLI11
-// takes `--stone ""` for a number not given, and the run went on with spheres.
-void refuse_empty_values(CLI::App& app) {
-  for (CLI::Option* option : app.get_options())
+// takes `--stone ""` for a number not given, and the run went on with spheres. A flag refuses a
+// value: CLI11 took `--fit-offset=2` for "on", as if it counted something.
+void refuse_meaningless_values(CLI::App& app) {
+  for (CLI::Option* option : app.get_options()) {
     if (option->get_type_size_min() > 0) option->transform(not_empty());
-  for (CLI::App* command : app.get_subcommands({})) refuse_empty_values(*command);
+    if (option->get_expected_max() == 0) option->disable_flag_override();
+  }
+  for (CLI::App* command : app.get_subcommands({})) refuse_meaningless_values(*command);
 }
 
 }  // namespace
 
 std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, const std::string& usage) {
-  refuse_empty_values(app);
+  refuse_meaningless_values(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -33,6 +36,10 @@ std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, cons
       for (const CLI::App* sub : app.get_subcommands({})) known = known || sub->get_name() == argv[1];
       if (!known) what = std::string("unknown command '") + argv[1] + "'";
     }
+    // CLI11: "png was given a disallowed flag override".
+    const std::size_t overridden = what.find(" was given a disallowed flag override");
+    if (overridden != std::string::npos)
+      what = "--" + what.substr(0, overridden) + " takes no value: give it alone to turn it on";
     // An unexpected flag that is a near miss of a real one: name the real one.
     // CLI11: "The following argument(s) were not expected: 3 --lambdar".
     const std::size_t listed = what.find("not expected: ");

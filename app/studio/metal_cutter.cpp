@@ -3,6 +3,7 @@
 #include "available_memory.h"
 
 #include "io/output_guard.h"
+#include "io/stl_unit_warning.h"
 #include "report/metal_weight.h"
 #ifdef PAVER_WITH_CGAL
 #include "cut/cut_outputs.h"
@@ -51,8 +52,11 @@ void MetalCutter::start(std::shared_ptr<const SurfaceMap> map, std::shared_ptr<c
       std::snprintf(text, sizeof text, "wrote %s/cut.stl and cut.3mf: %d seats, metal %.4g mm3, %.2f g of 18k gold, "
                     "%.0f ms", folder.string().c_str(), cut.cutters, mm3,
                     metal_grams(cut.volume, pavement->design.units, jewellery_alloys()[1]), cut.milliseconds);
-      const std::string stand_out = stones_stand_out_warning(cut, thickness, pavement->design.units);
-      outcome = {true, stand_out.empty() ? std::string(text) : std::string(text) + "; warning: " + stand_out};
+      std::string said = text;
+      for (const std::string& warning : {stones_stand_out_warning(cut, thickness, pavement->design.units),
+                                         stl_unit_warning(pavement->design.units, {"cut.stl"})})
+        if (!warning.empty()) said += "; warning: " + warning;
+      outcome = {true, said};
     } catch (const std::exception& e) {
       outcome = {false, std::string("cut metal: ") + e.what()};
     }

@@ -9,6 +9,7 @@
 
 #include "io/output_set.h"
 #include "io/output_guard.h"
+#include "io/stl_unit_warning.h"
 #include "panels/panels.h"
 #include "recent_files.h"
 #include "pipeline/run_outputs.h"
@@ -366,7 +367,8 @@ void export_outputs(Studio& s, const fs::path& folder) {
   write_run_outputs(folder, info, *s.doc.surface.map, pavement, timings,
                     {.custom = custom_shape(s.doc), .formats = kStudioExportFormats});
   s.ui.export_dir = folder.string();  // the File panel shows where the files went (a script's export too)
-  report_status(s.doc, "exported to " + folder.string());
+  const std::string stl_units = stl_unit_warning(pavement.design.units, {"elements.stl"});
+  report_status(s.doc, "exported to " + folder.string() + (stl_units.empty() ? "" : "; warning: " + stl_units));
 }
 
 void cut_metal(Studio& s, const fs::path& folder, double thickness) {

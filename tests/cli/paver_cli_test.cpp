@@ -1356,6 +1356,10 @@ TEST_F(PaverRun, StonesAndGapInMillimetresGiveTheBillOfStones) {
                        {std::string("paver: error: ") + option + ": must not be empty"});
   expect_input_error(paver({"param", "assets/surfaces/pendant.obj", "--out", ""}), bad,
                      {"paver: error: --out: must not be empty"});
+  // A flag takes no value (`--fit-offset=2` was taken for "on").
+  for (const std::string flag : {"--fit-offset", "--png"})
+    expect_input_error(paver({"run", "assets/surfaces/pendant.obj", flag + "=2", "--out", bad.string()}), bad,
+                       {"paver: error: " + flag + " takes no value: give it alone to turn it on"});
 }
 
 // The boundary of an OBJ surface as segments (edges of one face only), read here from the file,
