@@ -328,6 +328,9 @@ int run_run(const RunArgs& args) {
     std::printf("; %zu point defects, relaxed in %d iterations and packed in %d (%d jammed removed), %.0f ms",
                 pavement.pattern.defects.size(), pavement.relaxation.iterations,
                 pavement.relaxation.packing_iterations, pavement.relaxation.jammed, pavement.relaxation.milliseconds);
+  if (const DefectHealingReport& healed = pavement.relaxation.healing; healed.tries > 0)
+    std::printf("; interior defects healed %d -> %d (%d of %d shaken patches rearranged, %.0f ms)", healed.defects_before,
+                healed.defects_after, healed.moved, healed.tries, healed.milliseconds);
   std::printf("\n");
   if (!pavement.topology_choice.empty()) std::printf("topology %s\n", pavement.topology_choice.c_str());
   if (!result.cut_axis_choice.empty()) std::printf("cut axis %s\n", result.cut_axis_choice.c_str());

@@ -63,6 +63,7 @@ void SurfaceParticles::step(const SurfaceMap& map, std::vector<glm::dvec3> step)
 }
 
 void SurfaceParticles::keep_from_boundary(const SurfaceMap& map, const BoundaryIndex& boundary, double margin) {
+  if (!(margin > 0)) return;  // no particle is nearer than 0
   std::vector<glm::dvec3> push(size(), glm::dvec3(0));
   for (int i = 0; i < size(); ++i) {
     if (lifted.triangle[i] < 0) continue;

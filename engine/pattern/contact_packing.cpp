@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
 
 namespace paver {
 namespace {
@@ -81,6 +82,9 @@ long fire_descent(const SurfaceMap& map, SurfaceParticles& p, const BoundaryInde
     }
     if (overlapping == 0 || iteration >= options.iterations || (stop && stop->load())) break;
     ++report.iterations;
+    if (options.movable)
+      for (int i = 0; i < n; ++i)
+        if (!(*options.movable)[i]) force[i] = glm::dvec3(0);
     // FIRE: steer the velocity towards the force while the motion goes downhill, stop it dead
     // and take smaller steps when it goes uphill. Both stay in each particle's tangent plane.
     double power = 0, v_norm = 0, f_norm = 0;
@@ -146,7 +150,9 @@ ContactPackingReport pack_by_contact(const SurfaceMap& map, std::vector<glm::dve
   p.uv = uv;
   p.lifted.resize(uv.size());
   lift_points(map, p.uv, p.lifted);
-  const BoundaryIndex boundary(map.mesh, std::max(options.margin, 1e-9 * options.contact) * 2);
+  std::optional<BoundaryIndex> own;
+  if (!options.boundary) own.emplace(map.mesh, std::max(options.margin, 1e-9 * options.contact) * 2);
+  const BoundaryIndex& boundary = options.boundary ? *options.boundary : *own;
   std::vector<double> overlap;
   for (int round = 0; round < std::max(1, options.rounds); ++round) {
     report.overlapping_pairs = fire_descent(map, p, boundary, options, overlap, report, stop);

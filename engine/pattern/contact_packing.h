@@ -21,6 +21,8 @@ struct ContactPackingOptions {
   int iterations = 600;    // per round
   int rounds = 1;          // > 1: after a round that left overlaps, remove some particles and go on
   double remove_share = 0.005;  // at most this share of the particles removed per round (at least 1)
+  const std::vector<char>* movable = nullptr;  // set: only these particles move (the rest hold a patch's rim)
+  const BoundaryIndex* boundary = nullptr;     // set: used instead of one built for the call (reach >= margin)
 };
 
 struct ContactPackingReport {

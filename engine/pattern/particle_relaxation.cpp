@@ -6,6 +6,8 @@
 #include "map/lifting.h"
 #include "map/surface_particles.h"
 #include "pattern/contact_packing.h"
+#include "pattern/defect_healing.h"
+#include "pattern/interior_depth.h"
 #include "pattern/surface_triangulation.h"
 
 #include <glm/common.hpp>
@@ -245,6 +247,13 @@ RelaxedParticles relax_particles(const SurfaceMap& map, const std::vector<glm::d
     const ContactPackingReport packed = pack_by_contact(map, p.uv, packing, stop);
     report.packing_iterations = packed.iterations;
     report.jammed = packed.removed;
+    // Packing freezes dislocations in; healing cancels some (docs/topology.md).
+    DefectHealingOptions healing;
+    healing.spacing = target.spacing;
+    healing.contact = target.contact;
+    healing.margin = target.boundary_margin;
+    healing.interior_depth = kInteriorDepth * target.spacing;
+    report.healing = heal_defects(map, p.uv, healing, stop);
     p.lift(map, target);
   }
   out.triangles = triangulate_surface_points(p.uv, p.lifted.position, kLongestEdge * largest);

@@ -6,6 +6,7 @@
 // shortest bars collapse and the longest split until the density matches. The particles live in
 // the map; forces, lengths and the boundary margin are measured on the surface.
 #include "map/surface_map.h"
+#include "pattern/defect_healing.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -28,6 +29,7 @@ struct RelaxationReport {
   int seeds_kept = 0;              // seeds left after thinning the piled-up ones
   int packing_iterations = 0;      // contact packing after the relaxation (contact_packing.h)
   int jammed = 0;                  // particles the packing removed where no push made room
+  DefectHealingReport healing;     // after the packing (defect_healing.h)
   double milliseconds = 0;
 };
 

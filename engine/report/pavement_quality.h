@@ -5,6 +5,7 @@
 #include "design/guidance.h"
 #include "design/design.h"
 #include "elements/elements.h"
+#include "pattern/interior_depth.h"
 #include "pattern/pattern.h"
 #include "pattern/unit_cell.h"
 #include "map/surface_map.h"
@@ -39,9 +40,6 @@ struct QualityBasis {
   double spacing = 0;               // D: interior elements lie kInteriorDepth D from the boundary
   std::vector<GuidanceDab> guidance;  // the painted field: the ideal count follows it (design/guidance.h)
 };
-
-// Elements at least this many D from the boundary count as interior for the valence share.
-inline constexpr double kInteriorDepth = 2;
 
 
 struct PavementQuality {

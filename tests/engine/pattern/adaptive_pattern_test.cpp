@@ -97,10 +97,10 @@ TEST(AdaptivePattern, AHoneycombIsTheDualWithThreeEdgesAtEveryInnerPointAndFaces
 // symmetric Dirichlet map; 20-fold on the ARAP map before it), so the lattice piles up and leaves
 // bare patches. The adaptive pattern, packed to contact, covers it (issue 10's targets;
 // docs/topology.md has the figures): fill >= 0.90, NN p95 <= 1.15, NN cv <= 0.05, with no contact
-// violation and no removal after the pattern is built. Regular valence: hex meets 85%; tri
-// measured 0.778 on the ARAP map (the packing's jamming disorders it; other triangle orders gave
-// 0.74 to 0.81) and 0.825 on the symmetric Dirichlet map. It is held here at 0.80 so that it
-// cannot slip unseen.
+// violation and no removal after the pattern is built. Regular valence >= 85%: hex 0.93; tri
+// 0.854 once defect healing cancels some of the dislocations that packing freezes in (0.849
+// without it). The tri figure is near its bound: turning the seed lattice gives 0.806-0.854
+// (docs/topology.md), so a change that moves it below 0.85 is one to measure, not to loosen.
 struct HeadTargets {
   Tessellation tessellation;
   double least_regular_share;
@@ -123,13 +123,16 @@ TEST_P(AdaptiveOnTheHead, ItCoversTheHeadRegularlyWithNoContact) {
   EXPECT_LE(q.neighbor_ratio.cv, 0.05);
   EXPECT_GT(q.interior_vertex_elements, 500);
   EXPECT_GE(q.regular_valence_share, GetParam().least_regular_share);
+  if (GetParam().tessellation == Tessellation::Triangle) {  // packed to contact, then healed
+    EXPECT_LT(adaptive.relaxation.healing.defects_after, adaptive.relaxation.healing.defects_before);
+  }
   // The lattice on the same head: bare (on the ARAP map it was torn too; the symmetric
   // Dirichlet map keeps what it places regular, nearest-neighbour p95 1.10).
   EXPECT_LT(lattice.after.fill, 0.70);
 }
 
 INSTANTIATE_TEST_SUITE_P(TriAndHex, AdaptiveOnTheHead,
-                         ::testing::Values(HeadTargets{Tessellation::Triangle, 0.80},
+                         ::testing::Values(HeadTargets{Tessellation::Triangle, 0.85},
                                            HeadTargets{Tessellation::Hexagon, 0.85}));
 
 // Vertex and edge gems (the bundled pendant_tri_gems design at the head's default spacing): each

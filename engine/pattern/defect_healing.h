@@ -1,0 +1,36 @@
+#pragma once
+// Heals point defects that packing to contact leaves in the adaptive pattern's particles. Most of
+// them are not the few the surface's curvature needs but bound 5-7 pairs (dislocations) frozen in
+// by the packing: on the bunny head, 105 of 123 interior defects sit next to one of the opposite
+// sign. A try shakes the particles around one defect (random tangent pushes), packs them to
+// contact again against their fixed neighbours, and keeps the new arrangement only when the
+// triangulation around it has fewer defects and no pair is under contact; otherwise the patch is
+// put back. A zero-temperature search with collective moves (docs/topology.md).
+#include "map/surface_map.h"
+
+#include <glm/vec2.hpp>
+
+#include <atomic>
+#include <vector>
+
+namespace paver {
+
+struct DefectHealingOptions {
+  double spacing = 0;         // D: the wanted bar length; the patches and reaches scale with it
+  double contact = 0;         // 3D centre distance that no pair may come under (as packed)
+  double margin = 0;          // 3D distance every particle keeps from the surface's boundary
+  double interior_depth = 0;  // particles nearer the boundary are not healed or counted (a hull's valence)
+  int sweeps = 3;             // passes over the defects, one try at each
+};
+
+struct DefectHealingReport {
+  int defects_before = 0, defects_after = 0;  // interior particles not 6-valent
+  int tries = 0, moved = 0;                   // moved: tries whose arrangement was kept
+  double milliseconds = 0;
+};
+
+// Moves `uv` (packed particles in the map); the count is unchanged. Deterministic.
+DefectHealingReport heal_defects(const SurfaceMap& map, std::vector<glm::dvec2>& uv,
+                                 const DefectHealingOptions& options, const std::atomic<bool>* stop = nullptr);
+
+}  // namespace paver
