@@ -70,7 +70,7 @@ case "$mode" in
     # the compile time of -O2 -g on these 2 cores).
     cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O1 -gline-tables-only" \
       -DCMAKE_CXX_COMPILER=clang++ \
-      -DPAVER_FUZZ=ON -DPAVER_WITH_VULKAN=OFF -DPAVER_WITH_CGAL=OFF -DPAVER_BUILD_BENCH=OFF
+      -DPAVER_FUZZ=ON -DPAVER_WITH_VULKAN=OFF -DPAVER_WITH_CGAL=OFF -DPAVER_BUILD_BENCH=OFF -DPAVER_UNITY_ENGINE=ON
     cmake --build build-sanitize -j"$jobs"
     # The leak suppressions are third-party only, each with its reason (tests/sanitize/lsan.supp).
     export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 UBSAN_OPTIONS=print_stacktrace=1 \
@@ -98,20 +98,31 @@ case "$mode" in
     scratch=$(mktemp -d)
     trap 'rm -rf "$scratch"' EXIT
     mkdir -p build-sanitize/fuzz-findings
-    for target in obj off ply stl design; do
-      echo "setup: fuzzing $target for ${fuzz_seconds} s"
+    # Two targets at a time: libFuzzer runs one process on one core, and CI has two.
+    fuzz_one() {
+      local target=$1 log="$scratch/$1.log" status=0
       mkdir -p "$scratch/$target"
-      log="$scratch/$target.log"
-      status=0
       build-sanitize/bin/fuzz_$target -max_total_time="$fuzz_seconds" -timeout=10 -rss_limit_mb=3072 \
         -max_len=65536 -print_final_stats=1 -artifact_prefix=build-sanitize/fuzz-findings/$target- \
         "$scratch/$target" tests/fuzz/corpus/$target >"$log" 2>&1 || status=$?
-      grep -E "^(stat::number_of_executed_units|stat::peak_rss_mb|#[0-9]+ +DONE)" "$log" || true
-      if [ "$status" -ne 0 ]; then
-        tail -n 60 "$log"
-        echo "setup: fuzz_$target found a problem (exit $status); its input is in build-sanitize/fuzz-findings"
-        exit 1
-      fi
+      echo "$status" >"$scratch/$target.status"
+    }
+    targets=(obj off ply stl design)
+    for ((i = 0; i < ${#targets[@]}; i += 2)); do
+      pair=("${targets[@]:i:2}")
+      echo "setup: fuzzing ${pair[*]} for ${fuzz_seconds} s"
+      for target in "${pair[@]}"; do fuzz_one "$target" & done
+      wait
+      for target in "${pair[@]}"; do
+        echo "setup: fuzz_$target:"
+        grep -E "^(stat::number_of_executed_units|stat::peak_rss_mb|#[0-9]+ +DONE)" "$scratch/$target.log" || true
+        status=$(cat "$scratch/$target.status")
+        if [ "$status" -ne 0 ]; then
+          tail -n 60 "$scratch/$target.log"
+          echo "setup: fuzz_$target found a problem (exit $status); its input is in build-sanitize/fuzz-findings"
+          exit 1
+        fi
+      done
     done
     ;;
 esac

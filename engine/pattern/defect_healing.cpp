@@ -36,7 +36,7 @@ constexpr double kFarthestNeighbour = 1.8;
 constexpr double kCounted = kPatch + kMostMove + kFarthestNeighbour;
 constexpr double kHull = 1.5;
 constexpr double kTriangulated = kCounted + kHull;
-constexpr double kLongestEdge = 2.5;  // as the relaxation's triangulation
+constexpr double kLongestTriangleEdge = 2.5;  // as the relaxation's triangulation
 constexpr double kRehashAfter = 1.0;  // a particle moved this far since the hash was built: build it again
 constexpr int kPackIterations = 300;
 
@@ -63,8 +63,9 @@ enum class Outcome { Kept, Moved, Healed };  // the patch as it was; rearranged;
 
 class Healer {
 public:
-  Healer(const SurfaceMap& map, std::vector<glm::dvec2>& uv, const DefectHealingOptions& options)
-      : map_(map), options_(options), d_(options.spacing),
+  // Reaches scale with the larger of the spacing and the contact: a gap can make contact the larger.
+  Healer(const SurfaceMap& map, const std::vector<glm::dvec2>& uv, const DefectHealingOptions& options)
+      : map_(map), options_(options), d_(std::max(options.spacing, options.contact)),
         boundary_(map.mesh, std::max(options.margin, 1e-9 * options.spacing) * 2),
         depth_index_(map.mesh, std::max(options.interior_depth, 1e-9 * options.spacing) * 1.5) {
     p_.uv = uv;
@@ -78,11 +79,9 @@ public:
   // The interior particles (on the map) that are not 6-valent, by the whole pattern's triangulation.
   // Also marks which particles are interior, for the tries until the next call.
   std::vector<int> defects() {
-    valence_ = valences(p_.uv, p_.lifted.position, kLongestEdge * d_);
+    valence_ = valences(p_.uv, p_.lifted.position, kLongestTriangleEdge * d_);
     interior_.resize(p_.size());
-    for (int i = 0; i < p_.size(); ++i)
-      interior_[i] = p_.lifted.triangle[i] >= 0 &&
-                     depth_index_.nearest(p_.lifted.position[i]).distance >= options_.interior_depth;
+    for (int i = 0; i < p_.size(); ++i) interior_[i] = p_.lifted.triangle[i] >= 0 && is_interior(p_.lifted.position[i]);
     std::vector<int> out;
     for (int i = 0; i < p_.size(); ++i)
       if (interior_[i] && valence_[i] != 6) out.push_back(i);
@@ -94,7 +93,7 @@ public:
   // until it meets one that it cancels (accepting only fewer stopped at a third of the healing).
   Outcome try_around(int centre, Random& random) {
     const glm::dvec3 middle = p_.lifted.position[centre];
-    std::vector<int> near;  // within kTriangulated, the centre first
+    std::vector<int> near;  // within kTriangulated, in index order
     hash_->for_each_near(middle, [&](int j) {
       if (p_.lifted.triangle[j] >= 0 && glm::length(p_.lifted.position[j] - middle) < kTriangulated * d_) near.push_back(j);
     });
@@ -124,8 +123,9 @@ public:
     for (size_t h = 0; h < held.size(); ++h)
       if (movable[h]) push[h] = kShake * d_ * glm::dvec3(random.normal(), random.normal(), random.normal());
     patch.step(map_, std::move(push));
-    // Movers that start the interior depth from the boundary end within kMostMove of it: they keep
-    // the margin without being pushed from it (whose search is most of a try's time otherwise).
+    // Movers that start the interior depth from the boundary (as they are now: interior_ follows
+    // every kept move) end within kMostMove of it: they keep the margin without being pushed from
+    // it (whose search is most of a try's time otherwise).
     bool all_deep = true;
     for (size_t h = 0; h < held.size(); ++h)
       if (movable[h] && !interior_[near[held[h]]]) all_deep = false;
@@ -156,15 +156,18 @@ public:
       p_.lifted.normal[i] = patch.lifted.normal[h];
       p_.lifted.curvature[i] = patch.lifted.curvature[h];
       if (glm::length(p_.lifted.position[i] - hashed_at_[i]) > kRehashAfter * d_) stale_ = true;
+      interior_[i] = is_interior(p_.lifted.position[i]);  // a later try may move it again from here
     }
     if (stale_) rehash();
     return after < before ? Outcome::Healed : Outcome::Moved;
   }
 
 private:
+  bool is_interior(const glm::dvec3& x) const { return depth_index_.nearest(x).distance >= options_.interior_depth; }
+
   int defects_among(const std::vector<glm::dvec2>& uv, const std::vector<glm::dvec3>& position,
                     const std::vector<char>& counted) const {
-    const std::vector<int> valence = valences(uv, position, kLongestEdge * d_);
+    const std::vector<int> valence = valences(uv, position, kLongestTriangleEdge * d_);
     int defects = 0;
     for (size_t k = 0; k < uv.size(); ++k) defects += counted[k] && valence[k] != 6;
     return defects;

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cstdio>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,13 @@ std::string format(double v) {
   char b[32];
   std::snprintf(b, sizeof b, "%.3g", v);
   return b;
+}
+
+// With a gap: the largest that this layout keeps (elements that touch by design keep none).
+std::string largest_gap_text(double gap, double least_clearance, double spacing) {
+  if (!(gap > 0)) return "";
+  if (least_clearance <= 1e-9 * spacing) return "; they touch with no gap at these scales, so none fits";
+  return "; the largest gap that fits is " + format(least_clearance) + " surface units";
 }
 
 }  // namespace
@@ -72,10 +80,12 @@ void check_design_overlaps(const UnitCell& cell, const ElementsDesign& design, d
   // largest scale that fits must be those of the nearest neighbours.
   size_t worst_i = 0, worst_j = 0;
   double worst_shortfall = 0;
+  double least_clearance = std::numeric_limits<double>::infinity();  // the largest gap that fits
   for (size_t i : own)
     for (size_t j = 0; j < all.size(); ++j) {
       if (j == i) continue;
       const double d = glm::length(all[i].centre - all[j].centre);
+      least_clearance = std::min(least_clearance, clearance_between(d, 2 * all[i].radius, 2 * all[j].radius));
       // The lattice's positions come from cos/sin: elements that touch by design (scale 1 on a
       // triangle lattice) sit at D up to rounding, which must not read as an overlap.
       const double rounding = 1e-9 * spacing;
@@ -98,6 +108,7 @@ void check_design_overlaps(const UnitCell& cell, const ElementsDesign& design, d
                          ? "; at this spacing and gap their scale can be at most " + format((d - gap) / spacing) +
                                " (now " + format(2 * a.radius / spacing) + ")"
                          : "") +
+                    largest_gap_text(gap, least_clearance, spacing) +
                     "; reduce their scales, move t" + (gap > 0 ? ", reduce the gap or raise the spacing" : "") +
                     " (or set elements.allow_overlap to allow it)");
 }

@@ -107,6 +107,12 @@ TEST(DesignOverlap, TheGapIsPartOfTheRule) {
   EXPECT_TRUE(Contains(message, "the V-element on cell vertex 0 and the V-element on cell vertex 0 of the cell at ("))
       << message;
   EXPECT_TRUE(Contains(message, "their scale can be at most 0.95 (now 1)")) << message;
+  EXPECT_TRUE(Contains(message, "they touch with no gap at these scales, so none fits")) << message;
+  // With room between them, the largest gap that fits is named: 1 for discs of 9 at D = 10.
+  const std::string roomy = error_of([] {
+    check_design_overlaps(cell_of(Tessellation::Triangle, 10), elements_with(0.9, {}), 10, 1.5);
+  });
+  EXPECT_TRUE(Contains(roomy, "the largest gap that fits is 1 surface units")) << roomy;
 }
 
 TEST(DesignOverlap, AGapOfManySpacingsNamesTheNearestNeighbours) {
