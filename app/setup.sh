@@ -70,7 +70,7 @@ case "$mode" in
     # the compile time of -O2 -g on these 2 cores).
     cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O1 -gline-tables-only" \
       -DCMAKE_CXX_COMPILER=clang++ \
-      -DPAVER_FUZZ=ON -DPAVER_WITH_VULKAN=OFF -DPAVER_WITH_CGAL=OFF -DPAVER_BUILD_BENCH=OFF -DPAVER_UNITY_ENGINE=ON
+      -DPAVER_FUZZ=ON -DPAVER_WITH_VULKAN=OFF -DPAVER_WITH_CGAL=OFF -DPAVER_BUILD_BENCH=OFF -DPAVER_UNITY_BUILD=ON
     cmake --build build-sanitize -j"$jobs"
     # The leak suppressions are third-party only, each with its reason (tests/sanitize/lsan.supp).
     export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 UBSAN_OPTIONS=print_stacktrace=1 \
@@ -96,7 +96,7 @@ case "$mode" in
     # Each fuzz target from the committed seeds, into a scratch corpus that is removed afterwards
     # (the committed corpus stays as it is). A finding leaves its input in build-sanitize/fuzz-findings.
     scratch=$(mktemp -d)
-    trap 'rm -rf "$scratch"' EXIT
+    trap 'kill $(jobs -p) 2>/dev/null || true; rm -rf "$scratch"' EXIT
     mkdir -p build-sanitize/fuzz-findings
     # Two targets at a time: libFuzzer runs one process on one core, and CI has two.
     fuzz_one() {

@@ -11,6 +11,7 @@
 #include <limits>
 #include <numeric>
 #include <optional>
+#include <stdexcept>
 
 namespace paver {
 namespace {
@@ -145,6 +146,8 @@ int remove_jammed(SurfaceParticles& p, const std::vector<double>& overlap, doubl
 ContactPackingReport pack_by_contact(const SurfaceMap& map, std::vector<glm::dvec2>& uv,
                                      const ContactPackingOptions& options, const std::atomic<bool>* stop) {
   ContactPackingReport report;
+  if (options.movable && (options.movable->size() != uv.size() || options.rounds > 1))
+    throw std::invalid_argument("pack_by_contact: a movable mask needs one flag per particle and one round");
   if (uv.empty() || !(options.contact > 0)) return report;
   SurfaceParticles p;
   p.uv = uv;

@@ -25,27 +25,39 @@ namespace {
 // All in D. A try moves the particles within kPatch of a defect (it and its ring of neighbours),
 // never further than kMostMove, so they end within kPatch + kMostMove of it and meet none of the
 // particles beyond kHeld, which are not in the try. A mover changes the valences of its
-// triangulation neighbours, which in a packing reach kFarthestNeighbour across a void: those
-// within kCounted are counted, from a triangulation that reaches kHull further, so that near the
-// counted ones it is the whole pattern's.
+// triangulation neighbours, at most a triangle's longest edge away: those within kCounted are
+// counted, from a triangulation that reaches kHull further, so that near the counted ones it is
+// the whole pattern's. (A flip between two particles that a mover's triangles touch may reach a
+// little further: the count is local, and each pass's recount of the whole pattern is reported.)
 constexpr double kPatch = 1.3;
 constexpr double kShake = 0.15;  // the random push's standard deviation per axis: the best of 0.1-0.3
 constexpr double kMostMove = 0.8;
 constexpr double kHeld = kPatch + kMostMove + 1.5;
-constexpr double kFarthestNeighbour = 1.8;
-constexpr double kCounted = kPatch + kMostMove + kFarthestNeighbour;
+constexpr double kLongestTriangleEdge = 2.5;  // as the relaxation's triangulation, at its largest spacing
+constexpr double kCounted = kPatch + kMostMove + kLongestTriangleEdge;
 constexpr double kHull = 1.5;
 constexpr double kTriangulated = kCounted + kHull;
-constexpr double kLongestTriangleEdge = 2.5;  // as the relaxation's triangulation
 constexpr double kRehashAfter = 1.0;  // a particle moved this far since the hash was built: build it again
 constexpr int kPackIterations = 300;
 
-// The same draws on every standard library: mt19937's output is specified, its distributions are not.
+// The same draws everywhere: mt19937's output is specified (its distributions are not), each draw
+// is its own statement (argument order is not), and the normal is Irwin-Hall's sum of twelve
+// uniforms, in + and - alone (log and cos differ between maths libraries).
 struct Random {
   std::mt19937 engine{20261129u};
   double uniform() { return (double(engine()) + 0.5) / 4294967296.0; }
-  double normal() { return std::sqrt(-2 * std::log(uniform())) * std::cos(2 * std::numbers::pi * uniform()); }
+  double normal() {
+    double sum = -6;
+    for (int k = 0; k < 12; ++k) sum += uniform();
+    return sum;
+  }
   int below(int n) { return int(engine() % std::uint32_t(n)); }
+  glm::dvec3 normal3() {
+    const double x = normal();
+    const double y = normal();
+    const double z = normal();
+    return {x, y, z};
+  }
 };
 
 std::vector<int> valences(const std::vector<glm::dvec2>& uv, const std::vector<glm::dvec3>& position, double longest) {
@@ -79,12 +91,12 @@ public:
   // The interior particles (on the map) that are not 6-valent, by the whole pattern's triangulation.
   // Also marks which particles are interior, for the tries until the next call.
   std::vector<int> defects() {
-    valence_ = valences(p_.uv, p_.lifted.position, kLongestTriangleEdge * d_);
+    const std::vector<int> valence = valences(p_.uv, p_.lifted.position, kLongestTriangleEdge * d_);
     interior_.resize(p_.size());
     for (int i = 0; i < p_.size(); ++i) interior_[i] = p_.lifted.triangle[i] >= 0 && is_interior(p_.lifted.position[i]);
     std::vector<int> out;
     for (int i = 0; i < p_.size(); ++i)
-      if (interior_[i] && valence_[i] != 6) out.push_back(i);
+      if (interior_[i] && valence[i] != 6) out.push_back(i);
     return out;
   }
 
@@ -121,7 +133,7 @@ public:
     lift_points(map_, patch.uv, patch.lifted);
     std::vector<glm::dvec3> push(patch.uv.size(), glm::dvec3(0));
     for (size_t h = 0; h < held.size(); ++h)
-      if (movable[h]) push[h] = kShake * d_ * glm::dvec3(random.normal(), random.normal(), random.normal());
+      if (movable[h]) push[h] = kShake * d_ * random.normal3();
     patch.step(map_, std::move(push));
     // Movers that start the interior depth from the boundary (as they are now: interior_ follows
     // every kept move) end within kMostMove of it: they keep the margin without being pushed from
@@ -138,6 +150,10 @@ public:
     packing.boundary = &boundary_;
     patch.keep_from_boundary(map_, boundary_, margin);
     if (pack_by_contact(map_, patch.uv, packing).overlapping_pairs > 0) return Outcome::Kept;
+    // The boundary push moves any particle under the margin, a held one too: such a try is not
+    // the arrangement that would be kept.
+    for (size_t h = 0; h < held.size(); ++h)
+      if (!movable[h] && patch.uv[h] != uv[held[h]]) return Outcome::Kept;
     patch.lift_dropping_outside(map_);
     if (patch.size() != int(held.size())) return Outcome::Kept;
     for (size_t h = 0; h < held.size(); ++h) {
@@ -178,8 +194,11 @@ private:
   void rehash() {
     hashed_at_ = p_.lifted.position;
     glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-    for (const glm::dvec3& x : hashed_at_) lo = glm::min(lo, x), hi = glm::max(hi, x);
-    hash_.emplace(hashed_at_, CellGrid(lo, hi, (kTriangulated + kRehashAfter) * d_), ElementHash::Fill::All);
+    for (int i = 0; i < p_.size(); ++i)
+      if (p_.lifted.triangle[i] >= 0) lo = glm::min(lo, hashed_at_[i]), hi = glm::max(hi, hashed_at_[i]);
+    hash_.emplace(hashed_at_, CellGrid(lo, hi, (kTriangulated + kRehashAfter) * d_), ElementHash::Fill::None);
+    for (int i = 0; i < p_.size(); ++i)
+      if (p_.lifted.triangle[i] >= 0) hash_->insert(i);
     stale_ = false;
   }
 
@@ -193,7 +212,6 @@ private:
   std::vector<glm::dvec3> hashed_at_;
   std::optional<ElementHash> hash_;
   bool stale_ = false;
-  std::vector<int> valence_;
 };
 
 }  // namespace
@@ -202,12 +220,12 @@ DefectHealingReport heal_defects(const SurfaceMap& map, std::vector<glm::dvec2>&
                                  const DefectHealingOptions& options, const std::atomic<bool>* stop) {
   const Stopwatch watch;
   DefectHealingReport report;
-  if (uv.size() < 7 || !(options.spacing > 0) || !(options.contact > 0)) return report;
+  if (uv.size() < 7 || !(options.spacing > 0) || !(options.contact > 0) || (stop && stop->load())) return report;
   Healer healer(map, uv, options);
   Random random;
   std::vector<int> defects = healer.defects();
   report.defects_before = int(defects.size());
-  for (int sweep = 0; sweep < options.sweeps && !defects.empty(); ++sweep) {
+  for (int sweep = 0; sweep < options.sweeps && !defects.empty() && !(stop && stop->load()); ++sweep) {
     // A fresh order each pass (Fisher-Yates on the specified engine), so no corner always goes first.
     for (int k = int(defects.size()) - 1; k > 0; --k) std::swap(defects[k], defects[random.below(k + 1)]);
     for (int centre : defects) {

@@ -16,7 +16,7 @@
 namespace paver {
 
 struct DefectHealingOptions {
-  double spacing = 0;         // D: the wanted bar length; the patches and reaches scale with it
+  double spacing = 0;         // the largest wanted bar length; the reaches scale with it (or with contact, if larger)
   double contact = 0;         // 3D centre distance that no pair may come under (as packed)
   double margin = 0;          // 3D distance every particle keeps from the surface's boundary
   double interior_depth = 0;  // particles nearer the boundary are not healed or counted (a hull's valence)

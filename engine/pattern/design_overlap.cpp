@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <cstdio>
 #include <limits>
@@ -36,10 +37,13 @@ std::string format(double v) {
 }
 
 // With a gap: the largest that this layout keeps (elements that touch by design keep none).
+// The figure is rounded down to three digits, so that the gap it names is one that fits.
 std::string largest_gap_text(double gap, double least_clearance, double spacing) {
   if (!(gap > 0)) return "";
-  if (least_clearance <= 1e-9 * spacing) return "; they touch with no gap at these scales, so none fits";
-  return "; the largest gap that fits is " + format(least_clearance) + " surface units";
+  const double fits = least_clearance + 1e-9 * spacing;  // the check's own rounding allowance
+  if (fits <= 2e-9 * spacing) return "; they touch with no gap at these scales, so none fits";
+  const double step = std::pow(10.0, std::floor(std::log10(fits)) - 2);
+  return "; the largest gap that fits is " + format(std::floor(fits / step) * step) + " surface units";
 }
 
 }  // namespace

@@ -249,7 +249,7 @@ RelaxedParticles relax_particles(const SurfaceMap& map, const std::vector<glm::d
     report.jammed = packed.removed;
     // Packing freezes dislocations in; healing cancels some (docs/topology.md).
     DefectHealingOptions healing;
-    healing.spacing = target.spacing;
+    healing.spacing = largest;
     healing.contact = target.contact;
     healing.margin = target.boundary_margin;
     healing.interior_depth = kInteriorDepth * target.spacing;
