@@ -85,6 +85,18 @@ std::vector<std::string> row_alignment_warnings(AlignAxis asked, const Pavement&
 // placement.fit_offset where no lattice is laid over the map to shift (a band paved seamlessly,
 // whose rows are shifted across it for the most elements anyway, and an adaptive pattern), or
 // where element edits name the elements of the lattice at the design's offset.
+// A band's width across (its area over its rims' mean length): what a stone must fit in. Empty
+// for other surfaces, and for a sheet with a hole, whose rims are no band's.
+std::string band_width_text(const SurfaceMap& map) {
+  if (!is_band(map) || !band_rims_alike(map)) return "";
+  const SurfaceMesh& m = map.mesh;
+  const double rims = 0.5 * (loop_length(m.positions, m.boundary_loops[0]) + loop_length(m.positions, m.boundary_loops[1]));
+  if (!(rims > 0)) return "";
+  char across[32];
+  std::snprintf(across, sizeof across, "%.3g", surface_area(m) / rims);  // an estimate: three digits
+  return "; the band is about " + std::string(across) + " across, its area over its rims' mean length";
+}
+
 std::optional<std::string> offset_fit_warning(const Design& design, const Pavement& pavement) {
   if (!design.placement.fit_offset || pavement.offset_fit) return std::nullopt;
   if (pavement.seamless)
@@ -249,7 +261,8 @@ PipelineResult run_pipeline(PipelineRequest request) {
     const double margin = is_atlas(*result.map) ? 0 : p.design.elements.margin;  // none on a closed surface
     const std::string why = p.eliminated == 0 ? "was dropped"
                             : margin > 0     ? "crossed its boundary or the margin along it"
-                                             : "crossed its boundary (the surface is narrower than the elements)";
+                                             : "crossed its boundary (the surface is narrower than the elements" +
+                                                   band_width_text(*result.map) + ")";
     const std::string what_to_do = margin > 0 ? "use a smaller margin (--margin, elements.margin: now " +
                                                     number_text(margin) + "), smaller stones or a smaller spacing"
                                               : "use smaller stones (--stone, the element scales) or a smaller spacing";

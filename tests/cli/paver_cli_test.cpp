@@ -497,6 +497,11 @@ TEST_F(PaverRun, ARingsSpacingAndRimRowsAreSaidAsGiven) {
   EXPECT_EQ(wide.exit_code, 2) << describe(wide);
   EXPECT_NE(wide.err.find("(the band closed at D 30 -> "), std::string::npos) << describe(wide);
   EXPECT_NE(wide.err.find("narrower than the elements"), std::string::npos) << describe(wide);
+  // ... and how wide the band is, the figure a stone must fit in (the ring is 6 mm across).
+  const std::string across = "; the band is about ";
+  const std::size_t at = wide.err.find(across);
+  ASSERT_NE(at, std::string::npos) << describe(wide);
+  EXPECT_NEAR(std::stod(wide.err.substr(at + across.size())), 6.0, 0.5) << describe(wide);
   EXPECT_FALSE(fs::exists(out));
   const CliResult rows = paver({"run", "assets/surfaces/ring_band.obj", "--stone", "1.5", "--gap", "0.1", "--rim-rows",
                                 "holes", "--quiet", "--formats", "ply", "--out", out.string()});
