@@ -1,10 +1,13 @@
 #include "pattern/band_closure.h"
 
+#include "core/input_error.h"
+
 #include <glm/geometric.hpp>
 
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <string>
 
 namespace paver {
 namespace {
@@ -47,7 +50,17 @@ BandClosure close_band(const SurfaceMap& map, const UnitCell& cell, const Placem
   closure.rotation_deg = std::atan2(v.y, v.x) * 180.0 / std::numbers::pi;
   const double around_length = map.period * placement.scale;  // T in the pattern plane
   const double steps = around_length / glm::length(v);
-  // At least three steps around: fewer would join a point to itself or twice to another.
+  // At least three steps around: fewer would join a point to itself or twice to another. Elements
+  // that may not come closer (stones, or a gap at its limit) then need room for three.
+  if (never_closer && steps < 3) {
+    char fit[32], most[32];
+    std::snprintf(fit, sizeof fit, "%.3g", steps);
+    std::snprintf(most, sizeof most, "%.4g", cell.spacing * steps / 3);
+    throw InputError(std::string("rows ") + (closure.rows_across ? "across" : "along") +
+                     " the band need 3 lattice steps around it, and " + fit +
+                     " fit at this D: the elements cannot come closer to close it (that way D is at most " + most +
+                     ")");
+  }
   closure.around = std::max(3, int(never_closer ? std::floor(steps) : std::round(steps)));
   closure.spacing = cell.spacing * around_length / (closure.around * glm::length(v));
   return closure;

@@ -32,7 +32,8 @@ struct BandClosure {
 // The closure of `cell` (at the design's spacing) on `map` (which wraps) under `placement`
 // (its scale counts; its rotation is replaced; band_rows along or across, not auto, which the
 // caller resolves by trying both): the nearest whole number of steps, or with
-// `never_closer` the largest that does not bring the elements closer (a design at its gap's limit).
+// `never_closer` the largest that does not bring the elements closer (stones, or a design at its
+// gap's limit): an InputError when fewer than three such steps go around.
 BandClosure close_band(const SurfaceMap& map, const UnitCell& cell, const Placement& placement,
                        bool never_closer = false);
 

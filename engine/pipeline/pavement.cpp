@@ -158,7 +158,23 @@ ClosedBand closed_band_with_more_elements(const SurfaceMap& map, const Design& d
       return 0;
     }
   };
-  ClosedBand across = closed_band(map, design, BandRows::Across), along = closed_band(map, design, BandRows::Along);
+  // A way that cannot close (stones too large for three steps around) lays nothing; when neither
+  // can, the error is the rows across's, the way auto takes on a tie.
+  const auto closed_or_none = [&](BandRows rows, std::string& error) -> std::optional<ClosedBand> {
+    try {
+      return closed_band(map, design, rows);
+    } catch (const InputError& e) {
+      error = e.what();
+      return std::nullopt;
+    }
+  };
+  std::string across_error, along_error;
+  std::optional<ClosedBand> across_closed = closed_or_none(BandRows::Across, across_error);
+  std::optional<ClosedBand> along_closed = closed_or_none(BandRows::Along, along_error);
+  if (!across_closed && !along_closed) throw InputError(across_error + "; " + along_error);
+  if (!across_closed || !along_closed) return std::move(across_closed ? *across_closed : *along_closed);
+  ClosedBand& across = *across_closed;
+  ClosedBand& along = *along_closed;
   const std::size_t across_count = laid_out(across), along_count = laid_out(along);
   bool take_along = along_count > across_count;
   std::size_t across_kept = 0, along_kept = 0;

@@ -3,6 +3,7 @@
 // across its width kept one stone in two columns (7 stones of 5 mm round a ring, a jeweller's
 // trial), where one row along it goes all round.
 #include "design/design.h"
+#include "input_error_assertions.h"
 #include "io/design_io.h"
 #include "pipeline/pavement.h"
 #include "surface_maps.h"
@@ -25,6 +26,19 @@ Design ring_of_stones(double stone) {
 Pavement paved_with_rows(const SurfaceMap& map, Design design, BandRows rows) {
   design.placement.band_rows = rows;
   return make_pavement(map, design);
+}
+
+// Stones keep their size, so a way round the band with room for fewer than three of them cannot
+// close it (it shrank D under the stones and was refused for their overlap, which the design does
+// not have): named, the run says why and how large D may be; auto leaves that way out.
+TEST(BandRows, AWayRoundWithNoRoomForThreeStonesIsRefusedSayingWhy) {
+  const SurfaceMap& map = *test::bundled_map("ring_band");
+  const std::string across = test::error_of([&] { paved_with_rows(map, ring_of_stones(15), BandRows::Across); });
+  EXPECT_TRUE(test::Contains(across, "rows across the band need 3 lattice steps around it")) << across;
+  EXPECT_TRUE(test::Contains(across, "that way D is at most")) << across;
+  const std::string automatic = test::error_of([&] { make_pavement(map, ring_of_stones(15)); });
+  EXPECT_FALSE(test::Contains(automatic, "overlap")) << automatic;
+  // Where both ways close, auto still compares them (the 5 mm ring below).
 }
 
 TEST(BandRows, AutoLaysARowOfLargeStonesAllRoundARing) {
