@@ -1,6 +1,7 @@
 #pragma once
 // One cache of surface maps per test binary: mapping is the slow part of most tests, and every
 // test of a surface wants the same map (build_surface_map with the default options).
+#include "map/lifting.h"
 #include "map/surface_map.h"
 #include "mesh/mesh_loader.h"
 #include "test_meshes.h"
@@ -10,6 +11,7 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <vector>
 
 namespace paver::test {
 
@@ -33,6 +35,22 @@ inline std::shared_ptr<const SurfaceMap> named_map(const std::string& name) {
   for (const std::string& scan : scanned_mesh_names())
     if (scan == name) return cached_map(scanned_mesh(name));
   return bundled_map(name);
+}
+
+// The flat unit square [0, 1]^2 at z = 0 (16 x 16 quads), mapped once: its map is a similarity
+// of it, so particles on it are measured in 3D after lifting.
+inline const SurfaceMap& flat_unit_square() {
+  static const SurfaceMap map =
+      build_surface_map(grid_surface(16, 16, [](double u, double v) { return glm::dvec3(u, v, 0); }));
+  return map;
+}
+
+// Map points lifted onto the surface.
+inline std::vector<glm::dvec3> lifted_positions(const SurfaceMap& map, const std::vector<glm::dvec2>& uv) {
+  LiftedPoints lifted;
+  lifted.resize(uv.size());
+  lift_points(map, uv, lifted);
+  return lifted.position;
 }
 
 }  // namespace paver::test

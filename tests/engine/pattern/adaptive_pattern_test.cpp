@@ -20,13 +20,6 @@
 namespace paver {
 namespace {
 
-std::vector<glm::dvec3> lifted_positions(const SurfaceMap& map, const std::vector<glm::dvec2>& uv) {
-  LiftedPoints lifted;
-  lifted.resize(uv.size());
-  lift_points(map, uv, lifted);
-  return lifted.position;
-}
-
 Design design_of(const SurfaceMap& map, Tessellation t) {
   Design d;
   d.pattern.tessellation = t;
@@ -44,7 +37,7 @@ TEST(AdaptivePattern, OnAFlatSquareTheParticlesFormARegularTriangleLattice) {
   const Pattern& p = adaptive.pattern;
   ASSERT_GT(p.point_count(), 300);
   EXPECT_TRUE(p.crossing_edges.empty());  // grown inside the surface: no lattice edge crosses out
-  const std::vector<glm::dvec3> xyz = lifted_positions(map, p.points);
+  const std::vector<glm::dvec3> xyz = test::lifted_positions(map, p.points);
   // Interior particles (farther than 1.5 D from the square's sides) with six neighbours.
   std::vector<int> valence(p.point_count(), 0);
   for (int e = 0; e < p.edge_count(); ++e) ++valence[p.edge_a[e]], ++valence[p.edge_b[e]];

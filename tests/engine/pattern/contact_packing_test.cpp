@@ -1,7 +1,7 @@
 #include "pattern/contact_packing.h"
 
 #include "map/lifting.h"
-#include "test_meshes.h"
+#include "surface_maps.h"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -12,19 +12,6 @@
 
 namespace paver {
 namespace {
-
-const SurfaceMap& flat_square() {
-  static const SurfaceMap map =
-      build_surface_map(test::grid_surface(16, 16, [](double u, double v) { return glm::dvec3(u, v, 0); }));
-  return map;
-}
-
-std::vector<glm::dvec3> positions(const SurfaceMap& map, const std::vector<glm::dvec2>& uv) {
-  LiftedPoints lifted;
-  lifted.resize(uv.size());
-  lift_points(map, uv, lifted);
-  return lifted.position;
-}
 
 // Random points inside the square's map (a similarity of it, maybe rotated): within 0.64 of the
 // map box's half-size from its centre, which a square turned any way contains (0.71).
@@ -49,23 +36,23 @@ double closest_pair(const std::vector<glm::dvec3>& x) {
 }
 
 TEST(ContactPacking, ALooseCrowdSpreadsUntilNoPairIsWithinContact) {
-  const SurfaceMap& map = flat_square();
+  const SurfaceMap& map = test::flat_unit_square();
   std::vector<glm::dvec2> uv = random_points(map, 150, 7);
   ContactPackingOptions options;
   options.contact = 0.06;  // 150 discs of 0.06 fill about 45% of the square's hexagonal packing
   options.margin = 0.03;
-  ASSERT_LT(closest_pair(positions(map, uv)), 0.5 * options.contact);  // it starts crowded
+  ASSERT_LT(closest_pair(test::lifted_positions(map, uv)), 0.5 * options.contact);  // it starts crowded
   const ContactPackingReport report = pack_by_contact(map, uv, options);
   EXPECT_EQ(report.overlapping_pairs, 0);
   EXPECT_EQ(report.removed, 0);
   ASSERT_EQ(uv.size(), 150u);
-  const std::vector<glm::dvec3> x = positions(map, uv);
+  const std::vector<glm::dvec3> x = test::lifted_positions(map, uv);
   EXPECT_GE(closest_pair(x), options.contact * (1 - kSettledOverlap));
   for (const glm::dvec3& p : x) EXPECT_GE(std::min({p.x, p.y, 1 - p.x, 1 - p.y}), options.margin * 0.999);
 }
 
 TEST(ContactPacking, AnOverfullSquareLosesItsJammedParticlesAFewPerRound) {
-  const SurfaceMap& map = flat_square();
+  const SurfaceMap& map = test::flat_unit_square();
   // 400 discs of 0.06 need 1.25 times the square (less its margin) even packed hexagonally.
   std::vector<glm::dvec2> uv = random_points(map, 400, 11);
   ContactPackingOptions options;
@@ -78,7 +65,7 @@ TEST(ContactPacking, AnOverfullSquareLosesItsJammedParticlesAFewPerRound) {
   EXPECT_EQ(report.overlapping_pairs, 0);
   EXPECT_GT(report.removed, 0);
   EXPECT_EQ(int(uv.size()), 400 - report.removed);
-  EXPECT_GE(closest_pair(positions(map, uv)), options.contact * (1 - kSettledOverlap));
+  EXPECT_GE(closest_pair(test::lifted_positions(map, uv)), options.contact * (1 - kSettledOverlap));
   // No more removed than jamming asks: at least 75% of the hexagonal packing's count stays
   // (the square less its margin, 0.94 x 0.94, over sqrt(3)/2 x 0.06^2 per disc: about 283).
   EXPECT_GT(double(uv.size()), 0.75 * 0.94 * 0.94 / (std::sqrt(3.0) / 2 * 0.06 * 0.06));

@@ -3,7 +3,7 @@
 #include "map/lifting.h"
 #include "pattern/contact_packing.h"
 #include "pattern/surface_triangulation.h"
-#include "test_meshes.h"
+#include "surface_maps.h"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -16,24 +16,11 @@
 namespace paver {
 namespace {
 
-const SurfaceMap& flat_square() {
-  static const SurfaceMap map =
-      build_surface_map(test::grid_surface(16, 16, [](double u, double v) { return glm::dvec3(u, v, 0); }));
-  return map;
-}
-
-std::vector<glm::dvec3> positions(const SurfaceMap& map, const std::vector<glm::dvec2>& uv) {
-  LiftedPoints lifted;
-  lifted.resize(uv.size());
-  lift_points(map, uv, lifted);
-  return lifted.position;
-}
-
 // Interior (kDepth from the square's sides) particles that are not 6-valent in the surface
 // triangulation of all of them: the count the healing reports, made here from the particles alone.
 constexpr double kContact = 0.05, kMargin = 0.03, kDepth = 2 * kContact;
 int interior_defects(const SurfaceMap& map, const std::vector<glm::dvec2>& uv) {
-  const std::vector<glm::dvec3> x = positions(map, uv);
+  const std::vector<glm::dvec3> x = test::lifted_positions(map, uv);
   std::vector<int> valence(uv.size(), 0);
   std::vector<std::pair<int, int>> edges;
   for (const glm::ivec3& t : triangulate_surface_points(uv, x, 2.5 * kContact))
@@ -79,7 +66,7 @@ DefectHealingOptions healing_options() {
 }
 
 TEST(DefectHealing, AJammedCrowdKeepsItsCountAndContactWithFewerDefects) {
-  const SurfaceMap& map = flat_square();
+  const SurfaceMap& map = test::flat_unit_square();
   const std::vector<glm::dvec2> packed = jammed_crowd(map);
   std::vector<glm::dvec2> uv = packed;
   const DefectHealingReport report = heal_defects(map, uv, healing_options());
@@ -93,7 +80,7 @@ TEST(DefectHealing, AJammedCrowdKeepsItsCountAndContactWithFewerDefects) {
   EXPECT_LE(report.moved, report.tries);
   // Every pair, independently of the healing's own neighbourhoods: no pair under the contact
   // the packing settles at, and every particle its margin from the sides.
-  const std::vector<glm::dvec3> x = positions(map, uv);
+  const std::vector<glm::dvec3> x = test::lifted_positions(map, uv);
   for (size_t i = 0; i < x.size(); ++i) {
     EXPECT_GE(std::min({x[i].x, x[i].y, 1 - x[i].x, 1 - x[i].y}), kMargin * (1 - 1e-9)) << i;
     for (size_t j = i + 1; j < x.size(); ++j)
@@ -102,7 +89,7 @@ TEST(DefectHealing, AJammedCrowdKeepsItsCountAndContactWithFewerDefects) {
 }
 
 TEST(DefectHealing, TheSameCrowdHealsTheSameWay) {
-  const SurfaceMap& map = flat_square();
+  const SurfaceMap& map = test::flat_unit_square();
   std::vector<glm::dvec2> first = jammed_crowd(map), second = first;
   heal_defects(map, first, healing_options());
   heal_defects(map, second, healing_options());
@@ -110,7 +97,7 @@ TEST(DefectHealing, TheSameCrowdHealsTheSameWay) {
 }
 
 TEST(DefectHealing, AStopLeavesTheParticlesAsTheyWere) {
-  const SurfaceMap& map = flat_square();
+  const SurfaceMap& map = test::flat_unit_square();
   const std::vector<glm::dvec2> packed = jammed_crowd(map);
   std::vector<glm::dvec2> uv = packed;
   const std::atomic<bool> stop{true};
