@@ -127,10 +127,16 @@ public:
     const int before = defects_among(uv, position, counted);
     if (before == 0) return Outcome::Kept;  // healed by an earlier try nearby
 
-    SurfaceParticles patch;
-    for (int k : held) patch.uv.push_back(uv[k]);
-    patch.lifted.resize(patch.uv.size());
-    lift_points(map_, patch.uv, patch.lifted);
+    SurfaceParticles patch;  // the held particles as lifted already: no second point location
+    patch.lifted.resize(held.size());
+    for (size_t h = 0; h < held.size(); ++h) {
+      const int i = near[held[h]];
+      patch.uv.push_back(p_.uv[i]);
+      patch.lifted.triangle[h] = p_.lifted.triangle[i];
+      patch.lifted.position[h] = p_.lifted.position[i];
+      patch.lifted.normal[h] = p_.lifted.normal[i];
+      patch.lifted.curvature[h] = p_.lifted.curvature[i];
+    }
     std::vector<glm::dvec3> push(patch.uv.size(), glm::dvec3(0));
     for (size_t h = 0; h < held.size(); ++h)
       if (movable[h]) push[h] = kShake * d_ * random.normal3();

@@ -3,9 +3,10 @@
 // them are not the few the surface's curvature needs but bound 5-7 pairs (dislocations) frozen in
 // by the packing: on the bunny head, 105 of 123 interior defects sit next to one of the opposite
 // sign. A try shakes the particles around one defect (random tangent pushes), packs them to
-// contact again against their fixed neighbours, and keeps the new arrangement only when the
-// triangulation around it has fewer defects and no pair is under contact; otherwise the patch is
-// put back. A zero-temperature search with collective moves (docs/topology.md).
+// contact again against their fixed neighbours, and keeps the new arrangement when no pair is
+// under contact (as the packing settles it) and the triangulation around it has no more defects
+// than before; otherwise the patch is put back. A zero-temperature search with collective moves,
+// whose even trades let a dislocation wander until it cancels (docs/topology.md).
 #include "map/surface_map.h"
 
 #include <glm/vec2.hpp>

@@ -36,12 +36,12 @@ std::string format(double v) {
   return b;
 }
 
-// With a gap: the largest that this layout keeps (elements that touch by design keep none).
-// The figure is rounded down to three digits, so that the gap it names is one that fits.
-std::string largest_gap_text(double gap, double least_clearance, double spacing) {
+// With a gap: the largest that this layout keeps (elements that touch by design keep none), with
+// the check's own `rounding` allowance, rounded down to three digits so that it is one that fits.
+std::string largest_gap_text(double gap, double least_clearance, double rounding) {
   if (!(gap > 0)) return "";
-  const double fits = least_clearance + 1e-9 * spacing;  // the check's own rounding allowance
-  if (fits <= 2e-9 * spacing) return "; they touch with no gap at these scales, so none fits";
+  const double fits = least_clearance + rounding;
+  if (fits <= 2 * rounding) return "; they touch with no gap at these scales, so none fits";
   const double step = std::pow(10.0, std::floor(std::log10(fits)) - 2);
   return "; the largest gap that fits is " + format(std::floor(fits / step) * step) + " surface units";
 }
@@ -85,14 +85,14 @@ void check_design_overlaps(const UnitCell& cell, const ElementsDesign& design, d
   size_t worst_i = 0, worst_j = 0;
   double worst_shortfall = 0;
   double least_clearance = std::numeric_limits<double>::infinity();  // the largest gap that fits
+  // The lattice's positions come from cos/sin: elements that touch by design (scale 1 on a
+  // triangle lattice) sit at D up to rounding, which must not read as an overlap.
+  const double rounding = 1e-9 * spacing;
   for (size_t i : own)
     for (size_t j = 0; j < all.size(); ++j) {
       if (j == i) continue;
       const double d = glm::length(all[i].centre - all[j].centre);
       least_clearance = std::min(least_clearance, clearance_between(d, 2 * all[i].radius, 2 * all[j].radius));
-      // The lattice's positions come from cos/sin: elements that touch by design (scale 1 on a
-      // triangle lattice) sit at D up to rounding, which must not read as an overlap.
-      const double rounding = 1e-9 * spacing;
       if (!elements_collide(d + rounding, 2 * all[i].radius, 2 * all[j].radius, gap)) continue;
       const double shortfall = contact_distance(2 * all[i].radius, 2 * all[j].radius, gap) - d;
       if (shortfall > worst_shortfall) worst_shortfall = shortfall, worst_i = i, worst_j = j;
@@ -112,7 +112,7 @@ void check_design_overlaps(const UnitCell& cell, const ElementsDesign& design, d
                          ? "; at this spacing and gap their scale can be at most " + format((d - gap) / spacing) +
                                " (now " + format(2 * a.radius / spacing) + ")"
                          : "") +
-                    largest_gap_text(gap, least_clearance, spacing) +
+                    largest_gap_text(gap, least_clearance, rounding) +
                     "; reduce their scales, move t" + (gap > 0 ? ", reduce the gap or raise the spacing" : "") +
                     " (or set elements.allow_overlap to allow it)");
 }

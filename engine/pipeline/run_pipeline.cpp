@@ -82,13 +82,10 @@ std::vector<std::string> row_alignment_warnings(AlignAxis asked, const Pavement&
   return out;
 }
 
-// placement.fit_offset where no lattice is laid over the map to shift (a band paved seamlessly,
-// whose rows are shifted across it for the most elements anyway, and an adaptive pattern), or
-// where element edits name the elements of the lattice at the design's offset.
 // A band's width across (its area over its rims' mean length): what a stone must fit in. Empty
 // for other surfaces, and for a sheet with a hole, whose rims are no band's.
 std::string band_width_text(const SurfaceMap& map) {
-  if (!is_band(map) || !band_rims_alike(map)) return "";
+  if (!band_rims_alike(map)) return "";  // a band, and not a sheet with a hole
   const SurfaceMesh& m = map.mesh;
   const double rims = 0.5 * (loop_length(m.positions, m.boundary_loops[0]) + loop_length(m.positions, m.boundary_loops[1]));
   if (!(rims > 0)) return "";
@@ -97,6 +94,9 @@ std::string band_width_text(const SurfaceMap& map) {
   return "; the band is about " + std::string(across) + " across, its area over its rims' mean length";
 }
 
+// placement.fit_offset where no lattice is laid over the map to shift (a band paved seamlessly,
+// whose rows are shifted across it for the most elements anyway, and an adaptive pattern), or
+// where element edits name the elements of the lattice at the design's offset.
 std::optional<std::string> offset_fit_warning(const Design& design, const Pavement& pavement) {
   if (!design.placement.fit_offset || pavement.offset_fit) return std::nullopt;
   if (pavement.seamless)
