@@ -85,8 +85,8 @@ const bool registered = [] {
   const fs::path head = fs::path(PAVER_SOURCE_DIR) / "assets/scanned/bunnyhead.obj";
   for (const auto tessellation : {paver::Tessellation::Triangle, paver::Tessellation::Hexagon})
     for (const auto topology : {paver::Topology::Lattice, paver::Topology::Adaptive})
-      benchmark::RegisterBenchmark(("pave/bunnyhead/" + std::string(paver::tessellation_name(tessellation)) + "/" +
-                                    std::string(paver::topology_name(topology)))
+      benchmark::RegisterBenchmark(("pave/bunnyhead/" + std::string(paver::enum_name(tessellation)) + "/" +
+                                    std::string(paver::enum_name(topology)))
                                        .c_str(),
                                    pave, head, tessellation, topology)
           ->UseRealTime()->Unit(benchmark::kMillisecond)->Iterations(3);

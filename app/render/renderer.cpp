@@ -2,7 +2,7 @@
 
 #include "element_instance.h"
 
-#include "elements/contact_rule.h"
+#include "core/contact_rule.h"
 
 #include "paver/compute/gpu_buffer.h"
 #include "paver/compute/vulkan_objects.h"

@@ -123,11 +123,11 @@ void ScriptRunner::act(Studio& s, const ScriptCommand& c) {
   Document& doc = s.doc;
   switch (c.kind) {
     case Kind::Open: open_surface(s, c.text); break;
-    case Kind::CutAxis: set_cut_axis(s, *cut_axis_from_name(c.text)); break;
+    case Kind::CutAxis: set_cut_axis(s, *enum_from_name<CutAxis>(c.text)); break;
     case Kind::Design:
       if (open_design_file(doc, c.text)) s.ui.design_path = c.text;
       break;
-    case Kind::Pattern: change_design(doc, with_tessellation(doc.design, *tessellation_from_name(c.text))); break;
+    case Kind::Pattern: change_design(doc, with_tessellation(doc.design, *enum_from_name<Tessellation>(c.text))); break;
     case Kind::Spacing: {
       Design d = doc.design;
       d.pattern.spacing = c.number;

@@ -87,7 +87,7 @@ void take_run_outcome(Studio& s) {
                            std::to_string(p.elements.size()) + " elements, " +
                            std::to_string(p.after.contact_violations) + " contact violations; " +
                            std::to_string(p.solve.iterations) + " iterations (" +
-                           std::string(stop_reason_name(p.solve.reason)) + ")" +
+                           std::string(enum_name(p.solve.reason)) + ")" +
                            // Said where a script's log and the eye see it, not only in the Elements panel.
                            (p.deletions_missed > 0
                                 ? "; " + count_text(p.deletions_missed, "deletion", "deletions") +

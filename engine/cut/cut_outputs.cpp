@@ -11,8 +11,6 @@
 
 namespace paver {
 
-std::string_view cutter_name(CutterKind kind) { return kind == CutterKind::Seat ? "seat" : "element"; }
-
 void write_cut_files(const std::filesystem::path& folder, const CutSolid& cut, const Elements& stones, Units units,
                      const ShapeMesh* custom, const std::atomic<bool>* stop) {
   write_mesh_stl(folder / "cut.stl", cut.mesh, "cut solid", stop);
@@ -21,7 +19,7 @@ void write_cut_files(const std::filesystem::path& folder, const CutSolid& cut, c
 
 nlohmann::json cut_json(const CutSolid& cut, CutterKind cutter, double thickness, Units units) {
   const double mm = millimetres_per_unit(units), mm3 = mm * mm * mm;
-  return {{"cutter", cutter_name(cutter)},
+  return {{"cutter", enum_name(cutter)},
           {"thickness", thickness},
           {"cutters", cut.cutters},
           {"united_cutters", cut.united_cutters},
@@ -40,7 +38,7 @@ nlohmann::json cut_json(const CutSolid& cut, CutterKind cutter, double thickness
 
 std::string stones_stand_out_warning(const CutSolid& cut, double thickness, Units units) {
   if (cut.deepest_stone <= thickness) return {};
-  const std::string unit(units_name(units));
+  const std::string unit(enum_name(units));
   char text[320];
   std::snprintf(text, sizeof text,
                 "the stones reach %.3g %s below the surface and the metal is %.3g %s thick: their culets stand out "

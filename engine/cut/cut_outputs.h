@@ -13,7 +13,6 @@
 
 namespace paver {
 
-std::string_view cutter_name(CutterKind kind);  // "seat", "element"
 
 // Writes `folder`/cut.stl and `folder`/cut.3mf; `custom` is the design's custom shape when a
 // stone uses it. Throws InputError naming the file; Interrupted when `stop` becomes true.

@@ -1,9 +1,9 @@
 #pragma once
 // The whole design of a pavement: pattern, operators, elements, placement and the solver
 // parameters of section 5. The CLI and the editor share it; design.json is its file form.
-#include "elements/element_shape.h"
-#include "pattern/placement.h"
-#include "pattern/unit_cell.h"
+#include "design/placement.h"
+#include "design/shape_kind.h"
+#include "design/tessellation.h"
 #include "design/element_edits.h"
 #include "design/guidance.h"
 #include "design/solver_parameters.h"
@@ -21,20 +21,28 @@ namespace paver {
 // default) the lattice unless it measurably tears or leaves bare patches and the adaptive pattern
 // does better (pipeline/pavement.h).
 enum class Topology { Lattice, Adaptive, Auto };
-std::string_view topology_name(Topology t);  // "lattice", "adaptive", "auto"
-std::optional<Topology> topology_from_name(std::string_view name);
+template <>
+struct EnumNames<Topology> {
+  static constexpr EnumName<Topology> table[] = {
+      {Topology::Lattice, "lattice"}, {Topology::Adaptive, "adaptive"}, {Topology::Auto, "auto"}};
+};
 
 // Rows of elements that follow the surface's rims (elements/rim_rows.h): none (the pattern is
 // trimmed at the rims, the default), around the holes only, or along every rim (the outer edge too).
 enum class RimRows { None, Holes, All };
-std::string_view rim_rows_name(RimRows r);  // "none", "holes", "all"
-std::optional<RimRows> rim_rows_from_name(std::string_view name);
+template <>
+struct EnumNames<RimRows> {
+  static constexpr EnumName<RimRows> table[] = {{RimRows::None, "none"}, {RimRows::Holes, "holes"}, {RimRows::All, "all"}};
+};
 
 // The unit of the surface's coordinates (and so of D, the gap and every length in a design).
 // Stone sizes and carats are reported in millimetres from it.
 enum class Units { Millimetre, Centimetre, Metre, Inch };
-std::string_view units_name(Units u);  // "mm", "cm", "m", "in"
-std::optional<Units> units_from_name(std::string_view name);
+template <>
+struct EnumNames<Units> {
+  static constexpr EnumName<Units> table[] = {
+      {Units::Millimetre, "mm"}, {Units::Centimetre, "cm"}, {Units::Metre, "m"}, {Units::Inch, "in"}};
+};
 double millimetres_per_unit(Units u);
 
 // How many cells away an edge operator's `to` may lie, in each direction.

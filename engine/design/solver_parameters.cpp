@@ -38,14 +38,6 @@ const Table& table() {
 
 }  // namespace
 
-std::string_view filter_base_name(FilterBase b) { return b == FilterBase::Initial ? "initial" : "current"; }
-
-std::optional<FilterBase> filter_base_from_name(std::string_view name) {
-  if (name == "current") return FilterBase::Current;
-  if (name == "initial") return FilterBase::Initial;
-  return std::nullopt;
-}
-
 bool ValueRange::contains(double v) const {
   // Written as the allowed condition so that NaN, which fails every comparison, is outside.
   if (!std::isfinite(v)) return false;
@@ -77,7 +69,7 @@ std::string default_text(const SolverParameter& p) {
   return std::visit(
       [&](auto member) -> std::string {
         const auto value = defaults.*member;
-        if constexpr (std::is_same_v<decltype(value), const FilterBase>) return std::string(filter_base_name(value));
+        if constexpr (std::is_same_v<decltype(value), const FilterBase>) return std::string(enum_name(value));
         else return number_text(double(value));
       },
       p.member);
@@ -85,7 +77,7 @@ std::string default_text(const SolverParameter& p) {
 
 std::optional<std::string> set_solver_parameter(SolverParams& params, const SolverParameter& p, std::string_view text) {
   if (const auto* choice = std::get_if<FilterBase SolverParams::*>(&p.member)) {
-    const auto base = filter_base_from_name(text);
+    const auto base = enum_from_name<FilterBase>(text);
     if (!base) return "must be \"current\" or \"initial\"";
     params.**choice = *base;
     return std::nullopt;

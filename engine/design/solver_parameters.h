@@ -5,6 +5,8 @@
 // SolverParams struct, the design.json reader and writer, validation, the CLI flags, the studio's
 // panel, the script's `set solver.<name>` and the docs table (docs/parameters.md, checked by a test).
 // Adding a parameter is adding a row (and using it in the solver).
+#include "core/enum_names.h"
+
 #include <limits>
 #include <optional>
 #include <span>
@@ -20,8 +22,10 @@ enum class FilterBase {
   Initial,  // fixed at initialisation
 };
 
-std::string_view filter_base_name(FilterBase b);  // "current", "initial"
-std::optional<FilterBase> filter_base_from_name(std::string_view name);
+template <>
+struct EnumNames<FilterBase> {
+  static constexpr EnumName<FilterBase> table[] = {{FilterBase::Current, "current"}, {FilterBase::Initial, "initial"}};
+};
 
 // A closed, open or half-open interval; infinite ends are unbounded (values must still be finite).
 struct ValueRange {

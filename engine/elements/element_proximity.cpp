@@ -1,7 +1,7 @@
 #include "elements/element_proximity.h"
 
-#include "elements/element_hash.h"
-#include "elements/contact_rule.h"
+#include "core/point_hash.h"
+#include "core/contact_rule.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -31,7 +31,7 @@ Box bounding_box(const Elements& e) {
 
 // Cells at least `cell` wide over the elements' box (callers pass one largest diameter plus the
 // gap, so any violating pair lies in the same or adjacent cells); CellGrid may widen them.
-ElementHash hash_over(const Elements& e, const Box& box, double cell) { return ElementHash(e, CellGrid(box.lo, box.hi, cell)); }
+PointHash hash_over(const Elements& e, const Box& box, double cell) { return PointHash(e.position, CellGrid(box.lo, box.hi, cell)); }
 
 double largest_diameter(const Elements& e) {
   double d = 0;
@@ -88,7 +88,7 @@ CollisionTally total_of(const std::vector<CollisionTally>& tallies) {
 
 // Calls found(collision) for every colliding pair (i < j) with i in [begin, end), in no particular order.
 template <class Found>
-void collisions_from(const ElementHash& hash, const Elements& elements, double gap, int begin, int end, Found&& found) {
+void collisions_from(const PointHash& hash, const Elements& elements, double gap, int begin, int end, Found&& found) {
   for (int i = begin; i < end; ++i) {
     hash.for_each_near(elements.position[i], [&](int j) {
       if (j <= i) return;
@@ -99,14 +99,14 @@ void collisions_from(const ElementHash& hash, const Elements& elements, double g
 }
 
 // Any violating pair lies in the same or adjacent cells of this hash.
-ElementHash collision_hash(const Elements& elements, double gap) {
+PointHash collision_hash(const Elements& elements, double gap) {
   return hash_over(elements, bounding_box(elements), largest_diameter(elements) + gap);
 }
 
 }  // namespace
 
 CollisionTally count_collisions(const Elements& elements, double gap) {
-  const ElementHash hash = collision_hash(elements, gap);
+  const PointHash hash = collision_hash(elements, gap);
   const int n = int(elements.size());
   std::vector<CollisionTally> tallies(std::size_t(chunk_count(n)));
   for_each_chunk(n, [&](int chunk, int begin, int end) {
@@ -117,7 +117,7 @@ CollisionTally count_collisions(const Elements& elements, double gap) {
 }
 
 std::vector<Collision> find_collisions(const Elements& elements, double gap) {
-  const ElementHash hash = collision_hash(elements, gap);
+  const PointHash hash = collision_hash(elements, gap);
   const int n = int(elements.size());
   std::vector<std::vector<Collision>> parts(std::size_t(chunk_count(n)));
   for_each_chunk(n, [&](int chunk, int begin, int end) {
@@ -154,7 +154,7 @@ std::array<std::vector<double>, K> smallest_over_others(const Elements& elements
   for (int i = 0; i < n; ++i) pending[i] = i;
   bool first = true;
   for (double width = 2 * largest_diameter(elements); !pending.empty(); width *= 4) {
-    const ElementHash hash = hash_over(elements, box, width);
+    const PointHash hash = hash_over(elements, box, width);
     const bool spans_all = hash.cell() >= extent;
     const int m = int(pending.size());
     std::vector<std::vector<int>> unresolved(std::size_t(chunk_count(m)));
@@ -263,7 +263,7 @@ std::vector<int> vertex_valences(const Elements& elements, double shell) {
   }
   std::nth_element(finite.begin(), finite.begin() + finite.size() / 2, finite.end());
   const double reach = 1.5 * finite[finite.size() / 2];
-  const ElementHash hash = hash_over(elements, bounding_box(elements), shell * reach);
+  const PointHash hash = hash_over(elements, bounding_box(elements), shell * reach);
   for_each_chunk(n, [&](int, int begin, int end) {
     for (int i = begin; i < end; ++i) {
       if (!is_vertex(i)) continue;

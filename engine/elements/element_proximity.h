@@ -14,7 +14,7 @@ struct Collision {
   double clearance;  // distance - r_i - r_j: free space between the footprints (negative = overlap)
 };
 
-// Pairs that collide by the contact rule with `gap` (elements/contact_rule.h), sorted by (i, j).
+// Pairs that collide by the contact rule with `gap` (core/contact_rule.h), sorted by (i, j).
 std::vector<Collision> find_collisions(const Elements& elements, double gap);
 
 // The same pairs counted, with the worst overlap, in constant memory: what the report needs, also

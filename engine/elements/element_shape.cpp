@@ -1,4 +1,5 @@
 #include "elements/element_shape.h"
+#include "design/design_keys.h"
 
 #include "core/input_error.h"
 #include "mesh/read_mesh_file.h"
@@ -189,8 +190,8 @@ ShapeMesh make_builtin_shape(ShapeKind kind, ShapeDetail detail) {
     case ShapeKind::Disc: return make_prism(minimal ? 6 : coarse ? 12 : 32, 0.2);
     case ShapeKind::Custom: break;
   }
-  throw InputError("the custom element shape is not built in; load it from a file with "
-                   "load_custom_shape (design key 'elements.custom_shape')");
+  throw InputError("the custom element shape is not built in; load it from a file with load_custom_shape (design "
+                   "key '" + key_path(Key::custom_shape) + "')");
 }
 
 ShapeMesh load_custom_shape(const std::filesystem::path& path) {
@@ -252,24 +253,6 @@ long open_edge_count(const ShapeMesh& shape) {
   for (const glm::ivec3& t : shape.triangles)
     for (int k = 0; k < 3; ++k) ++faces_on[std::minmax(t[k], t[(k + 1) % 3])];
   return std::count_if(faces_on.begin(), faces_on.end(), [](const auto& edge) { return edge.second == 1; });
-}
-
-std::string_view shape_name(ShapeKind kind) {
-  switch (kind) {
-    case ShapeKind::Sphere: return "sphere";
-    case ShapeKind::Gem: return "gem";
-    case ShapeKind::HexPrism: return "hex_prism";
-    case ShapeKind::Disc: return "disc";
-    case ShapeKind::Custom: return "custom";
-  }
-  return "unknown";
-}
-
-std::optional<ShapeKind> shape_from_name(std::string_view name) {
-  for (ShapeKind kind : {ShapeKind::Sphere, ShapeKind::Gem, ShapeKind::HexPrism, ShapeKind::Disc,
-                         ShapeKind::Custom})
-    if (shape_name(kind) == name) return kind;
-  return std::nullopt;
 }
 
 }  // namespace paver

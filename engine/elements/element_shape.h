@@ -2,6 +2,7 @@
 // Element shapes (section 4.1): unit-diameter triangle meshes centred at the origin, with +Z the
 // surface normal they get aligned to. The widest horizontal extent is 1 so that scaling by the
 // element diameter makes the element exactly that wide.
+#include "design/shape_kind.h"
 #include "mesh/polygon_soup.h"
 
 #include <glm/vec3.hpp>
@@ -13,8 +14,6 @@
 #include <vector>
 
 namespace paver {
-
-enum class ShapeKind { Sphere, Gem, HexPrism, Disc, Custom };
 
 struct ShapeMesh {
   std::vector<glm::vec3> positions;   // #V, inside the unit-diameter disc in the XY plane (the contact
@@ -51,8 +50,5 @@ ShapeMesh custom_shape_from_soup(const PolygonSoup& soup, const std::string& sou
 // Edges of `shape` with one face only: a closed shape has none. An open custom shape exports as
 // open surfaces, which a printer or a boolean cannot take (the pipeline warns).
 long open_edge_count(const ShapeMesh& shape);
-
-std::string_view shape_name(ShapeKind kind);  // "sphere", "gem", "hex_prism", "disc", "custom"
-std::optional<ShapeKind> shape_from_name(std::string_view name);
 
 }  // namespace paver

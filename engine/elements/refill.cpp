@@ -2,8 +2,8 @@
 
 #include "core/stopwatch.h"
 #include "elements/boundary_postprocess.h"
-#include "elements/element_hash.h"
-#include "elements/contact_rule.h"
+#include "core/point_hash.h"
+#include "core/contact_rule.h"
 #include "map/boundary_walk.h"
 #include "map/lifting.h"
 #include "map/uv_from_tangent.h"
@@ -26,7 +26,7 @@ constexpr int kMaxWaves = 1000;  // a hole is crossed in about its width / D wav
 
 // Whether a new element of `diameter` at `p` keeps the contact rule with every element and lies
 // at least `spacing` from each (spacing no more than the hash's cell).
-bool clears_all(const ElementHash& hash, const Elements& elements, const glm::dvec3& p, double diameter, double gap,
+bool clears_all(const PointHash& hash, const Elements& elements, const glm::dvec3& p, double diameter, double gap,
                 double spacing) {
   bool clear = true;
   hash.for_each_near(p, [&](int j) {
@@ -74,7 +74,7 @@ RefillReport refill_bare_regions(const SurfaceMap& map, Elements& elements, cons
   const DensityRule density(design, area_per_vertex_element);
   const auto local_spacing = [&](double curvature) { return density.spacing(map, curvature); };
   const CellGrid grid = element_grid(map, elements, diameter, gap, density.widest());
-  ElementHash hash(elements, grid);
+  PointHash hash(elements.position, grid);
 
   std::vector<int> seeds(elements.size());
   for (int i = 0; i < int(elements.size()); ++i) seeds[i] = i;
@@ -167,7 +167,7 @@ void refill_seams(const SurfaceMap& map, Elements& elements, const Design& desig
   const double diameter = spec.vertex.scale * design.pattern.spacing;
   const DensityRule density(design, area_per_vertex_element);
   const CellGrid grid = element_grid(map, elements, diameter, spec.gap, density.widest());
-  ElementHash hash(elements, grid);
+  PointHash hash(elements.position, grid);
   // Along the seam in steps of a tenth of a diameter; across it at these shares of a diameter into
   // the chart walked (the other side is walked with its own chart's loop).
   constexpr std::array<double, 4> kInto = {1e-6, 0.15, 0.3, 0.45};

@@ -2,8 +2,8 @@
 
 #include "core/stopwatch.h"
 #include "elements/boundary_postprocess.h"
-#include "elements/contact_rule.h"
-#include "elements/element_hash.h"
+#include "core/contact_rule.h"
+#include "core/point_hash.h"
 #include "map/boundary_index.h"
 #include "map/boundary_walk.h"
 #include "map/lifting.h"
@@ -161,7 +161,7 @@ RimRowReport place_rim_rows(const SurfaceMap& map, Elements& elements, const Des
     const int placed_here = int(trial.size());
     // Against every row element kept so far, this rim's too (a tight bend folds the offset curve;
     // two holes lie close): one that would touch is left out.
-    ElementHash placed(row, surface_grid(mesh, neighbours));
+    PointHash placed(row.position, surface_grid(mesh, neighbours));
     int kept = 0;
     for (int i = 0; i < placed_here; ++i) {
       bool clear = keeps_margin(boundary.nearest(trial.position[i]).distance, diameter, margin);
@@ -183,7 +183,7 @@ RimRowReport place_rim_rows(const SurfaceMap& map, Elements& elements, const Des
   if (row.size() > 0) {
     double largest = diameter;
     for (double d : elements.diameter) largest = std::max(largest, d);
-    const ElementHash hash(elements, surface_grid(mesh, 0.5 * (largest + diameter) + spec.gap));
+    const PointHash hash(elements.position, surface_grid(mesh, 0.5 * (largest + diameter) + spec.gap));
     std::vector<std::uint8_t> remove(elements.size(), 0);
     for (std::size_t i = 0; i < row.size(); ++i)
       hash.for_each_near(row.position[i], [&](int j) {

@@ -137,7 +137,7 @@ const char* kind_label(ElementKind kind) {
 }
 
 std::string mesh_name(ShapeKind shape, ElementKind kind) {
-  return std::string(shape_name(shape)) + " (" + kind_label(kind) + ")";
+  return std::string(enum_name(shape)) + " (" + kind_label(kind) + ")";
 }
 
 }  // namespace

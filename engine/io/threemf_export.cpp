@@ -158,7 +158,7 @@ void write_pavement_3mf(const std::filesystem::path& path, const SurfaceMesh* su
     vertices.clear();
     for (const glm::vec3& p : shape.positions) vertices.push_back({{p.x, p.y, p.z}});
     triangles_of(shape.triangles);
-    add_mesh_object(w, model, shape_objects[k], std::string(shape_name(kind)) + " (unit diameter)", vertices,
+    add_mesh_object(w, model, shape_objects[k], std::string(enum_name(kind)) + " (unit diameter)", vertices,
                     triangles);
   }
 

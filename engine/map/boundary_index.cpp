@@ -1,6 +1,6 @@
 #include "map/boundary_index.h"
 
-#include "elements/cell_grid.h"
+#include "core/cell_grid.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>

@@ -2,7 +2,7 @@
 // The surface's boundary polylines (all loops) in 3D, its segments bucketed in cubic cells, for nearest-point
 // queries within a reach: which elements cross the boundary, and how far the adaptive pattern's
 // particles must stay from it.
-#include "elements/cell_grid.h"
+#include "core/cell_grid.h"
 #include "mesh/surface_mesh.h"
 
 #include <glm/vec2.hpp>

@@ -191,7 +191,7 @@ ChartCut cut_into_charts(const SurfaceMesh& closed, CutAxis axis, const std::str
     }
     const std::string chart_name =
         source + " (chart " + std::to_string(cut.charts.size() + 1) + " of the closed surface cut across its " +
-        (axis == CutAxis::Auto ? "longest axis" : std::string(cut_axis_name(axis)) + " axis") + ")";
+        (axis == CutAxis::Auto ? "longest axis" : std::string(enum_name(axis)) + " axis") + ")";
     LoadedSurface chart = check_and_repair(std::move(positions), polygons, chart_name, 0);
     cut.charts.push_back(std::move(chart.mesh));
     cut.vertex_of.push_back(std::move(vertex_of));

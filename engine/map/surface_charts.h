@@ -8,7 +8,7 @@
 // facing each other across a seam keep the whole gap, and any pair that still collides across a
 // seam is left to the last resort (removal), since a spring between two charts would pull across
 // the atlas, not the surface.
-#include "map/cut_axis.h"
+#include "design/cut_axis.h"
 #include "map/surface_map.h"
 
 #include <glm/vec3.hpp>
@@ -21,7 +21,7 @@
 
 namespace paver {
 
-// The plane's normal (map/cut_axis.h): the surface's longest axis (principal axis of its area), or a given one.
+// The plane's normal (design/cut_axis.h): the surface's longest axis (principal axis of its area), or a given one.
 
 struct ChartCut {
   SurfaceMesh surface;                      // the closed surface, its faces split along the plane

@@ -1,4 +1,5 @@
 #include "pattern/adaptive_pattern.h"
+#include "design/design_keys.h"
 
 #include "pattern/bar_length_floor.h"
 #include "pattern/pattern.h"
@@ -116,14 +117,14 @@ Pattern honeycomb_pattern(const RelaxedParticles& relaxed, double edge_length, b
 std::string adaptive_pattern_unsupported(const Design& design) {
   const Tessellation t = design.pattern.tessellation;
   if (t != Tessellation::Triangle && t != Tessellation::Hexagon)
-    return std::string(tessellation_name(t)) + " has no adaptive pattern (tri and hex do)";
+    return std::string(enum_name(t)) + " has no adaptive pattern (tri and hex do)";
   if (!design.pattern.operators.empty()) return "edge operators need the lattice's directions";
-  if (design.placement.scale != 1) return "placement.scale is not 1";
+  if (design.placement.scale != 1) return key_path(Key::placement_scale) + " is not 1";
   int real_edges = 0;
   for (const CellEdge& e : make_unit_cell(t, 1).edges) real_edges += !e.is_virtual;
   const auto& specs = design.elements.edge;
   for (size_t s = 0; s < specs.size(); ++s) {
-    const std::string name = "elements.edge[" + std::to_string(s) + "]";
+    const std::string name = key_path(Key::elements_edge) + "[" + std::to_string(s) + "]";
     const std::set<int> on(specs[s].cell_edges.begin(), specs[s].cell_edges.end());
     if (!on.empty() && int(on.size()) < real_edges) return name + " sits on some edges only";
     const bool mirrored = std::abs(specs[s].t - 0.5) < 1e-12 ||

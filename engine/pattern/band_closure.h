@@ -4,7 +4,7 @@
 // the least amount that makes a whole number of elements go around: "D 0.630 -> 0.628: 90
 // elements close the band".
 #include "map/surface_map.h"
-#include "pattern/placement.h"
+#include "design/placement.h"
 #include "pattern/unit_cell.h"
 
 #include <glm/vec2.hpp>

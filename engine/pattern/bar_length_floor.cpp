@@ -1,6 +1,6 @@
 #include "pattern/bar_length_floor.h"
 
-#include "elements/contact_rule.h"
+#include "core/contact_rule.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #include "pattern/contact_packing.h"
 
-#include "elements/element_hash.h"
+#include "core/point_hash.h"
 #include "map/surface_particles.h"
 
 #include <glm/common.hpp>
@@ -34,7 +34,7 @@ std::vector<Pair> pairs_within(const SurfaceParticles& p, double reach) {
   glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
   for (int i = 0; i < n; ++i)
     if (p.lifted.triangle[i] >= 0) lo = glm::min(lo, p.lifted.position[i]), hi = glm::max(hi, p.lifted.position[i]);
-  ElementHash near(p.lifted.position, CellGrid(lo, hi, reach), ElementHash::Fill::None);
+  PointHash near(p.lifted.position, CellGrid(lo, hi, reach), PointHash::Fill::None);
   for (int i = 0; i < n; ++i)
     if (p.lifted.triangle[i] >= 0) near.insert(i);
   std::vector<Pair> pairs;

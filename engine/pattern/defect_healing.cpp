@@ -1,7 +1,7 @@
 #include "pattern/defect_healing.h"
 
 #include "core/stopwatch.h"
-#include "elements/element_hash.h"
+#include "core/point_hash.h"
 #include "map/boundary_index.h"
 #include "map/lifting.h"
 #include "map/surface_particles.h"
@@ -202,7 +202,7 @@ private:
     glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
     for (int i = 0; i < p_.size(); ++i)
       if (p_.lifted.triangle[i] >= 0) lo = glm::min(lo, hashed_at_[i]), hi = glm::max(hi, hashed_at_[i]);
-    hash_.emplace(hashed_at_, CellGrid(lo, hi, (kTriangulated + kRehashAfter) * d_), ElementHash::Fill::None);
+    hash_.emplace(hashed_at_, CellGrid(lo, hi, (kTriangulated + kRehashAfter) * d_), PointHash::Fill::None);
     for (int i = 0; i < p_.size(); ++i)
       if (p_.lifted.triangle[i] >= 0) hash_->insert(i);
     stale_ = false;
@@ -216,7 +216,7 @@ private:
   std::vector<char> interior_;
   SurfaceParticles p_;
   std::vector<glm::dvec3> hashed_at_;
-  std::optional<ElementHash> hash_;
+  std::optional<PointHash> hash_;
   bool stale_ = false;
 };
 

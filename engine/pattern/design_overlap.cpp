@@ -1,6 +1,7 @@
 #include "pattern/design_overlap.h"
+#include "design/design_keys.h"
 
-#include "elements/contact_rule.h"
+#include "core/contact_rule.h"
 
 #include "core/input_error.h"
 
@@ -76,7 +77,8 @@ void check_design_overlaps(const UnitCell& cell, const ElementsDesign& design, d
           const glm::dvec2 a = cell.position(edge.from, c), b = cell.position(edge.to, c + edge.offset);
           if (origin) own.push_back(all.size());
           all.push_back({a + spec.t * (b - a), 0.5 * spec.scale * spacing,
-                         "elements.edge[" + std::to_string(s) + "] on cell edge " + std::to_string(e) + of_cell(c)});
+                         key_path(Key::elements_edge) + "[" + std::to_string(s) + "] on cell edge " + std::to_string(e) +
+                             of_cell(c)});
         }
       }
     }

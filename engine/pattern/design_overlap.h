@@ -8,7 +8,7 @@
 namespace paver {
 
 // Throws InputError naming the two elements and the fix when two elements of the regular
-// pattern collide by the contact rule (elements/contact_rule.h) with `gap` (surface units at this
+// pattern collide by the contact rule (core/contact_rule.h) with `gap` (surface units at this
 // spacing).
 void check_design_overlaps(const UnitCell& cell, const ElementsDesign& elements, double spacing, double gap = 0);
 

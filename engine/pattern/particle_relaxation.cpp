@@ -1,7 +1,7 @@
 #include "pattern/particle_relaxation.h"
 
 #include "core/stopwatch.h"
-#include "elements/element_hash.h"
+#include "core/point_hash.h"
 #include "map/boundary_index.h"
 #include "map/lifting.h"
 #include "map/surface_particles.h"
@@ -91,7 +91,7 @@ double mean_bar_scale(const Particles& p, const std::vector<Bar>& bars) {
 void thin_seeds(Particles& p, double largest_spacing) {
   glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
   for (const glm::dvec3& x : p.lifted.position) lo = glm::min(lo, x), hi = glm::max(hi, x);
-  ElementHash kept_near(p.lifted.position, CellGrid(lo, hi, kThin * largest_spacing), ElementHash::Fill::None);
+  PointHash kept_near(p.lifted.position, CellGrid(lo, hi, kThin * largest_spacing), PointHash::Fill::None);
   std::vector<int> kept;
   for (int i = 0; i < p.size(); ++i) {
     bool clear = true;

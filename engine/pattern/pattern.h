@@ -2,7 +2,7 @@
 // The trimmed pattern S^ (section 4.2): the unit cell propagated over the plane, placed over the
 // map M^ and cut by its boundary. Points and edges are structs of arrays in the map's frame, ready
 // to become the solver's particles and springs.
-#include "pattern/placement.h"
+#include "design/placement.h"
 #include "pattern/unit_cell.h"
 #include "map/surface_map.h"
 

@@ -4,7 +4,7 @@
 // floor). The rotation that lays the lattice's first direction a1 along the axis, as the axis
 // projects onto the surface, averaged over the surface by area.
 #include "map/surface_map.h"
-#include "pattern/placement.h"
+#include "design/placement.h"
 #include "pattern/unit_cell.h"
 
 #include <optional>

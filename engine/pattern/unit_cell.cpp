@@ -78,31 +78,6 @@ std::string describe(int from, int to, glm::ivec2 offset) {
 
 }  // namespace
 
-std::string_view tessellation_name(Tessellation t) {
-  switch (t) {
-    case Tessellation::Triangle: return "tri";
-    case Tessellation::Grid: return "grid";
-    case Tessellation::Hexagon: return "hex";
-  }
-  return "?";
-}
-
-std::optional<Tessellation> tessellation_from_name(std::string_view name) {
-  if (name == "tri" || name == "triangle") return Tessellation::Triangle;
-  if (name == "grid" || name == "square") return Tessellation::Grid;
-  if (name == "hex" || name == "hexagon") return Tessellation::Hexagon;
-  return std::nullopt;
-}
-
-std::string_view operator_name(EdgeOperator::Kind kind) {
-  switch (kind) {
-    case EdgeOperator::Kind::Flip: return "flip";
-    case EdgeOperator::Kind::Add: return "add";
-    case EdgeOperator::Kind::Remove: return "remove";
-  }
-  return "?";
-}
-
 std::string describe_edge(const CellEdge& e) { return describe(e.from, e.to, e.offset); }
 
 UnitCell make_unit_cell(Tessellation tessellation, double spacing) {
@@ -166,7 +141,7 @@ std::vector<CellFace> cell_faces(const UnitCell& cell) {
 
 void apply_operator(UnitCell& cell, const EdgeOperator& op) {
   const int nv = static_cast<int>(cell.vertices.size());
-  const std::string name = std::string(operator_name(op.kind)) + " " + describe(op.from, op.to, op.offset);
+  const std::string name = std::string(enum_name(op.kind)) + " " + describe(op.from, op.to, op.offset);
   if (op.from < 0 || op.from >= nv || op.to < 0 || op.to >= nv)
     throw InputError(name + ": the unit cell of this tessellation has vertices 0.." + std::to_string(nv - 1));
   const int existing = find_edge(cell, op.from, op.to, op.offset);

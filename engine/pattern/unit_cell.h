@@ -2,19 +2,14 @@
 // The periodic unit cell of a tessellation (section 4.1): vertices inside one cell of the lattice
 // spanned by a1, a2, and edges that may reach into neighbouring cells. Edge operators (flip, add,
 // remove) act on the cell, so they propagate to the whole lattice by construction.
+#include "design/tessellation.h"
+
 #include <glm/vec2.hpp>
 
-#include <optional>
 #include <string>
-#include <string_view>
 #include <vector>
 
 namespace paver {
-
-enum class Tessellation { Triangle, Grid, Hexagon };
-
-std::string_view tessellation_name(Tessellation t);  // "tri", "grid", "hex"
-std::optional<Tessellation> tessellation_from_name(std::string_view name);
 
 // Edge from vertex `from` of cell (0,0) to vertex `to` of cell `offset`.
 struct CellEdge {
@@ -44,19 +39,6 @@ struct UnitCell {
 // The regular tessellation with edge length D: Triangle (1 vertex, 3 edges per cell),
 // Grid (1 vertex, 2 edges), Hexagon/honeycomb (2 vertices, 3 edges).
 UnitCell make_unit_cell(Tessellation tessellation, double spacing);
-
-// An edge operator. The edge is named by its end vertices and the cell offset of `to`; an edge
-// also matches when given reversed (to, from, -offset).
-struct EdgeOperator {
-  enum class Kind { Flip, Add, Remove };
-  Kind kind = Kind::Add;
-  int from = 0;
-  int to = 0;
-  glm::ivec2 offset{0, 0};
-  bool is_virtual = false;  // Add only: the new edge is a virtual edge
-};
-
-std::string_view operator_name(EdgeOperator::Kind kind);  // "flip", "add", "remove"
 
 // Applies the operator in place. Throws InputError with a message naming the edge when it cannot
 // (no such edge, edge already there, zero-length edge, flip without a face on both sides).

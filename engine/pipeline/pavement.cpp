@@ -269,7 +269,7 @@ Pavement pave_with_topology(const SurfaceMap& map, Design design, const Pavement
   if (design.placement.align != AlignAxis::None && !pavement.seamless) {
     const std::optional<RowAlignment> aligned = align_rows(map, pavement.cell, design.placement.align);
     if (!aligned)
-      throw DesignError("placement.align: the " + std::string(align_axis_name(design.placement.align)) +
+      throw DesignError("placement.align: the " + std::string(enum_name(design.placement.align)) +
                         " axis is normal to the surface almost everywhere, so rows cannot follow it; use another "
                         "axis or none");
     design.placement.rotation_deg += aligned->rotation_deg;

@@ -6,7 +6,7 @@
 #include "elements/element_shape.h"
 #include "io/mesh_formats.h"
 #include "pipeline/pavement.h"
-#include "report/run_report.h"
+#include "pipeline/run_report.h"
 #include "map/surface_map.h"
 
 #include <nlohmann/json_fwd.hpp>

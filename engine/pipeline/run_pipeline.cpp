@@ -63,7 +63,7 @@ auto naming_the_design_file(const PipelineRequest& request, Check&& check) {
 std::vector<std::string> row_alignment_warnings(AlignAxis asked, const Pavement& pavement) {
   std::vector<std::string> out;
   if (asked == AlignAxis::None) return out;
-  const std::string axis = std::string(align_axis_name(asked));
+  const std::string axis = std::string(enum_name(asked));
   if (pavement.seamless) {
     out.push_back("placement.align (--align) " + axis + " is not used: this band is paved seamlessly, and its rows "
                   "close around it (placement.band_rows says which way)");
@@ -144,9 +144,9 @@ void try_other_cut_axes(const PipelineRequest& request, const Design& design, co
     const auto tried = score(pavement);
     if (tried <= best) continue;
     best = tried;
-    why = std::string(cut_axis_name(axis)) + ": cut across the longest axis, the pavement had " +
+    why = std::string(enum_name(axis)) + ": cut across the longest axis, the pavement had " +
           count_text(-first.first, "problem", "problems") + " (fill " + number_text(std::round(first.second * 1000) / 1000) +
-          "); across " + std::string(cut_axis_name(axis)) + ", " + count_text(-tried.first, "problem", "problems") +
+          "); across " + std::string(enum_name(axis)) + ", " + count_text(-tried.first, "problem", "problems") +
           " (fill " + number_text(std::round(tried.second * 1000) / 1000) + ")";
     result.map = std::move(map);
     result.pavement = std::move(pavement);
@@ -219,7 +219,7 @@ PipelineResult run_pipeline(PipelineRequest request) {
   }
   check_stop();
   if (design.placement.cut_axis != CutAxis::Auto && result.map && !is_atlas(*result.map)) {
-    const std::string unused = "placement.cut_axis (--cut) " + std::string(cut_axis_name(design.placement.cut_axis)) +
+    const std::string unused = "placement.cut_axis (--cut) " + std::string(enum_name(design.placement.cut_axis)) +
                                " is for a closed surface, which is cut into charts; this one is open, so it is not used";
     warn(unused);
   }

@@ -13,7 +13,7 @@
 #include "map/surface_map.h"
 #include "pipeline/map_surface.h"
 #include "pipeline/pavement.h"
-#include "report/run_report.h"
+#include "pipeline/run_report.h"
 
 #include <nlohmann/json.hpp>
 

@@ -92,7 +92,7 @@ BillOfStones bill_of_stones(const Elements& elements, Units units) {
 void write_stones_csv(const std::filesystem::path& path, const BillOfStones& bill) {
   std::string text = "shape,diameter_mm,count,carat_each,carat_total\n";
   for (const StoneRow& row : bill.rows) {
-    text += std::string(shape_name(row.shape)) + "," + shortest(row.diameter_mm) + "," + std::to_string(row.count) + ",";
+    text += std::string(enum_name(row.shape)) + "," + shortest(row.diameter_mm) + "," + std::to_string(row.count) + ",";
     if (row.carat_each) text += carat_each_text(*row.carat_each) + "," + carat_total_text(row.carat_total);
     else text += ",";
     text += "\n";
@@ -104,12 +104,12 @@ void write_stones_csv(const std::filesystem::path& path, const BillOfStones& bil
 nlohmann::json to_json(const BillOfStones& bill) {
   nlohmann::json rows = nlohmann::json::array();
   for (const StoneRow& row : bill.rows) {
-    nlohmann::json item = {{"shape", shape_name(row.shape)}, {"diameter_mm", row.diameter_mm}, {"count", row.count}};
+    nlohmann::json item = {{"shape", enum_name(row.shape)}, {"diameter_mm", row.diameter_mm}, {"count", row.count}};
     item["carat_each"] = row.carat_each ? nlohmann::json(*row.carat_each) : nlohmann::json(nullptr);
     item["carat_total"] = row.carat_each ? nlohmann::json(row.carat_total) : nlohmann::json(nullptr);  // no "0 ct" for a bead
     rows.push_back(std::move(item));
   }
-  return {{"units", units_name(bill.units)},
+  return {{"units", enum_name(bill.units)},
           {"rows", std::move(rows)},
           {"count", bill.count},
           {"carat_total", bill.weighed() ? nlohmann::json(bill.carat_total) : nlohmann::json(nullptr)},

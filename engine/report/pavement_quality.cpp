@@ -1,6 +1,6 @@
 #include "report/pavement_quality.h"
 
-#include "elements/contact_rule.h"
+#include "core/contact_rule.h"
 
 #include "elements/boundary_postprocess.h"
 #include "elements/element_proximity.h"

@@ -44,7 +44,7 @@ struct QualityBasis {
 
 struct PavementQuality {
   long elements = 0, vertex_elements = 0, edge_elements = 0;
-  long contact_violations = 0;      // pairs closer than r_i + r_j + gap (elements/contact_rule.h), all pairs
+  long contact_violations = 0;      // pairs closer than r_i + r_j + gap (core/contact_rule.h), all pairs
   double worst_overlap = 0;         // max of 1 - d / (r_i + r_j + gap) over violating pairs
   double min_clearance = 0;         // smallest d - r_i - r_j over all pairs, surface units (negative = overlap)
   double gap = 0;                   // the gap it was measured with

@@ -1,7 +1,7 @@
 #include "solver/collision_resolution.h"
 
 #include "core/stopwatch.h"
-#include "elements/contact_rule.h"
+#include "core/contact_rule.h"
 
 #include "elements/element_proximity.h"
 #include "map/lifting.h"

@@ -22,7 +22,11 @@ namespace paver {
 using SolverObserver = std::function<bool(int iteration, const std::vector<glm::vec2>& positions)>;
 
 enum class StopReason { Converged, IterationLimit, Observer };  // Observer: the observer or `stop`
-std::string_view stop_reason_name(StopReason r);  // "converged", "iteration limit", "stopped"
+template <>
+struct EnumNames<StopReason> {
+  static constexpr EnumName<StopReason> table[] = {
+      {StopReason::Converged, "converged"}, {StopReason::IterationLimit, "iteration limit"}, {StopReason::Observer, "stopped"}};
+};
 
 struct SolveReport {
   int iterations = 0;

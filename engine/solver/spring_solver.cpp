@@ -27,15 +27,6 @@ void for_each_index(int n, F&& f) {
 
 }  // namespace
 
-std::string_view stop_reason_name(StopReason r) {
-  switch (r) {
-    case StopReason::Converged: return "converged";
-    case StopReason::IterationLimit: return "iteration limit";
-    case StopReason::Observer: return "stopped";
-  }
-  return "?";
-}
-
 SolverFactory cpu_solver_factory(int threads) {
   return [threads](const SolverSurface& surface, SpringSystem& system, const SolverParams& params, double spacing) {
     return std::unique_ptr<SpringSolverBackend>(new CpuSpringSolver(surface, system, params, spacing, threads));

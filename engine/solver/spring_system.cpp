@@ -1,6 +1,6 @@
 #include "solver/spring_system.h"
 
-#include "elements/contact_rule.h"
+#include "core/contact_rule.h"
 
 namespace paver {
 

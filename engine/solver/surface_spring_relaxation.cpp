@@ -1,8 +1,8 @@
 #include "solver/surface_spring_relaxation.h"
 
 #include "core/stopwatch.h"
-#include "elements/element_hash.h"
-#include "elements/contact_rule.h"
+#include "core/point_hash.h"
+#include "core/contact_rule.h"
 #include "map/boundary_index.h"
 #include "map/surface_particles.h"
 #include "pattern/bar_length_floor.h"
@@ -66,7 +66,7 @@ void relax_honeycomb_springs(const SurfaceMap& map, const Pattern& pattern, std:
       for (int i = 0; i < n; ++i)
         if (!outside[i]) lo = glm::min(lo, p.lifted.position[i]), hi = glm::max(hi, p.lifted.position[i]);
       // Particles off the map are not bucketed: they have no position.
-      ElementHash near(p.lifted.position, CellGrid(lo, hi, contact), ElementHash::Fill::None);
+      PointHash near(p.lifted.position, CellGrid(lo, hi, contact), PointHash::Fill::None);
       for (int i = 0; i < n; ++i)
         if (!outside[i]) near.insert(i);
       for (int i = 0; i < n; ++i) {

@@ -22,9 +22,9 @@ constexpr ShapeKind kShapes[] = {ShapeKind::Sphere, ShapeKind::Gem, ShapeKind::H
 
 bool shape_combo(const char* label, ShapeKind& shape) {
   bool changed = false;
-  if (ImGui::BeginCombo(label, std::string(shape_name(shape)).c_str())) {
+  if (ImGui::BeginCombo(label, std::string(enum_name(shape)).c_str())) {
     for (const ShapeKind kind : kShapes)
-      if (ImGui::Selectable(std::string(shape_name(kind)).c_str(), kind == shape)) {
+      if (ImGui::Selectable(std::string(enum_name(kind)).c_str(), kind == shape)) {
         changed = kind != shape;
         shape = kind;
       }
@@ -51,10 +51,10 @@ bool length_field(const char* label, double& value, const char* unit) {
 
 void jewellery_section(Document& doc, Design& d) {
   section("Stones (jewellery)");
-  const std::string unit(units_name(d.units));
+  const std::string unit(enum_name(d.units));
   if (ImGui::BeginCombo("units", unit.c_str())) {
     for (const Units u : {Units::Millimetre, Units::Centimetre, Units::Metre, Units::Inch})
-      if (ImGui::Selectable(std::string(units_name(u)).c_str(), u == d.units) && u != d.units) {
+      if (ImGui::Selectable(std::string(enum_name(u)).c_str(), u == d.units) && u != d.units) {
         d.units = u;
         change_design(doc, d);
       }

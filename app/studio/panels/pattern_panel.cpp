@@ -170,7 +170,7 @@ void placement_section(Document& doc, Design& d) {
               "Not on a band, whose rows close around it.");
   if (p.align != AlignAxis::None && doc.result.pavement && doc.result.pavement->row_alignment)
     ImGui::TextDisabled("turned %.1f degrees to follow %s", doc.result.pavement->row_alignment->rotation_deg,
-                        std::string(align_axis_name(p.align)).c_str());
+                        std::string(enum_name(p.align)).c_str());
   if (ImGui::Checkbox("fit offset", &p.fit_offset)) changed = true;
   help_marker("Shifts the pattern within one cell, on top of the offset above, to where the most elements fit: "
               "with rows along an axis, whole rows meet a window's edge or miss it. Lays out up to 64 shifts and, "
@@ -270,7 +270,7 @@ void pattern_panel(Document& doc, UiState& ui) {
     ImGui::PushID(i);
     if (ImGui::SmallButton("x")) try_edit(doc, [&](const Design& design) { return without_operator(design, i); });
     ImGui::SameLine();
-    ImGui::Text("%d. %s %d->%d @ (%d,%d)%s", i, std::string(operator_name(op.kind)).c_str(), op.from, op.to,
+    ImGui::Text("%d. %s %d->%d @ (%d,%d)%s", i, std::string(enum_name(op.kind)).c_str(), op.from, op.to,
                 op.offset.x, op.offset.y, op.is_virtual ? " virtual" : "");
     ImGui::PopID();
   }

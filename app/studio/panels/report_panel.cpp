@@ -3,7 +3,7 @@
 // a histogram of the nearest-neighbour ratios.
 #include "panels.h"
 
-#include "elements/contact_rule.h"
+#include "core/contact_rule.h"
 #include "core/number_text.h"
 #include "report/bill_of_stones.h"
 
@@ -71,7 +71,7 @@ void bill_table(const Pavement& p, const BillOfStones& bill) {
     for (const StoneRow& row : bill.rows) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
-      ImGui::TextUnformatted(std::string(shape_name(row.shape)).c_str());
+      ImGui::TextUnformatted(std::string(enum_name(row.shape)).c_str());
       ImGui::TableNextColumn();
       ImGui::Text("%.2f", row.diameter_mm);
       ImGui::TableNextColumn();
@@ -120,13 +120,13 @@ void report_panel(const Studio& s) {
               "all pairs), none crosses the surface's edge, the pattern is not torn and not mostly bare.");
   // Short unwrapped lines: ImGui wraps after a '.', which split numbers ("0." / "000736").
   ImGui::Text("contact: %s", count_text(p.after.contact_violations, "violation", "violations").c_str());
-  const std::string unit(units_name(p.design.units));
+  const std::string unit(enum_name(p.design.units));
   ImGui::Text("closest pair: %.3g %s free (gap %.3g)", p.after.min_clearance, unit.c_str(), p.design.elements.gap);
   ImGui::Text("%zu elements: %ld V, %ld E", p.elements.size(), p.after.vertex_elements, p.after.edge_elements);
   ImGui::Text("%d filled, %d eliminated at the boundary", p.filled, p.eliminated);
   ImGui::Text("pattern: %d points, %d edges; D = %.4g", p.pattern.point_count(), p.pattern.edge_count(),
               p.design.pattern.spacing);
-  ImGui::Text("solver: %d iterations, %s", p.solve.iterations, std::string(stop_reason_name(p.solve.reason)).c_str());
+  ImGui::Text("solver: %d iterations, %s", p.solve.iterations, std::string(enum_name(p.solve.reason)).c_str());
   ImGui::Text("last max step %.3g, %d pull-backs", p.solve.last_max_step, p.solve.strays_pulled_back);
   ImGui::Text("contacts: %s, %s", count_text(p.resolution.rounds, "round", "rounds").c_str(),
               count_text(p.resolution.contact_springs, "spring", "springs").c_str());

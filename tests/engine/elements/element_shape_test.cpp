@@ -87,7 +87,7 @@ void write(const std::filesystem::path& path, const std::string& text) {
 
 TEST(ElementShape, BuiltinShapesAreClosedAndFaceOutwards) {
   for (ShapeKind kind : kBuiltins) {
-    SCOPED_TRACE(std::string(shape_name(kind)));
+    SCOPED_TRACE(std::string(enum_name(kind)));
     const ShapeMesh mesh = make_builtin_shape(kind);
     ASSERT_FALSE(mesh.triangles.empty());
     expect_closed(mesh);
@@ -103,7 +103,7 @@ TEST(ElementShape, BuiltinShapesAreClosedAndFaceOutwards) {
 
 TEST(ElementShape, BuiltinShapesHaveUnitDiameterAndAreCentred) {
   for (ShapeKind kind : kBuiltins) {
-    SCOPED_TRACE(std::string(shape_name(kind)));
+    SCOPED_TRACE(std::string(enum_name(kind)));
     const Box box = bounds(make_builtin_shape(kind));
     EXPECT_NEAR(std::max(box.hi.x - box.lo.x, box.hi.y - box.lo.y), 1.0, 1e-6);
     EXPECT_NEAR(box.lo.x + box.hi.x, 0.0, 1e-6);
@@ -175,10 +175,10 @@ TEST(ElementShape, GemHasTableAboveGirdleAndCuletAtTheBottom) {
 TEST(ElementShape, NamesRoundTrip) {
   for (ShapeKind kind : {ShapeKind::Sphere, ShapeKind::Gem, ShapeKind::HexPrism, ShapeKind::Disc,
                          ShapeKind::Custom})
-    EXPECT_EQ(shape_from_name(shape_name(kind)), kind);
-  EXPECT_EQ(shape_name(ShapeKind::HexPrism), "hex_prism");
-  EXPECT_EQ(shape_from_name("cube"), std::nullopt);
-  EXPECT_EQ(shape_from_name(""), std::nullopt);
+    EXPECT_EQ(enum_from_name<ShapeKind>(enum_name(kind)), kind);
+  EXPECT_EQ(enum_name(ShapeKind::HexPrism), "hex_prism");
+  EXPECT_EQ(enum_from_name<ShapeKind>("cube"), std::nullopt);
+  EXPECT_EQ(enum_from_name<ShapeKind>(""), std::nullopt);
 }
 
 TEST(ElementShape, CustomIsNotBuiltIn) {
@@ -318,8 +318,8 @@ void expect_unit_wide_and_closed(const ShapeMesh& shape, const std::string& what
 TEST(ElementShape, CoarseShapesAreLighterButStillUnitWideAndClosed) {
   for (ShapeKind kind : {ShapeKind::Sphere, ShapeKind::Disc}) {
     const ShapeMesh full = make_builtin_shape(kind), coarse = make_builtin_shape(kind, ShapeDetail::Coarse);
-    EXPECT_LT(coarse.triangles.size() * 2, full.triangles.size()) << shape_name(kind);
-    expect_unit_wide_and_closed(coarse, std::string(shape_name(kind)));
+    EXPECT_LT(coarse.triangles.size() * 2, full.triangles.size()) << enum_name(kind);
+    expect_unit_wide_and_closed(coarse, std::string(enum_name(kind)));
   }
 }
 
@@ -329,8 +329,8 @@ TEST(ElementShape, MinimalShapesAreLighterStillButUnitWideAndClosed) {
   for (ShapeKind kind : {ShapeKind::Sphere, ShapeKind::Gem, ShapeKind::Disc}) {
     const ShapeMesh coarse = make_builtin_shape(kind, ShapeDetail::Coarse);
     const ShapeMesh minimal = make_builtin_shape(kind, ShapeDetail::Minimal);
-    EXPECT_LE(minimal.triangles.size() * 2, coarse.triangles.size()) << shape_name(kind);
-    expect_unit_wide_and_closed(minimal, std::string(shape_name(kind)) + " minimal");
+    EXPECT_LE(minimal.triangles.size() * 2, coarse.triangles.size()) << enum_name(kind);
+    expect_unit_wide_and_closed(minimal, std::string(enum_name(kind)) + " minimal");
   }
   EXPECT_EQ(make_builtin_shape(ShapeKind::Sphere, ShapeDetail::Minimal).triangles.size(), 12u);
   // The gem keeps its flat table on top (+Z) and its culet below, at the brilliant's heights.
@@ -355,8 +355,8 @@ TEST(ElementShape, BuiltInFootprintsFitTheUnitDisc) {
       const ShapeMesh shape = make_builtin_shape(kind, detail);
       float reach = 0;
       for (const glm::vec3& p : shape.positions) reach = std::max(reach, std::sqrt(p.x * p.x + p.y * p.y));
-      EXPECT_LE(reach, 0.5f + 1e-6f) << shape_name(kind);
-      EXPECT_GE(reach, 0.49f) << shape_name(kind);
+      EXPECT_LE(reach, 0.5f + 1e-6f) << enum_name(kind);
+      EXPECT_GE(reach, 0.49f) << enum_name(kind);
     }
 }
 

@@ -3,7 +3,7 @@
 // included (it once put a stone in every hexagon), and a hole cut into it is filled again.
 #include "elements/refill.h"
 
-#include "elements/contact_rule.h"
+#include "core/contact_rule.h"
 #include "pipeline/pavement.h"
 #include "report/pavement_quality.h"
 #include "surface_maps.h"

@@ -97,7 +97,7 @@ TEST(RimRows, EveryHoleOfThePiercedPendantGetsARowAndThePavementStaysSound) {
   ASSERT_EQ(map->mesh.boundary_loops.size(), 4u);
   for (const Tessellation tessellation : {Tessellation::Triangle, Tessellation::Hexagon})
     for (const double gap_share : {0.0, 0.08}) {
-      const std::string what = std::string(tessellation_name(tessellation)) + " gap " + std::to_string(gap_share);
+      const std::string what = std::string(enum_name(tessellation)) + " gap " + std::to_string(gap_share);
       const Pavement without = make_pavement(*map, design_for(*map, tessellation, RimRows::None, gap_share));
       const Pavement with = make_pavement(*map, design_for(*map, tessellation, RimRows::Holes, gap_share));
       EXPECT_EQ(without.rim_rows.placed, 0) << what;

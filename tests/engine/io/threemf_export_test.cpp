@@ -46,7 +46,7 @@ TEST_F(ThreeMfExport, HoldsTheSurfaceOneObjectPerShapeAndAComponentPerElementInO
   }
   ASSERT_EQ(r.components.size(), elements.size());
   for (std::size_t i = 0; i < elements.size(); ++i) {
-    const std::string name = std::string(shape_name(elements.shape[i])) + " (unit diameter)";
+    const std::string name = std::string(enum_name(elements.shape[i])) + " (unit diameter)";
     ASSERT_TRUE(id_by_name.count(name)) << name;
     EXPECT_EQ(r.components[i].object, id_by_name[name]) << i;
     // Each of the shared object's vertices lands where the PLY/OBJ writers put it (float32 file).

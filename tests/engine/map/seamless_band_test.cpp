@@ -162,7 +162,7 @@ TEST_P(SeamlessCylinder, NeighboursAreOneLatticeStepApartAcrossTheSeamToo) {
 }
 
 INSTANTIATE_TEST_SUITE_P(TriAndGrid, SeamlessCylinder, ::testing::Values(Tessellation::Triangle, Tessellation::Grid),
-                         [](const auto& info) { return std::string(tessellation_name(info.param)); });
+                         [](const auto& info) { return std::string(enum_name(info.param)); });
 
 TEST(SeamlessBand, RowsAcrossTheBandTurnTheLattice) {
   Design design;

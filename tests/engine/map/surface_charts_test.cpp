@@ -163,7 +163,7 @@ INSTANTIATE_TEST_SUITE_P(Closed, ClosedSurfaces,
                                             ::testing::Values(Tessellation::Triangle, Tessellation::Hexagon)),
                          [](const auto& info) {
                            return std::get<0>(info.param) + "_" +
-                                  std::string(tessellation_name(std::get<1>(info.param)));
+                                  std::string(enum_name(std::get<1>(info.param)));
                          });
 
 }  // namespace

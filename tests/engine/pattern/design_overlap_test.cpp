@@ -79,7 +79,7 @@ TEST(DesignOverlap, JustBelowTheLimitIsAcceptedJustAboveIsRefused) {
   }
   // V-elements alone, scale 1: neighbours touch, which is allowed, in every tessellation.
   for (Tessellation t : {Tessellation::Triangle, Tessellation::Grid, Tessellation::Hexagon})
-    EXPECT_TRUE(accepted(t, elements_with(1, {}))) << tessellation_name(t);
+    EXPECT_TRUE(accepted(t, elements_with(1, {}))) << enum_name(t);
 }
 
 TEST(DesignOverlap, MidEdgeElementsOfATriangleMeetAtHalfTheSpacing) {

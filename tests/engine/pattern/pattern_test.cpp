@@ -5,7 +5,7 @@
 #include "map/lifting.h"
 #include "mesh/mesh_loader.h"
 #include "pattern/pattern.h"
-#include "pattern/placement.h"
+#include "design/placement.h"
 #include "map/surface_map.h"
 #include "mesh/surface_mesh.h"
 #include "pattern/unit_cell.h"
@@ -267,7 +267,7 @@ TEST_P(PatternOnFlatSquare, EdgesLiftToLengthDOnTheFlatSurface) {
 INSTANTIATE_TEST_SUITE_P(Pattern, PatternOnFlatSquare,
                          ::testing::Values(FlatCase{Tessellation::Grid, 0.7}, FlatCase{Tessellation::Triangle, 0.7},
                                            FlatCase{Tessellation::Hexagon, 0.7}),
-                         [](const auto& info) { return std::string(tessellation_name(info.param.tessellation)); });
+                         [](const auto& info) { return std::string(enum_name(info.param.tessellation)); });
 
 TEST(PatternFlatSquare, GridCountIsTheLatticeInsideTheSquare) {
   // The flat square with its own coordinates as the map, centred: [-5, 5]^2. It holds the grid
@@ -312,13 +312,13 @@ TEST(PatternFlatSquare, OffsetByALatticeVectorKeepsTheCount) {
       Placement moved;
       moved.offset = shift;
       const Pattern pattern = build_pattern(flat_map(), cell, moved);
-      EXPECT_EQ(pattern.point_count(), straight.point_count()) << tessellation_name(t);
-      EXPECT_EQ(pattern.edge_count(), straight.edge_count()) << tessellation_name(t);
+      EXPECT_EQ(pattern.point_count(), straight.point_count()) << enum_name(t);
+      EXPECT_EQ(pattern.edge_count(), straight.edge_count()) << enum_name(t);
       // The points are the same points in the map frame.
       for (const glm::dvec2& q : pattern.points) {
         double nearest = std::numeric_limits<double>::infinity();
         for (const glm::dvec2& r : straight.points) nearest = std::min(nearest, glm::length(q - r));
-        EXPECT_LE(nearest, 1e-9 * cell.spacing) << tessellation_name(t);
+        EXPECT_LE(nearest, 1e-9 * cell.spacing) << enum_name(t);
       }
     }
   }

@@ -151,28 +151,28 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(RegularCase{Tessellation::Triangle, 1, 3, 6, kSqrt3 / 2, 2, 3},
                       RegularCase{Tessellation::Grid, 1, 2, 4, 1.0, 1, 4},
                       RegularCase{Tessellation::Hexagon, 2, 3, 3, 3 * kSqrt3 / 2, 1, 6}),
-    [](const auto& info) { return std::string(tessellation_name(info.param.tessellation)); });
+    [](const auto& info) { return std::string(enum_name(info.param.tessellation)); });
 
 TEST(UnitCell, TessellationNamesRoundTrip) {
   for (Tessellation t : {Tessellation::Triangle, Tessellation::Grid, Tessellation::Hexagon}) {
-    const auto back = tessellation_from_name(tessellation_name(t));
-    ASSERT_TRUE(back.has_value()) << tessellation_name(t);
+    const auto back = enum_from_name<Tessellation>(enum_name(t));
+    ASSERT_TRUE(back.has_value()) << enum_name(t);
     EXPECT_EQ(*back, t);
   }
-  EXPECT_EQ(tessellation_name(Tessellation::Triangle), "tri");
-  EXPECT_EQ(tessellation_name(Tessellation::Grid), "grid");
-  EXPECT_EQ(tessellation_name(Tessellation::Hexagon), "hex");
-  EXPECT_EQ(tessellation_from_name("triangle"), Tessellation::Triangle);
-  EXPECT_EQ(tessellation_from_name("square"), Tessellation::Grid);
-  EXPECT_EQ(tessellation_from_name("hexagon"), Tessellation::Hexagon);
-  EXPECT_FALSE(tessellation_from_name("pentagon").has_value());
-  EXPECT_FALSE(tessellation_from_name("").has_value());
+  EXPECT_EQ(enum_name(Tessellation::Triangle), "tri");
+  EXPECT_EQ(enum_name(Tessellation::Grid), "grid");
+  EXPECT_EQ(enum_name(Tessellation::Hexagon), "hex");
+  EXPECT_EQ(enum_from_name<Tessellation>("triangle"), Tessellation::Triangle);
+  EXPECT_EQ(enum_from_name<Tessellation>("square"), Tessellation::Grid);
+  EXPECT_EQ(enum_from_name<Tessellation>("hexagon"), Tessellation::Hexagon);
+  EXPECT_FALSE(enum_from_name<Tessellation>("pentagon").has_value());
+  EXPECT_FALSE(enum_from_name<Tessellation>("").has_value());
 }
 
 TEST(UnitCell, OperatorAndEdgeNames) {
-  EXPECT_EQ(operator_name(EdgeOperator::Kind::Flip), "flip");
-  EXPECT_EQ(operator_name(EdgeOperator::Kind::Add), "add");
-  EXPECT_EQ(operator_name(EdgeOperator::Kind::Remove), "remove");
+  EXPECT_EQ(enum_name(EdgeOperator::Kind::Flip), "flip");
+  EXPECT_EQ(enum_name(EdgeOperator::Kind::Add), "add");
+  EXPECT_EQ(enum_name(EdgeOperator::Kind::Remove), "remove");
   EXPECT_EQ(describe_edge(CellEdge{0, 1, {1, -1}}), "0->1 @ (1,-1)");
 }
 

@@ -75,7 +75,7 @@ INSTANTIATE_TEST_SUITE_P(BunnyHead, ContactAllPairsAdaptive,
                          ::testing::Combine(::testing::Values(Tessellation::Triangle, Tessellation::Hexagon),
                                             ::testing::Bool()),
                          [](const auto& info) {
-                           return std::string(tessellation_name(std::get<0>(info.param))) +
+                           return std::string(enum_name(std::get<0>(info.param))) +
                                   (std::get<1>(info.param) ? "_gap8pct" : "_gap0");
                          });
 
@@ -110,7 +110,7 @@ INSTANTIATE_TEST_SUITE_P(
                        ::testing::Values(Tessellation::Triangle, Tessellation::Grid, Tessellation::Hexagon),
                        ::testing::Bool()),
     [](const auto& info) {
-      return std::get<0>(info.param) + "_" + std::string(tessellation_name(std::get<1>(info.param))) +
+      return std::get<0>(info.param) + "_" + std::string(enum_name(std::get<1>(info.param))) +
              (std::get<2>(info.param) ? "_gap8pct" : "_gap0");
     });
 

@@ -43,7 +43,7 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Combine(::testing::ValuesIn(test::holed_surface_names()),
                        ::testing::Values(Tessellation::Triangle, Tessellation::Hexagon)),
     [](const auto& info) {
-      return std::get<0>(info.param) + "_" + std::string(tessellation_name(std::get<1>(info.param)));
+      return std::get<0>(info.param) + "_" + std::string(enum_name(std::get<1>(info.param)));
     });
 
 }  // namespace

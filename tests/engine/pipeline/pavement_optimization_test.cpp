@@ -104,7 +104,7 @@ TEST_P(ScannedSurface, UniformPatternIsCollisionFreeAndRegular) {
 
 INSTANTIATE_TEST_SUITE_P(Bunnyhead, ScannedSurface,
                          ::testing::Values(Tessellation::Triangle, Tessellation::Grid, Tessellation::Hexagon),
-                         [](const auto& info) { return std::string(tessellation_name(info.param)); });
+                         [](const auto& info) { return std::string(enum_name(info.param)); });
 
 // Curvature-aware spacing (eq. 5): with m > 0 elements spread where the surface is curved, with
 // m < 0 they crowd there, with m = 0 the spacing is uniform.

@@ -138,7 +138,7 @@ TEST(PavementDefaults, DefaultSpacingFollowsTheTessellation) {
   } cases[] = {{Tessellation::Triangle, std::sqrt(3.0) / 2}, {Tessellation::Grid, 1}, {Tessellation::Hexagon, 0.75 * std::sqrt(3.0)}};
   for (const auto& c : cases) {
     const double exact = std::sqrt(area / (500 * c.area_per_point));
-    EXPECT_NEAR(default_spacing(mesh, c.t, 500), exact, 0.05 * exact) << tessellation_name(c.t);
+    EXPECT_NEAR(default_spacing(mesh, c.t, 500), exact, 0.05 * exact) << enum_name(c.t);
   }
 }
 

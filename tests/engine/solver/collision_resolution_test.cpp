@@ -1,6 +1,6 @@
 // Tests for engine/solver/collision_resolution.cpp, through make_pavement on bundled designs and
 // checked with an all-pairs loop written here (a collision is a centre distance below
-// r_i + r_j + gap, exactly: elements/contact_rule.h): with resolution the final elements have no colliding
+// r_i + r_j + gap, exactly: core/contact_rule.h): with resolution the final elements have no colliding
 // pair; without it, a design the paper's method leaves colliding still collides. Contact springs
 // do the work when the optimizer was stopped early, the last-resort removal takes out at most one
 // element per pair, and element_anchor names the particles that carry each kind of element.

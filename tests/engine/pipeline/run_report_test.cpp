@@ -1,9 +1,9 @@
-// Tests for engine/report/run_report.cpp: count_pavement counts a hand-made pavement exactly
+// Tests for engine/pipeline/run_report.cpp: count_pavement counts a hand-made pavement exactly
 // (real vs virtual edges, crossing edges, elements by kind, retired particles), and on real
 // pavements (bundled designs, optimizer on) its counts and report.json's agree with the pavement
 // counted here element by element and edge by edge; the report carries the run's info, the surface,
 // the post-processing and resolution figures and the timings with their total.
-#include "report/run_report.h"
+#include "pipeline/run_report.h"
 
 #include "io/design_io.h"
 #include "pipeline/pavement.h"
@@ -147,7 +147,7 @@ TEST_P(RunReportOnPavement, CountsAgreeWithThePavement) {
   EXPECT_EQ(r["surface"]["boundary_vertices"].get<long>(), long(map.mesh.outer_loop().size()));
   EXPECT_EQ(r["design"]["source"].get<std::string>(), c.name);
   EXPECT_EQ(r["design"]["spacing"].get<double>(), p.design.pattern.spacing);
-  EXPECT_EQ(r["design"]["tessellation"].get<std::string>(), std::string(tessellation_name(c.design.pattern.tessellation)));
+  EXPECT_EQ(r["design"]["tessellation"].get<std::string>(), std::string(enum_name(c.design.pattern.tessellation)));
   EXPECT_FALSE(r["design"]["spacing_derived"].get<bool>());
 
   double total = 0;

@@ -2,26 +2,31 @@
 // How the 2D map M^ sits under the pattern U^ (section 4.2): the map is scaled, rotated and then
 // translated into the pattern plane. Pattern point p and map point q relate by
 //   p = R(rotation) * (scale * q) + offset.
-#include "map/cut_axis.h"
+#include "design/cut_axis.h"
 
 #include <glm/vec2.hpp>
-
-#include <optional>
-#include <string_view>
 
 namespace paver {
 
 // On a band paved seamlessly, which way the lattice's rows run: along the band (around it) or
-// across it (rim to rim), or auto: both tried and the better pavement kept (pipeline/pavement.cpp).
+// across it (rim to rim), or auto: both tried and the better pavement kept (pipeline/choices.h).
 // Its rotation is then the band's, not `rotation_deg`.
 enum class BandRows { Along, Across, Auto };
-std::string_view band_rows_name(BandRows rows);  // "along", "across", "auto"
+template <>
+struct EnumNames<BandRows> {
+  static constexpr EnumName<BandRows> table[] = {
+      {BandRows::Along, "along"}, {BandRows::Across, "across"}, {BandRows::Auto, "auto"}};
+};
 
 // Rows along a world axis (pattern/row_alignment.h): the rotation is then the axis's, plus
 // rotation_deg. None: the map's own orientation.
 enum class AlignAxis { None, X, Y, Z };
-std::string_view align_axis_name(AlignAxis axis);  // "none", "x", "y", "z"
-std::optional<AlignAxis> align_axis_from_name(std::string_view name);
+template <>
+struct EnumNames<AlignAxis> {
+  // "none" last: the choices read "x, y, z or none".
+  static constexpr EnumName<AlignAxis> table[] = {
+      {AlignAxis::X, "x"}, {AlignAxis::Y, "y"}, {AlignAxis::Z, "z"}, {AlignAxis::None, "none"}};
+};
 
 struct Placement {
   glm::dvec2 offset{0, 0};   // pattern-plane units (same as D); default 0

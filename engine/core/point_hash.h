@@ -3,8 +3,9 @@
 // the 27 cells around it. The proximity searches build one over elements per query set; refill
 // inserts the elements it adds as it goes; the adaptive pattern's seed thinning and contact
 // search use it over bare positions.
-#include "elements/cell_grid.h"
-#include "elements/elements.h"
+#include "core/cell_grid.h"
+
+#include <glm/vec3.hpp>
 
 #include <cstdint>
 #include <utility>
@@ -12,14 +13,13 @@
 
 namespace paver {
 
-class ElementHash {
+class PointHash {
 public:
   enum class Fill { All, None };
 
-  // Buckets every element of `elements`, which must outlive the hash (it reads their positions).
-  ElementHash(const Elements& elements, const CellGrid& grid) : ElementHash(elements.position, grid, Fill::All) {}
-  // Over bare positions (which must outlive the hash): all of them, or none until inserted.
-  ElementHash(const std::vector<glm::dvec3>& positions, const CellGrid& grid, Fill fill)
+  // Over `positions` (which must outlive the hash: it reads them), e.g. elements' centres: all of
+  // them, or none until inserted.
+  PointHash(const std::vector<glm::dvec3>& positions, const CellGrid& grid, Fill fill = Fill::All)
       : positions_(positions), grid_(grid) {
     if (fill == Fill::All) {
       grow(2 * positions.size());

@@ -1,7 +1,7 @@
-// Tests for engine/elements/element_hash.h: the open-addressing hash must find every point within
+// Tests for engine/core/point_hash.h: the open-addressing hash must find every point within
 // one cell width, for points bucketed at construction and inserted later (through its growth),
 // far from the origin and at negative cells alike.
-#include "elements/element_hash.h"
+#include "core/point_hash.h"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +14,7 @@
 namespace paver {
 namespace {
 
-TEST(ElementHash, FindsEveryPointWithinOneCellLikeABruteForceLoop) {
+TEST(PointHash, FindsEveryPointWithinOneCellLikeABruteForceLoop) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(-5, 5);
   const glm::dvec3 far(1e5, -2e5, 3e5);  // a part far from the origin
@@ -23,8 +23,8 @@ TEST(ElementHash, FindsEveryPointWithinOneCellLikeABruteForceLoop) {
   const CellGrid grid(far - glm::dvec3(6), far + glm::dvec3(6), 0.4);
   // Half bucketed at once, half inserted one by one (the table grows several times on the way).
   std::vector<glm::dvec3> first(points.begin(), points.begin() + 1500);
-  ElementHash at_once(first, grid, ElementHash::Fill::All);
-  ElementHash inserted(points, grid, ElementHash::Fill::None);
+  PointHash at_once(first, grid, PointHash::Fill::All);
+  PointHash inserted(points, grid, PointHash::Fill::None);
   for (int i = 0; i < int(points.size()); ++i) inserted.insert(i);
 
   for (int q = 0; q < 300; ++q) {
@@ -43,9 +43,9 @@ TEST(ElementHash, FindsEveryPointWithinOneCellLikeABruteForceLoop) {
   }
 }
 
-TEST(ElementHash, AnEmptyHashVisitsNothing) {
+TEST(PointHash, AnEmptyHashVisitsNothing) {
   const std::vector<glm::dvec3> none;
-  const ElementHash hash(none, CellGrid(glm::dvec3(0), glm::dvec3(1), 0.1), ElementHash::Fill::None);
+  const PointHash hash(none, CellGrid(glm::dvec3(0), glm::dvec3(1), 0.1), PointHash::Fill::None);
   int visited = 0;
   hash.for_each_near(glm::dvec3(0.5), [&](int) { ++visited; });
   EXPECT_EQ(visited, 0);

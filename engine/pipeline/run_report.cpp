@@ -1,4 +1,4 @@
-#include "report/run_report.h"
+#include "pipeline/run_report.h"
 
 #include "report/bill_of_stones.h"
 
@@ -139,8 +139,8 @@ nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const
                             {"area_ratio_max", q.area_ratio_max},
                             {"area_distortion_mean", q.area_distortion_mean}}},
       {"design", {{"source", info.design_source},
-                  {"units", units_name(pavement.design.units)},
-                  {"tessellation", tessellation_name(pavement.design.pattern.tessellation)},
+                  {"units", enum_name(pavement.design.units)},
+                  {"tessellation", enum_name(pavement.design.pattern.tessellation)},
                   {"spacing", pavement.design.pattern.spacing},
                   {"gap", pavement.design.elements.gap},
                   {"margin", pavement.design.elements.margin},
@@ -150,11 +150,11 @@ nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const
                    {"edges", counts.pattern_edges},
                    {"virtual_edges", counts.virtual_edges},
                    {"boundary_crossing_edges", counts.boundary_crossing_edges},
-                   {"topology", topology_name(pavement.design.pattern.topology)},
+                   {"topology", enum_name(pavement.design.pattern.topology)},
                    {"topology_choice", pavement.topology_choice},
                    {"band", band_json(map, pavement)},
                    {"row_alignment", pavement.row_alignment
-                                         ? json{{"axis", std::string(align_axis_name(pavement.row_alignment->axis))},
+                                         ? json{{"axis", std::string(enum_name(pavement.row_alignment->axis))},
                                                 {"rotation_deg", pavement.row_alignment->rotation_deg},
                                                 {"spread_deg", pavement.row_alignment->spread_deg},
                                                 {"axis_to_surface_deg", pavement.row_alignment->axis_to_surface_deg}}
@@ -178,7 +178,7 @@ nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const
                     {"edge", counts.edge_elements}}},
       {"optimization", {{"backend", pavement.solve.backend.empty() ? json(nullptr) : json(pavement.solve.backend)},
                         {"iterations", pavement.solve.iterations},
-                        {"stop_reason", stop_reason_name(pavement.solve.reason)},
+                        {"stop_reason", enum_name(pavement.solve.reason)},
                         {"converged", pavement.solve.reason == StopReason::Converged},
                         {"last_max_step", pavement.solve.last_max_step},
                         {"strays_pulled_back", pavement.solve.strays_pulled_back},
@@ -200,7 +200,7 @@ nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const
                   {"across_seams", pavement.refill.on_seams},
                   {"waves", pavement.refill.waves},
                   {"milliseconds", pavement.refill.milliseconds}}},
-      {"rim_rows", {{"rims", std::string(rim_rows_name(pavement.design.elements.rim_rows))},
+      {"rim_rows", {{"rims", std::string(enum_name(pavement.design.elements.rim_rows))},
                     {"loops", pavement.rim_rows.loops},
                     {"placed", pavement.rim_rows.placed},
                     {"made_way", pavement.rim_rows.made_way}}},
