@@ -12,5 +12,6 @@ std::function<int()> add_param_command(CLI::App& app);
 std::function<int()> add_run_command(CLI::App& app);
 std::function<int()> add_devices_command(CLI::App& app);
 std::function<int()> add_parameters_command(CLI::App& app);
+std::function<int()> add_keys_command(CLI::App& app);
 
 }  // namespace paver::cli

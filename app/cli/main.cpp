@@ -21,12 +21,15 @@ int main(int argc, char** argv) {
   const auto run_run = paver::cli::add_run_command(app);
   const auto run_devices = paver::cli::add_devices_command(app);
   const auto run_parameters = paver::cli::add_parameters_command(app);
-  if (const auto exit_code = paver::app::parse_command_line(app, argc, argv, "paver run|param|devices|parameters ...")) return *exit_code;
+  const auto run_keys = paver::cli::add_keys_command(app);
+  if (const auto exit_code = paver::app::parse_command_line(app, argc, argv, "paver run|param|devices|parameters|keys ..."))
+    return *exit_code;
   try {
     if (app.got_subcommand("param")) return run_param();
     if (app.got_subcommand("run")) return run_run();
     if (app.got_subcommand("devices")) return run_devices();
     if (app.got_subcommand("parameters")) return run_parameters();
+    if (app.got_subcommand("keys")) return run_keys();
   } catch (const paver::Interrupted&) {
     std::cerr << "paver: interrupted; nothing was written, the output folder is as it was\n";
     return paver::cli::interrupted_exit_code();

@@ -1,4 +1,5 @@
 #include "design_keys.h"
+#include "design/design_keys.h"
 
 #include "io/design_io.h"
 #include "core/input_error.h"
@@ -11,7 +12,9 @@ namespace paver::studio {
 
 std::string design_key_pointer(std::string_view key) {
   const std::string name(key);
-  if (key.empty()) throw InputError("set: the key is empty; keys look like solver.dt or elements.edge[0].t");
+  if (key.empty())
+    throw InputError("set: the key is empty; keys look like " + key_path(Key::solver_dt) + " or " +
+                     key_path(Key::edge_t, 0));
   std::string pointer = "/";
   for (std::size_t i = 0; i < key.size(); ++i) {
     const char c = key[i];
@@ -28,7 +31,7 @@ std::string design_key_pointer(std::string_view key) {
       pointer += key.substr(i + 1, close - i - 1);
       i = close;
     } else if (c == '/' || c == '~') {
-      throw InputError("set " + name + ": use dots between the parts of a key (solver.dt)");
+      throw InputError("set " + name + ": use dots between the parts of a key (" + key_path(Key::solver_dt) + ")");
     } else {
       pointer += c;
     }
@@ -42,8 +45,9 @@ Design set_design_key(const Design& design, std::string_view key, std::string_vi
   const nlohmann::json::json_pointer pointer(design_key_pointer(key));
   nlohmann::json json = design_to_json(design);
   if (!json.contains(pointer) || pointer.empty())
-    throw InputError("set " + name + ": no such design key; keys are those of design.json, e.g. solver.dt, "
-                     "pattern.spacing, elements.vertex.scale, placement.rotation_deg");
+    throw InputError("set " + name + ": no such design key; keys are those of design.json (docs/design_file.md), e.g. " +
+                     key_path(Key::solver_dt) + ", " + key_path(Key::pattern_spacing) + ", " +
+                     key_path(Key::vertex_scale) + ", " + key_path(Key::rotation_deg));
   nlohmann::json parsed = nlohmann::json::parse(value.begin(), value.end(), nullptr, false);
   if (parsed.is_discarded()) parsed = std::string(value);
   json[pointer] = std::move(parsed);

@@ -1,4 +1,5 @@
 #include "script.h"
+#include "design/design_keys.h"
 
 #include "map/surface_charts.h"
 
@@ -72,186 +73,218 @@ std::string_view command_name(Kind kind) {
   return "?";
 }
 
+namespace {
+
+// One line's command being read: its words, where it stands (for messages) and what it gives.
+struct LineParser {
+  std::string where;      // "s.txt:4: "
+  std::string name;       // the command's word
+  std::string_view rest;  // after it, trimmed
+  ScriptCommand& out;
+
+  [[noreturn]] void refuse(const std::string& what) const { throw InputError(where + what); }
+  void need_argument(std::string_view what) const {
+    if (rest.empty()) refuse(name + " needs " + std::string(what));
+  }
+  // A command that takes one name from a list: kept as written, or refused naming the list.
+  void need_choice(bool known, std::string_view choices) const {
+    need_argument(choices);
+    if (!known) refuse(name + " '" + std::string(rest) + "': use " + std::string(choices));
+    out.text = std::string(rest);
+  }
+  std::vector<std::string_view> words() const {
+    std::vector<std::string_view> all;
+    for (std::string_view left = rest; !left.empty();) {
+      const auto [word, after] = first_word(left);
+      all.push_back(word);
+      left = after;
+    }
+    return all;
+  }
+};
+
+// open, design, save, export, screenshot: the rest of the line, so paths may hold blanks.
+void parse_path(const LineParser& p) {
+  p.need_argument(p.out.kind == Kind::Export ? "a folder" : "a file path");
+  p.out.text = std::string(p.rest);
+  if (p.out.kind == Kind::Screenshot && !p.out.text.ends_with(".png"))
+    p.refuse("screenshot writes PNG: give a path ending in .png");
+}
+
+// click U V [shift|ctrl], mouse_drag U0 V0 U1 V1 [shift|ctrl], mouse_drag3d ID U V.
+void parse_pointer(const LineParser& p) {
+  ScriptCommand& out = p.out;
+  if (out.kind == Kind::MouseDrag3d) {
+    p.need_argument("an element id and the map point to drop it at, e.g. mouse_drag3d 42 0.5 0");
+    const auto [id, after_id] = first_word(p.rest);
+    const auto [u, v] = first_word(after_id);
+    if (!parse_number(id, out.id) || out.id < 0 || !parse_number(u, out.u) || !parse_number(v, out.v))
+      p.refuse("mouse_drag3d '" + std::string(p.rest) + "': give an element id and a map point U V");
+    return;
+  }
+  const bool drag = out.kind == Kind::MouseDrag;
+  p.need_argument(drag ? "two map points U0 V0 U1 V1 (and shift or ctrl), e.g. mouse_drag 0 0 0.5 0"
+                       : "a map point U V (and shift or ctrl), e.g. click 0 0");
+  const std::vector<std::string_view> words = p.words();
+  const std::size_t numbers = drag ? 4 : 2;
+  const bool modifier = words.size() == numbers + 1;
+  if (modifier) {
+    out.shift = words.back() == "shift";
+    out.ctrl = words.back() == "ctrl";
+  }
+  double* targets[] = {&out.u, &out.v, &out.u1, &out.v1};
+  bool ok = (words.size() == numbers || (modifier && (out.shift || out.ctrl)));
+  for (std::size_t i = 0; ok && i < numbers; ++i) ok = parse_number(words[i], *targets[i]);
+  if (!ok)
+    p.refuse(p.name + " '" + std::string(p.rest) + "': give " + (drag ? "four" : "two") +
+             " numbers (map points), then optionally shift or ctrl");
+}
+
+// The commands that take one name from a list.
+void parse_choice(const LineParser& p) {
+  switch (p.out.kind) {
+    case Kind::Pattern:
+      p.need_choice(enum_from_name<Tessellation>(p.rest).has_value(), enum_choices_words<Tessellation>());
+      break;
+    case Kind::CutAxis: p.need_choice(enum_from_name<CutAxis>(p.rest).has_value(), enum_choices_words<CutAxis>()); break;
+    case Kind::Key:
+      p.need_choice(key_from_name(p.rest).has_value(), "E, P, I, V, L, C, R, N, Delete, Escape or Space");
+      p.out.key = *key_from_name(p.rest);
+      break;
+    case Kind::Browse:
+      p.need_choice(browse_purpose_from_name(p.rest).has_value(), "surface, design, save, export or shape");
+      break;
+    case Kind::Colour: p.need_choice(p.rest == "ratio" || p.rest == "type", "ratio or type"); break;
+    default: {  // Kind::Panel
+      constexpr std::string_view kPanels = "file, pattern, elements, optimize, report or help";
+      p.need_argument("a panel name: " + std::string(kPanels));
+      if (std::find(std::begin(kPanelNames), std::end(kPanelNames), p.rest) == std::end(kPanelNames))
+        p.refuse("panel '" + std::string(p.rest) + "': use " + std::string(kPanels));
+      p.out.text = std::string(p.rest);
+    }
+  }
+}
+
+// spacing D, set KEY VALUE, cut T FOLDER, orbit DEGREES FRAMES, wait N.
+void parse_values(const LineParser& p) {
+  ScriptCommand& out = p.out;
+  switch (out.kind) {
+    case Kind::Spacing:
+      p.need_argument("the edge length D (0 = derive it from the surface)");
+      if (!parse_number(p.rest, out.number) || out.number < 0)
+        p.refuse("spacing '" + std::string(p.rest) + "': must be a finite number >= 0");
+      break;
+    case Kind::Set: {
+      p.need_argument("a key and a value, e.g. set " + key_path(Key::solver_dt) + " 0.25");
+      const auto [key, value] = first_word(p.rest);
+      if (value.empty()) p.refuse("set " + std::string(key) + " needs a value");
+      out.text = std::string(key);
+      out.value = std::string(value);
+      break;
+    }
+    case Kind::Cut: {
+      p.need_argument("the metal's thickness and a folder, e.g. cut 1 out/metal");
+      const auto [thickness, folder] = first_word(p.rest);
+      if (!parse_number(thickness, out.number) || !(out.number > 0))
+        p.refuse("cut '" + std::string(thickness) + "': the thickness must be a number above 0");
+      if (folder.empty()) p.refuse("cut " + std::string(thickness) + " needs a folder");
+      out.text = std::string(folder);
+      break;
+    }
+    case Kind::Orbit: {
+      p.need_argument("degrees and a number of frames, e.g. orbit 90 60");
+      const auto [degrees, frames] = first_word(p.rest);
+      if (!parse_number(degrees, out.number) || !std::isfinite(out.number) || !parse_number(frames, out.frames) ||
+          out.frames < 1)
+        p.refuse("orbit '" + std::string(p.rest) + "': give degrees and a whole number of frames >= 1");
+      break;
+    }
+    default:  // Kind::Wait
+      p.need_argument("a number of frames");
+      if (!parse_number(p.rest, out.frames) || out.frames < 0)
+        p.refuse("wait '" + std::string(p.rest) + "': must be a whole number of frames >= 0");
+  }
+}
+
+// select, pin, unpin, delete ID|selection; drag ID DU DV.
+void parse_element(const LineParser& p) {
+  ScriptCommand& out = p.out;
+  const bool drag = out.kind == Kind::Drag;
+  p.need_argument(drag ? "an element id and a move in spacings, e.g. drag 42 0.4 0" : "an element id (placements.csv's id)");
+  const auto [id, move] = first_word(p.rest);
+  if (id == "selection" && move.empty() && (out.kind == Kind::Pin || out.kind == Kind::Unpin || out.kind == Kind::Delete)) {
+    out.id = ScriptCommand::kSelection;
+    return;
+  }
+  if (!parse_number(id, out.id) || out.id < 0)
+    p.refuse(p.name + " '" + std::string(id) + "': an element id is a whole number >= 0");
+  if (!drag && !move.empty()) p.refuse(p.name + " takes one element id, got '" + std::string(p.rest) + "'");
+  if (!drag) return;
+  const auto [du, dv] = first_word(move);
+  if (!parse_number(du, out.u) || !parse_number(dv, out.v))
+    p.refuse("drag " + std::string(id) + " needs the move as two numbers of spacings D, e.g. drag " + std::string(id) +
+             " 0.4 0");
+}
+
+// select_box U0 V0 U1 V1, add U V, brush U V RADIUS STRENGTH.
+void parse_map_points(const LineParser& p) {
+  ScriptCommand& out = p.out;
+  const std::vector<std::string_view> words = p.words();
+  const auto numbers = [&](std::initializer_list<double*> targets) {
+    if (words.size() != targets.size()) return false;
+    std::size_t i = 0;
+    for (double* target : targets)
+      if (!parse_number(words[i++], *target)) return false;
+    return true;
+  };
+  if (out.kind == Kind::SelectBox) {
+    p.need_argument("two map corners U0 V0 U1 V1, e.g. select_box -1 -1 1 1");
+    if (!numbers({&out.u, &out.v, &out.u1, &out.v1}))
+      p.refuse("select_box '" + std::string(p.rest) + "': give two map corners as four numbers U0 V0 U1 V1");
+  } else if (out.kind == Kind::Add) {
+    p.need_argument("a map point U V (as placements.csv's u and v), e.g. add 1.5 -2");
+    if (!numbers({&out.u, &out.v})) p.refuse("add '" + std::string(p.rest) + "': give the map point as two numbers U V");
+  } else {  // Kind::Brush
+    p.need_argument("a map point, a radius in spacings and a strength, e.g. brush 0 0 4 0.3");
+    if (!numbers({&out.u, &out.v, &out.radius, &out.strength}) || !(out.radius > 0) || out.strength < -0.5 ||
+        out.strength > 1)
+      p.refuse("brush '" + std::string(p.rest) +
+               "': give U V RADIUS STRENGTH, the radius > 0 spacings, the strength in [-0.5, 1]");
+  }
+}
+
+}  // namespace
+
 bool parse_script_line(std::string_view line, int line_number, const std::string& source, ScriptCommand& out) {
   const std::string_view content = trim(strip_comment(line));
   if (content.empty()) return false;
   const std::string where = source + ":" + std::to_string(line_number) + ": ";
   const auto [word, rest] = first_word(content);
-  const std::string name(word);
-
   const Kind* kind = nullptr;
   for (const auto& [command, k] : kCommands)
     if (command == word) kind = &k;
   if (!kind) {
     std::string known;
     for (const auto& [command, k] : kCommands) known += (known.empty() ? "" : ", ") + std::string(command);
-    throw InputError(where + "unknown command '" + name + "'; commands are " + known);
+    throw InputError(where + "unknown command '" + std::string(word) + "'; commands are " + known);
   }
   out = ScriptCommand{};
   out.kind = *kind;
   out.line = line_number;
-
-  const auto need_argument = [&](const char* what) {
-    if (rest.empty()) throw InputError(where + name + " needs " + what);
-  };
-  // A command that takes one name from a list: kept as written, or refused naming the list.
-  const auto need_choice = [&](bool known, const char* choices) {
-    need_argument(choices);
-    if (!known) throw InputError(where + name + " '" + std::string(rest) + "': use " + choices);
-    out.text = std::string(rest);
-  };
+  const LineParser parser{where, std::string(word), rest, out};
   switch (*kind) {
-    case Kind::Open:
-    case Kind::Design:
-    case Kind::Save:
-    case Kind::Export:
-    case Kind::Screenshot:
-      need_argument(*kind == Kind::Export ? "a folder" : "a file path");
-      out.text = std::string(rest);  // the rest of the line, so paths may hold blanks
-      if (*kind == Kind::Screenshot && !out.text.ends_with(".png"))
-        throw InputError(where + "screenshot writes PNG: give a path ending in .png");
+    case Kind::Open: case Kind::Design: case Kind::Save: case Kind::Export: case Kind::Screenshot:
+      parse_path(parser);
       break;
-    case Kind::Pattern: need_choice(tessellation_from_name(rest).has_value(), "tri, grid or hex"); break;
-    case Kind::CutAxis: need_choice(cut_axis_from_name(rest).has_value(), "auto, x, y or z"); break;
-    case Kind::Click:
-    case Kind::MouseDrag: {
-      const bool drag = *kind == Kind::MouseDrag;
-      need_argument(drag ? "two map points U0 V0 U1 V1 (and shift or ctrl), e.g. mouse_drag 0 0 0.5 0"
-                         : "a map point U V (and shift or ctrl), e.g. click 0 0");
-      std::vector<std::string_view> words;
-      for (std::string_view left = rest; !left.empty();) {
-        const auto [word, after] = first_word(left);
-        words.push_back(word);
-        left = after;
-      }
-      const std::size_t numbers = drag ? 4 : 2;
-      const bool modifier = words.size() == numbers + 1;
-      if (modifier) {
-        out.shift = words.back() == "shift";
-        out.ctrl = words.back() == "ctrl";
-      }
-      double* targets[] = {&out.u, &out.v, &out.u1, &out.v1};
-      bool ok = (words.size() == numbers || (modifier && (out.shift || out.ctrl)));
-      for (std::size_t i = 0; ok && i < numbers; ++i) ok = parse_number(words[i], *targets[i]);
-      if (!ok)
-        throw InputError(where + name + " '" + std::string(rest) + "': give " + (drag ? "four" : "two") +
-                         " numbers (map points), then optionally shift or ctrl");
+    case Kind::Click: case Kind::MouseDrag: case Kind::MouseDrag3d: parse_pointer(parser); break;
+    case Kind::Pattern: case Kind::CutAxis: case Kind::Key: case Kind::Browse: case Kind::Colour: case Kind::Panel:
+      parse_choice(parser);
       break;
-    }
-    case Kind::MouseDrag3d: {
-      need_argument("an element id and the map point to drop it at, e.g. mouse_drag3d 42 0.5 0");
-      const auto [id, after_id] = first_word(rest);
-      const auto [u, v] = first_word(after_id);
-      if (!parse_number(id, out.id) || out.id < 0 || !parse_number(u, out.u) || !parse_number(v, out.v))
-        throw InputError(where + "mouse_drag3d '" + std::string(rest) + "': give an element id and a map point U V");
-      break;
-    }
-    case Kind::Key:
-      need_choice(key_from_name(rest).has_value(), "E, P, I, V, L, C, R, N, Delete, Escape or Space");
-      out.key = *key_from_name(rest);
-      break;
-    case Kind::Browse: need_choice(browse_purpose_from_name(rest).has_value(), "surface, design, save, export or shape"); break;
-    case Kind::Colour: need_choice(rest == "ratio" || rest == "type", "ratio or type"); break;
-    case Kind::Panel: {
-      need_argument("a panel name: file, pattern, elements, optimize, report or help");
-      if (std::find(std::begin(kPanelNames), std::end(kPanelNames), rest) == std::end(kPanelNames))
-        throw InputError(where + "panel '" + std::string(rest) + "': use file, pattern, elements, optimize, report or help");
-      out.text = std::string(rest);
-      break;
-    }
-    case Kind::Spacing: {
-      need_argument("the edge length D (0 = derive it from the surface)");
-      const auto [ptr, ec] = std::from_chars(rest.data(), rest.data() + rest.size(), out.number);
-      if (ec != std::errc() || ptr != rest.data() + rest.size() || !std::isfinite(out.number) || out.number < 0)
-        throw InputError(where + "spacing '" + std::string(rest) + "': must be a finite number >= 0");
-      break;
-    }
-    case Kind::Set: {
-      need_argument("a key and a value, e.g. set solver.dt 0.25");
-      const auto [key, value] = first_word(rest);
-      if (value.empty()) throw InputError(where + "set " + std::string(key) + " needs a value");
-      out.text = std::string(key);
-      out.value = std::string(value);
-      break;
-    }
-    case Kind::Cut: {
-      need_argument("the metal's thickness and a folder, e.g. cut 1 out/metal");
-      const auto [thickness, folder] = first_word(rest);
-      const auto [ptr, ec] = std::from_chars(thickness.data(), thickness.data() + thickness.size(), out.number);
-      if (ec != std::errc() || ptr != thickness.data() + thickness.size() || !std::isfinite(out.number) ||
-          !(out.number > 0))
-        throw InputError(where + "cut '" + std::string(thickness) + "': the thickness must be a number above 0");
-      if (folder.empty()) throw InputError(where + "cut " + std::string(thickness) + " needs a folder");
-      out.text = std::string(folder);
-      break;
-    }
-    case Kind::Orbit: {
-      need_argument("degrees and a number of frames, e.g. orbit 90 60");
-      const auto [degrees, frames] = first_word(rest);
-      if (!parse_number(degrees, out.number) || !std::isfinite(out.number) || !parse_number(frames, out.frames) ||
-          out.frames < 1)
-        throw InputError(where + "orbit '" + std::string(rest) + "': give degrees and a whole number of frames >= 1");
-      break;
-    }
-    case Kind::Wait: {
-      need_argument("a number of frames");
-      const auto [ptr, ec] = std::from_chars(rest.data(), rest.data() + rest.size(), out.frames);
-      if (ec != std::errc() || ptr != rest.data() + rest.size() || out.frames < 0)
-        throw InputError(where + "wait '" + std::string(rest) + "': must be a whole number of frames >= 0");
-      break;
-    }
-    case Kind::Select:
-    case Kind::Pin:
-    case Kind::Unpin:
-    case Kind::Delete:
-    case Kind::Drag: {
-      const bool drag = *kind == Kind::Drag;
-      need_argument(drag ? "an element id and a move in spacings, e.g. drag 42 0.4 0" : "an element id (placements.csv's id)");
-      const auto [id, move] = first_word(rest);
-      if (id == "selection" && move.empty() && (*kind == Kind::Pin || *kind == Kind::Unpin || *kind == Kind::Delete)) {
-        out.id = ScriptCommand::kSelection;
-        break;
-      }
-      if (!parse_number(id, out.id) || out.id < 0)
-        throw InputError(where + name + " '" + std::string(id) + "': an element id is a whole number >= 0");
-      if (!drag && !move.empty()) throw InputError(where + name + " takes one element id, got '" + std::string(rest) + "'");
-      if (drag) {
-        const auto [du, dv] = first_word(move);
-        if (!parse_number(du, out.u) || !parse_number(dv, out.v))
-          throw InputError(where + "drag " + std::string(id) + " needs the move as two numbers of spacings D, e.g. drag " +
-                           std::string(id) + " 0.4 0");
-      }
-      break;
-    }
-    case Kind::SelectBox: {
-      need_argument("two map corners U0 V0 U1 V1, e.g. select_box -1 -1 1 1");
-      const auto [u0, after_u0] = first_word(rest);
-      const auto [v0, after_v0] = first_word(after_u0);
-      const auto [u1, v1] = first_word(after_v0);
-      if (!parse_number(u0, out.u) || !parse_number(v0, out.v) || !parse_number(u1, out.u1) || !parse_number(v1, out.v1))
-        throw InputError(where + "select_box '" + std::string(rest) + "': give two map corners as four numbers U0 V0 U1 V1");
-      break;
-    }
-    case Kind::Add: {
-      need_argument("a map point U V (as placements.csv's u and v), e.g. add 1.5 -2");
-      const auto [u, v] = first_word(rest);
-      if (!parse_number(u, out.u) || !parse_number(v, out.v))
-        throw InputError(where + "add '" + std::string(rest) + "': give the map point as two numbers U V");
-      break;
-    }
-    case Kind::Brush: {
-      need_argument("a map point, a radius in spacings and a strength, e.g. brush 0 0 4 0.3");
-      const auto [u, after_u] = first_word(rest);
-      const auto [v, after_v] = first_word(after_u);
-      const auto [radius, strength] = first_word(after_v);
-      if (!parse_number(u, out.u) || !parse_number(v, out.v) || !parse_number(radius, out.radius) ||
-          !parse_number(strength, out.strength) || !(out.radius > 0) || out.strength < -0.5 || out.strength > 1)
-        throw InputError(where + "brush '" + std::string(rest) +
-                         "': give U V RADIUS STRENGTH, the radius > 0 spacings, the strength in [-0.5, 1]");
-      break;
-    }
+    case Kind::Spacing: case Kind::Set: case Kind::Cut: case Kind::Orbit: case Kind::Wait: parse_values(parser); break;
+    case Kind::Select: case Kind::Pin: case Kind::Unpin: case Kind::Delete: case Kind::Drag: parse_element(parser); break;
+    case Kind::SelectBox: case Kind::Add: case Kind::Brush: parse_map_points(parser); break;
     default:
-      if (!rest.empty()) throw InputError(where + name + " takes no argument, got '" + std::string(rest) + "'");
+      if (!rest.empty()) parser.refuse(std::string(word) + " takes no argument, got '" + std::string(rest) + "'");
   }
   return true;
 }

@@ -1,6 +1,7 @@
-#include "pipeline/pavement.h"
 #include "shortcuts.h"
 
+#include "design/design_keys.h"
+#include "pipeline/pavement.h"
 #include "studio.h"
 #include "element_editing.h"
 
@@ -28,7 +29,7 @@ const std::vector<Shortcut>& shortcut_list() {
       {"Left drag (3D)", "orbit"},
       {"Right or middle drag", "pan"},
       {"Wheel", "zoom"},
-      {"Left drag (2D)", "move the pattern over the map (placement.offset)"},
+      {"Left drag (2D)", "move the pattern over the map (" + key_path(Key::placement_offset) + ")"},
       {"Drag the handles (2D)", "rotate (round) and scale (square) the placement"},
       {"E", "edit stones: clicks in the views select, drag (either view: in 3D start on the stone) and add (Ctrl+click, 2D) single elements"},
       {"Shift+drag (2D, edit stones)", "select every element in a box"},

@@ -1,5 +1,6 @@
 #pragma once
 // The keyboard shortcuts: one table for the help panel and for handling them, so the two agree.
+#include <string>
 #include <vector>
 
 namespace paver::studio {
@@ -8,7 +9,7 @@ struct Studio;
 
 struct Shortcut {
   const char* keys;
-  const char* action;
+  std::string action;
 };
 const std::vector<Shortcut>& shortcut_list();
 

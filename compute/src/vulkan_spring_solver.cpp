@@ -1,4 +1,5 @@
 #include "paver/compute/vulkan_spring_solver.h"
+#include "design/design_keys.h"
 
 #include "core/stopwatch.h"
 #include "paver/compute/gpu_buffer.h"
@@ -309,8 +310,8 @@ private:
 
   void check_errors() const {
     if (control_[kControlError] & kErrorNonFinite)
-      throw std::runtime_error("vulkan solver: a particle has a non-finite position (the solver diverged; "
-                               "try a smaller solver.dt)");
+      throw std::runtime_error("vulkan solver: a particle has a non-finite position (the solver diverged; try a "
+                               "smaller " + key_path(Key::solver_dt) + ")");
     if (control_[kControlError] & kErrorNotLifted)
       throw std::runtime_error("vulkan solver: a particle could not be lifted onto the map");
   }

@@ -1,8 +1,9 @@
 #include "elements/beads.h"
+#include "design/design_keys.h"
 
 #include "core/number_text.h"
 #include "elements/boundary_postprocess.h"
-#include "elements/element_hash.h"
+#include "core/point_hash.h"
 #include "map/lifting.h"
 
 #include <glm/geometric.hpp>
@@ -27,7 +28,7 @@ Elements place_beads(const SurfaceMap& map, const Elements& stones, const Elemen
     hi = glm::max(hi, stones.position[i]);
   }
   const double reach = largest * (1 + kBeadContactSlack) + gap;
-  const ElementHash hash(stones, CellGrid(lo - glm::dvec3(reach), hi + glm::dvec3(reach), reach));
+  const PointHash hash(stones.position, CellGrid(lo - glm::dvec3(reach), hi + glm::dvec3(reach), reach));
   const auto in_contact = [&](int i, int j) {
     const double limit = 0.5 * (stones.diameter[std::size_t(i)] + stones.diameter[std::size_t(j)]) + gap +
                          kBeadContactSlack * std::min(stones.diameter[std::size_t(i)], stones.diameter[std::size_t(j)]);
@@ -89,7 +90,7 @@ std::optional<std::string> fine_beads_warning(const Elements& beads, Units units
   if (fine == 0) return std::nullopt;
   return std::to_string(fine) + " of " + std::to_string(beads.size()) + " beads are under " +
          number_text(kFinestCastBeadMm) + " mm (the smallest " + number_text(std::round(smallest * 1000) / 1000) +
-         " mm), finer than casting or wax printing holds reliably: raise elements.beads.scale or the gap";
+         " mm), finer than casting or wax printing holds reliably: raise " + key_path(Key::beads_scale) + " or the gap";
 }
 
 }  // namespace paver

@@ -1,26 +1,23 @@
 #include "io/design_io.h"
 
-#include "io/atomic_file.h"
 #include "core/closest_name.h"
 #include "core/input_error.h"
-#include "pattern/unit_cell.h"
+#include "design/design_keys.h"
+#include "io/atomic_file.h"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <cctype>
 #include <climits>
 #include <cmath>
 #include <cstdint>
 #include <fstream>
-#include <initializer_list>
 #include <optional>
 #include <set>
 #include <sstream>
 #include <string_view>
 #include <system_error>
 #include <type_traits>
-#include <variant>
 #include <vector>
 
 namespace paver {
@@ -28,28 +25,40 @@ namespace {
 
 using nlohmann::json;
 
-constexpr Tessellation kTessellations[] = {Tessellation::Triangle, Tessellation::Grid, Tessellation::Hexagon};
-constexpr Topology kTopologies[] = {Topology::Lattice, Topology::Adaptive, Topology::Auto};
-constexpr Units kUnits[] = {Units::Millimetre, Units::Centimetre, Units::Metre, Units::Inch};
-constexpr BandRows kBandRows[] = {BandRows::Along, BandRows::Across, BandRows::Auto};
-constexpr AlignAxis kAlignAxes[] = {AlignAxis::None, AlignAxis::X, AlignAxis::Y, AlignAxis::Z};
-constexpr CutAxis kCutAxes[] = {CutAxis::Auto, CutAxis::X, CutAxis::Y, CutAxis::Z};
-constexpr RimRows kRimRows[] = {RimRows::None, RimRows::Holes, RimRows::All};
-constexpr FilterBase kFilterBases[] = {FilterBase::Current, FilterBase::Initial};
-constexpr ShapeKind kShapes[] = {ShapeKind::Sphere, ShapeKind::Gem, ShapeKind::HexPrism, ShapeKind::Disc,
-                                 ShapeKind::Custom};
-constexpr EdgeOperator::Kind kOperatorKinds[] = {EdgeOperator::Kind::Flip, EdgeOperator::Kind::Add,
-                                                 EdgeOperator::Kind::Remove};
-
 std::string join(const std::string& path, std::string_view key) {
   return path.empty() ? std::string(key) : path + "." + std::string(key);
 }
 
 std::string indexed(const std::string& path, size_t index) { return path + "[" + std::to_string(index) + "]"; }
 
+// The last part of a key's path: "elements.edge[].t" -> "t".
+std::string_view leaf(Key key) {
+  const std::string_view path = design_key(key).path;
+  return path.substr(path.find_last_of('.') + 1);
+}
 
-// Reads design.json values into Design fields. Every error names the source and the full key
-// path ("pattern.operators[2].offset") so the user can find the line to fix.
+// The names an object at `parent` (a table path: "", "elements", "pattern.operators[]") may hold,
+// in the table's order.
+std::vector<std::string_view> known_children(std::string_view parent) {
+  std::vector<std::string_view> known;
+  if (parent.empty()) known.push_back("version");
+  const std::string prefix = parent.empty() ? "" : std::string(parent) + ".";
+  for (const DesignKey& row : design_keys()) {
+    if (!row.path.starts_with(prefix)) continue;
+    std::string_view rest = row.path.substr(prefix.size());
+    rest = rest.substr(0, rest.find_first_of(".["));
+    if (std::find(known.begin(), known.end(), rest) == known.end()) known.push_back(rest);
+  }
+  return known;
+}
+
+// An object that holds keys of its own without being one ("elements", "elements.vertex").
+bool is_group(std::string_view path) {
+  return find_design_key(path) == nullptr && !known_children(path).empty();
+}
+
+// Reads design.json values into Design fields, by the design key table. Every error names the
+// source and the full key path ("pattern.operators[2].offset") so the user can find the line.
 class Reader {
 public:
   explicit Reader(const std::string& source) : source_(source) {}
@@ -60,32 +69,33 @@ public:
     fail("'" + path + "' must be " + std::string(expected) + ", got " + value.type_name());
   }
 
-  // Requires `value` to be an object whose keys are all in `known`.
-  void check_object(const json& value, const std::string& path, std::initializer_list<std::string_view> known) const {
-    check_keys(value, path, known);
-  }
-  template <class Known>
-  void check_keys(const json& value, const std::string& path, const Known& known) const {
+  // Every key of `value` (at table path `shape`, written `path`) known, and every group in it an
+  // object whose keys are known too.
+  void check_keys(const json& value, const std::string& shape, const std::string& path) const {
     if (!value.is_object()) wrong_type(value, path, "an object");
+    const std::vector<std::string_view> known = known_children(shape);
     for (const auto& item : value.items()) {
       const std::string& key = item.key();
-      if (std::find(known.begin(), known.end(), key) != known.end()) continue;
-      fail("unknown key '" + join(path, key) + "'" + suggestion(key, path, known));
+      if (std::find(known.begin(), known.end(), key) == known.end())
+        fail("unknown key '" + join(path, key) + "'" + suggestion(key, path, known));
+      if (is_group(join(shape, key))) check_keys(item.value(), join(shape, key), join(path, key));
     }
   }
 
-  // Reads object[key] into `out`; an edit without its element's id or position means nothing.
-  template <class T>
-  void required(const json& object, const std::string& path, const char* key, T& out) const {
-    if (!object.contains(key)) fail("missing key '" + join(path, key) + "'");
-    field(object, path, key, out);
-  }
-
-  // Reads object[key] into `out` when present; an absent key keeps the default already in `out`.
-  template <class T>
-  void field(const json& object, const std::string& path, const char* key, T& out) const {
-    const auto it = object.find(key);
-    if (it != object.end()) read(*it, join(path, key), out);
+  // Every key of the design that the file gives, read into `design`.
+  void read_design(const json& root, Design& design) const {
+    visit_keys(design, [&](Key key, auto& field) {
+      const json* value = &root;
+      const std::string_view path = design_key(key).path;
+      for (std::size_t start = 0; value;) {  // down the groups, which check_keys found objects
+        const std::size_t dot = path.find('.', start);
+        const auto it = value->find(std::string(path.substr(start, dot - start)));
+        value = it == value->end() ? nullptr : &*it;
+        if (dot == std::string_view::npos) break;
+        start = dot + 1;
+      }
+      if (value) read(*value, std::string(path), field);
+    });
   }
 
   void read(const json& value, const std::string& path, double& out) const {
@@ -136,148 +146,38 @@ public:
     read(value[1], indexed(path, 1), out.y);
   }
 
-  void read(const json& value, const std::string& path, Tessellation& out) const {
-    // The command line's long names ("triangle", "square", "hexagon") are read here too.
-    if (value.is_string())
-      if (const std::optional<Tessellation> t = tessellation_from_name(value.get<std::string>())) {
-        out = *t;
-        return;
-      }
-    read_name(value, path, out, kTessellations, tessellation_name);
-  }
-  void read(const json& value, const std::string& path, Topology& out) const {
-    read_name(value, path, out, kTopologies, topology_name);
-  }
-  void read(const json& value, const std::string& path, BandRows& out) const {
-    read_name(value, path, out, kBandRows, band_rows_name);
-  }
-  void read(const json& value, const std::string& path, AlignAxis& out) const {
-    read_name(value, path, out, kAlignAxes, align_axis_name);
-  }
-  void read(const json& value, const std::string& path, CutAxis& out) const {
-    read_name(value, path, out, kCutAxes, cut_axis_name);
-  }
-  void read(const json& value, const std::string& path, RimRows& out) const {
-    read_name(value, path, out, kRimRows, rim_rows_name);
-  }
-  void read(const json& value, const std::string& path, Units& out) const {
-    read_name(value, path, out, kUnits, units_name);
-  }
-  void read(const json& value, const std::string& path, FilterBase& out) const {
-    read_name(value, path, out, kFilterBases, filter_base_name);
-  }
-  void read(const json& value, const std::string& path, ShapeKind& out) const {
-    read_name(value, path, out, kShapes, shape_name);
-  }
-  void read(const json& value, const std::string& path, EdgeOperator::Kind& out) const {
-    read_name(value, path, out, kOperatorKinds, operator_name);
+  template <NamedEnum E>
+  void read(const json& value, const std::string& path, E& out) const {
+    if (!value.is_string()) wrong_type(value, path, "a string");
+    if (const std::optional<E> named = enum_from_name<E>(value.get<std::string>())) {
+      out = *named;
+      return;
+    }
+    fail("'" + path + "' must be one of " + enum_choices_quoted<E>() + ", got " + value.dump());
   }
 
-  template <class T>
-  void read(const json& value, const std::string& path, std::vector<T>& out) const {
+  void read(const json& value, const std::string& path, std::vector<int>& out) const {
     if (!value.is_array()) wrong_type(value, path, "an array");
-    out.assign(value.size(), T{});
+    out.assign(value.size(), 0);
     for (size_t i = 0; i < value.size(); ++i) read(value[i], indexed(path, i), out[i]);
   }
 
-  void read(const json& value, const std::string& path, EdgeOperator& out) const {
-    check_object(value, path, {"op", "from", "to", "offset", "virtual"});
-    field(value, path, "op", out.kind);
-    field(value, path, "from", out.from);
-    field(value, path, "to", out.to);
-    field(value, path, "offset", out.offset);
-    field(value, path, "virtual", out.is_virtual);
-  }
-
-  void read(const json& value, const std::string& path, PatternDesign& out) const {
-    check_object(value, path, {"tessellation", "spacing", "bracing", "operators", "topology"});
-    field(value, path, "tessellation", out.tessellation);
-    field(value, path, "spacing", out.spacing);
-    field(value, path, "bracing", out.bracing);
-    field(value, path, "operators", out.operators);
-    field(value, path, "topology", out.topology);
-  }
-
-  void read(const json& value, const std::string& path, VertexElementDesign& out) const {
-    check_object(value, path, {"enabled", "scale", "shape"});
-    field(value, path, "enabled", out.enabled);
-    field(value, path, "scale", out.scale);
-    field(value, path, "shape", out.shape);
-  }
-
-  void read(const json& value, const std::string& path, EdgeElementDesign& out) const {
-    check_object(value, path, {"t", "scale", "shape", "cell_edges"});
-    field(value, path, "t", out.t);
-    field(value, path, "scale", out.scale);
-    field(value, path, "shape", out.shape);
-    field(value, path, "cell_edges", out.cell_edges);
-  }
-
-  void read(const json& value, const std::string& path, ElementsDesign& out) const {
-    check_object(value, path, {"vertex", "edge", "custom_shape", "allow_overlap", "gap", "margin", "rim_rows", "beads"});
-    field(value, path, "vertex", out.vertex);
-    field(value, path, "edge", out.edge);
-    field(value, path, "custom_shape", out.custom_shape);
-    field(value, path, "allow_overlap", out.allow_overlap);
-    field(value, path, "gap", out.gap);
-    field(value, path, "margin", out.margin);
-    field(value, path, "rim_rows", out.rim_rows);
-    field(value, path, "beads", out.beads);
-  }
-
-  void read(const json& value, const std::string& path, BeadDesign& out) const {
-    check_object(value, path, {"enabled", "scale"});
-    field(value, path, "enabled", out.enabled);
-    field(value, path, "scale", out.scale);
-  }
-
-  void read(const json& value, const std::string& path, MovedParticle& out) const {
-    check_object(value, path, {"id", "uv", "pinned"});
-    required(value, path, "id", out.id);
-    required(value, path, "uv", out.uv);
-    field(value, path, "pinned", out.pinned);
-  }
-
-  // An element named by id and map point: a deletion or an addition.
-  template <class IdAndPoint>
-    requires std::is_same_v<IdAndPoint, DeletedElement> || std::is_same_v<IdAndPoint, AddedElement>
-  void read(const json& value, const std::string& path, IdAndPoint& out) const {
-    check_object(value, path, {"id", "uv"});
-    required(value, path, "id", out.id);
-    required(value, path, "uv", out.uv);
-  }
-
-  void read(const json& value, const std::string& path, GuidanceDab& out) const {
-    check_object(value, path, {"uv", "radius", "strength"});
-    required(value, path, "uv", out.uv);
-    required(value, path, "radius", out.radius);
-    required(value, path, "strength", out.strength);
-  }
-
-  void read(const json& value, const std::string& path, ElementEdits& out) const {
-    check_object(value, path, {"moved", "deleted", "added"});
-    field(value, path, "moved", out.moved);
-    field(value, path, "deleted", out.deleted);
-    field(value, path, "added", out.added);
-  }
-
-  void read(const json& value, const std::string& path, Placement& out) const {
-    check_object(value, path, {"offset", "rotation_deg", "scale", "band_rows", "cut_axis", "align", "fit_offset"});
-    field(value, path, "offset", out.offset);
-    field(value, path, "rotation_deg", out.rotation_deg);
-    field(value, path, "scale", out.scale);
-    field(value, path, "band_rows", out.band_rows);
-    field(value, path, "cut_axis", out.cut_axis);
-    field(value, path, "align", out.align);
-    field(value, path, "fit_offset", out.fit_offset);
-  }
-
-  void read(const json& value, const std::string& path, SolverParams& out) const {
-    std::vector<std::string_view> known;
-    for (const SolverParameter& p : solver_parameters()) known.push_back(p.name);
-    check_keys(value, path, known);
-    for (const SolverParameter& p : solver_parameters())
-      std::visit([&](auto member) { field(value, path, std::string(p.name).c_str(), out.*member); }, p.member);
+  // An array of objects whose fields are keys of their own (operators, edits, dabs).
+  template <class Item>
+  void read(const json& value, const std::string& path, std::vector<Item>& out) const {
+    if (!value.is_array()) wrong_type(value, path, "an array");
+    out.assign(value.size(), Item{});
+    for (size_t i = 0; i < value.size(); ++i) {
+      const std::string at = indexed(path, i);
+      check_keys(value[i], path + "[]", at);
+      visit_item_keys(out[i], [&](Key key, auto& field) {
+        const auto it = value[i].find(std::string(leaf(key)));
+        if (it != value[i].end())
+          read(*it, join(at, leaf(key)), field);
+        else if (design_key(key).required)
+          fail("missing key '" + join(at, leaf(key)) + "'");
+      });
+    }
   }
 
 private:
@@ -292,25 +192,9 @@ private:
       fail("'" + path + "' must be " + std::string(expected) + ", got an array of " + std::to_string(value.size()));
   }
 
-  template <class Enum, size_t N>
-  void read_name(const json& value, const std::string& path, Enum& out, const Enum (&all)[N],
-                 std::string_view (*name)(Enum)) const {
-    if (!value.is_string()) wrong_type(value, path, "a string");
-    const std::string text = value.get<std::string>();
-    for (Enum candidate : all) {
-      if (name(candidate) == text) {
-        out = candidate;
-        return;
-      }
-    }
-    std::string choices;
-    for (Enum candidate : all) choices += (choices.empty() ? "\"" : ", \"") + std::string(name(candidate)) + "\"";
-    fail("'" + path + "' must be one of " + choices + ", got " + value.dump());
-  }
-
   // " (did you mean 'pattern.spacing'?)" when a known key is a likely misspelling of `key`.
-  template <class Known>
-  static std::string suggestion(const std::string& key, const std::string& path, const Known& known) {
+  static std::string suggestion(const std::string& key, const std::string& path,
+                                const std::vector<std::string_view>& known) {
     if (const std::optional<std::string> best = closest_name(key, known))
       return " (did you mean '" + join(path, *best) + "'?)";
     std::string list;
@@ -321,97 +205,44 @@ private:
   const std::string& source_;
 };
 
-// Builds the complete design, every key written. Templated on the JSON type so that files are
-// written with nlohmann::ordered_json, keeping the keys in the order a reader expects.
+// A key's value as design.json writes it.
+template <class Json, class T>
+Json value_json(const T& value) {
+  if constexpr (NamedEnum<T>) {
+    return std::string(enum_name(value));
+  } else if constexpr (std::is_same_v<T, glm::dvec2> || std::is_same_v<T, glm::ivec2>) {
+    return Json::array({value.x, value.y});
+  } else if constexpr (std::is_same_v<T, std::vector<int>> || std::is_arithmetic_v<T> ||
+                       std::is_same_v<T, std::string>) {
+    return value;
+  } else {  // an array of objects
+    Json items = Json::array();
+    for (const auto& item : value) {
+      Json object = Json::object();
+      visit_item_keys(item, [&](Key key, const auto& field) { object[std::string(leaf(key))] = value_json<Json>(field); });
+      items.push_back(std::move(object));
+    }
+    return items;
+  }
+}
+
+// Builds the complete design, every key written, in the table's order. Templated on the JSON
+// type so that files are written with nlohmann::ordered_json, keeping that order.
 template <class Json>
 Json to_json(const Design& design) {
-  Json operators = Json::array();
-  for (const EdgeOperator& op : design.pattern.operators) {
-    Json item = Json::object();
-    item["op"] = std::string(operator_name(op.kind));
-    item["from"] = op.from;
-    item["to"] = op.to;
-    item["offset"] = Json::array({op.offset.x, op.offset.y});
-    item["virtual"] = op.is_virtual;
-    operators.push_back(std::move(item));
-  }
-  Json pattern = Json::object();
-  pattern["tessellation"] = std::string(tessellation_name(design.pattern.tessellation));
-  pattern["spacing"] = design.pattern.spacing;
-  pattern["bracing"] = design.pattern.bracing;
-  pattern["operators"] = std::move(operators);
-  pattern["topology"] = std::string(topology_name(design.pattern.topology));
-
-  const ElementsDesign& elements = design.elements;
-  Json vertex = Json::object();
-  vertex["enabled"] = elements.vertex.enabled;
-  vertex["scale"] = elements.vertex.scale;
-  vertex["shape"] = std::string(shape_name(elements.vertex.shape));
-  Json edges = Json::array();
-  for (const EdgeElementDesign& edge : elements.edge) {
-    Json item = Json::object();
-    item["t"] = edge.t;
-    item["scale"] = edge.scale;
-    item["shape"] = std::string(shape_name(edge.shape));
-    item["cell_edges"] = edge.cell_edges;
-    edges.push_back(std::move(item));
-  }
-  Json elements_json = Json::object();
-  elements_json["vertex"] = std::move(vertex);
-  elements_json["edge"] = std::move(edges);
-  elements_json["custom_shape"] = elements.custom_shape;
-  elements_json["allow_overlap"] = elements.allow_overlap;
-  elements_json["gap"] = elements.gap;
-  elements_json["margin"] = elements.margin;
-  elements_json["rim_rows"] = std::string(rim_rows_name(elements.rim_rows));
-  elements_json["beads"] = Json{{"enabled", elements.beads.enabled}, {"scale", elements.beads.scale}};
-
-  Json placement = Json::object();
-  placement["offset"] = Json::array({design.placement.offset.x, design.placement.offset.y});
-  placement["rotation_deg"] = design.placement.rotation_deg;
-  placement["scale"] = design.placement.scale;
-  placement["band_rows"] = std::string(band_rows_name(design.placement.band_rows));
-  placement["cut_axis"] = std::string(cut_axis_name(design.placement.cut_axis));
-  placement["align"] = std::string(align_axis_name(design.placement.align));
-  placement["fit_offset"] = design.placement.fit_offset;
-
-  Json solver = Json::object();
-  for (const SolverParameter& p : solver_parameters()) {
-    std::visit(
-        [&](auto member) {
-          const auto value = design.solver.*member;
-          if constexpr (std::is_same_v<decltype(value), const FilterBase>)
-            solver[std::string(p.name)] = std::string(filter_base_name(value));
-          else
-            solver[std::string(p.name)] = value;
-        },
-        p.member);
-  }
-
-  Json moved = Json::array(), deleted = Json::array(), added = Json::array();
-  for (const MovedParticle& m : design.edits.moved)
-    moved.push_back(Json{{"id", m.id}, {"uv", Json::array({m.uv.x, m.uv.y})}, {"pinned", m.pinned}});
-  for (const DeletedElement& d : design.edits.deleted)
-    deleted.push_back(Json{{"id", d.id}, {"uv", Json::array({d.uv.x, d.uv.y})}});
-  for (const AddedElement& a : design.edits.added)
-    added.push_back(Json{{"id", a.id}, {"uv", Json::array({a.uv.x, a.uv.y})}});
-  Json edits = Json::object();
-  edits["moved"] = std::move(moved);
-  edits["deleted"] = std::move(deleted);
-  edits["added"] = std::move(added);
-
   Json root = Json::object();
   root["version"] = Design::kVersion;
-  root["units"] = std::string(units_name(design.units));
-  root["pattern"] = std::move(pattern);
-  root["elements"] = std::move(elements_json);
-  root["placement"] = std::move(placement);
-  root["solver"] = std::move(solver);
-  root["edits"] = std::move(edits);
-  Json guidance = Json::array();
-  for (const GuidanceDab& d : design.guidance)
-    guidance.push_back(Json{{"uv", Json::array({d.uv.x, d.uv.y})}, {"radius", d.radius}, {"strength", d.strength}});
-  root["guidance"] = std::move(guidance);
+  visit_keys(design, [&](Key key, const auto& value) {
+    Json* at = &root;
+    const std::string_view path = design_key(key).path;
+    for (std::size_t start = 0;;) {
+      const std::size_t dot = path.find('.', start);
+      at = &(*at)[std::string(path.substr(start, dot - start))];
+      if (dot == std::string_view::npos) break;
+      start = dot + 1;
+    }
+    *at = value_json<Json>(value);
+  });
   return root;
 }
 
@@ -474,15 +305,9 @@ Design design_from_json(const nlohmann::json& json, const std::string& source, s
     reader.fail("'version' is " + std::to_string(number) + ", but this build reads versions " +
                 std::to_string(Design::kOldestVersion) + " to " + std::to_string(Design::kVersion));
 
-  reader.check_object(json, "", {"version", "units", "pattern", "elements", "placement", "solver", "edits", "guidance"});
+  reader.check_keys(json, "", "");
   Design design;
-  reader.field(json, "", "units", design.units);
-  reader.field(json, "", "pattern", design.pattern);
-  reader.field(json, "", "elements", design.elements);
-  reader.field(json, "", "placement", design.placement);
-  reader.field(json, "", "solver", design.solver);
-  reader.field(json, "", "edits", design.edits);
-  reader.field(json, "", "guidance", design.guidance);
+  reader.read_design(json, design);
   validate_design(design, source);
   // Version 1 files were saved with every parameter, so a 0.5 there is most likely that version's
   // default rather than a choice: kept as saved (a design reproduces its pavement), and said.

@@ -1,4 +1,5 @@
 #include "io/shape_table.h"
+#include "design/design_keys.h"
 
 #include "core/input_error.h"
 
@@ -25,8 +26,8 @@ ShapeTable::ShapeTable(const Elements& elements, const ShapeMesh* custom, const 
     if (kind == ShapeKind::Custom) {
       if (!custom)
         throw InputError("cannot write " + path.string() + ": element " + std::to_string(i) +
-                         " uses the custom shape but none was loaded; set "
-                         "'elements.custom_shape' to a mesh file");
+                         " uses the custom shape but none was loaded; set '" + key_path(Key::custom_shape) +
+                         "' to a mesh file");
       mesh_[slot] = custom;
     } else {
       builtin_[slot] = make_builtin_shape(kind);

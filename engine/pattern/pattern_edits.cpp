@@ -1,9 +1,10 @@
 #include "pattern/pattern_edits.h"
+#include "design/design_keys.h"
 
 #include "core/input_error.h"
 #include "core/number_text.h"
-#include "elements/contact_rule.h"
-#include "elements/element_hash.h"
+#include "core/contact_rule.h"
+#include "core/point_hash.h"
 #include "map/lifting.h"
 
 #include <glm/common.hpp>
@@ -27,11 +28,11 @@ LiftedPoints lift_edits(const SurfaceMap& map, const ElementEdits& edits) {
   return lifted;
 }
 
-// The edit behind lift_edits' point k, for messages: "edits.moved[2]" or "edits.added[0]".
+// The edit behind lift_edits' point k, for messages: edits.moved[2] or edits.added[0].
 std::string edit_name(const ElementEdits& edits, std::size_t k) {
   const bool moved = k < edits.moved.size();
-  return std::string("edits.") + (moved ? "moved[" : "added[") +
-         std::to_string(moved ? k : k - edits.moved.size()) + "]";
+  return key_path(moved ? Key::edits_moved : Key::edits_added) + "[" + std::to_string(moved ? k : k - edits.moved.size()) +
+         "]";
 }
 
 // An edit whose point lies off the map would be dropped without a word (a hand-written file, or
@@ -62,7 +63,7 @@ void refuse_held_edits_on_each_other(const ElementEdits& edits, const LiftedPoin
   const double contact = contact_distance(diameter, diameter, gap);
   glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
   for (const int k : held) lo = glm::min(lo, lifted.position[k]), hi = glm::max(hi, lifted.position[k]);
-  ElementHash near(lifted.position, CellGrid(lo, hi, contact), ElementHash::Fill::None);
+  PointHash near(lifted.position, CellGrid(lo, hi, contact), PointHash::Fill::None);
   for (const int k : held) {
     near.for_each_near(lifted.position[k], [&](int j) {
       const double distance = glm::length(lifted.position[k] - lifted.position[j]);
@@ -85,7 +86,7 @@ std::vector<EditedParticle> add_edited_points(const SurfaceMap& map, Pattern& pa
   for (std::size_t i = 0; i < edits.moved.size(); ++i) {
     const MovedParticle& m = edits.moved[i];
     if (m.id >= designed)
-      throw DesignError("edits.moved[" + std::to_string(i) + "]: particle " + std::to_string(m.id) +
+      throw DesignError(key_path(Key::edits_moved) + "[" + std::to_string(i) + "]: particle " + std::to_string(m.id) +
                        " is not in this pattern, which has " + std::to_string(designed) + " (ids 0.." +
                        std::to_string(designed - 1) +
                        "); the edits were made for another spacing, pattern or placement: remove them");

@@ -19,7 +19,7 @@ void help_panel() {
       ImGui::TableNextColumn();
       ImGui::TextWrapped("%s", shortcut.keys);
       ImGui::TableNextColumn();
-      ImGui::TextWrapped("%s", shortcut.action);
+      ImGui::TextWrapped("%s", shortcut.action.c_str());
     }
     ImGui::EndTable();
   }
