@@ -15,7 +15,7 @@ fuzz_seconds=${PAVER_FUZZ_SECONDS:-40}
 [[ "$fuzz_seconds" =~ ^[0-9]+$ ]] || { echo "setup: PAVER_FUZZ_SECONDS must be a whole number of seconds, got '$fuzz_seconds'" >&2; exit 2; }
 
 packages=(
-  cmake ninja-build g++ pkg-config
+  cmake ninja-build g++ pkg-config python3
   libeigen3-dev libtbb-dev libglm-dev nlohmann-json3-dev libcli11-dev libstb-dev
   libgtest-dev libbenchmark-dev libtinygltf-dev lib3mf-dev libcgal-dev
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools glslang-tools spirv-tools

@@ -63,26 +63,26 @@ bool change_design(Document& doc, const Design& next, bool dragging) {
 
 void end_gesture(Document& doc) { doc.gesture_open = false; }
 
-bool undo(Document& doc) {
-  end_gesture(doc);
-  std::optional<Design> previous = doc.history.undo(doc.design);
-  if (!previous) return false;
-  doc.design = std::move(*previous);
+namespace {
+// The design the history gave back (none: nothing to undo or redo) becomes the document's.
+bool take_from_history(Document& doc, std::optional<Design> design, const char* status) {
+  if (!design) return false;
+  doc.design = std::move(*design);
   refresh_dirty(doc);
   new_revision(doc, false);
-  report_status(doc, "undone");
+  report_status(doc, status);
   return true;
+}
+}  // namespace
+
+bool undo(Document& doc) {
+  end_gesture(doc);
+  return take_from_history(doc, doc.history.undo(doc.design), "undone");
 }
 
 bool redo(Document& doc) {
   end_gesture(doc);
-  std::optional<Design> next = doc.history.redo(doc.design);
-  if (!next) return false;
-  doc.design = std::move(*next);
-  refresh_dirty(doc);
-  new_revision(doc, false);
-  report_status(doc, "redone");
-  return true;
+  return take_from_history(doc, doc.history.redo(doc.design), "redone");
 }
 
 void set_surface(Document& doc, Surface surface) {

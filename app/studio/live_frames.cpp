@@ -19,7 +19,9 @@ std::optional<LiveFrame> prepare_frame(const LiveSnapshot& snapshot, const LiveF
   const SurfaceMap& map = map_for_topology(*request.map, frame.topology);
   // Post-processing is left out while the particles move: it is the slow part, and only the
   // final pavement is exported.
-  const PlacedElements placed = place_all_elements(map, *snapshot.pattern, snapshot.points, snapshot.design, false);
+  const Design& design = snapshot.design;
+  const PlacedElements placed = place_all_elements(map, *snapshot.pattern, snapshot.points, design.elements,
+                                                   design.pattern.spacing, edge_anchor(design.pattern.topology), false);
   if (stop.stop_requested()) return std::nullopt;
   frame.elements = render::prepare_elements(
       placed.elements, render::element_colours(placed.elements, request.colour_mode, snapshot.design.elements.gap),

@@ -10,21 +10,20 @@ void UndoHistory::record(const Design& before) {
   redo_.clear();
 }
 
-std::optional<Design> UndoHistory::undo(const Design& current) {
-  if (undo_.empty()) return std::nullopt;
-  Design previous = std::move(undo_.back());
-  undo_.pop_back();
-  redo_.push_back(current);
-  return previous;
+namespace {
+// The last design of `from`, with `current` kept in `to` to go back to.
+std::optional<Design> step(std::vector<Design>& from, std::vector<Design>& to, const Design& current) {
+  if (from.empty()) return std::nullopt;
+  Design taken = std::move(from.back());
+  from.pop_back();
+  to.push_back(current);
+  return taken;
 }
+}  // namespace
 
-std::optional<Design> UndoHistory::redo(const Design& current) {
-  if (redo_.empty()) return std::nullopt;
-  Design next = std::move(redo_.back());
-  redo_.pop_back();
-  undo_.push_back(current);
-  return next;
-}
+std::optional<Design> UndoHistory::undo(const Design& current) { return step(undo_, redo_, current); }
+
+std::optional<Design> UndoHistory::redo(const Design& current) { return step(redo_, undo_, current); }
 
 void UndoHistory::clear() {
   undo_.clear();

@@ -23,6 +23,13 @@ struct EnumNames;  // specialised: static constexpr EnumName<E> table[] = {{E::A
 template <class E>
 concept NamedEnum = requires { EnumNames<E>::table; };
 
+// The specialisation in one line: PAVER_ENUM_NAMES(Units, {Units::Millimetre, "mm"}, ...);
+#define PAVER_ENUM_NAMES(E, ...)                                 \
+  template <>                                                    \
+  struct EnumNames<E> {                                          \
+    static constexpr EnumName<E> table[] = {__VA_ARGS__};        \
+  }
+
 // The value's own name ("?" for a value the table lacks, which a test of each table rules out).
 template <NamedEnum E>
 constexpr std::string_view enum_name(E value) {

@@ -21,10 +21,7 @@
 namespace paver {
 
 enum class CutterKind { Seat, Element };
-template <>
-struct EnumNames<CutterKind> {
-  static constexpr EnumName<CutterKind> table[] = {{CutterKind::Seat, "seat"}, {CutterKind::Element, "element"}};
-};
+PAVER_ENUM_NAMES(CutterKind, {CutterKind::Seat, "seat"}, {CutterKind::Element, "element"});
 
 inline constexpr double kSeatClearance = 0.01;   // of d, around the girdle and the pavilion
 inline constexpr double kSeatHoleRadius = 0.2;   // of d

@@ -8,10 +8,6 @@ namespace paver {
 
 enum class CutAxis { Auto, X, Y, Z };
 
-template <>
-struct EnumNames<CutAxis> {
-  static constexpr EnumName<CutAxis> table[] = {
-      {CutAxis::Auto, "auto"}, {CutAxis::X, "x"}, {CutAxis::Y, "y"}, {CutAxis::Z, "z"}};
-};
+PAVER_ENUM_NAMES(CutAxis, {CutAxis::Auto, "auto"}, {CutAxis::X, "x"}, {CutAxis::Y, "y"}, {CutAxis::Z, "z"});
 
 }  // namespace paver

@@ -21,28 +21,17 @@ namespace paver {
 // default) the lattice unless it measurably tears or leaves bare patches and the adaptive pattern
 // does better (pipeline/pavement.h).
 enum class Topology { Lattice, Adaptive, Auto };
-template <>
-struct EnumNames<Topology> {
-  static constexpr EnumName<Topology> table[] = {
-      {Topology::Lattice, "lattice"}, {Topology::Adaptive, "adaptive"}, {Topology::Auto, "auto"}};
-};
+PAVER_ENUM_NAMES(Topology, {Topology::Lattice, "lattice"}, {Topology::Adaptive, "adaptive"}, {Topology::Auto, "auto"});
 
 // Rows of elements that follow the surface's rims (elements/rim_rows.h): none (the pattern is
 // trimmed at the rims, the default), around the holes only, or along every rim (the outer edge too).
 enum class RimRows { None, Holes, All };
-template <>
-struct EnumNames<RimRows> {
-  static constexpr EnumName<RimRows> table[] = {{RimRows::None, "none"}, {RimRows::Holes, "holes"}, {RimRows::All, "all"}};
-};
+PAVER_ENUM_NAMES(RimRows, {RimRows::None, "none"}, {RimRows::Holes, "holes"}, {RimRows::All, "all"});
 
 // The unit of the surface's coordinates (and so of D, the gap and every length in a design).
 // Stone sizes and carats are reported in millimetres from it.
 enum class Units { Millimetre, Centimetre, Metre, Inch };
-template <>
-struct EnumNames<Units> {
-  static constexpr EnumName<Units> table[] = {
-      {Units::Millimetre, "mm"}, {Units::Centimetre, "cm"}, {Units::Metre, "m"}, {Units::Inch, "in"}};
-};
+PAVER_ENUM_NAMES(Units, {Units::Millimetre, "mm"}, {Units::Centimetre, "cm"}, {Units::Metre, "m"}, {Units::Inch, "in"});
 double millimetres_per_unit(Units u);
 
 // How many cells away an edge operator's `to` may lie, in each direction.

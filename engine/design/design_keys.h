@@ -151,51 +151,32 @@ void visit_keys(D& d, Visit&& visit) {
   visit(Key::guidance, d.guidance);
 }
 
-template <class T, class Item>
-concept ItemOf = std::is_same_v<std::remove_const_t<T>, Item>;
+// The types of an array's items whose fields are keys of their own.
+template <class T>
+concept KeyedItem = std::is_same_v<T, EdgeOperator> || std::is_same_v<T, EdgeElementDesign> ||
+                    std::is_same_v<T, MovedParticle> || std::is_same_v<T, DeletedElement> ||
+                    std::is_same_v<T, AddedElement> || std::is_same_v<T, GuidanceDab>;
 
+// Calls visit(key, field) for every key of an array's item, in the table's order.
 template <class T, class Visit>
-  requires ItemOf<T, EdgeOperator>
-void visit_item_keys(T& op, Visit&& visit) {
-  visit(Key::operator_op, op.kind);
-  visit(Key::operator_from, op.from);
-  visit(Key::operator_to, op.to);
-  visit(Key::operator_offset, op.offset);
-  visit(Key::operator_virtual, op.is_virtual);
-}
-template <class T, class Visit>
-  requires ItemOf<T, EdgeElementDesign>
-void visit_item_keys(T& edge, Visit&& visit) {
-  visit(Key::edge_t, edge.t);
-  visit(Key::edge_scale, edge.scale);
-  visit(Key::edge_shape, edge.shape);
-  visit(Key::edge_cell_edges, edge.cell_edges);
-}
-template <class T, class Visit>
-  requires ItemOf<T, MovedParticle>
-void visit_item_keys(T& moved, Visit&& visit) {
-  visit(Key::moved_id, moved.id);
-  visit(Key::moved_uv, moved.uv);
-  visit(Key::moved_pinned, moved.pinned);
-}
-template <class T, class Visit>
-  requires ItemOf<T, DeletedElement>
-void visit_item_keys(T& deleted, Visit&& visit) {
-  visit(Key::deleted_id, deleted.id);
-  visit(Key::deleted_uv, deleted.uv);
-}
-template <class T, class Visit>
-  requires ItemOf<T, AddedElement>
-void visit_item_keys(T& added, Visit&& visit) {
-  visit(Key::added_id, added.id);
-  visit(Key::added_uv, added.uv);
-}
-template <class T, class Visit>
-  requires ItemOf<T, GuidanceDab>
-void visit_item_keys(T& dab, Visit&& visit) {
-  visit(Key::dab_uv, dab.uv);
-  visit(Key::dab_radius, dab.radius);
-  visit(Key::dab_strength, dab.strength);
+  requires KeyedItem<std::remove_const_t<T>>
+void visit_item_keys(T& item, Visit&& visit) {
+  using Item = std::remove_const_t<T>;
+  if constexpr (std::is_same_v<Item, EdgeOperator>) {
+    visit(Key::operator_op, item.kind); visit(Key::operator_from, item.from); visit(Key::operator_to, item.to);
+    visit(Key::operator_offset, item.offset); visit(Key::operator_virtual, item.is_virtual);
+  } else if constexpr (std::is_same_v<Item, EdgeElementDesign>) {
+    visit(Key::edge_t, item.t); visit(Key::edge_scale, item.scale); visit(Key::edge_shape, item.shape);
+    visit(Key::edge_cell_edges, item.cell_edges);
+  } else if constexpr (std::is_same_v<Item, MovedParticle>) {
+    visit(Key::moved_id, item.id); visit(Key::moved_uv, item.uv); visit(Key::moved_pinned, item.pinned);
+  } else if constexpr (std::is_same_v<Item, DeletedElement>) {
+    visit(Key::deleted_id, item.id); visit(Key::deleted_uv, item.uv);
+  } else if constexpr (std::is_same_v<Item, AddedElement>) {
+    visit(Key::added_id, item.id); visit(Key::added_uv, item.uv);
+  } else {
+    visit(Key::dab_uv, item.uv); visit(Key::dab_radius, item.radius); visit(Key::dab_strength, item.strength);
+  }
 }
 
 // Every key's value against its range (numbers, and each number of a pair or list, finite),

@@ -7,13 +7,7 @@ namespace paver {
 
 enum class ShapeKind { Sphere, Gem, HexPrism, Disc, Custom };
 
-template <>
-struct EnumNames<ShapeKind> {
-  static constexpr EnumName<ShapeKind> table[] = {{ShapeKind::Sphere, "sphere"},
-                                                  {ShapeKind::Gem, "gem"},
-                                                  {ShapeKind::HexPrism, "hex_prism"},
-                                                  {ShapeKind::Disc, "disc"},
-                                                  {ShapeKind::Custom, "custom"}};
-};
+PAVER_ENUM_NAMES(ShapeKind, {ShapeKind::Sphere, "sphere"}, {ShapeKind::Gem, "gem"}, {ShapeKind::HexPrism, "hex_prism"},
+                 {ShapeKind::Disc, "disc"}, {ShapeKind::Custom, "custom"});
 
 }  // namespace paver

@@ -22,10 +22,7 @@ enum class FilterBase {
   Initial,  // fixed at initialisation
 };
 
-template <>
-struct EnumNames<FilterBase> {
-  static constexpr EnumName<FilterBase> table[] = {{FilterBase::Current, "current"}, {FilterBase::Initial, "initial"}};
-};
+PAVER_ENUM_NAMES(FilterBase, {FilterBase::Current, "current"}, {FilterBase::Initial, "initial"});
 
 // A closed, open or half-open interval; infinite ends are unbounded (values must still be finite).
 struct ValueRange {

@@ -10,12 +10,9 @@ namespace paver {
 enum class Tessellation { Triangle, Grid, Hexagon };
 
 // The short names first; the command line's long ones are read too.
-template <>
-struct EnumNames<Tessellation> {
-  static constexpr EnumName<Tessellation> table[] = {
-      {Tessellation::Triangle, "tri"},      {Tessellation::Grid, "grid"},   {Tessellation::Hexagon, "hex"},
-      {Tessellation::Triangle, "triangle"}, {Tessellation::Grid, "square"}, {Tessellation::Hexagon, "hexagon"}};
-};
+PAVER_ENUM_NAMES(Tessellation, {Tessellation::Triangle, "tri"}, {Tessellation::Grid, "grid"},
+                 {Tessellation::Hexagon, "hex"}, {Tessellation::Triangle, "triangle"}, {Tessellation::Grid, "square"},
+                 {Tessellation::Hexagon, "hexagon"});
 
 // An edge operator. The edge is named by its end vertices and the cell offset of `to`; an edge
 // also matches when given reversed (to, from, -offset).
@@ -28,10 +25,7 @@ struct EdgeOperator {
   bool is_virtual = false;  // Add only: the new edge is a virtual edge
 };
 
-template <>
-struct EnumNames<EdgeOperator::Kind> {
-  static constexpr EnumName<EdgeOperator::Kind> table[] = {
-      {EdgeOperator::Kind::Flip, "flip"}, {EdgeOperator::Kind::Add, "add"}, {EdgeOperator::Kind::Remove, "remove"}};
-};
+PAVER_ENUM_NAMES(EdgeOperator::Kind, {EdgeOperator::Kind::Flip, "flip"}, {EdgeOperator::Kind::Add, "add"},
+                 {EdgeOperator::Kind::Remove, "remove"});
 
 }  // namespace paver

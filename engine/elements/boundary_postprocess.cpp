@@ -21,8 +21,7 @@ namespace {
 double cross2(glm::dvec2 a, glm::dvec2 b) { return a.x * b.y - a.y * b.x; }
 
 // Parameter s in (0, 1] where segment p->q first meets the boundary of M^, or +inf.
-double first_boundary_hit(const SurfaceMap& map, const std::vector<glm::ivec2>& segments, glm::dvec2 p,
-                          glm::dvec2 q) {
+double first_boundary_hit(const SurfaceMap& map, const std::vector<glm::ivec2>& segments, glm::dvec2 p, glm::dvec2 q) {
   const glm::dvec2 d = q - p;
   double best = std::numeric_limits<double>::infinity();
   for (const glm::ivec2& segment : segments) {
@@ -38,7 +37,6 @@ double first_boundary_hit(const SurfaceMap& map, const std::vector<glm::ivec2>& 
   }
   return best;
 }
-
 
 }  // namespace
 
@@ -103,6 +101,19 @@ int eliminate_boundary_elements(const SurfaceMap& map, Elements& elements, doubl
     if (!keeps_margin(distance[i], elements.diameter[i], margin)) remove[i] = 1, ++removed;
   elements.erase_flagged(remove);
   return removed;
+}
+
+PlacedElements place_all_elements(const SurfaceMap& map, const Pattern& pattern, const std::vector<glm::dvec2>& points,
+                                  const ElementsDesign& design, double spacing, EdgeAnchor anchor, bool postprocess,
+                                  const std::vector<std::uint8_t>* retired) {
+  PlacedElements placed;
+  placed.elements = place_elements(map, pattern, points, design, spacing, retired, anchor);
+  if (postprocess) {
+    placed.filled = fill_boundary_edges(map, pattern, points, design, spacing, placed.elements, retired);
+    placed.eliminated =
+        eliminate_boundary_elements(map, placed.elements, boundary_margin(map, design.margin, design.gap));
+  }
+  return placed;
 }
 
 }  // namespace paver

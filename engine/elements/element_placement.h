@@ -17,6 +17,9 @@ namespace paver {
 //   pattern uses it: its edges cross maps sheared so much that the map's midpoint of an edge
 //   can lift next to one of its ends.
 enum class EdgeAnchor { MapLine, SurfaceChord };
+inline EdgeAnchor edge_anchor(Topology topology) {
+  return topology == Topology::Adaptive ? EdgeAnchor::SurfaceChord : EdgeAnchor::MapLine;
+}
 
 // `points` are the particle positions to use (the pattern's, or the optimizer's result);
 // `retired` (optional, #P) marks particles the optimizer retired: they carry no V-element.

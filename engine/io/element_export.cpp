@@ -128,6 +128,17 @@ void for_each_placed_element(const Elements& elements, const ShapeTable& shapes,
   }
 }
 
+// Calls visit(i, corners) for every triangle of every element i, its corners numbered from
+// `first` over the elements' vertices laid end to end, as for_each_placed_element emits them.
+template <class Visit>
+void for_each_element_triangle(const Elements& elements, const ShapeTable& shapes, long long first, Visit&& visit) {
+  for (std::size_t i = 0; i < elements.size(); ++i) {
+    const ShapeMesh& shape = shapes[elements.shape[i]];
+    for (const glm::ivec3& t : shape.triangles) visit(i, glm::i64vec3(first + t.x, first + t.y, first + t.z));
+    first += static_cast<long long>(shape.positions.size());
+  }
+}
+
 struct MeshCounts {
   std::size_t vertices = 0;
   std::size_t faces = 0;
@@ -142,6 +153,21 @@ MeshCounts count(const Elements& elements, const ShapeTable& shapes) {
   }
   return c;
 }
+
+const Elements& checked(const Elements& elements) {
+  check_sizes(elements);
+  return elements;
+}
+
+// What an element mesh writer needs: the elements' shapes (those of the design's custom shape
+// named after `path`, the file written) and how many vertices and faces they make.
+struct ElementMesh {
+  ShapeTable shapes;
+  MeshCounts counts;
+
+  ElementMesh(const Elements& elements, const ShapeMesh* custom, const std::filesystem::path& path)
+      : shapes(checked(elements), custom, path), counts(count(elements, shapes)) {}
+};
 
 // One binary STL triangle: its unit normal and three corners as float32, and a zero attribute word.
 void put_stl_triangle(ChunkedWriter& w, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& d) {
@@ -194,9 +220,8 @@ void write_placements_csv(const std::filesystem::path& path, const Elements& ele
 }
 
 ElementMeshSize element_mesh_size(const Elements& elements, const ElementMeshOptions& options) {
-  const ShapeTable shapes(elements, options.custom, "elements");
-  const MeshCounts counts = count(elements, shapes);
-  return {elements.size(), counts.vertices, counts.faces};
+  const ElementMesh mesh(elements, options.custom, "elements");
+  return {elements.size(), mesh.counts.vertices, mesh.counts.faces};
 }
 
 ElementMeshSize shape_mesh_size(ShapeKind kind, std::size_t count, const ShapeMesh* custom) {
@@ -229,14 +254,12 @@ ElementMeshSize expected_element_mesh_size(const Pattern& pattern, const Element
 
 void write_elements_ply(const std::filesystem::path& path, const Elements& elements,
                         const ElementMeshOptions& options) {
-  check_sizes(elements);
   if (options.colours && options.colours->size() != elements.size())
     throw std::invalid_argument("write_elements_ply: colours must have one entry per element");
-  const ShapeTable shapes(elements, options.custom, path);
-  const MeshCounts counts = count(elements, shapes);
+  const ElementMesh mesh(elements, options.custom, path);
   // PLY vertex indices are 32-bit signed.
-  if (counts.vertices > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
-    throw InputError("cannot write " + path.string() + ": its " + std::to_string(counts.vertices) +
+  if (mesh.counts.vertices > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
+    throw InputError("cannot write " + path.string() + ": its " + std::to_string(mesh.counts.vertices) +
                      " vertices are more than PLY indices can address; use fewer elements or a "
                      "lighter shape");
 
@@ -247,13 +270,13 @@ void write_elements_ply(const std::filesystem::path& path, const Elements& eleme
   write_file_atomically(path, [&](std::ostream& out) {
     ChunkedWriter w(out, options.stop);
     w.text("ply\nformat binary_little_endian 1.0\ncomment Paver elements: " +
-           std::to_string(elements.size()) + "\nelement vertex " + std::to_string(counts.vertices) +
+           std::to_string(elements.size()) + "\nelement vertex " + std::to_string(mesh.counts.vertices) +
            "\nproperty " + real + " x\nproperty " + real + " y\nproperty " + real + " z\n"
            "property uchar red\nproperty uchar green\nproperty uchar blue\n"
-           "element face " + std::to_string(counts.faces) +
+           "element face " + std::to_string(mesh.counts.faces) +
            "\nproperty list uchar int vertex_indices\nend_header\n");
 
-    for_each_placed_element(elements, shapes, [&](std::size_t i, const ShapeMesh&, const std::vector<glm::dvec3>& placed) {
+    for_each_placed_element(elements, mesh.shapes, [&](std::size_t i, const ShapeMesh&, const std::vector<glm::dvec3>& placed) {
       const Colour colour = options.colours ? (*options.colours)[i] : kind_colour(elements.kind[i]);
       for (const glm::dvec3& p : placed) {
         char* c = w.room(27);
@@ -264,36 +287,27 @@ void write_elements_ply(const std::filesystem::path& path, const Elements& eleme
       }
     });
 
-    std::int32_t first = 0;  // index of the element's first vertex
-    for (std::size_t i = 0; i < elements.size(); ++i) {
-      const ShapeMesh& shape = shapes[elements.shape[i]];
-      for (const glm::ivec3& t : shape.triangles) {
-        char* c = w.room(13);
-        c = put_u8(c, 3);
-        c = put_i32_le(c, first + t.x);
-        c = put_i32_le(c, first + t.y);
-        c = put_i32_le(c, first + t.z);
-        w.advance(c);
-      }
-      first += static_cast<std::int32_t>(shape.positions.size());
-    }
+    for_each_element_triangle(elements, mesh.shapes, 0, [&](std::size_t, const glm::i64vec3& corners) {
+      char* c = w.room(13);
+      c = put_u8(c, 3);
+      for (int k = 0; k < 3; ++k) c = put_i32_le(c, static_cast<std::int32_t>(corners[k]));
+      w.advance(c);
+    });
     w.flush();
   });
 }
 
 void write_elements_obj(const std::filesystem::path& path, const Elements& elements,
                         const ElementMeshOptions& options) {
-  check_sizes(elements);
-  const ShapeTable shapes(elements, options.custom, path);
-  const MeshCounts counts = count(elements, shapes);
+  const ElementMesh mesh(elements, options.custom, path);
 
   write_file_atomically(path, [&](std::ostream& out) {
     ChunkedWriter w(out, options.stop);
     w.text("# Paver elements: " + std::to_string(elements.size()) + "\n# vertices: " +
-           std::to_string(counts.vertices) + ", faces: " + std::to_string(counts.faces) + "\n");
+           std::to_string(mesh.counts.vertices) + ", faces: " + std::to_string(mesh.counts.faces) + "\n");
 
     const bool wide = !float32_holds(elements);  // as the PLY
-    for_each_placed_element(elements, shapes, [&](std::size_t, const ShapeMesh&, const std::vector<glm::dvec3>& placed) {
+    for_each_placed_element(elements, mesh.shapes, [&](std::size_t, const ShapeMesh&, const std::vector<glm::dvec3>& placed) {
       for (const glm::dvec3& p : placed) {
         w.text("v");
         for (int axis = 0; axis < 3; ++axis) {
@@ -305,43 +319,35 @@ void write_elements_obj(const std::filesystem::path& path, const Elements& eleme
       }
     });
 
-    long long first = 1;  // OBJ counts vertices from 1
     // Stones and beads as two groups, so a CAD tool can select the metal's beads apart from the
-    // stones (they could only be told apart by connectivity).
+    // stones (they could only be told apart by connectivity). OBJ counts vertices from 1.
     const char* group = nullptr;
-    for (std::size_t i = 0; i < elements.size(); ++i) {
-      const ShapeMesh& shape = shapes[elements.shape[i]];
+    for_each_element_triangle(elements, mesh.shapes, 1, [&](std::size_t i, const glm::i64vec3& corners) {
       const char* wanted = elements.kind[i] == ElementKind::Bead ? "g beads\n" : "g stones\n";
       if (wanted != group) w.text(group = wanted);
-      for (const glm::ivec3& t : shape.triangles) {
-        w.text("f ");
-        w.integer(first + t.x);
+      w.character('f');
+      for (int k = 0; k < 3; ++k) {
         w.character(' ');
-        w.integer(first + t.y);
-        w.character(' ');
-        w.integer(first + t.z);
-        w.character('\n');
+        w.integer(corners[k]);
       }
-      first += static_cast<long long>(shape.positions.size());
-    }
+      w.character('\n');
+    });
     w.flush();
   });
 }
 
 void write_elements_stl(const std::filesystem::path& path, const Elements& elements,
                         const ElementMeshOptions& options) {
-  check_sizes(elements);
-  const ShapeTable shapes(elements, options.custom, path);
-  const MeshCounts counts = count(elements, shapes);
-  if (counts.faces > std::numeric_limits<std::uint32_t>::max())
-    throw InputError("cannot write " + path.string() + ": its " + std::to_string(counts.faces) +
+  const ElementMesh mesh(elements, options.custom, path);
+  if (mesh.counts.faces > std::numeric_limits<std::uint32_t>::max())
+    throw InputError("cannot write " + path.string() + ": its " + std::to_string(mesh.counts.faces) +
                      " triangles are more than binary STL can count; use fewer elements or a lighter shape");
 
   write_file_atomically(path, [&](std::ostream& out) {
     ChunkedWriter w(out, options.stop);
-    put_stl_header(w, "Paver elements: " + std::to_string(elements.size()), counts.faces);
+    put_stl_header(w, "Paver elements: " + std::to_string(elements.size()), mesh.counts.faces);
 
-    for_each_placed_element(elements, shapes, [&](std::size_t, const ShapeMesh& shape, const std::vector<glm::dvec3>& placed) {
+    for_each_placed_element(elements, mesh.shapes, [&](std::size_t, const ShapeMesh& shape, const std::vector<glm::dvec3>& placed) {
       for (const glm::ivec3& t : shape.triangles) put_stl_triangle(w, placed[t.x], placed[t.y], placed[t.z]);
     });
     w.flush();

@@ -1,6 +1,7 @@
 #include "pattern/band_closure.h"
 
 #include "core/input_error.h"
+#include "pattern/design_cell.h"
 
 #include <glm/geometric.hpp>
 
@@ -34,7 +35,8 @@ glm::ivec2 repeating_step(const UnitCell& cell, bool across) {
       if (j == 0 && i <= 0) continue;
       const double length = glm::length(vector_of(m));
       const double c = std::abs(glm::dot(vector_of(m), row)) / length;
-      if (c < best_cos - 1e-9 || (c < best_cos + 1e-9 && length < best_length)) best = m, best_cos = c, best_length = length;
+      if (c < best_cos - 1e-9 || (c < best_cos + 1e-9 && length < best_length))
+        best = m, best_cos = c, best_length = length;
     }
   return best;
 }
@@ -70,9 +72,8 @@ std::string describe_band_closure(const BandClosure& closure) {
   char before[32], after[32];
   std::snprintf(before, sizeof before, "%.4g", closure.spacing_before);
   std::snprintf(after, sizeof after, "%.4g", closure.spacing);
-  return "D " + std::string(before) + " -> " + after + ": " +
-         std::to_string(closure.around) + " lattice steps close the band (rows " +
-         (closure.rows_across ? "across" : "along") + " it)" +
+  return "D " + std::string(before) + " -> " + after + ": " + std::to_string(closure.around) +
+         " lattice steps close the band (rows " + (closure.rows_across ? "across" : "along") + " it)" +
          (closure.stones_kept ? "; the stones keep their size, the gap takes the change" : "") +
          band_rows_choice(closure);
 }
@@ -85,6 +86,31 @@ std::string band_rows_choice(const BandClosure& c) {
   const std::string verb = paved ? " kept " : " laid out ";
   return "; rows auto: " + (c.rows_across ? "across" + verb + across + " elements, along " + along
                                           : "along" + verb + along + " elements, across " + across);
+}
+
+ClosedBand close_band_design(const SurfaceMap& map, Design design, BandRows rows) {
+  design.placement.band_rows = rows;
+  // Stones (gem elements) come in catalogue sizes: they keep their diameter, the gap takes the
+  // change, and so D may only grow. Other elements are sized with D, as everywhere.
+  const bool stones = keeps_stone_sizes(design.elements);
+  const UnitCell cell = make_design_cell(design.pattern);
+  BandClosure closure = close_band(map, cell, design.placement, stones);
+  if (stones) {
+    keep_stone_sizes(design.elements, closure.spacing_before, closure.spacing);
+    closure.stones_kept = true;
+  } else if (closure.spacing < design.pattern.spacing) {
+    // Closer elements may break the design's gap, which is in surface units: then one step fewer.
+    Design closer = design;
+    closer.pattern.spacing = closure.spacing;
+    try {
+      check_design_cell(closer);
+    } catch (const InputError&) {
+      closure = close_band(map, cell, design.placement, true);
+    }
+  }
+  design.pattern.spacing = closure.spacing;
+  design.placement.rotation_deg = closure.rotation_deg;
+  return {std::move(design), closure};
 }
 
 }  // namespace paver

@@ -3,8 +3,8 @@
 // T = (period, 0), the lattice is turned so that T is a lattice vector and its spacing changed by
 // the least amount that makes a whole number of elements go around: "D 0.630 -> 0.628: 90
 // elements close the band".
+#include "design/design.h"
 #include "map/surface_map.h"
-#include "design/placement.h"
 #include "pattern/unit_cell.h"
 
 #include <glm/vec2.hpp>
@@ -36,6 +36,19 @@ struct BandClosure {
 // gap's limit): an InputError when fewer than three such steps go around.
 BandClosure close_band(const SurfaceMap& map, const UnitCell& cell, const Placement& placement,
                        bool never_closer = false);
+
+// A band closed with its rows one way: the design at the closed D with the band's rotation.
+struct ClosedBand {
+  Design design;
+  BandClosure closure;
+};
+
+// Inputs: the band's seamless map (it wraps), the design at its own spacing, the rows' way (along
+// or across). Output: the design closed around the band: stones (gem elements) keep their
+// diameter and the gap takes the change, so D only grows; other elements are sized with D, one
+// step fewer where a closer D would break the design's gap. InputError when fewer than three
+// steps go around.
+ClosedBand close_band_design(const SurfaceMap& map, Design design, BandRows rows);
 
 // "D 0.630 -> 0.628: 90 elements close the band (rows along it)", and "; the stones keep their
 // size" when they did.

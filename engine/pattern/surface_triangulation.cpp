@@ -114,6 +114,185 @@ std::vector<glm::ivec3> triangle_neighbours(const std::vector<glm::ivec3>& trian
   return nb;
 }
 
+namespace {
+
+// Bowyer-Watson insertion into a triangulation of the scaled points and three far corners.
+class DelaunayBuilder {
+public:
+  // `p`: the points in the unit box, then the three corners (indices n, n + 1, n + 2).
+  DelaunayBuilder(std::vector<glm::dvec2> p, int n) : p_(std::move(p)), n_(n) {
+    m_.v.push_back({n, n + 1, n + 2});
+    m_.nb.push_back(glm::ivec3(-1));
+    alive_.push_back(1);
+  }
+
+  void insert(int i) {
+    const glm::dvec2 q = p_[i];
+    const int t = locate(q);
+    if (t < 0) return;
+    for (int k = 0; k < 3; ++k)
+      if (p_[m_.v[t][k]] == q) return;  // a duplicate point
+    grow_cavity(t, q);
+    keep_visible_rim(t, q);
+    fan_over_rim(i);
+  }
+
+  // Canonical for a given triangulation: each triangle from its lowest index, triangles along the
+  // Hilbert curve through their centroids, so what is built on their order does not depend on the
+  // insertion order, and loops over them walk the plane coherently. (Cocircular points, as in a
+  // square lattice, can still be triangulated differently in another insertion order.)
+  std::vector<glm::ivec3> triangles() const {
+    std::vector<std::pair<std::uint64_t, glm::ivec3>> keyed;
+    for (size_t t = 0; t < m_.v.size(); ++t)
+      if (alive_[t] && m_.v[t][0] < n_ && m_.v[t][1] < n_ && m_.v[t][2] < n_) {
+        glm::ivec3 t3 = m_.v[t];
+        while (t3.x > t3.y || t3.x > t3.z) t3 = glm::ivec3(t3.y, t3.z, t3.x);
+        const glm::dvec2 c = (p_[t3.x] + p_[t3.y] + p_[t3.z]) / 3.0;
+        keyed.push_back({(hilbert_index(unit_cell(c.x), unit_cell(c.y)) << 32) | std::uint32_t(t3.x), t3});
+      }
+    std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) {
+      return a.first != b.first ? a.first < b.first
+                                : std::tie(a.second.y, a.second.z) < std::tie(b.second.y, b.second.z);
+    });
+    std::vector<glm::ivec3> out(keyed.size());
+    for (size_t t = 0; t < keyed.size(); ++t) out[t] = keyed[t].second;
+    return out;
+  }
+
+private:
+  struct Rim {
+    int a, b, outer;
+  };
+
+  bool sees(int t, int k, const glm::dvec2& q) const {
+    return orient(p_[m_.v[t][(k + 1) % 3]], p_[m_.v[t][(k + 2) % 3]], q) >= 0;
+  }
+  bool contains(int t, const glm::dvec2& q) const { return sees(t, 0, q) && sees(t, 1, q) && sees(t, 2, q); }
+
+  // The triangle containing q: a walk from the last one made, bounded, then a scan; -1 if none.
+  int locate(const glm::dvec2& q) const {
+    int t = last_;
+    for (int steps = 0; t >= 0 && steps < 4 * int(m_.v.size()) + 16; ++steps) {
+      int next = -1;
+      for (int k = 0; k < 3 && next < 0; ++k) {
+        const int e = (k + steps) % 3;
+        if (!sees(t, e, q)) next = m_.nb[t][e];
+      }
+      if (next < 0) break;
+      t = next;
+    }
+    if (t >= 0 && alive_[t] && contains(t, q)) return t;
+    for (int u = 0; u < int(m_.v.size()); ++u)
+      if (alive_[u] && contains(u, q)) return u;
+    return -1;
+  }
+
+  // The cavity: triangles whose circumcircle holds q, grown from t.
+  void grow_cavity(int t, const glm::dvec2& q) {
+    in_cavity_.resize(m_.v.size(), 0);
+    cavity_.assign(1, t);
+    in_cavity_[t] = 1;
+    stack_.assign(1, t);
+    while (!stack_.empty()) {
+      const int u = stack_.back();
+      stack_.pop_back();
+      for (int k = 0; k < 3; ++k) {
+        const int w = m_.nb[u][k];
+        if (w < 0 || in_cavity_[w]) continue;
+        if (in_circle(p_[m_.v[w][0]], p_[m_.v[w][1]], p_[m_.v[w][2]], q) > 0) {
+          in_cavity_[w] = 1;
+          cavity_.push_back(w);
+          stack_.push_back(w);
+        }
+      }
+    }
+  }
+
+  // The cavity's rim; a triangle whose rim edge q does not see strictly (rounding) is taken back
+  // out so that the new fan stays positive, and what a removal disconnects from t goes too.
+  void keep_visible_rim(int t, const glm::dvec2& q) {
+    for (bool changed = true; changed;) {
+      changed = false;
+      rim_.clear();
+      for (int u : cavity_) {
+        for (int k = 0; k < 3 && !changed; ++k) {
+          const int w = m_.nb[u][k];
+          if (w >= 0 && in_cavity_[w]) continue;
+          const int a = m_.v[u][(k + 1) % 3], b = m_.v[u][(k + 2) % 3];
+          if (u != t && orient(p_[a], p_[b], q) <= 0) {
+            in_cavity_[u] = 0;
+            cavity_.erase(std::find(cavity_.begin(), cavity_.end(), u));
+            changed = true;
+            break;
+          }
+          rim_.push_back({a, b, w});
+        }
+        if (changed) break;
+      }
+      if (changed) keep_connected(t);
+    }
+  }
+
+  void keep_connected(int t) {
+    for (int u : cavity_) in_cavity_[u] = 0;
+    std::vector<int> kept{t};
+    in_cavity_[t] = 1;
+    for (size_t s = 0; s < kept.size(); ++s)
+      for (int k = 0; k < 3; ++k) {
+        const int w = m_.nb[kept[s]][k];
+        if (w >= 0 && !in_cavity_[w] && std::find(cavity_.begin(), cavity_.end(), w) != cavity_.end())
+          in_cavity_[w] = 1, kept.push_back(w);
+      }
+    cavity_.swap(kept);
+  }
+
+  // The fan from point i over the rim, in the cavity's freed slots first.
+  void fan_over_rim(int i) {
+    std::vector<int> fan(rim_.size());
+    for (int u : cavity_) alive_[u] = 0, in_cavity_[u] = 0, free_slots_.push_back(u);
+    for (size_t r = 0; r < rim_.size(); ++r) {
+      int s;
+      if (!free_slots_.empty()) {
+        s = free_slots_.back();
+        free_slots_.pop_back();
+      } else {
+        s = int(m_.v.size());
+        m_.v.emplace_back();
+        m_.nb.emplace_back();
+        alive_.push_back(0);
+        in_cavity_.push_back(0);
+      }
+      fan[r] = s;
+      m_.v[s] = {i, rim_[r].a, rim_[r].b};
+      m_.nb[s] = {rim_[r].outer, -1, -1};
+      alive_[s] = 1;
+    }
+    for (size_t r = 0; r < rim_.size(); ++r) {
+      const int s = fan[r];
+      if (const int o = rim_[r].outer; o >= 0)
+        for (int k = 0; k < 3; ++k)
+          if (m_.v[o][(k + 1) % 3] == rim_[r].b && m_.v[o][(k + 2) % 3] == rim_[r].a) m_.nb[o][k] = s;
+      // Across (a_r, q), opposite b_r: the fan triangle whose rim edge ends at a_r; across
+      // (q, b_r), opposite a_r: the one whose rim edge starts at b_r.
+      for (size_t o = 0; o < rim_.size(); ++o) {
+        if (rim_[o].b == rim_[r].a) m_.nb[s][2] = fan[o];
+        if (rim_[o].a == rim_[r].b) m_.nb[s][1] = fan[o];
+      }
+    }
+    last_ = fan.empty() ? last_ : fan[0];
+  }
+
+  std::vector<glm::dvec2> p_;
+  int n_;
+  Mesh2 m_;
+  std::vector<char> alive_, in_cavity_;
+  std::vector<int> free_slots_, cavity_, stack_;
+  std::vector<Rim> rim_;
+  int last_ = 0;
+};
+
+}  // namespace
+
 std::vector<glm::ivec3> delaunay_triangulation(std::span<const glm::dvec2> points) {
   const int n = int(points.size());
   if (n < 3) return {};
@@ -127,150 +306,10 @@ std::vector<glm::ivec3> delaunay_triangulation(std::span<const glm::dvec2> point
   // than the corners) can miss its hull triangle; near enough for in_circle to stay exact there.
   constexpr double kFar = 1e5;
   p[n] = {-kFar, -kFar}, p[n + 1] = {kFar, -kFar}, p[n + 2] = {0.5, kFar};
-
-  Mesh2 m;
-  m.v.push_back({n, n + 1, n + 2});
-  m.nb.push_back(glm::ivec3(-1));
-  std::vector<char> alive{1};
-  std::vector<int> free_slots;
-  int last = 0;
-  std::vector<int> cavity, stack;
-  std::vector<char> in_cavity;
-  struct Rim { int a, b, outer; };
-  std::vector<Rim> rim;
-
-  for (int i : insertion_order(std::span(p.data(), n))) {
-    const glm::dvec2 q = p[i];
-    // Walk to the triangle containing q; a bounded walk falls back to a scan.
-    int t = last;
-    for (int steps = 0; t >= 0 && steps < 4 * int(m.v.size()) + 16; ++steps) {
-      int next = -1;
-      for (int k = 0; k < 3 && next < 0; ++k) {
-        const int e = (k + steps) % 3;
-        if (orient(p[m.v[t][(e + 1) % 3]], p[m.v[t][(e + 2) % 3]], q) < 0) next = m.nb[t][e];
-      }
-      if (next < 0) break;
-      t = next;
-    }
-    bool inside = t >= 0 && alive[t];
-    for (int k = 0; inside && k < 3; ++k)
-      if (orient(p[m.v[t][(k + 1) % 3]], p[m.v[t][(k + 2) % 3]], q) < 0) inside = false;
-    if (!inside) {
-      t = -1;
-      for (int u = 0; u < int(m.v.size()) && t < 0; ++u) {
-        if (!alive[u]) continue;
-        bool ok = true;
-        for (int k = 0; k < 3 && ok; ++k) ok = orient(p[m.v[u][(k + 1) % 3]], p[m.v[u][(k + 2) % 3]], q) >= 0;
-        if (ok) t = u;
-      }
-      if (t < 0) continue;
-    }
-    bool duplicate = false;
-    for (int k = 0; k < 3; ++k) duplicate = duplicate || p[m.v[t][k]] == q;
-    if (duplicate) continue;
-
-    // The cavity: triangles whose circumcircle holds q, grown from t; a triangle whose rim edge q
-    // does not see strictly (rounding) is taken back out so the new fan stays positive.
-    in_cavity.resize(m.v.size(), 0);
-    cavity.assign(1, t);
-    in_cavity[t] = 1;
-    stack.assign(1, t);
-    while (!stack.empty()) {
-      const int u = stack.back();
-      stack.pop_back();
-      for (int k = 0; k < 3; ++k) {
-        const int w = m.nb[u][k];
-        if (w < 0 || in_cavity[w]) continue;
-        if (in_circle(p[m.v[w][0]], p[m.v[w][1]], p[m.v[w][2]], q) > 0) {
-          in_cavity[w] = 1;
-          cavity.push_back(w);
-          stack.push_back(w);
-        }
-      }
-    }
-    for (bool changed = true; changed;) {
-      changed = false;
-      rim.clear();
-      for (int u : cavity)
-        for (int k = 0; k < 3; ++k) {
-          const int w = m.nb[u][k];
-          if (w >= 0 && in_cavity[w]) continue;
-          const int a = m.v[u][(k + 1) % 3], b = m.v[u][(k + 2) % 3];
-          if (u != t && orient(p[a], p[b], q) <= 0) {
-            in_cavity[u] = 0;
-            cavity.erase(std::find(cavity.begin(), cavity.end(), u));
-            changed = true;
-            break;
-          }
-          rim.push_back({a, b, w});
-        }
-      // A removal can disconnect the cavity; keep only what is still connected to t.
-      if (changed) {
-        for (int u : cavity) in_cavity[u] = 0;
-        std::vector<int> kept{t};
-        in_cavity[t] = 1;
-        for (size_t s = 0; s < kept.size(); ++s)
-          for (int k = 0; k < 3; ++k) {
-            const int w = m.nb[kept[s]][k];
-            if (w >= 0 && !in_cavity[w] && std::find(cavity.begin(), cavity.end(), w) != cavity.end())
-              in_cavity[w] = 1, kept.push_back(w);
-          }
-        cavity.swap(kept);
-      }
-    }
-    // The fan from q over the rim, in the cavity's freed slots first.
-    std::vector<int> fan(rim.size());
-    for (int u : cavity) alive[u] = 0, in_cavity[u] = 0, free_slots.push_back(u);
-    for (size_t r = 0; r < rim.size(); ++r) {
-      int s;
-      if (!free_slots.empty()) {
-        s = free_slots.back();
-        free_slots.pop_back();
-      } else {
-        s = int(m.v.size());
-        m.v.emplace_back();
-        m.nb.emplace_back();
-        alive.push_back(0);
-        in_cavity.push_back(0);
-      }
-      fan[r] = s;
-      m.v[s] = {i, rim[r].a, rim[r].b};
-      m.nb[s] = {rim[r].outer, -1, -1};
-      alive[s] = 1;
-    }
-    for (size_t r = 0; r < rim.size(); ++r) {
-      const int s = fan[r];
-      if (const int o = rim[r].outer; o >= 0)
-        for (int k = 0; k < 3; ++k)
-          if (m.v[o][(k + 1) % 3] == rim[r].b && m.v[o][(k + 2) % 3] == rim[r].a) m.nb[o][k] = s;
-      // Across (a_r, q), opposite b_r: the fan triangle whose rim edge ends at a_r; across
-      // (q, b_r), opposite a_r: the one whose rim edge starts at b_r.
-      for (size_t o = 0; o < rim.size(); ++o) {
-        if (rim[o].b == rim[r].a) m.nb[s][2] = fan[o];
-        if (rim[o].a == rim[r].b) m.nb[s][1] = fan[o];
-      }
-    }
-    last = fan.empty() ? last : fan[0];
-  }
-
-  // Canonical for a given triangulation: each triangle from its lowest index, triangles along the
-  // Hilbert curve through their centroids, so what is built on their order does not depend on the
-  // insertion order, and loops over them walk the plane coherently. (Cocircular points, as in a
-  // square lattice, can still be triangulated differently in another insertion order.)
-  std::vector<std::pair<std::uint64_t, glm::ivec3>> keyed;
-  for (size_t t = 0; t < m.v.size(); ++t)
-    if (alive[t] && m.v[t][0] < n && m.v[t][1] < n && m.v[t][2] < n) {
-      glm::ivec3 t3 = m.v[t];
-      while (t3.x > t3.y || t3.x > t3.z) t3 = glm::ivec3(t3.y, t3.z, t3.x);
-      const glm::dvec2 c = (p[t3.x] + p[t3.y] + p[t3.z]) / 3.0;
-      keyed.push_back({(hilbert_index(unit_cell(c.x), unit_cell(c.y)) << 32) | std::uint32_t(t3.x), t3});
-    }
-  std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) {
-    return a.first != b.first ? a.first < b.first : std::tie(a.second.y, a.second.z) < std::tie(b.second.y, b.second.z);
-  });
-  std::vector<glm::ivec3> out(keyed.size());
-  for (size_t t = 0; t < keyed.size(); ++t) out[t] = keyed[t].second;
-  return out;
+  const std::vector<int> order = insertion_order(std::span(p.data(), n));
+  DelaunayBuilder builder(std::move(p), n);
+  for (int i : order) builder.insert(i);
+  return builder.triangles();
 }
 
 int flip_to_surface_delaunay(std::vector<glm::ivec3>& triangles, std::span<const glm::dvec2> uv,

@@ -2,7 +2,7 @@
 
 #include "core/input_error.h"
 #include "pattern/pattern.h"
-#include "pipeline/pavement.h"  // place_all_elements
+#include "elements/boundary_postprocess.h"
 
 #include <tbb/parallel_for.h>
 #include <glm/geometric.hpp>
@@ -15,8 +15,9 @@
 
 namespace paver {
 
-OffsetFit fit_offset(const SurfaceMap& map, const UnitCell& cell, const Design& design, const std::atomic<bool>* stop) {
-  const double points = std::max(1.0, estimate_point_count(map, cell, design.placement));
+OffsetFit fit_offset(const SurfaceMap& map, const UnitCell& cell, const ElementsDesign& elements,
+                     const Placement& placement, const std::atomic<bool>* stop) {
+  const double points = std::max(1.0, estimate_point_count(map, cell, placement));
   const int k = std::clamp(static_cast<int>(std::sqrt(kOffsetFitPointBudget / points)), 2, 8);
   const int tries = k * k;
   std::vector<OffsetCandidate> candidate(static_cast<std::size_t>(tries));
@@ -26,14 +27,14 @@ OffsetFit fit_offset(const SurfaceMap& map, const UnitCell& cell, const Design& 
   for (int t = 0; t < tries; ++t) {
     OffsetCandidate& c = candidate[t];
     c.shift_in_cells = glm::dvec2(double(t / k) / k, double(t % k) / k);
-    c.offset = design.placement.offset + c.shift_in_cells.x * cell.a1 + c.shift_in_cells.y * cell.a2;
+    c.offset = placement.offset + c.shift_in_cells.x * cell.a1 + c.shift_in_cells.y * cell.a2;
   }
   const auto lay_out = [&](int t) {
     if (stopped()) return;
     OffsetCandidate& c = candidate[t];
-    Placement placement = design.placement;
-    placement.offset = c.offset;
-    c.laid_out = laid_out_count(map, cell, design, placement);
+    Placement shifted = placement;
+    shifted.offset = c.offset;
+    c.laid_out = laid_out_count(map, cell, elements, shifted);
   };
   if (points <= kOffsetFitParallelPoints)
     tbb::parallel_for(0, tries, lay_out);
@@ -72,44 +73,32 @@ OffsetFit fit_offset(const SurfaceMap& map, const UnitCell& cell, const Design& 
   return fit;
 }
 
-int choose_finalist(const std::vector<OffsetCandidate>& finalists, const std::vector<bool>& ok) {
-  int best = -1;
-  for (int f = 0; f < static_cast<int>(finalists.size()); ++f) {
-    if (best < 0 || (ok[f] && !ok[best])) {
-      best = f;
-      continue;
-    }
-    if (ok[f] != ok[best]) continue;
-    const long kept = finalists[f].kept, best_kept = finalists[best].kept;
-    if (kept > best_kept || (kept == best_kept && finalists[f].shift_in_cells == glm::dvec2(0))) best = f;
-  }
-  return best;
-}
-
 // Rows that run along a band's rims are kept or lost whole at each rim, so where the lattice sits
 // across the band decides how many fit: of shifts across (a sixteenth of a row apart, on top of
 // the design's offset), those whose laid-out elements keep the most after the boundary
 // post-processing. Shifts that keep the same rows form a run; its middle leaves the rows as far
 // from one rim as from the other (the first of them put a ring's rows 0.03 mm from one rim and
 // 0.49 mm from the other).
-glm::dvec2 best_offset_across(const SurfaceMap& map, const UnitCell& cell, const Design& design, glm::ivec2 step) {
+glm::dvec2 best_offset_across(const SurfaceMap& map, const UnitCell& cell, const ElementsDesign& elements,
+                              const Placement& placement, glm::ivec2 step) {
   constexpr int kTries = 16;
-  const double angle = design.placement.rotation_deg * std::numbers::pi / 180.0;
+  const double angle = placement.rotation_deg * std::numbers::pi / 180.0;
   const glm::dvec2 across(-std::sin(angle), std::cos(angle));  // the band's v in the pattern plane
   // Rows along the repeating step lie this far apart: a shift by it lays the rows where rows were
   // (the stones along them may move), so the tries span it.
-  const double band_step = std::abs(cell.cell_area()) / glm::length(double(step.x) * cell.a1 + double(step.y) * cell.a2);
+  const double band_step =
+      std::abs(cell.cell_area()) / glm::length(double(step.x) * cell.a1 + double(step.y) * cell.a2);
   // The tries start where the design's offset has no part across the band: the design.json a run
   // writes holds the offset found, and run again it must find the same one (from its own offset
   // the tries moved the rows half a row further on every run where all shifts keep as many). The
   // search replaces the design's offset across the band; along it, the offset is the design's.
-  const glm::dvec2 base = design.placement.offset - glm::dot(design.placement.offset, across) * across;
+  const glm::dvec2 base = placement.offset - glm::dot(placement.offset, across) * across;
   // The tries are independent: side by side (a large band's layout is mostly serial).
   std::array<std::size_t, kTries> count{};
   tbb::parallel_for(0, kTries, [&](int k) {
-    Placement placement = design.placement;
-    placement.offset = base + (band_step * k / kTries) * across;
-    count[k] = laid_out_count(map, cell, design, placement);
+    Placement shifted = placement;
+    shifted.offset = base + (band_step * k / kTries) * across;
+    count[k] = laid_out_count(map, cell, elements, shifted);
   });
   const std::size_t most = *std::max_element(count.begin(), count.end());
   // The longest run of shifts that keep the most, around the circle (a shift by a whole row
@@ -126,10 +115,12 @@ glm::dvec2 best_offset_across(const SurfaceMap& map, const UnitCell& cell, const
   return base + (band_step * middle / kTries) * across;
 }
 
-std::size_t laid_out_count(const SurfaceMap& map, const UnitCell& cell, const Design& design, const Placement& placement) {
+std::size_t laid_out_count(const SurfaceMap& map, const UnitCell& cell, const ElementsDesign& elements,
+                           const Placement& placement) {
   try {
     const Pattern pattern = build_pattern(map, cell, placement);
-    return place_all_elements(map, pattern, pattern.points, design, true).elements.size();
+    return place_all_elements(map, pattern, pattern.points, elements, cell.spacing, EdgeAnchor::MapLine, true)
+        .elements.size();
   } catch (const InputError&) {
     // No point of this shift lands on the map (a narrow ring at a large D): it lays out nothing,
     // and another shift may do better. A fault of every shift is said by the pattern built after.

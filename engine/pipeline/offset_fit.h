@@ -27,14 +27,14 @@ struct OffsetCandidate {
 // placement.fit_offset: K x K shifts over one lattice cell (i/K a1 + j/K a2, on top of the
 // design's offset) are laid out and counted; for a pattern of up to kOffsetFitPavedPoints points
 // the best few and the design's own offset are then paved in full (the optimizer moves elements
-// and resolution removes some, so the laid-out count only forecasts the kept one) and the one that
-// keeps the most, with an ok verdict first, is laid.
+// and resolution removes some, so the laid-out count only forecasts the kept one) and the better
+// pavement (paves_better, pipeline/choices.h) is laid.
 struct OffsetFit {
   OffsetCandidate chosen;
-  OffsetCandidate at_design;              // no shift
-  int tries = 0;                          // K x K; K is 8, fewer for a large pattern (kOffsetFitPointBudget)
-  std::vector<OffsetCandidate> finalists; // ranked by laid-out count, the design's offset among them; empty
-                                          // when the pattern is too large to pave them all
+  OffsetCandidate at_design;               // no shift
+  int tries = 0;                           // K x K; K is 8, fewer for a large pattern (kOffsetFitPointBudget)
+  std::vector<OffsetCandidate> finalists;  // ranked by laid-out count, the design's offset among them; empty
+                                           // when the pattern is too large to pave them all
 };
 
 // The tries lay out about this many lattice points in all: K = sqrt(budget / points), from 2 to 8
@@ -51,23 +51,22 @@ inline constexpr int kOffsetFitFinalists = 3;
 // Lays out the shifts and ranks them: the most laid-out elements first; among equals, the shift
 // whose neighbouring shifts keep the most too (the middle of a plateau, not its edge), then the one
 // nearest the design's own offset. `chosen` is the first; `finalists` are the best few and the
-// design's offset, for the caller to pave (pipeline/pavement.cpp), when the pattern is small enough.
+// design's offset, for the caller to pave (pipeline/choices.cpp), when the pattern is small enough.
 // When `stop` becomes true the remaining shifts are skipped and the design's offset is chosen.
-OffsetFit fit_offset(const SurfaceMap& map, const UnitCell& cell, const Design& design,
-                     const std::atomic<bool>* stop = nullptr);
-
-// Of finalists paved in full (kept counts set) and whether each one's verdict is ok: the index of
-// the one to lay. An ok verdict first, then the most kept; at the same verdict and count the
-// design's own offset (no shift), else the better-ranked one: a fit that gains nothing moves nothing.
-int choose_finalist(const std::vector<OffsetCandidate>& finalists, const std::vector<bool>& ok);
+// Inputs: the map, the design's cell at its spacing D (cell.spacing), its elements and placement
+// (whose offset the shifts start from).
+OffsetFit fit_offset(const SurfaceMap& map, const UnitCell& cell, const ElementsDesign& elements,
+                     const Placement& placement, const std::atomic<bool>* stop = nullptr);
 
 // The elements that `design` lays out under `placement` before any optimization: the lattice
 // placed and post-processed at the boundary (a forecast of the elements kept); 0 where the
 // pattern cannot be laid there (InputError: no point lands).
-std::size_t laid_out_count(const SurfaceMap& map, const UnitCell& cell, const Design& design, const Placement& placement);
+std::size_t laid_out_count(const SurfaceMap& map, const UnitCell& cell, const ElementsDesign& elements,
+                           const Placement& placement);
 
 // A band paved seamlessly: its rows run along the rims and are kept or lost whole at each, so only
 // the shift across the band matters; `step` is the lattice step that closes around it.
-glm::dvec2 best_offset_across(const SurfaceMap& map, const UnitCell& cell, const Design& design, glm::ivec2 step);
+glm::dvec2 best_offset_across(const SurfaceMap& map, const UnitCell& cell, const ElementsDesign& elements,
+                              const Placement& placement, glm::ivec2 step);
 
 }  // namespace paver

@@ -3,21 +3,24 @@
 // design's operators, the trimmed pattern, the optimized particles, the elements lifted to the
 // surface, post-processing, collision resolution and the quality figures. run_pipeline calls it
 // after mapping; the studio re-runs it (through run_pipeline, on its map) on every design change.
+// The pass itself is pipeline/pave_once.h; the choices above it pipeline/choices.h.
 #include "pattern/particle_relaxation.h"
 #include "solver/coarse_start.h"
 #include "solver/collision_resolution.h"
+#include "elements/boundary_postprocess.h"
 #include "elements/refill.h"
 #include "elements/rim_rows.h"
 #include "design/design.h"
 #include "elements/elements.h"
+#include "map/surface_map.h"
 #include "pattern/band_closure.h"
-#include "pattern/row_alignment.h"
-#include "pipeline/offset_fit.h"
+#include "pattern/design_cell.h"
 #include "pattern/pattern.h"
+#include "pattern/row_alignment.h"
+#include "pattern/unit_cell.h"
+#include "pipeline/offset_fit.h"
 #include "report/pavement_quality.h"
 #include "solver/spring_solver.h"
-#include "map/surface_map.h"
-#include "pattern/unit_cell.h"
 
 #include <functional>
 #include <array>
@@ -100,31 +103,17 @@ std::string band_annulus_reason(const SurfaceMap& map, const Pavement& pavement)
 // The map `pavement.points` are on: the surface's seamless map for a seamless pavement, else `map`.
 const SurfaceMap& pavement_map(const SurfaceMap& map, const Pavement& pavement);
 
-// Unit cell of the design: tessellation at D, operators in order, bracing edges if asked.
-// Throws InputError naming the operator ("pattern.operators[1]: ...") when one fails.
-UnitCell make_design_cell(const PatternDesign& pattern);
-
-// The design's checks that need no surface: its operators apply to the unit cell, E-elements name
-// cell edges that exist, (unless allowed) no two elements overlap in the regular lattice, and
-// element edits and a guidance field have a topology that takes them.
-// Scale-free, so a design whose spacing is still 0 (derived later) is checked at D = 1; a gap
-// (surface units) is checked once the spacing is known. Throws InputError naming the key.
-UnitCell check_design_cell(const Design& design);
-
-// Resolves spacing 0 to the surface's default and checks the design (check_design_cell), then
-// builds pattern and elements. Topology auto paves with the lattice and, when that tears or leaves
-// bare patches (the verdict's bounds) on a design the adaptive pattern can take, with the adaptive
-// pattern too, keeping the one with fewer verdict problems (then the higher fill); the kept
-// pavement's design says which, its topology_choice why, and the other's time is a timing.
+// The pavement of `design` on `map` (the surface's own map; a band's seamless one is its
+// `seamless`): the design's checks first (pattern/design_cell.h), spacing 0 resolved to the
+// surface's default, then every automatic choice made by the chooser (pipeline/choices.h) and the
+// pass run on the design each choice leaves (pipeline/pave_once.h):
+// - pattern.topology auto: the lattice, and where it tears or leaves bare patches (the verdict's
+//   bounds) a band's lattice on its annulus map too, and on a design it can take the adaptive
+//   pattern; the kept pavement's design says which, its topology_choice why;
+// - placement.band_rows auto on a band: both ways, paved when small (else the way that lays out
+//   more), Pavement::band_closure says what each kept;
+// - placement.fit_offset: shifts laid out, the best few paved (Pavement::offset_fit).
+// The candidates dropped are timed as "<name>_tried" (or the choice's own stage).
 Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptions& options = {});
-
-// Elements on `points`: V and E elements, then (if asked) boundary filling and elimination.
-struct PlacedElements {
-  Elements elements;
-  int filled = 0, eliminated = 0;
-};
-PlacedElements place_all_elements(const SurfaceMap& map, const Pattern& pattern, const std::vector<glm::dvec2>& points,
-                                  const Design& design, bool postprocess,
-                                  const std::vector<std::uint8_t>* retired = nullptr);
 
 }  // namespace paver

@@ -92,131 +92,160 @@ nlohmann::json band_json(const SurfaceMap& map, const Pavement& pavement) {
   return band;
 }
 
+nlohmann::json surface_json(const RunInfo& info, const SurfaceMap& map) {
+  const bool atlas = is_atlas(map);
+  return {{"path", info.surface_path},
+          {"vertices", atlas ? map.closed_surface_vertices : map.mesh.vertex_count()},
+          {"faces", atlas ? map.closed_surface_faces : map.mesh.face_count()},
+          {"boundary_vertices", atlas ? 0 : boundary_vertex_count(map.mesh)},
+          {"boundary_loops", atlas ? 0 : map.mesh.boundary_loops.size()},
+          {"holes", atlas ? 0 : map.mesh.hole_count()},
+          {"closed", atlas},
+          {"charts", chart_count(map)},
+          {"seam_loops", atlas ? map.mesh.boundary_loops.size() : 0},
+          {"seam_length", atlas ? 0.5 * boundary_length(map.mesh) : 0.0},
+          {"cut_normal", {map.cut_normal.x, map.cut_normal.y, map.cut_normal.z}},
+          {"area", surface_area(map.mesh)},
+          {"curvature_min", map.curvature_min},
+          {"curvature_max", map.curvature_max}};
+}
+
+nlohmann::json parameterization_json(const SurfaceMap& map) {
+  const auto& q = map.parameterization.quality;
+  const auto& r = map.parameterization.report;
+  return {{"method", map_method_key(r)},
+          {"start", map_start_key(r.start_used)},
+          {"iterations", r.iterations},
+          {"blocked_steps", r.blocked_steps},
+          {"factorizations", r.factorizations},
+          {"flipped_triangles", q.flipped_triangles},
+          {"boundary_intersections", q.boundary_intersections},
+          {"bijective", q.bijective()},
+          {"stretch_mean", q.stretch_mean},
+          {"stretch_max", q.stretch_max},
+          {"area_ratio_min", q.area_ratio_min},
+          {"area_ratio_max", q.area_ratio_max},
+          {"area_distortion_mean", q.area_distortion_mean}};
+}
+
+nlohmann::json relaxation_json(const RelaxationReport& relaxation) {
+  const DefectHealingReport& healing = relaxation.healing;
+  return {{"iterations", relaxation.iterations},
+          {"seeds_kept", relaxation.seeds_kept},
+          {"inserted", relaxation.inserted},
+          {"removed", relaxation.removed},
+          {"packing_iterations", relaxation.packing_iterations},
+          {"jammed_removed", relaxation.jammed},
+          {"healing", {{"interior_defects_before", healing.defects_before},
+                       {"interior_defects_after", healing.defects_after},
+                       {"tries", healing.tries},
+                       {"moved", healing.moved},
+                       {"milliseconds", healing.milliseconds}}},
+          {"milliseconds", relaxation.milliseconds}};
+}
+
+nlohmann::json pattern_json(const SurfaceMap& map, const Pavement& pavement, const PavementCounts& counts) {
+  using nlohmann::json;
+  const std::optional<RowAlignment>& aligned = pavement.row_alignment;
+  return {{"cell_edges", pavement.cell.edges.size()},
+          {"points", pavement.pattern.point_count()},
+          {"edges", counts.pattern_edges},
+          {"virtual_edges", counts.virtual_edges},
+          {"boundary_crossing_edges", counts.boundary_crossing_edges},
+          {"topology", enum_name(pavement.design.pattern.topology)},
+          {"topology_choice", pavement.topology_choice},
+          {"band", band_json(map, pavement)},
+          {"row_alignment", aligned ? json{{"axis", std::string(enum_name(aligned->axis))},
+                                           {"rotation_deg", aligned->rotation_deg},
+                                           {"spread_deg", aligned->spread_deg},
+                                           {"axis_to_surface_deg", aligned->axis_to_surface_deg}}
+                                    : json(nullptr)},
+          {"offset_fit", pavement.offset_fit ? offset_fit_json(*pavement.offset_fit) : json(nullptr)},
+          {"defects", pavement.pattern.defects.size()},
+          {"relaxation", relaxation_json(pavement.relaxation)}};
+}
+
+nlohmann::json optimization_json(const Pavement& pavement, const PavementCounts& counts) {
+  using nlohmann::json;
+  const SolveReport& solve = pavement.solve;
+  const CoarseStartReport& coarse = pavement.coarse_start;
+  return {{"backend", solve.backend.empty() ? json(nullptr) : json(solve.backend)},
+          {"iterations", solve.iterations},
+          {"stop_reason", enum_name(solve.reason)},
+          {"converged", solve.reason == StopReason::Converged},
+          {"last_max_step", solve.last_max_step},
+          {"strays_pulled_back", solve.strays_pulled_back},
+          {"retired_particles", counts.retired_particles},
+          {"coarse_start", {{"level_points", coarse.level_points},
+                            {"level_iterations", coarse.level_iterations},
+                            {"retired", coarse.retired},
+                            {"milliseconds", coarse.milliseconds}}},
+          {"milliseconds", solve.milliseconds}};
+}
+
+// What happened after the optimizer: resolution, refill, rim rows, edits and what was removed.
+void add_after_the_solve(nlohmann::json& report, const Pavement& pavement) {
+  const CollisionResolutionReport& resolution = pavement.resolution;
+  report["postprocess"] = {{"filled", pavement.filled}, {"eliminated", pavement.eliminated}};
+  report["collision_resolution"] = {{"rounds", resolution.rounds},
+                                    {"contact_springs", resolution.contact_springs},
+                                    {"solver_iterations", resolution.solver_iterations},
+                                    {"retired", resolution.retired},
+                                    {"pairs_left", resolution.pairs_left},
+                                    {"removed", resolution.removed},
+                                    {"milliseconds", resolution.milliseconds}};
+  report["refill"] = {{"added", pavement.refill.added},
+                      {"across_seams", pavement.refill.on_seams},
+                      {"waves", pavement.refill.waves},
+                      {"milliseconds", pavement.refill.milliseconds}};
+  report["rim_rows"] = {{"rims", std::string(enum_name(pavement.design.elements.rim_rows))},
+                        {"loops", pavement.rim_rows.loops},
+                        {"placed", pavement.rim_rows.placed},
+                        {"made_way", pavement.rim_rows.made_way}};
+  report["edits"] = edits_json(pavement);
+  report["removed"] = {{"total", pavement.eliminated + resolution.removed + pavement.rim_rows.made_way},
+                       {"crossing_the_boundary", pavement.eliminated},
+                       {"still_colliding_after_resolution", resolution.removed},
+                       {"making_way_for_rim_rows", pavement.rim_rows.made_way}};
+}
+
 }  // namespace
 
 nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const Pavement& pavement,
                                const StageTimings& timings) {
   using nlohmann::json;
-  const auto& q = map.parameterization.quality;
-  const auto& r = map.parameterization.report;
-  const auto& pattern = pavement.pattern;
-  const auto& elements = pavement.elements;
-
   const PavementCounts counts = count_pavement(pavement);
-
   json timing = json::object();
   double total = 0;
   for (const auto& [stage, ms] : timings) timing[stage] = ms, total += ms;
   timing["total"] = total;
-
-  return json{
+  const Design& design = pavement.design;
+  json report = {
       {"paver_report_version", 1},
-      {"surface", {{"path", info.surface_path},
-                   {"vertices", is_atlas(map) ? map.closed_surface_vertices : map.mesh.vertex_count()},
-                   {"faces", is_atlas(map) ? map.closed_surface_faces : map.mesh.face_count()},
-                   {"boundary_vertices", is_atlas(map) ? 0 : boundary_vertex_count(map.mesh)},
-                   {"boundary_loops", is_atlas(map) ? 0 : map.mesh.boundary_loops.size()},
-                   {"holes", is_atlas(map) ? 0 : map.mesh.hole_count()},
-                   {"closed", is_atlas(map)},
-                   {"charts", chart_count(map)},
-                   {"seam_loops", is_atlas(map) ? map.mesh.boundary_loops.size() : 0},
-                   {"seam_length", is_atlas(map) ? 0.5 * boundary_length(map.mesh) : 0.0},
-                   {"cut_normal", {map.cut_normal.x, map.cut_normal.y, map.cut_normal.z}},
-                   {"area", surface_area(map.mesh)},
-                   {"curvature_min", map.curvature_min},
-                   {"curvature_max", map.curvature_max}}},
-      {"parameterization", {{"method", map_method_key(r)},
-                            {"start", map_start_key(r.start_used)},
-                            {"iterations", r.iterations},
-                            {"blocked_steps", r.blocked_steps},
-                            {"factorizations", r.factorizations},
-                            {"flipped_triangles", q.flipped_triangles},
-                            {"boundary_intersections", q.boundary_intersections},
-                            {"bijective", q.bijective()},
-                            {"stretch_mean", q.stretch_mean},
-                            {"stretch_max", q.stretch_max},
-                            {"area_ratio_min", q.area_ratio_min},
-                            {"area_ratio_max", q.area_ratio_max},
-                            {"area_distortion_mean", q.area_distortion_mean}}},
+      {"surface", surface_json(info, map)},
+      {"parameterization", parameterization_json(map)},
       {"design", {{"source", info.design_source},
-                  {"units", enum_name(pavement.design.units)},
-                  {"tessellation", enum_name(pavement.design.pattern.tessellation)},
-                  {"spacing", pavement.design.pattern.spacing},
-                  {"gap", pavement.design.elements.gap},
-                  {"margin", pavement.design.elements.margin},
+                  {"units", enum_name(design.units)},
+                  {"tessellation", enum_name(design.pattern.tessellation)},
+                  {"spacing", design.pattern.spacing},
+                  {"gap", design.elements.gap},
+                  {"margin", design.elements.margin},
                   {"spacing_derived", info.spacing_derived}}},
-      {"pattern", {{"cell_edges", pavement.cell.edges.size()},
-                   {"points", pattern.point_count()},
-                   {"edges", counts.pattern_edges},
-                   {"virtual_edges", counts.virtual_edges},
-                   {"boundary_crossing_edges", counts.boundary_crossing_edges},
-                   {"topology", enum_name(pavement.design.pattern.topology)},
-                   {"topology_choice", pavement.topology_choice},
-                   {"band", band_json(map, pavement)},
-                   {"row_alignment", pavement.row_alignment
-                                         ? json{{"axis", std::string(enum_name(pavement.row_alignment->axis))},
-                                                {"rotation_deg", pavement.row_alignment->rotation_deg},
-                                                {"spread_deg", pavement.row_alignment->spread_deg},
-                                                {"axis_to_surface_deg", pavement.row_alignment->axis_to_surface_deg}}
-                                         : json(nullptr)},
-                   {"offset_fit", pavement.offset_fit ? offset_fit_json(*pavement.offset_fit) : json(nullptr)},
-                   {"defects", pattern.defects.size()},
-                   {"relaxation", {{"iterations", pavement.relaxation.iterations},
-                                   {"seeds_kept", pavement.relaxation.seeds_kept},
-                                   {"inserted", pavement.relaxation.inserted},
-                                   {"removed", pavement.relaxation.removed},
-                                   {"packing_iterations", pavement.relaxation.packing_iterations},
-                                   {"jammed_removed", pavement.relaxation.jammed},
-                                   {"healing", {{"interior_defects_before", pavement.relaxation.healing.defects_before},
-                                                {"interior_defects_after", pavement.relaxation.healing.defects_after},
-                                                {"tries", pavement.relaxation.healing.tries},
-                                                {"moved", pavement.relaxation.healing.moved},
-                                                {"milliseconds", pavement.relaxation.healing.milliseconds}}},
-                                   {"milliseconds", pavement.relaxation.milliseconds}}}}},
-      {"elements", {{"total", elements.size()},
+      {"pattern", pattern_json(map, pavement, counts)},
+      {"elements", {{"total", pavement.elements.size()},
                     {"vertex", counts.vertex_elements},
                     {"edge", counts.edge_elements}}},
-      {"optimization", {{"backend", pavement.solve.backend.empty() ? json(nullptr) : json(pavement.solve.backend)},
-                        {"iterations", pavement.solve.iterations},
-                        {"stop_reason", enum_name(pavement.solve.reason)},
-                        {"converged", pavement.solve.reason == StopReason::Converged},
-                        {"last_max_step", pavement.solve.last_max_step},
-                        {"strays_pulled_back", pavement.solve.strays_pulled_back},
-                        {"retired_particles", counts.retired_particles},
-                        {"coarse_start", {{"level_points", pavement.coarse_start.level_points},
-                                          {"level_iterations", pavement.coarse_start.level_iterations},
-                                          {"retired", pavement.coarse_start.retired},
-                                          {"milliseconds", pavement.coarse_start.milliseconds}}},
-                        {"milliseconds", pavement.solve.milliseconds}}},
-      {"postprocess", {{"filled", pavement.filled}, {"eliminated", pavement.eliminated}}},
-      {"collision_resolution", {{"rounds", pavement.resolution.rounds},
-                                {"contact_springs", pavement.resolution.contact_springs},
-                                {"solver_iterations", pavement.resolution.solver_iterations},
-                                {"retired", pavement.resolution.retired},
-                                {"pairs_left", pavement.resolution.pairs_left},
-                                {"removed", pavement.resolution.removed},
-                                {"milliseconds", pavement.resolution.milliseconds}}},
-      {"refill", {{"added", pavement.refill.added},
-                  {"across_seams", pavement.refill.on_seams},
-                  {"waves", pavement.refill.waves},
-                  {"milliseconds", pavement.refill.milliseconds}}},
-      {"rim_rows", {{"rims", std::string(enum_name(pavement.design.elements.rim_rows))},
-                    {"loops", pavement.rim_rows.loops},
-                    {"placed", pavement.rim_rows.placed},
-                    {"made_way", pavement.rim_rows.made_way}}},
-      {"edits", edits_json(pavement)},
-      {"removed", {{"total", pavement.eliminated + pavement.resolution.removed + pavement.rim_rows.made_way},
-                   {"crossing_the_boundary", pavement.eliminated},
-                   {"still_colliding_after_resolution", pavement.resolution.removed},
-                   {"making_way_for_rim_rows", pavement.rim_rows.made_way}}},
-      {"verdict", to_json(judge_pavement(pavement.after))},
-      {"stones", to_json(bill_of_stones(elements, pavement.design.units))},
-      {"beads", beads_json(pavement)},
-      {"quality_before", to_json(pavement.before)},
-      {"quality_paper_method", to_json(pavement.paper)},
-      {"quality_after", to_json(pavement.after)},
-      {"timings_ms", timing},
+      {"optimization", optimization_json(pavement, counts)},
   };
+  add_after_the_solve(report, pavement);
+  report["verdict"] = to_json(judge_pavement(pavement.after));
+  report["stones"] = to_json(bill_of_stones(pavement.elements, design.units));
+  report["beads"] = beads_json(pavement);
+  report["quality_before"] = to_json(pavement.before);
+  report["quality_paper_method"] = to_json(pavement.paper);
+  report["quality_after"] = to_json(pavement.after);
+  report["timings_ms"] = timing;
+  return report;
 }
 
 }  // namespace paver

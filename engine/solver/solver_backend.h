@@ -22,23 +22,20 @@ namespace paver {
 using SolverObserver = std::function<bool(int iteration, const std::vector<glm::vec2>& positions)>;
 
 enum class StopReason { Converged, IterationLimit, Observer };  // Observer: the observer or `stop`
-template <>
-struct EnumNames<StopReason> {
-  static constexpr EnumName<StopReason> table[] = {
-      {StopReason::Converged, "converged"}, {StopReason::IterationLimit, "iteration limit"}, {StopReason::Observer, "stopped"}};
-};
+PAVER_ENUM_NAMES(StopReason, {StopReason::Converged, "converged"}, {StopReason::IterationLimit, "iteration limit"},
+                 {StopReason::Observer, "stopped"});
 
 struct SolveReport {
   int iterations = 0;
   StopReason reason = StopReason::IterationLimit;
-  float last_max_step = 0;      // max |dp dt| of the last iteration over settled particles, map units
-  int strays_pulled_back = 0;   // particle lifts that needed a pull back onto the map
+  float last_max_step = 0;     // max |dp dt| of the last iteration over settled particles, map units
+  int strays_pulled_back = 0;  // particle lifts that needed a pull back onto the map
   double milliseconds = 0;
-  std::string backend;          // which ran it (SpringSolverBackend::backend_name), set by the pipeline
+  std::string backend;  // which ran it (SpringSolverBackend::backend_name), set by the pipeline
 };
 
 class SpringSolverBackend {
-public:
+ public:
   virtual ~SpringSolverBackend() = default;
   // Runs until converged, the iteration limit, the observer says stop, or `*stop` becomes true
   // (checked every iteration on the CPU, every batch on a GPU; it costs no read-back of

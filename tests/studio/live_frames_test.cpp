@@ -52,8 +52,10 @@ TEST(LiveFrames, AFrameIsPreparedOffTheUiThreadAndTakenOnce) {
   EXPECT_EQ(frame->sequence, 9u);
 
   // What the UI thread would have drawn itself: the snapshot's elements placed on its points.
-  const PlacedElements placed = place_all_elements(map_for_topology(*map, frame->topology), *snapshot.pattern,
-                                                   snapshot.points, snapshot.design, false);
+  const Design& design = snapshot.design;
+  const PlacedElements placed =
+      place_all_elements(map_for_topology(*map, frame->topology), *snapshot.pattern, snapshot.points, design.elements,
+                         design.pattern.spacing, edge_anchor(design.pattern.topology), false);
   ASSERT_GT(placed.elements.size(), 100u);
   const render::PreparedElements expected = render::prepare_elements(
       placed.elements, render::element_colours(placed.elements, render::ColourMode::NeighbourRatio), nullptr);

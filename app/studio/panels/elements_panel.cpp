@@ -17,13 +17,10 @@
 namespace paver::studio {
 namespace {
 
-constexpr ShapeKind kShapes[] = {ShapeKind::Sphere, ShapeKind::Gem, ShapeKind::HexPrism, ShapeKind::Disc,
-                                 ShapeKind::Custom};
-
 bool shape_combo(const char* label, ShapeKind& shape) {
   bool changed = false;
   if (ImGui::BeginCombo(label, std::string(enum_name(shape)).c_str())) {
-    for (const ShapeKind kind : kShapes)
+    for (const ShapeKind kind : enum_values<ShapeKind>())
       if (ImGui::Selectable(std::string(enum_name(kind)).c_str(), kind == shape)) {
         changed = kind != shape;
         shape = kind;
@@ -84,12 +81,8 @@ void jewellery_section(Document& doc, Design& d) {
               "D and the proportions stay.");
   if (length_field("edge margin", d.elements.margin, unit.c_str())) change_design(doc, d);
   help_marker("No stone comes nearer the surface's edge than this (0 = its edge may touch the rim).");
-  const char* rim_names[] = {"none (trimmed)", "around the holes", "along every rim"};
-  int rims = int(d.elements.rim_rows);
-  if (ImGui::Combo("rim rows", &rims, rim_names, 3)) {
-    d.elements.rim_rows = RimRows(rims);
+  if (enum_combo("rim rows", d.elements.rim_rows, {"none (trimmed)", "around the holes", "along every rim"}))
     change_design(doc, d);
-  }
   help_marker("A row of stones that follows the surface's rims, so a hole's edge looks designed, not "
               "trimmed: around the holes (every rim but the outer edge) or along every rim. The pattern's "
               "stones that the row would touch make way. A closed surface has no rims.");

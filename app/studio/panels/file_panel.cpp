@@ -78,9 +78,8 @@ void file_panel(Studio& s) {
   }
   ImGui::TextDisabled("or drop a surface or a design .json on the window");
   if (doc.surface.map && is_atlas(*doc.surface.map)) {
-    const char* axis_names[] = {"its longest axis", "x", "y", "z"};
-    int axis = int(s.doc.design.placement.cut_axis);
-    if (ImGui::Combo("cut across", &axis, axis_names, 4)) set_cut_axis(s, CutAxis(axis));
+    CutAxis axis = s.doc.design.placement.cut_axis;
+    if (enum_combo("cut across", axis, {"its longest axis", "x", "y", "z"})) set_cut_axis(s, axis);
     help_marker("A closed surface (a bead, a figurine) is paved as charts cut apart by a plane through its "
                 "centre, across this axis; stones are added across the seam where both sides leave room. "
                 "Changing it maps the surface again.");

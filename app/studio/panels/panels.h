@@ -1,7 +1,14 @@
 #pragma once
 // The studio's panels: free functions that draw the parts they are given, every frame, and
 // change the design only through change_design (so each change is undoable and re-runs).
+#include "core/enum_names.h"
+
 #include <imgui.h>
+
+#include <algorithm>
+#include <initializer_list>
+#include <utility>
+#include <vector>
 
 namespace paver::studio {
 
@@ -30,5 +37,32 @@ void help_marker(const char* text);
 bool typed_number(const char* label, double& value, const char* format = "%.4g");
 // A separator with a title under it.
 void section(const char* title);
+
+// A list to choose one of an enum's values from, each in `words` (in the enum's own order, as
+// EnumNames lists them); true when the choice changed.
+template <NamedEnum E, std::size_t N>
+bool enum_combo(const char* label, E& value, const char* const (&words)[N]) {
+  const std::vector<E> values = enum_values<E>();
+  int current = int(std::find(values.begin(), values.end(), value) - values.begin());
+  if (!ImGui::Combo(label, &current, words, int(std::min(N, values.size())))) return false;
+  const bool changed = values[std::size_t(current)] != value;
+  value = values[std::size_t(current)];
+  return changed;
+}
+
+// Radio buttons on one line, one per (label, value); true when the choice changed.
+template <class E>
+bool radio_buttons(E& value, std::initializer_list<std::pair<const char*, E>> choices) {
+  int current = int(value);
+  bool first = true;
+  for (const auto& [label, choice] : choices) {
+    if (!first) ImGui::SameLine();
+    first = false;
+    ImGui::RadioButton(label, &current, int(choice));
+  }
+  const bool changed = E(current) != value;
+  value = E(current);
+  return changed;
+}
 
 }  // namespace paver::studio

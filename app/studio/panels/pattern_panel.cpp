@@ -20,7 +20,6 @@ namespace paver::studio {
 namespace {
 
 constexpr int kRange = 1;  // cells drawn around the unit cell: (2 kRange + 1)^2
-constexpr Tessellation kTessellations[] = {Tessellation::Triangle, Tessellation::Grid, Tessellation::Hexagon};
 
 float distance_to_segment(glm::vec2 p, glm::vec2 a, glm::vec2 b) {
   const glm::vec2 ab = b - a;
@@ -159,12 +158,7 @@ void placement_section(Document& doc, Design& d) {
   bool changed = typed_number("offset u", p.offset.x);
   changed |= typed_number("offset v", p.offset.y);
   help_marker("Moves the pattern over the map, in surface units (the left drag in the 2D view).");
-  const char* align_names[] = {"none (the map's)", "x", "y", "z"};
-  int align = int(p.align);
-  if (ImGui::Combo("rows along axis", &align, align_names, 4)) {
-    p.align = AlignAxis(align);
-    changed = true;
-  }
+  changed |= enum_combo("rows along axis", p.align, {"x", "y", "z", "none (the map's)"});
   help_marker("Turns the pattern so that its rows follow a world axis (x, y or z) as it lies on the surface, "
               "on average over the surface: rows level on a facade. The rotation below is then added to it. "
               "Not on a band, whose rows close around it.");
@@ -197,11 +191,9 @@ void placement_section(Document& doc, Design& d) {
 
 void pattern_panel(Document& doc, UiState& ui) {
   Design d = doc.design;
-  int current = int(std::find(std::begin(kTessellations), std::end(kTessellations), d.pattern.tessellation) -
-                    std::begin(kTessellations));
-  const char* names[] = {"triangles (tri)", "squares (grid)", "hexagons (hex)"};
-  if (ImGui::Combo("tessellation", &current, names, 3)) {
-    change_design(doc, with_tessellation(d, kTessellations[current]));
+  Tessellation tessellation = d.pattern.tessellation;
+  if (enum_combo("tessellation", tessellation, {"triangles (tri)", "squares (grid)", "hexagons (hex)"})) {
+    change_design(doc, with_tessellation(d, tessellation));
     ui.add_from_vertex = -1;
   }
   help_marker("The regular tessellation of section 4.1. Changing it clears the edge operators and the "
@@ -215,23 +207,16 @@ void pattern_panel(Document& doc, UiState& ui) {
   if (doc.result.pavement && d.pattern.spacing <= 0)
     ImGui::TextDisabled("derived: D = %.4g", doc.result.pavement->design.pattern.spacing);
 
-  const char* topology_names[] = {"lattice (the paper's)", "adaptive (point defects)", "auto"};
-  int topology = int(d.pattern.topology);
-  if (ImGui::Combo("topology", &topology, topology_names, 3)) {
-    d.pattern.topology = Topology(topology);
+  if (enum_combo("topology", d.pattern.topology, {"lattice (the paper's)", "adaptive (point defects)", "auto"}))
     change_design(doc, d);
-  }
   help_marker("Lattice: the regular tessellation laid over the map. Adaptive: stones grown on the surface "
               "at the same spacing, with a few 5- and 7-neighbour defects where the map distorts the "
               "lattice (tri and hex). Auto: the lattice, unless it tears or leaves bare patches and the "
               "adaptive pattern does better.");
   if (doc.surface.map && is_band(*doc.surface.map)) {
-    const char* row_names[] = {"along the band", "across the band", "auto (the better of the two)"};
-    int rows = int(d.placement.band_rows);
-    if (ImGui::Combo("band rows", &rows, row_names, 3)) {
-      d.placement.band_rows = BandRows(rows);
+    if (enum_combo("band rows", d.placement.band_rows,
+                   {"along the band", "across the band", "auto (the better of the two)"}))
       change_design(doc, d);
-    }
     help_marker("On a ring or bangle the lattice closes around the band: a whole number of stones goes "
                 "round (D changes a little to make it so). Rows across the band or along it, or auto (the "
                 "default): both are paved and the better kept, so a row of large stones goes all round a ring.");
@@ -246,14 +231,9 @@ void pattern_panel(Document& doc, UiState& ui) {
   }
 
   section("Unit cell");
-  int mode = int(ui.cell_mode);
-  ImGui::RadioButton("flip", &mode, int(CellEditMode::Flip));
-  ImGui::SameLine();
-  ImGui::RadioButton("remove", &mode, int(CellEditMode::Remove));
-  ImGui::SameLine();
-  ImGui::RadioButton("add", &mode, int(CellEditMode::Add));
-  if (mode != int(ui.cell_mode)) ui.add_from_vertex = -1;
-  ui.cell_mode = CellEditMode(mode);
+  if (radio_buttons(ui.cell_mode,
+                    {{"flip", CellEditMode::Flip}, {"remove", CellEditMode::Remove}, {"add", CellEditMode::Add}}))
+    ui.add_from_vertex = -1;
   if (ui.cell_mode == CellEditMode::Add) {
     ImGui::SameLine();
     ImGui::Checkbox("virtual", &ui.add_virtual);
@@ -276,13 +256,7 @@ void pattern_panel(Document& doc, UiState& ui) {
   }
 
   section("Guidance brush");
-  int brush = int(ui.brush);
-  ImGui::RadioButton("off", &brush, int(Brush::Off));
-  ImGui::SameLine();
-  ImGui::RadioButton("paint looser", &brush, int(Brush::Looser));
-  ImGui::SameLine();
-  ImGui::RadioButton("paint denser", &brush, int(Brush::Denser));
-  ui.brush = Brush(brush);
+  radio_buttons(ui.brush, {{"off", Brush::Off}, {"paint looser", Brush::Looser}, {"paint denser", Brush::Denser}});
   help_marker("Drag in the 2D map to paint where the pattern should be looser (stones farther apart) or denser. "
               "Each dab changes the spacing by up to the strength at its centre, fading to nothing at its radius; "
               "dabs add up, from half to twice D. Denser stops where the stones touch. Only the lattice follows "

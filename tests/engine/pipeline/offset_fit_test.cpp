@@ -102,27 +102,6 @@ TEST(OffsetFit, UnderElementEditsNoFitIsMadeAndTheRunSaysSo) {
   }));
 }
 
-// Which paved finalist is laid: an ok verdict first, then the most kept; at the same verdict and
-// count the design's own offset, else the better-ranked one.
-TEST(OffsetFit, TheFinalistLaidIsOkFirstThenKeepsTheMostThenTheDesignsOwn) {
-  const auto finalist = [](double shift, long kept) {
-    OffsetCandidate c;
-    c.shift_in_cells = {shift, 0};
-    c.kept = kept;
-    return c;
-  };
-  // ranked by laid-out count: 0.5, 0.25, then the design's own (no shift)
-  const std::vector<OffsetCandidate> f = {finalist(0.5, 100), finalist(0.25, 104), finalist(0, 102)};
-  EXPECT_EQ(choose_finalist(f, {true, true, true}), 1) << "the most kept";
-  EXPECT_EQ(choose_finalist(f, {true, false, true}), 2) << "an ok verdict before more elements";
-  EXPECT_EQ(choose_finalist(f, {false, false, false}), 1) << "among NOT OK ones too, the most kept";
-  EXPECT_EQ(choose_finalist(f, {true, false, false}), 0) << "the only ok one";
-  const std::vector<OffsetCandidate> tie = {finalist(0.5, 102), finalist(0.25, 102), finalist(0, 102)};
-  EXPECT_EQ(choose_finalist(tie, {true, true, true}), 2) << "a fit that gains nothing moves nothing";
-  const std::vector<OffsetCandidate> tie_shifted = {finalist(0.5, 103), finalist(0.25, 103), finalist(0, 99)};
-  EXPECT_EQ(choose_finalist(tie_shifted, {true, true, true}), 0) << "between shifts, the better ranked";
-}
-
 // A band's rows are shifted across it for the most elements on every run; the design.json a run
 // writes holds the shift, and run again it lays the same stones (the tries once started from the
 // design's offset and moved the rows half a row further on every run).

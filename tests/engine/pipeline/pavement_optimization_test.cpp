@@ -188,9 +188,14 @@ TEST(PavementOptimization, StopFlagEndsEverySolveWithoutAnObserver) {
   Design design;
   design.pattern.tessellation = Tessellation::Triangle;
   design.pattern.spacing = 18;
-  const std::atomic<bool> stop = true;
+  // Asked as the optimizer starts: the pass checks the flag before each step, the solver after
+  // each iteration.
+  std::atomic<bool> stop = false;
   PavementOptions options;
   options.stop = &stop;
+  options.on_stage = [&](const std::string& stage) {
+    if (stage == "optimize") stop = true;
+  };
   const Pavement p = make_pavement(map, design, options);
   EXPECT_EQ(p.solve.iterations, 1) << "the flag is checked after each iteration";
   EXPECT_EQ(p.solve.reason, StopReason::Observer);

@@ -249,8 +249,10 @@ TEST_F(RunPipeline, RefusesTooLargeOutputBeforeTheSolve) {
 
   // The estimate from the pattern is the placed elements' size before boundary post-processing.
   const ElementMeshSize expected = expected_element_mesh_size(full.pavement.pattern, full.pavement.design.elements);
+  const Design& used = full.pavement.design;
   const PlacedElements initial = place_all_elements(*request.map, full.pavement.pattern, full.pavement.pattern.points,
-                                                    full.pavement.design, false);
+                                                    used.elements, used.pattern.spacing,
+                                                    edge_anchor(used.pattern.topology), false);
   EXPECT_EQ(expected.elements, initial.elements.size());
   EXPECT_EQ(expected.faces, element_mesh_size(initial.elements).faces);
 }

@@ -1,0 +1,298 @@
+#include "pipeline/pave_once.h"
+
+#include "core/input_error.h"
+#include "core/stopwatch.h"
+#include "design/design_keys.h"
+#include "elements/beads.h"
+#include "elements/boundary_postprocess.h"
+#include "elements/element_deletion.h"
+#include "elements/element_ids.h"
+#include "pattern/adaptive_pattern.h"
+#include "pattern/band_closure.h"
+#include "pattern/default_spacing.h"
+#include "pattern/design_cell.h"
+#include "pattern/pattern_edits.h"
+#include "pipeline/offset_fit.h"
+#include "solver/edit_relaxation.h"
+#include "solver/guidance_field.h"
+#include "solver/surface_spring_relaxation.h"
+
+#include <limits>
+#include <string>
+
+namespace paver {
+
+Elements PaveState::place(const PaveContext& context, const std::vector<glm::dvec2>& points,
+                          const std::vector<std::uint32_t>& stray_count) {
+  for (size_t i = 0; i < stray_count.size(); ++i) pavement.retired[i] = stray_count[i] == kRetired ? 1 : 0;
+  PlacedElements placed =
+      place_all_elements(context.map, pavement.pattern, points, design.elements, design.pattern.spacing,
+                         edge_anchor(design.pattern.topology), context.options.postprocess, &pavement.retired);
+  pavement.filled = placed.filled;
+  pavement.eliminated = placed.eliminated;
+  return std::move(placed.elements);
+}
+
+namespace {
+
+// --- the pattern: the band closed, the rows turned, the lattice laid (or the pattern grown) ---
+
+// A band's seamless map: the lattice turned and its D changed a little, so that it closes.
+void close_the_band(const PaveContext& c, PaveState& s) {
+  check_design_cell(s.design);  // the design's own errors first, at its own spacing
+  refuse_spacing_larger_than_map(c.map, s.design.pattern.spacing, s.design.placement);
+  const BandRows rows = s.design.placement.band_rows == BandRows::Along ? BandRows::Along : BandRows::Across;
+  ClosedBand closed = close_band_design(c.map, std::move(s.design), rows);
+  s.design = std::move(closed.design);
+  s.pavement.band_closure = closed.closure;
+  s.pavement.seamless = true;
+}
+
+void lay_out_pattern(const PaveContext& c, PaveState& s) {
+  Design& design = s.design;
+  Pavement& pavement = s.pavement;
+  if (design.pattern.spacing <= 0) design.pattern.spacing = default_spacing(c.map.mesh, design.pattern.tessellation);
+  if (map_wraps(c.map) && !s.adaptive()) close_the_band(c, s);
+  pavement.cell = check_design_cell(design);
+  if (design.placement.align != AlignAxis::None && !pavement.seamless)
+    pavement.row_alignment = fold_row_alignment(c.map, pavement.cell, design.placement);
+  if (pavement.seamless)
+    design.placement.offset =
+        best_offset_across(c.map, pavement.cell, design.elements, design.placement, pavement.band_closure->step);
+  s.basis = quality_basis(c.map, pavement.cell, design.elements, design.solver, design.guidance);
+  // The adaptive pattern is grown instead of the lattice (docs/topology.md).
+  if (s.adaptive()) {
+    AdaptivePattern grown = build_adaptive_pattern(c.map, pavement.cell, design, c.options.stop);
+    pavement.pattern = std::move(grown.pattern);
+    pavement.relaxation = grown.relaxation;
+  } else {
+    pavement.pattern = build_pattern(c.map, pavement.cell, design.placement);
+  }
+  s.edited = add_edited_points(c.map, pavement.pattern, design.edits,
+                               design.elements.vertex.scale * design.pattern.spacing, design.elements.gap);
+  pavement.points = pavement.pattern.points;
+  pavement.retired.assign(pavement.points.size(), 0);
+  // Before any element is placed or measured: the caller's bounds (run_pipeline's output size)
+  // refuse a design here at the cost of its pattern alone.
+  if (c.options.on_pattern) c.options.on_pattern(pavement.pattern, design);
+}
+
+void measure_initial(const PaveContext& c, PaveState& s) {
+  const PlacedElements initial =
+      place_all_elements(c.map, s.pavement.pattern, s.pavement.points, s.design.elements, s.design.pattern.spacing,
+                         edge_anchor(s.design.pattern.topology), c.options.postprocess);
+  s.pavement.before = measure_pavement(c.map, s.pavement.pattern, s.pavement.points, initial.elements, s.basis, nullptr,
+                                       Measure::Counts);
+}
+
+// --- the optimizer: the adaptive pattern's on the surface, or the paper's spring system ---
+
+void optimize(const PaveContext& c, PaveState& s) {
+  Pavement& pavement = s.pavement;
+  s.optimized = true;
+  if (s.adaptive()) {
+    // The adaptive pattern's own optimizer, on the surface, with contact in it; removal is the
+    // last resort for what still collides.
+    pavement.solve = relax_pattern_on_surface(c.map, pavement.pattern, pavement.points, s.design, {}, c.options.stop);
+    pavement.solve.backend = "cpu";  // the adaptive pattern's optimizer has no GPU path
+    return;
+  }
+  const Design& design = s.design;
+  const SolverSurface& surface = s.surface.emplace(make_solver_surface(c.map));
+  SpringSystem& system = s.system.emplace(make_spring_system(pavement.pattern));
+  apply_guidance(system, pavement.pattern, design.guidance);
+  set_aside_added(system, s.edited);
+  s.factory = c.options.solver ? c.options.solver : cpu_solver_factory(c.options.threads);
+  const PatternAtSpacing pattern_at = [&](double spacing) {
+    PatternDesign coarser = design.pattern;
+    coarser.spacing = spacing;
+    return build_pattern(c.map, make_design_cell(coarser), design.placement);
+  };
+  // An atlas's charts lie side by side in one uv frame: a field over it would blend them.
+  if (!is_atlas(c.map))
+    pavement.coarse_start =
+        coarse_start(surface, system, pattern_at, design.solver, design.pattern.spacing, s.factory, c.options.stop);
+  const std::unique_ptr<SpringSolverBackend> solver = s.factory(surface, system, design.solver, design.pattern.spacing);
+  pavement.solve = solver->solve(c.options.observer, c.options.stop);
+  pavement.solve.backend = std::string(solver->backend_name());
+  for (int i = 0; i < system.particle_count(); ++i) pavement.points[i] = glm::dvec2(system.position[i]);
+}
+
+// The elements on the optimized particles (or, unoptimized, on the lifted pattern as laid, the
+// edits as put) and the paper's method's figures.
+void measure_paper(const PaveContext& c, PaveState& s) {
+  Pavement& pavement = s.pavement;
+  if (!s.optimized) {
+    for (const EditedParticle& e : s.edited) pavement.points[std::size_t(e.particle)] = e.to;
+    pavement.elements = s.place(c, pavement.points, {});
+    pavement.paper = pavement.before;
+    return;
+  }
+  pavement.elements = s.place(c, pavement.points, s.system ? s.system->stray_count : std::vector<std::uint32_t>{});
+  pavement.paper = measure_pavement(c.map, pavement.pattern, pavement.points, pavement.elements, s.basis,
+                                    &pavement.retired, Measure::Counts);
+}
+
+ElementPlacer placer(const PaveContext& c, PaveState& s) {
+  return [&c, &s](const std::vector<glm::dvec2>& points, const std::vector<std::uint32_t>& stray_count) {
+    return s.place(c, points, stray_count);
+  };
+}
+
+void resolve(const PaveContext& c, PaveState& s) {
+  Pavement& pavement = s.pavement;
+  if (s.adaptive()) {
+    const Removal removal = remove_colliding(pavement.elements, s.design.elements.gap);
+    pavement.resolution.pairs_left = removal.pairs;
+    pavement.resolution.removed = removal.removed;
+    return;
+  }
+  pavement.elements =
+      resolve_collisions(c.map, *s.surface, *s.system, pavement.pattern, s.design, pavement.points, placer(c, s),
+                         s.factory, c.options.resolution, pavement.resolution, c.options.stop);
+}
+
+// The edits start from the design's own pavement and change it only around them.
+void apply_edits(const PaveContext& c, PaveState& s) {
+  Pavement& pavement = s.pavement;
+  SpringSystem& system = *s.system;
+  const HeldParticles beyond = place_edits(system, s.edited, s.design.pattern.spacing);
+  for (int i = 0; i < system.particle_count(); ++i) pavement.points[i] = glm::dvec2(system.position[i]);
+  if (c.options.resolve_collisions && !s.design.elements.allow_overlap) {
+    CollisionResolutionReport around;
+    // An edit's few collisions are the designer's: pushed apart in every round, never left to the
+    // last resort early, whatever the pattern's size.
+    CollisionResolutionOptions every_round = c.options.resolution;
+    every_round.large_pattern_particles = std::numeric_limits<int>::max();
+    pavement.elements = resolve_collisions(c.map, *s.surface, system, pavement.pattern, s.design, pavement.points,
+                                           placer(c, s), s.factory, every_round, around, c.options.stop);
+    pavement.resolution.rounds += around.rounds;
+    pavement.resolution.contact_springs += around.contact_springs;
+    pavement.resolution.solver_iterations += around.solver_iterations;
+    pavement.resolution.retired += around.retired;
+    pavement.resolution.removed = around.removed;  // the final elements are this resolution's
+  } else {
+    pavement.elements = s.place(c, pavement.points, system.stray_count);
+  }
+  release_held(system, beyond);
+}
+
+// --- after the solve: rows along the rims, the bare regions refilled, ids, the final figures ---
+
+void lay_rim_rows(const PaveContext& c, PaveState& s) {
+  s.pavement.rim_rows = place_rim_rows(c.map, s.pavement.elements, s.design);
+}
+
+void refill(const PaveContext& c, PaveState& s) {
+  Pavement& pavement = s.pavement;
+  // Across a closed surface's seams first, so that the bare regions' refill grows from there too.
+  RefillReport seams;
+  // The refill adds V-elements: at the V-elements' own density, not all elements' (a honeycomb
+  // with edge elements has room in every hexagon at the mixed density).
+  const double area_per_vertex_element =
+      s.basis.vertex_share > 0 ? s.basis.area_per_element / s.basis.vertex_share : s.basis.area_per_element;
+  refill_seams(c.map, pavement.elements, s.design, area_per_vertex_element, seams);
+  pavement.refill = refill_bare_regions(c.map, pavement.elements, s.design, area_per_vertex_element, c.options.stop);
+  pavement.refill.added += seams.added;
+  pavement.refill.on_seams = seams.on_seams;
+  pavement.refill.milliseconds += seams.milliseconds;
+}
+
+void number(const PaveContext&, PaveState& s) {
+  number_elements(s.pavement.elements, s.pavement.pattern, s.design.edits.added);
+}
+
+void delete_edited(const PaveContext&, PaveState& s) {
+  s.pavement.deletions_missed =
+      delete_elements(s.pavement.elements, s.design.edits, first_refill_id(s.pavement.pattern));
+}
+
+void measure_final(const PaveContext& c, PaveState& s) {
+  Pavement& pavement = s.pavement;
+  pavement.after =
+      measure_pavement(c.map, pavement.pattern, pavement.points, pavement.elements, s.basis, &pavement.retired);
+}
+
+void lay_beads(const PaveContext& c, PaveState& s) {
+  s.pavement.beads = place_beads(c.map, s.pavement.elements, s.design.elements);
+  number_beads(s.pavement.beads, s.pavement.elements);
+}
+
+// A step's condition: nullptr when it always runs.
+using Applies = bool (*)(const PaveState&, const PavementOptions&);
+constexpr Applies kLatticeEdits = [](const PaveState& s, const PavementOptions&) {
+  return s.lattice_solved() && !s.edited.empty();
+};
+constexpr Applies kWithoutOverlap = [](const PaveState& s, const PavementOptions&) {
+  return !s.design.elements.allow_overlap;
+};
+
+constexpr PaveStep kSteps[] = {
+    {"pattern", nullptr, lay_out_pattern},
+    {"measure_initial", nullptr, measure_initial},
+    {"optimize",
+     [](const PaveState& s, const PavementOptions& o) { return o.optimize && s.pavement.pattern.point_count() > 0; },
+     optimize},
+    {"measure_paper", nullptr, measure_paper},
+    {"resolve_collisions",
+     [](const PaveState& s, const PavementOptions& o) {
+       return s.optimized && o.resolve_collisions && kWithoutOverlap(s, o);
+     },
+     resolve},
+    {"edits", kLatticeEdits, apply_edits},
+    {"rim_rows",
+     [](const PaveState& s, const PavementOptions& o) {
+       return s.design.elements.rim_rows != RimRows::None && kWithoutOverlap(s, o);
+     },
+     lay_rim_rows},
+    {"refill", [](const PaveState& s, const PavementOptions& o) { return o.refill && kWithoutOverlap(s, o); }, refill},
+    {"ids", nullptr, number},
+    {"deletions", [](const PaveState& s, const PavementOptions&) { return !s.design.edits.deleted.empty(); },
+     delete_edited},
+    {"measure", nullptr, measure_final},
+    {"beads", [](const PaveState& s, const PavementOptions&) { return s.design.elements.beads.enabled; }, lay_beads},
+};
+
+// Runs the steps from the first until `until` (all when it names none); each timed and named to
+// the caller, and none after a stop is asked (the caller ends the run).
+void run_steps(const PaveContext& context, PaveState& state, std::string_view until) {
+  for (const PaveStep& step : kSteps) {
+    if (step.name == until) return;
+    if (context.options.stop && context.options.stop->load()) return;
+    if (step.applies && !step.applies(state, context.options)) continue;
+    if (context.options.on_stage) context.options.on_stage(step.name);
+    const Stopwatch watch;
+    step.run(context, state);
+    state.pavement.timings.emplace_back(step.name, watch.milliseconds());
+  }
+}
+
+}  // namespace
+
+RowAlignment fold_row_alignment(const SurfaceMap& map, const UnitCell& cell, Placement& placement) {
+  const std::optional<RowAlignment> aligned = align_rows(map, cell, placement.align);
+  if (!aligned)
+    throw DesignError(key_path(Key::align) + ": the " + std::string(enum_name(placement.align)) +
+                      " axis is normal to the surface almost everywhere, so rows cannot follow it; use another "
+                      "axis or none");
+  placement.rotation_deg += aligned->rotation_deg;
+  placement.align = AlignAxis::None;
+  return *aligned;
+}
+
+std::span<const PaveStep> pave_steps() { return kSteps; }
+
+PaveState pave_until(const SurfaceMap& map, Design design, const PavementOptions& options, std::string_view until) {
+  PaveState state;
+  state.design = std::move(design);
+  run_steps(PaveContext{map, options}, state, until);
+  return state;
+}
+
+Pavement pave_once(const SurfaceMap& map, Design design, const PavementOptions& options) {
+  PaveState state = pave_until(map, std::move(design), options, "");
+  state.pavement.design = std::move(state.design);
+  return std::move(state.pavement);
+}
+
+}  // namespace paver
