@@ -14,6 +14,7 @@
 #include <cctype>
 #include "core/interrupted.h"
 #include "mesh/mesh_loader.h"
+#include "pipeline/map_surface.h"
 #include "io/uv_map_export.h"
 
 #include <algorithm>
@@ -52,8 +53,8 @@ int run_param(const ParamArgs& args) {
                        "give the file the .obj extension");
   }
   const Stopwatch load_watch;
-  LoadedSurface loaded = load_surface(args.surface);
-  for (const auto& w : loaded.warnings) std::cerr << "paver: warning: " << printable(w) << "\n";
+  const LoadedSurface loaded = load_checked_surface(
+      args.surface, [](const std::string& w) { std::cerr << "paver: warning: " << printable(w) << "\n"; });
   if (loaded.mesh.boundary_loops.empty())
     throw InputError(args.surface + ": is a closed surface; `paver param` maps one open surface, and `paver run` "
                      "cuts a closed one into charts (--cut)");

@@ -355,11 +355,8 @@ void export_outputs(Studio& s, const fs::path& folder) {
   if (!result_is_final(s))
     throw InputError("nothing to export yet: the pavement for this design is not finished (run it, or wait)");
   const Pavement& pavement = *s.doc.result.pavement;
-  const std::vector<fs::path> inputs = {s.doc.surface.path, s.doc.design_path, s.doc.design.elements.custom_shape};
-  const std::vector<fs::path> outputs = run_output_paths(folder, kStudioExportFormats);
-  refuse_overwriting_inputs(inputs, outputs);
-  check_output_folder(folder);  // a file there: "it is a file, not a folder", as `paver run` says
-  OutputSet::refuse_replacing_users_files(folder, outputs, run_output_names());
+  check_run_outputs(folder, kStudioExportFormats, {},
+                    {s.doc.surface.path, s.doc.design_path, s.doc.design.elements.custom_shape});
   StageTimings timings = s.doc.surface.timings;
   timings.insert(timings.end(), pavement.timings.begin(), pavement.timings.end());
   const RunInfo info{s.doc.surface.path.string(), s.doc.design_path.empty() ? "studio" : s.doc.design_path.string(),

@@ -42,8 +42,8 @@ bool clears_all(const PointHash& hash, const Elements& elements, const glm::dvec
 // V-element, times eq. 5's growth at the curvature there.
 struct DensityRule {
   double packing = 0, c = 0, m = 0;
-  DensityRule(const Design& design, double area_per_vertex_element)
-      : packing(std::sqrt(area_per_vertex_element / (0.5 * std::sqrt(3.0)))), c(design.solver.c), m(design.solver.m) {}
+  explicit DensityRule(const RefillDensity& density)
+      : packing(std::sqrt(density.area_per_vertex_element / (0.5 * std::sqrt(3.0)))), c(density.c), m(density.m) {}
   double spacing(const SurfaceMap& map, double curvature) const {
     return packing * (1 + c + m * normalised_curvature(map, curvature));
   }
@@ -62,16 +62,15 @@ CellGrid element_grid(const SurfaceMap& map, const Elements& elements, double di
 
 }  // namespace
 
-RefillReport refill_bare_regions(const SurfaceMap& map, Elements& elements, const Design& design,
-                                 double area_per_vertex_element, const std::atomic<bool>* stop) {
+RefillReport refill_bare_regions(const SurfaceMap& map, Elements& elements, const ElementsDesign& spec, double spacing,
+                                 const RefillDensity& rule, const std::atomic<bool>* stop) {
   const Stopwatch watch;
   RefillReport report;
-  const ElementsDesign& spec = design.elements;
-  if (!spec.vertex.enabled || elements.size() == 0 || map.mesh.positions.empty() || !(area_per_vertex_element > 0))
+  if (!spec.vertex.enabled || elements.size() == 0 || map.mesh.positions.empty() || !(rule.area_per_vertex_element > 0))
     return report;
-  const double diameter = spec.vertex.scale * design.pattern.spacing;
+  const double diameter = spec.vertex.scale * spacing;
   const double gap = spec.gap;
-  const DensityRule density(design, area_per_vertex_element);
+  const DensityRule density(rule);
   const auto local_spacing = [&](double curvature) { return density.spacing(map, curvature); };
   const CellGrid grid = element_grid(map, elements, diameter, gap, density.widest());
   PointHash hash(elements.position, grid);
@@ -141,7 +140,7 @@ RefillReport refill_bare_regions(const SurfaceMap& map, Elements& elements, cons
       trial.push_back(ElementKind::Vertex, -1, 0, candidates[c],
                       lifted.triangle[c] < 0 ? glm::dvec3(0) : lifted.position[c],
                       lifted.triangle[c] < 0 ? glm::dvec3(0, 0, 1) : lifted.normal[c], diameter, spec.vertex.shape);
-    const double margin = boundary_margin(map, design.elements.margin, design.elements.gap);
+    const double margin = boundary_margin(map, spec.margin, spec.gap);
     const std::vector<double> to_boundary = distances_to_boundary(map, trial, margin);
     std::vector<int> next;
     for (size_t c = 0; c < candidates.size(); ++c) {
@@ -159,13 +158,12 @@ RefillReport refill_bare_regions(const SurfaceMap& map, Elements& elements, cons
   return report;
 }
 
-void refill_seams(const SurfaceMap& map, Elements& elements, const Design& design, double area_per_vertex_element,
-                  RefillReport& report) {
-  const ElementsDesign& spec = design.elements;
-  if (!is_atlas(map) || !spec.vertex.enabled || design.elements.allow_overlap || !(area_per_vertex_element > 0)) return;
+void refill_seams(const SurfaceMap& map, Elements& elements, const ElementsDesign& spec, double spacing,
+                  const RefillDensity& rule, RefillReport& report) {
+  if (!is_atlas(map) || !spec.vertex.enabled || spec.allow_overlap || !(rule.area_per_vertex_element > 0)) return;
   const Stopwatch watch;
-  const double diameter = spec.vertex.scale * design.pattern.spacing;
-  const DensityRule density(design, area_per_vertex_element);
+  const double diameter = spec.vertex.scale * spacing;
+  const DensityRule density(rule);
   const CellGrid grid = element_grid(map, elements, diameter, spec.gap, density.widest());
   PointHash hash(elements.position, grid);
   // Along the seam in steps of a tenth of a diameter; across it at these shares of a diameter into

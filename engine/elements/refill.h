@@ -24,12 +24,20 @@ struct RefillReport {
   double milliseconds = 0;
 };
 
-// Appends the added elements to `elements` (their source is -1: no pattern point carries them).
-// Does nothing when the design has no V-elements or no element exists to grow from.
-// `design` has its spacing resolved; `area_per_vertex_element` is the regular pattern's area per V-element
-// (QualityBasis's area per element over its V share).
-RefillReport refill_bare_regions(const SurfaceMap& map, Elements& elements, const Design& design,
-                                 double area_per_vertex_element, const std::atomic<bool>* stop = nullptr);
+// How dense a refill may be: no closer to any V-element than a triangle packing with the regular
+// pattern's area per V-element (QualityBasis's area per element over its V share), times eq. 5's
+// growth 1 + c + m |H| at the curvature there (the design's solver.c and solver.m).
+struct RefillDensity {
+  double area_per_vertex_element = 0;
+  double c = 0, m = 0;
+};
+
+// Inputs: the map, the elements so far, the design's elements (V size, shape, gap, margin) at
+// spacing D (> 0), the density rule. Output: the added elements appended to `elements` (their
+// source is -1: no pattern point carries them), and how many. Does nothing when the design has no
+// V-elements or no element exists to grow from.
+RefillReport refill_bare_regions(const SurfaceMap& map, Elements& elements, const ElementsDesign& spec, double spacing,
+                                 const RefillDensity& density, const std::atomic<bool>* stop = nullptr);
 
 // A closed surface's atlas (map/surface_charts.h): each chart's elements keep off its seams, so a
 // strip about two element radii wide runs bare along every seam, though the seam is no edge of the
@@ -37,7 +45,7 @@ RefillReport refill_bare_regions(const SurfaceMap& map, Elements& elements, cons
 // rule and the density rule above with every element, in 3D, over both charts: its centre on the
 // seam or up to half a diameter into either chart, the nearest to the seam that fits, greedily
 // along the seam. Adds to `report` (added, on_seams). Does nothing on a map that is no atlas.
-void refill_seams(const SurfaceMap& map, Elements& elements, const Design& design, double area_per_vertex_element,
-                  RefillReport& report);
+void refill_seams(const SurfaceMap& map, Elements& elements, const ElementsDesign& spec, double spacing,
+                  const RefillDensity& density, RefillReport& report);
 
 }  // namespace paver

@@ -116,14 +116,13 @@ std::vector<int> rim_row_loops(const SurfaceMap& map, RimRows rows) {
   return loops;
 }
 
-RimRowReport place_rim_rows(const SurfaceMap& map, Elements& elements, const Design& design) {
+RimRowReport place_rim_rows(const SurfaceMap& map, Elements& elements, const ElementsDesign& spec, double spacing) {
   const Stopwatch watch;
   RimRowReport report;
-  const ElementsDesign& spec = design.elements;
   const std::vector<int> loops = rim_row_loops(map, spec.rim_rows);
-  if (loops.empty() || !spec.vertex.enabled || !(design.pattern.spacing > 0)) return report;
+  if (loops.empty() || !spec.vertex.enabled || !(spacing > 0)) return report;
   const SurfaceMesh& mesh = map.mesh;
-  const double diameter = spec.vertex.scale * design.pattern.spacing;
+  const double diameter = spec.vertex.scale * spacing;
   const double margin = boundary_margin(map, spec.margin, spec.gap);
   // A hair beyond the margin, so that the edge rule (exact, like the contact rule) holds after rounding.
   const double offset = (0.5 * diameter + margin) * (1 + kContactAim);

@@ -29,9 +29,10 @@ std::vector<int> rim_row_loops(const SurfaceMap& map, RimRows rows);
 inline constexpr double kAlikeRims = 1.25;
 bool band_rims_alike(const SurfaceMap& map);
 
-// Adds the rows to `elements` (source -1, the design's vertex spec) and removes the elements they
-// would touch. `map` is the one the pavement's uv live in. Does nothing for RimRows::None, on an
-// atlas, or when the design has no V-elements.
-RimRowReport place_rim_rows(const SurfaceMap& map, Elements& elements, const Design& design);
+// Inputs: the map the pavement's uv live in, its elements, the design's elements (the rims asked
+// for, the V size and shape, gap, margin) at spacing D. Output: the rows added to `elements`
+// (source -1, the design's vertex spec) and the elements they would touch removed. Does nothing
+// for RimRows::None, on an atlas, or when the design has no V-elements.
+RimRowReport place_rim_rows(const SurfaceMap& map, Elements& elements, const ElementsDesign& spec, double spacing);
 
 }  // namespace paver

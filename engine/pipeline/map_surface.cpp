@@ -90,6 +90,15 @@ std::shared_ptr<const SurfaceMap> map_closed_mesh(const SurfaceMesh& closed, con
   }
 }
 
+LoadedSurface load_checked_surface(const std::filesystem::path& path, const PipelineWarning& warn) {
+  LoadedSurface loaded = load_surface(path);
+  if (warn)
+    for (const std::string& w : loaded.warnings) warn(w);
+  check_surface_size(path, loaded.mesh);
+  check_surface_proportions(path, loaded.mesh);
+  return loaded;
+}
+
 MappedSurface map_surface_file(const std::filesystem::path& path, const PipelineProgress& progress,
                                const StopRequested& stop, const PipelineWarning& warn, CutAxis cut,
                                const std::function<void(const SurfaceMesh&)>& check_loaded) {
@@ -100,13 +109,9 @@ MappedSurface map_surface_file(const std::filesystem::path& path, const Pipeline
   MappedSurface out;
   Stopwatch watch;
   report(0.0f, "loading");
-  LoadedSurface loaded = load_surface(path);
+  LoadedSurface loaded = load_checked_surface(path, warn);
   out.warnings = std::move(loaded.warnings);
-  if (warn)
-    for (const std::string& w : out.warnings) warn(w);
   out.timings.emplace_back("load", watch.milliseconds());
-  check_surface_size(path, loaded.mesh);
-  check_surface_proportions(path, loaded.mesh);
   if (check_loaded) check_loaded(loaded.mesh);
   if (stopped()) return out;
 

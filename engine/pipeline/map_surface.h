@@ -1,8 +1,10 @@
 #pragma once
 // Stages 1-2 of the pipeline: a surface file, loaded and checked (mesh/), mapped bijectively to
 // the plane (map/). run_pipeline (so `paver run`) and the studio's background loader call this;
-// `paver param`, which exposes the map's own options, calls the map stage's functions directly.
+// `paver param`, which exposes the map's own options, loads through load_checked_surface and
+// calls the map stage's functions itself.
 #include "map/surface_charts.h"
+#include "mesh/mesh_loader.h"
 #include "map/surface_map.h"
 #include "pipeline/pavement.h"
 
@@ -44,6 +46,10 @@ struct MappedSurface {
 std::shared_ptr<const SurfaceMap> map_closed_mesh(const SurfaceMesh& closed, const std::filesystem::path& path,
                                                   CutAxis cut, const PipelineProgress& progress = {},
                                                   const StopRequested& stop = {});
+
+// Stage 1: the surface loaded (mesh/mesh_loader.h), its repairs told to `warn`, and checked
+// (size, a stray vertex): what every command that reads a surface reads it through.
+LoadedSurface load_checked_surface(const std::filesystem::path& path, const PipelineWarning& warn = {});
 
 // Throws InputError for a file Paver cannot pave (naming the file), std::runtime_error naming the
 // file when the map fails.

@@ -18,6 +18,7 @@
 #include "solver/surface_spring_relaxation.h"
 
 #include <limits>
+#include <stdexcept>
 #include <string>
 
 namespace paver {
@@ -147,9 +148,9 @@ void resolve(const PaveContext& c, PaveState& s) {
     pavement.resolution.removed = removal.removed;
     return;
   }
-  pavement.elements =
-      resolve_collisions(c.map, *s.surface, *s.system, pavement.pattern, s.design, pavement.points, placer(c, s),
-                         s.factory, c.options.resolution, pavement.resolution, c.options.stop);
+  pavement.elements = resolve_collisions(c.map, *s.surface, *s.system, pavement.pattern, s.design.elements,
+                                         s.design.solver, s.design.pattern.spacing, pavement.points, placer(c, s),
+                                         s.factory, c.options.resolution, pavement.resolution, c.options.stop);
 }
 
 // The edits start from the design's own pavement and change it only around them.
@@ -164,8 +165,9 @@ void apply_edits(const PaveContext& c, PaveState& s) {
     // last resort early, whatever the pattern's size.
     CollisionResolutionOptions every_round = c.options.resolution;
     every_round.large_pattern_particles = std::numeric_limits<int>::max();
-    pavement.elements = resolve_collisions(c.map, *s.surface, system, pavement.pattern, s.design, pavement.points,
-                                           placer(c, s), s.factory, every_round, around, c.options.stop);
+    pavement.elements = resolve_collisions(c.map, *s.surface, system, pavement.pattern, s.design.elements,
+                                           s.design.solver, s.design.pattern.spacing, pavement.points, placer(c, s),
+                                           s.factory, every_round, around, c.options.stop);
     pavement.resolution.rounds += around.rounds;
     pavement.resolution.contact_springs += around.contact_springs;
     pavement.resolution.solver_iterations += around.solver_iterations;
@@ -180,7 +182,7 @@ void apply_edits(const PaveContext& c, PaveState& s) {
 // --- after the solve: rows along the rims, the bare regions refilled, ids, the final figures ---
 
 void lay_rim_rows(const PaveContext& c, PaveState& s) {
-  s.pavement.rim_rows = place_rim_rows(c.map, s.pavement.elements, s.design);
+  s.pavement.rim_rows = place_rim_rows(c.map, s.pavement.elements, s.design.elements, s.design.pattern.spacing);
 }
 
 void refill(const PaveContext& c, PaveState& s) {
@@ -189,10 +191,13 @@ void refill(const PaveContext& c, PaveState& s) {
   RefillReport seams;
   // The refill adds V-elements: at the V-elements' own density, not all elements' (a honeycomb
   // with edge elements has room in every hexagon at the mixed density).
-  const double area_per_vertex_element =
-      s.basis.vertex_share > 0 ? s.basis.area_per_element / s.basis.vertex_share : s.basis.area_per_element;
-  refill_seams(c.map, pavement.elements, s.design, area_per_vertex_element, seams);
-  pavement.refill = refill_bare_regions(c.map, pavement.elements, s.design, area_per_vertex_element, c.options.stop);
+  const RefillDensity density{
+      s.basis.vertex_share > 0 ? s.basis.area_per_element / s.basis.vertex_share : s.basis.area_per_element,
+      s.design.solver.c, s.design.solver.m};
+  const ElementsDesign& spec = s.design.elements;
+  const double spacing = s.design.pattern.spacing;
+  refill_seams(c.map, pavement.elements, spec, spacing, density, seams);
+  pavement.refill = refill_bare_regions(c.map, pavement.elements, spec, spacing, density, c.options.stop);
   pavement.refill.added += seams.added;
   pavement.refill.on_seams = seams.on_seams;
   pavement.refill.milliseconds += seams.milliseconds;
@@ -287,6 +292,12 @@ PaveState pave_until(const SurfaceMap& map, Design design, const PavementOptions
   state.design = std::move(design);
   run_steps(PaveContext{map, options}, state, until);
   return state;
+}
+
+void pave_step(std::string_view name, const SurfaceMap& map, const PavementOptions& options, PaveState& state) {
+  for (const PaveStep& step : kSteps)
+    if (step.name == name) return step.run(PaveContext{map, options}, state);
+  throw std::invalid_argument("pave_step: no step named " + std::string(name));
 }
 
 Pavement pave_once(const SurfaceMap& map, Design design, const PavementOptions& options) {

@@ -67,7 +67,9 @@ std::span<const PaveStep> pave_steps();
 // surface's default. Output: the pavement, each step timed in pavement.timings.
 Pavement pave_once(const SurfaceMap& map, Design design, const PavementOptions& options = {});
 
-// The state after the steps up to (not including) the one named `until`, for tests of one step.
+// The state after the steps up to (not including) the one named `until`, and the one step named
+// `name` run on a state (whether it applies or not): for tests of one step on a fixture state.
 PaveState pave_until(const SurfaceMap& map, Design design, const PavementOptions& options, std::string_view until);
+void pave_step(std::string_view name, const SurfaceMap& map, const PavementOptions& options, PaveState& state);
 
 }  // namespace paver

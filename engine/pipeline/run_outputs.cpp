@@ -32,6 +32,15 @@ std::vector<fs::path> run_output_paths(const fs::path& folder, const MeshFormats
   return paths;
 }
 
+void check_run_outputs(const fs::path& folder, const MeshFormats& formats, const std::vector<fs::path>& extra_outputs,
+                       const std::vector<fs::path>& inputs) {
+  std::vector<fs::path> outputs = run_output_paths(folder, formats);
+  outputs.insert(outputs.end(), extra_outputs.begin(), extra_outputs.end());
+  refuse_overwriting_inputs(inputs, outputs);
+  check_output_folder(folder);  // a file there: "it is a file, not a folder"
+  OutputSet::refuse_replacing_users_files(folder, outputs, run_output_names());
+}
+
 void write_run_files(const fs::path& folder, const SurfaceMap& map, const Pavement& pavement,
                      const RunOutputOptions& options) {
   make_output_folder(folder);

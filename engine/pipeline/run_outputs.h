@@ -31,6 +31,14 @@ std::vector<std::string> run_output_names();
 // Every path the two functions below write in `folder`, for refuse_overwriting_inputs.
 std::vector<std::filesystem::path> run_output_paths(const std::filesystem::path& folder, const MeshFormats& formats);
 
+// The output guards, before any work: no output (the run's files of `formats` in `folder`, and the
+// caller's `extra_outputs`) may replace one of `inputs`, `folder` must be a folder that can be
+// written, and no file of the user's there may be replaced (io/output_set.h). InputError naming
+// the file and the fix.
+void check_run_outputs(const std::filesystem::path& folder, const MeshFormats& formats,
+                       const std::vector<std::filesystem::path>& extra_outputs,
+                       const std::vector<std::filesystem::path>& inputs);
+
 // Creates `folder` if needed and writes the elements (the PLY coloured like the paper's figures:
 // red = too close, through yellow, to green = loose; the glTF and 3MF with the surface `map`'s
 // mesh) and the resolved design.

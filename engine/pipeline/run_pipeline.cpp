@@ -184,13 +184,9 @@ UnitCell check_request(PipelineRequest& request, PipelineResult& result, const W
            " one face only, so every element is exported as an open surface, which a printer or a boolean cannot "
            "take; close the shape in the modelling tool");
   }
-  if (request.out) {
-    std::vector<std::filesystem::path> outputs = run_output_paths(*request.out, request.formats);
-    outputs.insert(outputs.end(), request.extra_outputs.begin(), request.extra_outputs.end());
-    refuse_overwriting_inputs({request.surface_path, request.design_path, design.elements.custom_shape}, outputs);
-    check_output_folder(*request.out);
-    OutputSet::refuse_replacing_users_files(*request.out, outputs, run_output_names());
-  }
+  if (request.out)
+    check_run_outputs(*request.out, request.formats, request.extra_outputs,
+                      {request.surface_path, request.design_path, design.elements.custom_shape});
   return cell;
 }
 

@@ -115,7 +115,8 @@ ElementAnchor element_anchor(const Pattern& pattern, const Elements& elements, i
 }
 
 Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface, SpringSystem& system,
-                            const Pattern& pattern, const Design& design, std::vector<glm::dvec2>& points,
+                            const Pattern& pattern, const ElementsDesign& spec, const SolverParams& solver_params,
+                            double spacing, std::vector<glm::dvec2>& points,
                             const ElementPlacer& place, const SolverFactory& solver,
                             const CollisionResolutionOptions& options, CollisionResolutionReport& report,
                             const std::atomic<bool>* stop) {
@@ -128,7 +129,7 @@ Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface,
   const bool wide = system.particle_count() >= kWidePatternParticles;
   const bool large = system.particle_count() >= options.large_pattern_particles;
   for (int round = 0; round < options.max_rounds; ++round) {
-    const std::vector<Collision> collisions = find_collisions(elements, design.elements.gap);
+    const std::vector<Collision> collisions = find_collisions(elements, spec.gap);
     if (collisions.empty() || (stop && stop->load())) break;
     // Every pattern gets one round; a large one may leave its last few pairs to the last resort.
     if (large && round > 0 &&
@@ -144,15 +145,15 @@ Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface,
     const bool stalled = wide && round > 0 && double(collisions.size()) > 0.8 * double(previous);
     previous = collisions.size();
     if (stalled) {
-      report.retired += retire_one_of_each_pair(pattern, elements, collisions, design.elements, system);
+      report.retired += retire_one_of_each_pair(pattern, elements, collisions, spec, system);
     }
     lifted.resize(points.size());
     lift_points(map, points, lifted);
     for (const Collision& c : collisions) {
       // In a stalled round, pairs of two vertex elements were given vacancies above.
       if (stalled && elements.kind[c.i] == ElementKind::Vertex && elements.kind[c.j] == ElementKind::Vertex) continue;
-      const ElementAnchor ai = element_anchor(pattern, elements, c.i, design.elements);
-      const ElementAnchor aj = element_anchor(pattern, elements, c.j, design.elements);
+      const ElementAnchor ai = element_anchor(pattern, elements, c.i, spec);
+      const ElementAnchor aj = element_anchor(pattern, elements, c.j, spec);
       const int pj = carrier(aj, -1);
       const int pi = carrier(ai, pj);
       if (pi < 0 || pj < 0 || pi == pj || lifted.triangle[pi] < 0 || lifted.triangle[pj] < 0) continue;
@@ -162,7 +163,7 @@ Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface,
       if (is_atlas(map) && map.chart_of_face[lifted.triangle[pi]] != map.chart_of_face[lifted.triangle[pj]]) continue;
       // The particles must end up as much farther apart as the elements need to.
       const double need =
-          options.clearance * contact_distance(elements.diameter[c.i], elements.diameter[c.j], design.elements.gap);
+          options.clearance * contact_distance(elements.diameter[c.i], elements.diameter[c.j], spec.gap);
       const double stretch = need / std::max(c.distance, 1e-9 * need);
       const double particles = glm::length(lifted.position[pi] - lifted.position[pj]);
       const float rest = float(std::max(particles * stretch, need));
@@ -177,12 +178,12 @@ Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface,
       ++report.contact_springs;
     }
     rebuild_neighbors(system);
-    SolverParams params = design.solver;
+    SolverParams params = solver_params;
     params.iterations = options.iterations_per_round;
     // The round's iterations all run: a pattern at rest but for a few compressed contact springs
     // moves by less than the convergence threshold per step and would stop before they act.
     params.threshold = 0;
-    report.solver_iterations += solver(surface, system, params, design.pattern.spacing)->solve({}, stop).iterations;
+    report.solver_iterations += solver(surface, system, params, spacing)->solve({}, stop).iterations;
     for (int i = 0; i < system.particle_count(); ++i) points[i] = glm::dvec2(system.position[i]);
     elements = place(points, system.stray_count);
   }
@@ -191,7 +192,7 @@ Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface,
   for (std::size_t i = 0; i < elements.size(); ++i)
     pinned[i] = elements.kind[i] == ElementKind::Vertex && elements.source[i] >= 0 &&
                 system.stray_count[std::size_t(elements.source[i])] == kPinned;
-  const Removal removal = remove_colliding(elements, design.elements.gap, &pinned);
+  const Removal removal = remove_colliding(elements, spec.gap, &pinned);
   report.pairs_left = removal.pairs;
   report.removed = removal.removed;
   report.milliseconds = watch.milliseconds();

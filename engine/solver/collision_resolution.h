@@ -67,10 +67,14 @@ struct Removal {
 };
 Removal remove_colliding(Elements& elements, double gap, std::vector<std::uint8_t>* kept = nullptr);
 
-// Resolves collisions by contact springs and returns the final elements; `system` and `points`
-// are updated in place.
+// Inputs: the map and its solver form, the solved spring system and pattern with their particle
+// positions `points` (#P), the design's elements (gap, E-element positions), solver parameters and
+// spacing D, how elements are placed on particles. Output: the final elements, no pair colliding
+// but those the last resort removed (`report` says how many); `system` and `points` are updated
+// in place.
 Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface, SpringSystem& system,
-                            const Pattern& pattern, const Design& design, std::vector<glm::dvec2>& points,
+                            const Pattern& pattern, const ElementsDesign& spec, const SolverParams& solver_params,
+                            double spacing, std::vector<glm::dvec2>& points,
                             const ElementPlacer& place, const SolverFactory& solver,
                             const CollisionResolutionOptions& options, CollisionResolutionReport& report,
                             const std::atomic<bool>* stop = nullptr);

@@ -761,6 +761,15 @@ TEST_F(PaverRunErrors, SurfacesThePatternCannotPave) {
     for (const char* spacing : {"0", "5"})
       expect_input_error(paver({"run", (dir() / "stray.obj").string(), "--spacing", spacing, "--out", out.string()}), out,
                          {"stray.obj: an edge is", "the vertex at (1e+07, 0, 0) looks stray", "remove it"});
+    // `paver param` reads the surface through the same checks.
+    const fs::path uv = dir() / "stray_uv.obj";
+    const CliResult param = paver({"param", (dir() / "stray.obj").string(), "--out", uv.string()});
+    EXPECT_EQ(param.exit_code, 2) << describe(param);
+    EXPECT_NE(param.err.find("the vertex at (1e+07, 0, 0) looks stray"), std::string::npos) << describe(param);
+    EXPECT_FALSE(fs::exists(uv));
+    const CliResult tiny_param = paver({"param", scaled_dome(1e-24, "tiny_param.obj")});
+    EXPECT_EQ(tiny_param.exit_code, 2) << describe(tiny_param);
+    EXPECT_NE(tiny_param.err.find("rescale the model"), std::string::npos) << describe(tiny_param);
   }
   const CliResult small = paver({"run", scaled_dome(1e-4, "small.obj"), "--quiet", "--out", out.string()});
   EXPECT_EQ(small.exit_code, 0) << describe(small);

@@ -4,6 +4,7 @@
 #include "elements/refill.h"
 
 #include "core/contact_rule.h"
+#include "pipeline/pave_once.h"
 #include "pipeline/pavement.h"
 #include "report/pavement_quality.h"
 #include "surface_maps.h"
@@ -42,31 +43,35 @@ TEST(Refill, AHoneycombWithEdgeElementsKeepsItsHexagonsOpen) {
 TEST(Refill, AHoleInTheHoneycombIsFilledAtTheVElementsDensity) {
   const SurfaceMap& map = *test::bundled_map("pendant");
   const Design design = honeycomb_with_edge_elements();
-  PavementOptions no_refill;
-  no_refill.refill = false;
-  const Pavement p = make_pavement(map, design, no_refill);
-  // A hole 3 D across around the element nearest the middle of the map.
+  // The pass's state as the refill step gets it, with a hole 3 D across cut around the element
+  // nearest the middle of the map.
+  PaveState state = pave_until(map, design, {}, "refill");
+  Elements& elements = state.pavement.elements;
+  const Elements complete = elements;
   const glm::dvec2 middle = 0.5 * (map.uv_min + map.uv_max);
   int centre = 0;
-  for (int i = 0; i < int(p.elements.size()); ++i)
-    if (glm::length(p.elements.uv[i] - middle) < glm::length(p.elements.uv[centre] - middle)) centre = i;
-  const glm::dvec3 hole = p.elements.position[centre];
-  Elements kept = p.elements;
-  std::vector<std::uint8_t> in_hole(kept.size(), 0);
-  for (size_t i = 0; i < kept.size(); ++i) in_hole[i] = glm::length(kept.position[i] - hole) <= 3;
-  kept.erase_flagged(in_hole);
-  const long vertex_before = std::count(kept.kind.begin(), kept.kind.end(), ElementKind::Vertex);
-  const QualityBasis basis = quality_basis(map, p.cell, design.elements, design.solver, design.guidance);
-  const RefillReport r = refill_bare_regions(map, kept, p.design, basis.area_per_element / basis.vertex_share);
+  for (int i = 0; i < int(elements.size()); ++i)
+    if (glm::length(elements.uv[i] - middle) < glm::length(elements.uv[centre] - middle)) centre = i;
+  const glm::dvec3 hole = elements.position[centre];
+  std::vector<std::uint8_t> in_hole(elements.size(), 0);
+  for (size_t i = 0; i < elements.size(); ++i) in_hole[i] = glm::length(elements.position[i] - hole) <= 3;
+  elements.erase_flagged(in_hole);
+  pave_step("refill", map, {}, state);
+  const RefillReport& r = state.pavement.refill;
   EXPECT_GT(r.added, 0);
-  const long vertex_lost = std::count(p.elements.kind.begin(), p.elements.kind.end(), ElementKind::Vertex) -
-                           vertex_before;
+  const long vertex_lost = std::count(complete.kind.begin(), complete.kind.end(), ElementKind::Vertex) -
+                           (std::count(elements.kind.begin(), elements.kind.end(), ElementKind::Vertex) - r.added);
   EXPECT_LE(r.added, vertex_lost + 1) << "denser than the design's V-elements";
-  for (size_t i = 0; i < kept.size(); ++i)
-    for (size_t j = i + 1; j < kept.size(); ++j)
-      ASSERT_FALSE(elements_collide(glm::length(kept.position[i] - kept.position[j]), kept.diameter[i],
-                                    kept.diameter[j], design.elements.gap))
+  for (size_t i = 0; i < elements.size(); ++i)
+    for (size_t j = i + 1; j < elements.size(); ++j)
+      ASSERT_FALSE(elements_collide(glm::length(elements.position[i] - elements.position[j]), elements.diameter[i],
+                                    elements.diameter[j], design.elements.gap))
           << i << " and " << j;
+  // The hole is filled: an added element within it.
+  bool inside = false;
+  for (size_t i = elements.size() - std::size_t(r.added); i < elements.size(); ++i)
+    inside = inside || glm::length(elements.position[i] - hole) <= 3;
+  EXPECT_TRUE(inside);
 }
 
 }  // namespace

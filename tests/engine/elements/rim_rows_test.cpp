@@ -129,7 +129,7 @@ TEST(RimRows, AJewellersRowsAroundSteppedHolesTouchAlongThem) {
   set_stone_size(design, 1.3);
   design.elements.rim_rows = RimRows::Holes;
   Elements rows;
-  const RimRowReport report = place_rim_rows(*map, rows, design);
+  const RimRowReport report = place_rim_rows(*map, rows, design.elements, design.pattern.spacing);
   ASSERT_EQ(report.loops, 3);
   const double contact = 1.3 + 0.1;
   std::vector<double> ratio;  // to the nearest other row stone, over the contact distance

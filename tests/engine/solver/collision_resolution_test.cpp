@@ -1,4 +1,5 @@
-// Tests for engine/solver/collision_resolution.cpp, through make_pavement on bundled designs and
+// Tests for engine/solver/collision_resolution.cpp, on the pass's state as the resolution step
+// gets it (pave_until) and through make_pavement on bundled designs, each
 // checked with an all-pairs loop written here (a collision is a centre distance below
 // r_i + r_j + gap, exactly: core/contact_rule.h): with resolution the final elements have no colliding
 // pair; without it, a design the paper's method leaves colliding still collides. Contact springs
@@ -7,6 +8,7 @@
 #include "solver/collision_resolution.h"
 
 #include "io/design_io.h"
+#include "pipeline/pave_once.h"
 #include "pipeline/pavement.h"
 #include "bundled_designs.h"
 #include "surface_maps.h"
@@ -48,14 +50,6 @@ Bundled bundled(const std::string& design) {
   return {load_design(test::source_dir() / "assets/designs" / design), &map_of(surfaces.at(design))};
 }
 
-// The paper's method alone: no contact springs, no refill.
-PavementOptions without_resolution() {
-  PavementOptions options;
-  options.resolve_collisions = false;
-  options.refill = false;
-  return options;
-}
-
 class CollisionResolutionOnBundledDesign : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(CollisionResolutionOnBundledDesign, LeavesNoCollidingPair) {
@@ -73,21 +67,29 @@ INSTANTIATE_TEST_SUITE_P(Assets, CollisionResolutionOnBundledDesign,
                                            "mould_grid_bosses.json"),
                          [](const auto& info) { return info.param.substr(0, info.param.size() - 5); });
 
+// The pass's state as the resolution step gets it: the paper's optimizer and post-processing done.
+PaveState before_resolution(const Bundled& b, const PavementOptions& options = {}) {
+  return pave_until(map_for_topology(*b.map, Topology::Lattice), b.design, options, "resolve_collisions");
+}
+
+void resolve(const Bundled& b, PaveState& state, const PavementOptions& options = {}) {
+  pave_step("resolve_collisions", map_for_topology(*b.map, Topology::Lattice), options, state);
+}
+
 TEST(CollisionResolution, WithoutItThePapersMethodLeavesCollisionsOnPendantGems) {
   // Gems on the vertices and small gems on the edges of the pendant: the paper's optimizer and
   // post-processing leave a few V-elements overlapping the E-element of an edge whose other end
   // the optimizer retired.
   const Bundled b = bundled("pendant_tri_gems.json");
-  const Pavement off = make_pavement(*b.map, b.design, without_resolution());
-  const auto pairs = colliding_pairs(off.elements);
+  PaveState state = before_resolution(b);
+  const auto pairs = colliding_pairs(state.pavement.elements);
   EXPECT_GT(pairs.size(), 0u);
-  EXPECT_EQ(long(pairs.size()), off.paper.contact_violations);
-  EXPECT_EQ(off.after.contact_violations, off.paper.contact_violations);
-  EXPECT_EQ(off.resolution.rounds, 0);
+  EXPECT_EQ(long(pairs.size()), state.pavement.paper.contact_violations);
+  EXPECT_EQ(state.pavement.resolution.rounds, 0);
 
-  const Pavement on = make_pavement(*b.map, b.design);
+  resolve(b, state);
+  const Pavement& on = state.pavement;
   EXPECT_TRUE(colliding_pairs(on.elements).empty());
-  EXPECT_EQ(on.paper.contact_violations, off.paper.contact_violations) << "the same paper's method before resolution";
   EXPECT_GT(on.resolution.rounds, 0);
   // At most one element per pair that still collides is given up.
   EXPECT_LE(on.resolution.removed, on.resolution.pairs_left);
@@ -95,6 +97,8 @@ TEST(CollisionResolution, WithoutItThePapersMethodLeavesCollisionsOnPendantGems)
   // solver iterations move the pattern: measured 4 pairs before and 5 after on this design, so
   // the bound of one more is empirical).
   EXPECT_LE(on.resolution.pairs_left, long(pairs.size()) + 1);
+  // Through the whole pass (make_pavement) the same: resolution leaves no pair.
+  EXPECT_EQ(make_pavement(*b.map, b.design).after.contact_violations, 0);
 }
 
 TEST(CollisionResolution, ContactSpringsSeparateWhatAShortOptimizationLeaves) {
@@ -102,11 +106,12 @@ TEST(CollisionResolution, ContactSpringsSeparateWhatAShortOptimizationLeaves) {
   // contact springs push them apart without removing any.
   Bundled b = bundled("dome_hex_d6.json");
   b.design.solver.iterations = 20;
-  const Pavement off = make_pavement(*b.map, b.design, without_resolution());
-  const auto before = colliding_pairs(off.elements);
+  PaveState state = before_resolution(b);
+  const auto before = colliding_pairs(state.pavement.elements);
   ASSERT_GT(before.size(), 10u);
 
-  const Pavement on = make_pavement(*b.map, b.design);
+  resolve(b, state);
+  const Pavement& on = state.pavement;
   EXPECT_TRUE(colliding_pairs(on.elements).empty());
   EXPECT_GE(on.resolution.rounds, 1);
   EXPECT_GT(on.resolution.contact_springs, 0);
@@ -119,35 +124,37 @@ TEST(CollisionResolution, ContactSpringsSeparateWhatAShortOptimizationLeaves) {
 
 TEST(CollisionResolution, NothingToResolveNoRounds) {
   const Bundled b = bundled("dome_hex_d6.json");
-  const Pavement p = make_pavement(*b.map, b.design);
-  ASSERT_EQ(p.paper.contact_violations, 0);
-  EXPECT_EQ(p.resolution.rounds, 0);
-  EXPECT_EQ(p.resolution.contact_springs, 0);
-  EXPECT_EQ(p.resolution.removed, 0);
+  PaveState state = before_resolution(b);
+  ASSERT_EQ(state.pavement.paper.contact_violations, 0);
+  resolve(b, state);
+  EXPECT_EQ(state.pavement.resolution.rounds, 0);
+  EXPECT_EQ(state.pavement.resolution.contact_springs, 0);
+  EXPECT_EQ(state.pavement.resolution.removed, 0);
 }
 
 TEST(CollisionResolution, WithNoRoundsTheLastResortRemovesOneElementPerPair) {
   Bundled b = bundled("dome_hex_d6.json");
   b.design.solver.iterations = 20;
-  const Pavement off = make_pavement(*b.map, b.design, without_resolution());
-  const auto pairs = colliding_pairs(off.elements);
-  ASSERT_GT(pairs.size(), 10u);
-
   PavementOptions removal_only;
   removal_only.resolution.max_rounds = 0;
-  removal_only.refill = false;
-  const Pavement on = make_pavement(*b.map, b.design, removal_only);
+  PaveState state = before_resolution(b, removal_only);
+  const Elements off = state.pavement.elements;
+  const auto pairs = colliding_pairs(off);
+  ASSERT_GT(pairs.size(), 10u);
+
+  resolve(b, state, removal_only);
+  const Pavement& on = state.pavement;
   EXPECT_EQ(on.resolution.rounds, 0);
   EXPECT_EQ(on.resolution.contact_springs, 0);
   EXPECT_TRUE(colliding_pairs(on.elements).empty());
   EXPECT_GT(on.resolution.removed, 0);
   EXPECT_EQ(on.resolution.pairs_left, long(pairs.size())) << "no rounds: the paper's pairs are left";
   EXPECT_LE(on.resolution.removed, long(pairs.size()));
-  ASSERT_EQ(on.elements.size() + size_t(on.resolution.removed), off.elements.size());
+  ASSERT_EQ(on.elements.size() + size_t(on.resolution.removed), off.size());
   // What is left is the paper's elements, in order, less the removed ones.
   size_t k = 0;
-  for (size_t i = 0; i < off.elements.size() && k < on.elements.size(); ++i)
-    if (off.elements.position[i] == on.elements.position[k]) ++k;
+  for (size_t i = 0; i < off.size() && k < on.elements.size(); ++i)
+    if (off.position[i] == on.elements.position[k]) ++k;
   EXPECT_EQ(k, on.elements.size());
 }
 
