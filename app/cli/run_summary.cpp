@@ -133,8 +133,9 @@ void print_optimize(const Pavement& pavement, const SummaryContext& context) {
 }
 
 void print_elements(const SurfaceMap& map, const Pavement& pavement, const PavementCounts& counts) {
-  std::printf("elements %zu (%ld V, %ld E), %d of them added into bare regions", pavement.elements.size(),
-              counts.vertex_elements, counts.edge_elements, pavement.refill.added);
+  std::printf("elements %zu (%ld V, %ld E), %d of them added into bare regions, %d into bare spots",
+              pavement.elements.size(), counts.vertex_elements, counts.edge_elements, pavement.refill.added,
+              pavement.spots_closed.added);
   if (is_atlas(map)) std::printf(" (%d across the seams)", pavement.refill.on_seams);
   std::printf("\n");
   if (pavement.design.elements.rim_rows != RimRows::None)
@@ -193,6 +194,14 @@ void print_quality(const Pavement& pavement, const PavementCounts& counts) {
     std::printf("; regular valence: %.1f%% of %ld interior V-elements", 100 * final_quality.regular_valence_share,
                 final_quality.interior_vertex_elements);
   std::printf("\n");
+  const EdgeQuality& edges = final_quality.edges;
+  if (edges.measured) {
+    std::printf("edges    %ld bare spots where a stone of %.3g %s still fits (the widest fits %.3g)", edges.bare_spots,
+                edges.spot_stone, unit.c_str(), edges.largest_fit);
+    if (edges.rim_samples > 0)
+      std::printf("; rim metal p95 %.2f d, max %.2f d", edges.rim_metal_p95, edges.rim_metal_max);
+    std::printf("\n");
+  }
 }
 
 void print_times(const StageTimings& timings) {

@@ -77,13 +77,16 @@ struct ElementsDesign {
   double gap = 0;                         // required free space between footprints, surface units
   double margin = 0;                      // free band along the boundary: no footprint nearer, surface units
   RimRows rim_rows = RimRows::None;       // a row of V-elements along the rims (elements/rim_rows.h)
+  bool close_spots = false;               // stones pushed into the bare spots left (elements/bare_spots.h)
   BeadDesign beads;
 };
 
 struct Design {
   // design.json's version, written by save_design. Version 1 (before 2026-11-27) differs only in a
-  // default: solver.mu_stretched was 0.5 then. Both are read.
-  static constexpr int kVersion = 2;
+  // default: solver.mu_stretched was 0.5 then; version 2 (before 2026-12-02) has no
+  // elements.close_spots. All are read, so that an earlier build says which versions it reads
+  // rather than that a new key is unknown.
+  static constexpr int kVersion = 3;
   static constexpr int kOldestVersion = 1;
   Units units = Units::Millimetre;
   PatternDesign pattern;

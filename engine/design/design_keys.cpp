@@ -87,6 +87,10 @@ constexpr Row kRows[] = {
     {Key::rim_rows, "elements.rim_rows", {}, {}, {},
      "a row of stones along the rims: none, around every hole, or every rim (docs/holes_and_bands.md)", "rim-rows",
      "Elements > Stones (jewellery) > rim rows"},
+    {Key::close_spots, "elements.close_spots", {}, {}, {},
+     "after the pass, a stone pushed into every bare spot where one fits, its neighbours moving to make room "
+     "(docs/contact.md)",
+     "close-spots", "Elements > Stones (jewellery) > close bare spots"},
     {Key::beads_enabled, "elements.beads.enabled", {}, {}, {},
      "a bead (shared prong) in the gap of every three stones in contact (docs/stones.md)", "beads",
      "Elements > Stones (jewellery) > beads between stones"},
@@ -183,7 +187,7 @@ std::string default_text_of(const nlohmann::json& value) {
   return "[" + items + "]";
 }
 
-struct Table {
+struct KeyTable {
   std::vector<DesignKey> rows;
   std::deque<std::string> texts;  // the rows' derived strings (a deque: views into them stay valid)
 
@@ -201,7 +205,7 @@ struct Table {
     }
   }
 
-  Table() {
+  KeyTable() {
     for (const Row& r : kRows)
       rows.push_back({r.key, r.path, KeyType::Number, r.range, r.range_note, r.unit, r.help, r.flag, r.studio,
                       r.required, {}, {}});
@@ -224,8 +228,8 @@ struct Table {
   }
 };
 
-const Table& table() {
-  static const Table instance;
+const KeyTable& key_table() {
+  static const KeyTable instance;
   return instance;
 }
 
@@ -309,9 +313,9 @@ std::optional<std::string> parse_flag(const DesignKey& row, std::string_view tex
 
 }  // namespace
 
-std::span<const DesignKey> design_keys() { return table().rows; }
+std::span<const DesignKey> design_keys() { return key_table().rows; }
 
-const DesignKey& design_key(Key key) { return table().rows[std::size_t(key)]; }
+const DesignKey& design_key(Key key) { return key_table().rows[std::size_t(key)]; }
 
 const DesignKey* find_design_key(std::string_view path) {
   const std::string shape = without_indices(path);
@@ -370,7 +374,8 @@ std::string design_keys_markdown() {
     return "";
   };
   std::string md = "| key | type | default | range | unit | flag | meaning |\n|---|---|---|---|---|---|---|\n";
-  md += "| `version` | integer | (required) | 1 or 2 |  |  | the file's version (below) |\n";
+  md += "| `version` | integer | (required) | " + std::to_string(Design::kOldestVersion) + " to " +
+        std::to_string(Design::kVersion) + " |  |  | the file's version (below) |\n";
   for (const DesignKey& row : design_keys()) {
     const std::string range = is_numeric(row.type) ? refusal(row, counts_integers(row.type)) : "";
     md += "| `" + std::string(row.path) + "` | " + type_text(row) + " | " +

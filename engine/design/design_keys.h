@@ -46,6 +46,7 @@ enum class Key {
   gap,
   margin,
   rim_rows,
+  close_spots,
   beads_enabled,
   beads_scale,
   placement_offset,
@@ -133,6 +134,7 @@ void visit_keys(D& d, Visit&& visit) {
   visit(Key::gap, d.elements.gap);
   visit(Key::margin, d.elements.margin);
   visit(Key::rim_rows, d.elements.rim_rows);
+  visit(Key::close_spots, d.elements.close_spots);
   visit(Key::beads_enabled, d.elements.beads.enabled);
   visit(Key::beads_scale, d.elements.beads.scale);
   visit(Key::placement_offset, d.placement.offset);

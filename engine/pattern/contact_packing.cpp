@@ -21,6 +21,7 @@ constexpr double kDtStart = 0.1, kDtMax = 0.3;
 constexpr double kAlphaStart = 0.1, kAlphaShrink = 0.99;
 constexpr double kDtGrow = 1.1, kDtShrink = 0.5;
 constexpr int kWaitAfterStop = 5;
+constexpr int kMarginPasses = 8;
 // Pairs are listed within contact x (1 + kSkin) and listed again once some particle has moved
 // half the skin: until then no pair left out of the list can have come within contact.
 constexpr double kSkin = 0.3;
@@ -53,7 +54,8 @@ long fire_descent(const SurfaceMap& map, SurfaceParticles& p, const BoundaryInde
                   const ContactPackingOptions& options, std::vector<double>& overlap, ContactPackingReport& report,
                   const std::atomic<bool>* stop) {
   const int n = p.size();
-  const double contact = options.contact, settled = contact * (1 - kSettledOverlap);
+  const double contact = options.contact;
+  const double settled = options.settled > 0 ? options.settled : contact * (1 - kSettledOverlap);
   std::vector<glm::dvec3> velocity(n, glm::dvec3(0)), force(n), listed_at, step(n);
   std::vector<Pair> pairs;
   double dt = kDtStart, alpha = kAlphaStart;
@@ -159,6 +161,13 @@ ContactPackingReport pack_by_contact(const SurfaceMap& map, std::vector<glm::dve
   std::vector<double> overlap;
   for (int round = 0; round < std::max(1, options.rounds); ++round) {
     report.overlapping_pairs = fire_descent(map, p, boundary, options, overlap, report, stop);
+    for (int pass = 0; options.exact_margin && pass < kMarginPasses; ++pass) {
+      bool kept = true;
+      for (int i = 0; i < p.size() && kept; ++i)
+        kept = p.lifted.triangle[i] < 0 || boundary.nearest(p.lifted.position[i]).distance >= options.margin;
+      if (kept) break;
+      p.keep_from_boundary(map, boundary, options.margin);
+    }
     if (report.overlapping_pairs == 0 || round + 1 >= options.rounds || (stop && stop->load())) break;
     const int budget = std::max(1, int(options.remove_share * p.size()));
     report.removed += remove_jammed(p, overlap, options.contact, budget);

@@ -23,6 +23,13 @@ struct ContactPackingOptions {
   double remove_share = 0.005;  // at most this share of the particles removed per round (at least 1)
   const std::vector<char>* movable = nullptr;  // set: only these particles move (the rest hold a patch's rim)
   const BoundaryIndex* boundary = nullptr;     // set: used instead of one built for the call (reach >= margin)
+  // A pair counts as settled from this 3D distance on; 0: contact x (1 - kSettledOverlap). A pavement
+  // whose pairs sit just beyond the contact rule is packed with the rule itself here, so that only
+  // real overlaps move stones.
+  double settled = 0;
+  // After the descent, the particles pushed out to the margin until every one keeps it (the
+  // descent's own push is one step a iteration).
+  bool exact_margin = false;
 };
 
 struct ContactPackingReport {

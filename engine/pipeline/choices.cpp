@@ -203,7 +203,7 @@ Pavement pave_lattice_or_adaptive(const SurfaceMap& map, Design design, const Pa
 
 // --- pattern.topology auto: the lattice, or the adaptive pattern where the lattice fails ---
 
-std::string three_digits(double value) {
+std::string three_significant(double value) {
   char text[32];
   std::snprintf(text, sizeof text, "%.3g", value);
   return text;
@@ -213,10 +213,10 @@ std::string three_digits(double value) {
 // verdict's own bounds), which is what a map distorting the lattice does. Empty when it did not.
 std::string lattice_failure(const PavementQuality& q) {
   std::string why;
-  if (pattern_is_torn(q)) why = "the lattice tore (spring deviation p95 " + three_digits(q.spring_deviation_p95) + ")";
+  if (pattern_is_torn(q)) why = "the lattice tore (spring deviation p95 " + three_significant(q.spring_deviation_p95) + ")";
   if (has_bare_patches(q))
     why += (why.empty() ? "the lattice left bare patches (fill " : " and left bare patches (fill ") +
-           three_digits(q.fill) + ")";
+           three_significant(q.fill) + ")";
   return why;
 }
 
@@ -266,9 +266,9 @@ Pavement choose_topology(const SurfaceMap& map, const Design& design, const Pave
   const PavementQuality& adaptive = *choice.quality[2];
   kept.topology_choice =
       "auto: " + std::string(adaptive_better ? "adaptive" : "lattice") + "; " + *failure + ", the adaptive pattern " +
-      (adaptive_better ? "did better (fill " + three_digits(adaptive.fill) + ", " +
+      (adaptive_better ? "did better (fill " + three_significant(adaptive.fill) + ", " +
                              count_text(judge_pavement(adaptive).problems.size(), "problem", "problems") + ")"
-                       : "did no better (fill " + three_digits(adaptive.fill) + ")");
+                       : "did no better (fill " + three_significant(adaptive.fill) + ")");
   return std::move(kept);
 }
 

@@ -13,6 +13,7 @@
 #include "pattern/design_cell.h"
 #include "pattern/pattern_edits.h"
 #include "pipeline/offset_fit.h"
+#include "report/verdict.h"
 #include "solver/edit_relaxation.h"
 #include "solver/guidance_field.h"
 #include "solver/surface_spring_relaxation.h"
@@ -203,6 +204,12 @@ void refill(const PaveContext& c, PaveState& s) {
   pavement.refill.milliseconds += seams.milliseconds;
 }
 
+void close_spots(const PaveContext& c, PaveState& s) {
+  s.pavement.spots_closed =
+      close_bare_spots(c.map, s.pavement.elements, s.design.elements, s.design.pattern.spacing, s.basis.edges.spots,
+                       c.options.stop);
+}
+
 void number(const PaveContext&, PaveState& s) {
   number_elements(s.pavement.elements, s.pavement.pattern, s.design.edits.added);
 }
@@ -232,6 +239,15 @@ constexpr Applies kWithoutOverlap = [](const PaveState& s, const PavementOptions
   return !s.design.elements.allow_overlap;
 };
 
+// Spots are closed when the design asks, in a pavement the optimizer made that holds together: a
+// torn lattice or one with bare patches is the adaptive pattern's to mend (pattern.topology auto
+// tries it), not the spots'.
+constexpr Applies closes_spots = [](const PaveState& s, const PavementOptions& o) {
+  const double ideal = s.basis.ideal_count;
+  return s.design.elements.close_spots && s.optimized && o.refill && kWithoutOverlap(s, o) &&
+         !pattern_is_torn(s.pavement.paper) && !(ideal > 0 && double(s.pavement.elements.size()) < kBareFill * ideal);
+};
+
 constexpr PaveStep kSteps[] = {
     {"pattern", nullptr, lay_out_pattern},
     {"measure_initial", nullptr, measure_initial},
@@ -251,6 +267,7 @@ constexpr PaveStep kSteps[] = {
      },
      lay_rim_rows},
     {"refill", [](const PaveState& s, const PavementOptions& o) { return o.refill && kWithoutOverlap(s, o); }, refill},
+    {"close_spots", closes_spots, close_spots},
     {"ids", nullptr, number},
     {"deletions", [](const PaveState& s, const PavementOptions&) { return !s.design.edits.deleted.empty(); },
      delete_edited},

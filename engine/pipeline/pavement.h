@@ -7,6 +7,7 @@
 #include "pattern/particle_relaxation.h"
 #include "solver/coarse_start.h"
 #include "solver/collision_resolution.h"
+#include "elements/bare_spots.h"
 #include "elements/boundary_postprocess.h"
 #include "elements/refill.h"
 #include "elements/rim_rows.h"
@@ -65,6 +66,7 @@ struct Pavement {
   CoarseStartReport coarse_start;    // the lattice's multilevel start (solver/coarse_start.h)
   CollisionResolutionReport resolution;
   RefillReport refill;
+  SpotClosing spots_closed;          // stones put into bare spots (elements/bare_spots.h)
   RimRowReport rim_rows;
   RelaxationReport relaxation;       // the adaptive pattern's particle relaxation
   // For pattern.topology "auto": which topology was kept and why (design.pattern.topology says

@@ -198,6 +198,10 @@ void add_after_the_solve(nlohmann::json& report, const Pavement& pavement) {
                       {"across_seams", pavement.refill.on_seams},
                       {"waves", pavement.refill.waves},
                       {"milliseconds", pavement.refill.milliseconds}};
+  report["bare_spots_closed"] = {{"added", pavement.spots_closed.added},
+                                 {"pushed_in", pavement.spots_closed.pushed},
+                                 {"rounds", pavement.spots_closed.rounds},
+                                 {"milliseconds", pavement.spots_closed.milliseconds}};
   report["rim_rows"] = {{"rims", std::string(enum_name(pavement.design.elements.rim_rows))},
                         {"loops", pavement.rim_rows.loops},
                         {"placed", pavement.rim_rows.placed},

@@ -184,6 +184,8 @@ QualityBasis quality_basis(const SurfaceMap& map, const UnitCell& cell, const El
   basis.boundary_strip =
       0.5 * (elements.vertex.enabled ? elements.vertex.scale * cell.spacing : largest) + basis.margin;
   basis.ideal_count = ideal_element_count(map, basis);
+  basis.edges = edge_basis(map, cell, elements);
+  basis.edges.spots.c = solver.c, basis.edges.spots.m = solver.m, basis.edges.spots.guidance = guidance;
   return basis;
 }
 
@@ -232,6 +234,7 @@ PavementQuality measure_pavement(const SurfaceMap& map, const Pattern& pattern,
     }
     q.regular_valence_share = q.interior_vertex_elements > 0 ? double(regular) / q.interior_vertex_elements : 0;
   }
+  if (q.structure_measured) q.edges = measure_edges(map, elements, basis.edges);
   // With no edge elements, the ratios above are the vertex elements' own.
   if (q.structure_measured)
     q.spacing_curvature_spearman =
@@ -271,6 +274,7 @@ nlohmann::json to_json(const PavementQuality& q) {
       json[key] = nullptr;
   // No interior element (a narrow ring): no share, rather than a share of 0 that reads as all defects.
   if (q.interior_vertex_elements == 0) json["regular_valence_share"] = nullptr;
+  json["edges"] = to_json(q.edges);
   return json;
 }
 

@@ -9,6 +9,7 @@
 #include "pattern/pattern.h"
 #include "pattern/unit_cell.h"
 #include "map/surface_map.h"
+#include "report/edge_quality.h"
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -39,6 +40,7 @@ struct QualityBasis {
   int regular_valence = 0;          // V-neighbours of a lattice vertex: 6 tri, 4 grid, 3 hex; 0 = no V
   double spacing = 0;               // D: interior elements lie kInteriorDepth D from the boundary
   std::vector<GuidanceDab> guidance;  // the painted field: the ideal count follows it (design/guidance.h)
+  EdgeBasis edges;                  // bare spots and rim metal (report/edge_quality.h)
 };
 
 
@@ -59,7 +61,8 @@ struct PavementQuality {
   long boundary_crossings = 0;      // elements nearer the surface boundary than their radius
   double coverage = 0;              // sum of element disc areas / surface area
   double spacing_curvature_spearman = 0;  // rank correlation of local spacing and curvature
-  bool structure_measured = true;   // false: valence share and spearman were not measured (Measure::Counts)
+  bool structure_measured = true;   // false: valence share, spearman and the edges were not measured (Counts)
+  EdgeQuality edges;                // bare spots and rim metal (report/edge_quality.h), with Measure::Full
 };
 
 // Full: every figure. Counts: all but the lattice valence and the spacing-curvature correlation,

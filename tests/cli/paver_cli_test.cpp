@@ -271,6 +271,32 @@ TEST_F(PaverRun, FitOffsetSaysWhatItGainedAndTheSavedDesignHoldsTheOffset) {
   EXPECT_TRUE(nlohmann::json::parse(read_file_text(dir() / "plain" / "report.json"))["pattern"]["offset_fit"].is_null());
 }
 
+// The summary and report.json say where bare spots are and how far the rims lie from their stones
+// (docs/contact.md); --close-spots pushes stones into them, and the written design repeats it.
+TEST_F(PaverRun, BareSpotsAreSaidAndCloseSpotsClosesThem) {
+  const std::vector<std::string> pendant = {"run",    "assets/surfaces/pendant_pierced.obj", "--stone", "1.5", "--gap",
+                                            "0.1",    "--margin", "0.3", "--rim-rows", "all", "--formats", "ply"};
+  std::vector<std::string> open_args = pendant, closed_args = pendant;
+  open_args.insert(open_args.end(), {"--out", (dir() / "open").string()});
+  closed_args.insert(closed_args.end(), {"--close-spots", "--out", (dir() / "closed").string()});
+  const CliResult open = paver(open_args), closed = paver(closed_args);
+  ASSERT_EQ(open.exit_code, 0) << describe(open);
+  ASSERT_EQ(closed.exit_code, 0) << describe(closed);
+  EXPECT_NE(open.out.find("edges    "), std::string::npos) << describe(open);
+  const nlohmann::json a = nlohmann::json::parse(read_file_text(dir() / "open" / "report.json"));
+  const nlohmann::json b = nlohmann::json::parse(read_file_text(dir() / "closed" / "report.json"));
+  const nlohmann::json& spots = a["quality_after"]["edges"];
+  ASSERT_TRUE(spots.is_object()) << a["quality_after"].dump();
+  EXPECT_GT(spots["bare_spots"].get<long>(), 0);
+  EXPECT_EQ(spots["spots"].size(), std::min<std::size_t>(spots["bare_spots"].get<std::size_t>(), 100));
+  EXPECT_DOUBLE_EQ(spots["spot_stone"].get<double>(), 1.2);
+  EXPECT_LE(spots["rim_metal_p95"].get<double>(), 0.3);
+  EXPECT_EQ(b["quality_after"]["edges"]["bare_spots"], 0);
+  EXPECT_GT(b["bare_spots_closed"]["added"].get<int>(), 0);
+  EXPECT_EQ(b["quality_after"]["contact_violations"], 0);
+  EXPECT_EQ(nlohmann::json::parse(read_file_text(dir() / "closed" / "design.json"))["elements"]["close_spots"], true);
+}
+
 // A flag that lays the pattern out anew under a design's element edits is said before the run:
 // the edits name elements of the layout they were made on.
 TEST_F(PaverRun, ALayoutFlagUnderElementEditsIsSaid) {

@@ -170,11 +170,12 @@ TEST(DesignIo, RoundTripKeepsEveryField) {
 TEST(DesignIo, WritesEveryKey) {
   const json j = design_to_json(Design{});
   EXPECT_EQ(j.at("version"), Design::kVersion);
-  EXPECT_EQ(Design::kVersion, 2);
+  EXPECT_EQ(Design::kVersion, 3);
   EXPECT_EQ(j.at("units"), "mm");
   EXPECT_EQ(j.at("pattern").size(), 5u);
   EXPECT_EQ(j.at("pattern").at("topology"), "auto");
-  EXPECT_EQ(j.at("elements").size(), 8u);
+  EXPECT_EQ(j.at("elements").size(), 9u);
+  EXPECT_EQ(j.at("elements").at("close_spots"), false);
   EXPECT_EQ(j.at("elements").at("rim_rows"), "none");
   EXPECT_EQ(j.at("elements").at("beads").size(), 2u);
   EXPECT_EQ(j.at("elements").at("vertex").size(), 3u);
@@ -312,9 +313,9 @@ TEST(DesignIo, NamesMustBeKnown) {
 
 TEST(DesignIo, VersionIsRequiredAndOneThisBuildReads) {
   EXPECT_TRUE(contains(json_error(R"({"pattern": {}})"), "d.json: missing key 'version'"));
-  const std::string newer = json_error(R"({"version": 3, "future_key": 1})");
-  EXPECT_TRUE(contains(newer, "'version' is 3"));
-  EXPECT_TRUE(contains(newer, "reads versions 1 to 2"));
+  const std::string newer = json_error(R"({"version": 4, "future_key": 1})");
+  EXPECT_TRUE(contains(newer, "'version' is 4"));
+  EXPECT_TRUE(contains(newer, "reads versions 1 to 3"));
   EXPECT_TRUE(contains(json_error(R"({"version": 0})"), "'version' is 0"));
   EXPECT_TRUE(contains(json_error(R"({"version": "1"})"), "'version' must be an integer, got string"));
 }
@@ -548,7 +549,7 @@ TEST_F(DesignIoFile, SaveThenLoadGivesTheSameDesign) {
 
   // Pretty-printed, 2-space indent, version first, trailing newline.
   const std::string text = read(path);
-  EXPECT_EQ(text.rfind("{\n  \"version\": 2,\n  \"units\": \"in\",\n  \"pattern\": {\n    \"tessellation\": \"grid\"", 0), 0u)
+  EXPECT_EQ(text.rfind("{\n  \"version\": 3,\n  \"units\": \"in\",\n  \"pattern\": {\n    \"tessellation\": \"grid\"", 0), 0u)
       << text;
   EXPECT_EQ(text.back(), '\n');
 

@@ -1,0 +1,78 @@
+// Tests for engine/elements/bare_spots.cpp: on the pierced pendant paved with 1.5 mm stones, 0.1
+// apart, 0.3 from the rims and a row along every rim, the pass leaves spots where a stone of 0.8 d
+// fits (by a sampling of the surface written in the test, spot_probe.h); the closing step, run on
+// that state, leaves none, breaks no contact (all pairs) and keeps every stone inside the margin.
+#include "elements/bare_spots.h"
+
+#include "all_pairs.h"
+#include "map/boundary_index.h"
+#include "pipeline/pave_once.h"
+#include "spot_probe.h"
+#include "surface_maps.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+namespace paver {
+namespace {
+
+Design pave_design(double stone) {
+  Design design;
+  design.pattern.topology = Topology::Lattice;
+  design.elements.gap = 0.1;
+  design.elements.margin = 0.3;
+  design.elements.rim_rows = RimRows::All;
+  design.elements.close_spots = true;
+  set_stone_size(design, stone);
+  design.pattern.tessellation = Tessellation::Triangle;
+  return design;
+}
+
+TEST(BareSpots, TheClosingStepLeavesNoSpotWhereAStoneOfEightTenthsFits) {
+  const SurfaceMap& map = *test::bundled_map("pendant_pierced");
+  const Design design = pave_design(1.5);
+  const double d = 1.5, spot = 0.8 * d;
+  PaveState state = pave_until(map, design, {}, "close_spots");
+  const Elements& e = state.pavement.elements;
+  const test::SpotProbe before = test::probe_spots(map.mesh, e, 0.1, 0.3, spot, d / 20, 4 * d);
+  ASSERT_FALSE(before.fitting.empty()) << "the case: rows along the rims and the lattice leave spots between them";
+
+  pave_step("close_spots", map, {}, state);
+  const SpotClosing& closed = state.pavement.spots_closed;
+  EXPECT_GT(closed.added, 0);
+  EXPECT_GT(closed.pushed, 0) << "some spots were narrower than a stone: their neighbours made room";
+  const test::SpotProbe after = test::probe_spots(map.mesh, e, 0.1, 0.3, spot, d / 20, 4 * d);
+  EXPECT_TRUE(after.fitting.empty()) << after.fitting.size() << " samples still fit a stone of 0.8 d (the widest "
+                                     << after.widest << ")";
+  EXPECT_EQ(test::all_pairs(e, 0.1).violations, 0);
+  const BoundaryIndex rims(map.mesh, 2 * d);
+  for (std::size_t i = 0; i < e.size(); ++i) {
+    ASSERT_DOUBLE_EQ(e.diameter[i], d) << "every stone as ordered";
+    EXPECT_GE(rims.nearest(e.position[i]).distance, 0.5 * d + 0.3) << "stone " << i << " inside the margin";
+  }
+}
+
+TEST(BareSpots, WhereAWholeStoneFitsOneIsPutAndNothingNearItMoves) {
+  const SurfaceMap& map = test::flat_unit_square();
+  glm::dvec3 hole;
+  // The lattice 0.02 apart, the closing's gap 0.01: the stone taken out leaves room for one more.
+  Elements e = test::square_lattice(0.1, 0.02, 0.05, hole);
+  ElementsDesign spec;
+  spec.vertex.shape = ShapeKind::Gem;
+  SpotBasis basis;
+  basis.stone = 0.1, basis.spot_stone = 0.08, basis.gap = 0.01, basis.margin = 0.05;
+  const Elements before = e;
+  close_bare_spots(map, e, spec, 0.12, basis);
+  EXPECT_TRUE(std::any_of(e.position.begin() + std::ptrdiff_t(before.size()), e.position.end(),
+                          [&](const glm::dvec3& p) { return glm::length(p - hole) < 0.01; }))
+      << "a stone in the hole";
+  for (std::size_t i = 0; i < before.size(); ++i)
+    if (glm::length(before.position[i] - hole) < 0.3) EXPECT_EQ(e.position[i], before.position[i]) << i;
+  EXPECT_EQ(test::all_pairs(e, 0.01).violations, 0);
+  for (const BareSpot& s : find_bare_spots(map, e, basis).spots)
+    EXPECT_GT(glm::length(s.position - hole), 0.3) << "a spot left by the hole";
+}
+
+}  // namespace
+}  // namespace paver

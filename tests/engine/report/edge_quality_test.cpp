@@ -1,0 +1,87 @@
+// Tests for engine/report/edge_quality.cpp: the bare spots and the rim metal the report gives,
+// checked against a sampling of the surface and the rims written in the test (spot_probe.h), on a
+// flat square paved with a triangle lattice by hand, one stone taken out of its middle.
+#include "report/edge_quality.h"
+
+#include "spot_probe.h"
+#include "surface_maps.h"
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace paver {
+namespace {
+
+constexpr double kStone = 0.1, kGap = 0.01, kMargin = 0.02;
+
+Elements square_pave(glm::dvec3& hole) { return test::square_lattice(kStone, kGap, kMargin, hole); }
+
+EdgeBasis square_basis() {
+  EdgeBasis basis;
+  basis.spots.stone = kStone;
+  basis.spots.spot_stone = kSpotStoneShare * kStone;
+  basis.spots.gap = kGap;
+  basis.spots.margin = kMargin;
+  basis.rims = {0};
+  return basis;
+}
+
+TEST(EdgeQuality, TheSpotsAreWhereAnIndependentSamplingFindsRoom) {
+  const SurfaceMap& map = test::flat_unit_square();
+  glm::dvec3 hole;
+  const Elements e = square_pave(hole);
+  const EdgeQuality q = measure_edges(map, e, square_basis());
+  ASSERT_TRUE(q.measured);
+  const double spot = kSpotStoneShare * kStone;
+  const test::SpotProbe probe = test::probe_spots(map.mesh, e, kGap, kMargin, spot, kStone / 40, 4 * kStone);
+  // The widest stone: the engine samples the surface more coarsely (d / 8), never beyond the truth.
+  EXPECT_LE(q.largest_fit, probe.widest + 1e-9);
+  EXPECT_GE(q.largest_fit, probe.widest - kStone / 8);
+  EXPECT_GE(probe.widest, kStone * (1 - 1e-6)) << "the stone taken out leaves room for one";
+  // The hole is one of the spots.
+  ASSERT_GT(q.bare_spots, 0);
+  EXPECT_TRUE(std::any_of(q.spots.begin(), q.spots.end(),
+                          [&](const BareSpot& s) { return glm::length(s.position - hole) < 0.5 * kStone; }));
+  // Every spot the engine says fits the stone it says, by the test's own measure of room there.
+  for (const BareSpot& s : q.spots) {
+    double room = 0.5 * 4 * kStone;
+    for (std::size_t k = 0; k < e.size(); ++k)
+      room = std::min(room, glm::length(s.position - e.position[k]) - 0.5 * kStone - kGap);
+    room = std::min(room, std::min({s.position.x, s.position.y, 1 - s.position.x, 1 - s.position.y}) - kMargin);
+    EXPECT_NEAR(s.fits, 2 * room, 1e-9);
+    EXPECT_GE(s.fits, spot);
+  }
+  // None missed: every sample with clearly room for a spot stone lies by one the engine found.
+  for (const glm::dvec3& p : test::probe_spots(map.mesh, e, kGap, kMargin, spot + kStone / 8, kStone / 40, 4 * kStone)
+                                 .fitting)
+    EXPECT_TRUE(std::any_of(q.spots.begin(), q.spots.end(), [&](const BareSpot& s) {
+      return glm::length(s.position - p) <= spot + kGap + kStone / 8;
+    })) << "a spot at (" << p.x << ", " << p.y << ") was missed";
+  EXPECT_EQ(q.bare_spots, long(q.spots.size()));
+}
+
+TEST(EdgeQuality, TheRimMetalIsTheGirdlesDistanceFromTheRimAsSampledApart) {
+  const SurfaceMap& map = test::flat_unit_square();
+  glm::dvec3 hole;
+  const Elements e = square_pave(hole);
+  const EdgeQuality q = measure_edges(map, e, square_basis());
+  std::vector<double> metal = test::probe_rim_metal(map.mesh, e, {0}, kMargin, kStone / 100);
+  std::sort(metal.begin(), metal.end());
+  const double p95 = metal[std::size_t(0.95 * double(metal.size()))] / kStone, most = metal.back() / kStone;
+  EXPECT_GT(q.rim_samples, 4 * kRimSamplesPerStone / kStone * 0.9);
+  EXPECT_NEAR(q.rim_metal_p95, p95, 0.02);
+  EXPECT_NEAR(q.rim_metal_max, most, 0.02);
+  EXPECT_GT(q.rim_metal_p95, 0.3) << "a lattice clipped at the square's edge leaves teeth";
+}
+
+TEST(EdgeQuality, NoStoneDesignNoFigures) {
+  EdgeBasis none;
+  EXPECT_FALSE(measure_edges(test::flat_unit_square(), Elements{}, none).measured);
+}
+
+}  // namespace
+}  // namespace paver
