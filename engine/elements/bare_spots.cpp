@@ -204,7 +204,7 @@ constexpr double kCloseBelow = 1.0 / kSpotSamplesPerStone;
 constexpr double kZone = 3.0;   // stones within this many d of a spot move to make room for it
 constexpr double kFrame = 2.0;  // and those within this many d + g beyond the zone hold it
 constexpr int kRounds = 8;
-constexpr int kPackIterations = 600;
+constexpr int kSpotPackIterations = 600;
 constexpr int kAttempts = 5;
 constexpr double kPackAim = 1e-4;  // relative: beyond float32 rounding, far below what an eye sees
 // A zone no stone can be pushed into is pushed apart by this much more than contact instead.
@@ -255,7 +255,7 @@ private:
     options.settled = push > 1 ? options.contact * (1 - kSettledOverlap) : rule * (1 + 0.1 * kPackAim);
     options.margin = (0.5 * basis_.stone + basis_.margin) * (1 + kPackAim);
     options.exact_margin = true;
-    options.iterations = kPackIterations;
+    options.iterations = kSpotPackIterations;
     options.movable = &movable;
     options.boundary = &boundary_;
     pack_by_contact(map_, p.uv, options);

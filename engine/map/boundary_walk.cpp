@@ -1,4 +1,5 @@
 #include "map/boundary_walk.h"
+#include "core/edge_key.h"
 
 #include <glm/geometric.hpp>
 
@@ -6,13 +7,6 @@
 #include <cmath>
 
 namespace paver {
-namespace {
-
-std::uint64_t edge_key(int a, int b) {
-  return (std::uint64_t(std::uint32_t(std::min(a, b))) << 32) | std::uint32_t(std::max(a, b));
-}
-
-}  // namespace
 
 BoundaryWalk::BoundaryWalk(const SurfaceMap& map) : map_(map) {
   const SurfaceMesh& mesh = map.mesh;

@@ -9,6 +9,7 @@
 // Everything else (non-manifold, non-orientable, handles) is an InputError
 // that names the file, the place and the fix.
 #include "mesh/mesh_repair.h"
+#include "core/edge_key.h"
 
 #include "mesh/mesh_messages.h"
 #include "mesh/polygon_triangulation.h"
@@ -53,10 +54,6 @@ struct Side {
   int triangle;
   int corner;
 };
-
-std::uint64_t edge_key(int a, int b) {
-  return (std::uint64_t(std::uint32_t(std::min(a, b))) << 32) | std::uint32_t(std::max(a, b));
-}
 
 int corner_of(const glm::ivec3& t, int vertex) { return t.x == vertex ? 0 : t.y == vertex ? 1 : 2; }
 

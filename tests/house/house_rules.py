@@ -2,9 +2,10 @@
 """The house rules that keep Paver's code one-directional and small (issue 39), checked on the
 source tree: no engine or compute function over 120 lines and no app function over 150; the
 engine's folders include each other in one direction only (the order below); every design key is
-spelled in at most two source files outside the tests; README.md at most 200 lines.
+spelled in at most two source files outside the tests; README.md at most 200 lines; no name is
+defined in two .cpp files of one unity-built target.
 
-Usage: house_rules.py SOURCE_DIR [rule ...]   (rules: functions, folders, keys, readme; default all)
+Usage: house_rules.py SOURCE_DIR [rule ...]   (rules: functions, folders, keys, readme, unity; default all)
 Exit 0 when every rule holds, 1 with one line per breach otherwise."""
 import os
 import re
@@ -82,11 +83,14 @@ def matching_brace(text, open_at):
 
 
 def functions(path):
-    """(lines, first line, name) of every function body at namespace or class scope."""
+    """(lines, first line, name, head, in_class) of every function body at namespace or class scope."""
     text = blank_comments_and_strings(open(path, encoding="utf-8", errors="replace").read())
     found, i, head_start = [], 0, 0
+    scopes = []  # "namespace" or "class", innermost last
     while i < len(text):
         c = text[i]
+        if c == "}" and scopes:
+            scopes.pop()
         if c in ";}":
             head_start = i + 1
         elif c == ":" and text[head_start:i].strip() in ("public", "private", "protected"):
@@ -94,8 +98,10 @@ def functions(path):
         elif c == "{":
             head = text[head_start:i].strip()
             if re.search(r"\bnamespace\b", head) or re.match(r'extern\s*$', head):
+                scopes.append("namespace")
                 head_start = i + 1  # a namespace's body: its functions are at namespace scope
             elif re.search(r"\b(struct|class|union)\b", head) and "(" not in head.split(":")[0]:
+                scopes.append("class")
                 head_start = i + 1  # a class's body: its member functions count one by one
             else:
                 close = matching_brace(text, i)
@@ -104,7 +110,8 @@ def functions(path):
                     first_line = text.count("\n", 0, first) + 1
                     last_line = text.count("\n", 0, close) + 1
                     names = re.findall(r"([~\w:]+)\s*\(", head)
-                    found.append((last_line - first_line + 1, first_line, names[0] if names else head[:40]))
+                    found.append((last_line - first_line + 1, first_line, names[0] if names else head[:40], head,
+                                  bool(scopes) and scopes[-1] == "class"))
                 i = close + 1
                 head_start = i
                 continue
@@ -117,7 +124,7 @@ def check_functions(root):
     for path in source_files(root, ["engine", "compute", "app"]):
         relative = os.path.relpath(path, root)
         limit = APP_FUNCTION_LINES if relative.startswith("app") else ENGINE_FUNCTION_LINES
-        for lines, line, name in functions(path):
+        for lines, line, name, _, _ in functions(path):
             if lines > limit:
                 problems.append(f"{relative}:{line}: {name} has {lines} lines; at most {limit}: split it into "
                                 "named steps")
@@ -196,7 +203,63 @@ def check_readme(root):
     return []
 
 
-RULES = {"functions": check_functions, "folders": check_folders, "keys": check_keys, "readme": check_readme}
+def parameter_types(head, name):
+    """The parameter list of a function head with the parameters' names and defaults dropped:
+    "(int a, int b = 0)" -> "(int,int)"."""
+    start = head.find("(", head.find(name) + len(name))
+    inner = head[start + 1:head.rfind(")")]
+    types = []
+    for parameter in inner.split(","):
+        parameter = parameter.split("=")[0].strip()
+        words = re.findall(r"[\w:<>]+|[*&]+", parameter)
+        if len(words) > 1 and re.match(r"\w+$", words[-1]):
+            words = words[:-1]
+        types.append(" ".join(words))
+    return "(" + ",".join(types) + ")"
+
+
+def file_local_definitions(path):
+    """The free functions (with their parameter types), constants and types a .cpp defines at
+    namespace scope: the names a unity build puts side by side with other files'."""
+    text = blank_comments_and_strings(open(path, encoding="utf-8", errors="replace").read())
+    names = {}
+    for _, line, name, head, in_class in functions(path):
+        if in_class or "::" in name or name in ("main", "operator") or "operator" in head:
+            continue
+        names.setdefault(name + parameter_types(head, name), line)
+    for match in re.finditer(r"^(?:static\s+)?(?:inline\s+)?constexpr\s+[\w:<>, ]+?\s+(\w+)\s*(?:\[|=|\{)", text,
+                             re.MULTILINE):
+        names.setdefault(match.group(1), text.count("\n", 0, match.start()) + 1)
+    for match in re.finditer(r"^(?:struct|class|enum class|enum)\s+(\w+)\b(?!;)", text, re.MULTILINE):
+        if not text[match.end():].lstrip().startswith(";"):  # a definition, not a declaration
+            names.setdefault(match.group(1), text.count("\n", 0, match.start()) + 1)
+    return names
+
+
+def check_unity(root):
+    """A name defined in two .cpp files of one unity-built target (the engine, the CLI): the
+    sanitizer stage compiles them together and fails with a redefinition, depending on how its
+    batches fall (it broke three times when a file was added)."""
+    problems = []
+    targets = {"engine": [p for p in source_files(root, ["engine"]) if "/cut/" not in p],
+               "the CLI": list(source_files(root, [os.path.join("app", "cli")]))}
+    for target, paths in targets.items():
+        seen = {}
+        for path in paths:
+            if not path.endswith(".cpp"):
+                continue
+            relative = os.path.relpath(path, root)
+            for name, line in file_local_definitions(path).items():
+                if name in seen:
+                    problems.append(f"{relative}:{line}: {name} is also defined in {seen[name]}; the unity build of "
+                                    f"{target} puts the two files side by side: share one, or rename one")
+                else:
+                    seen[name] = f"{relative}:{line}"
+    return problems
+
+
+RULES = {"functions": check_functions, "folders": check_folders, "keys": check_keys, "readme": check_readme,
+         "unity": check_unity}
 
 
 def main():

@@ -68,7 +68,9 @@ TEST(BareSpots, WhereAWholeStoneFitsOneIsPutAndNothingNearItMoves) {
                           [&](const glm::dvec3& p) { return glm::length(p - hole) < 0.01; }))
       << "a stone in the hole";
   for (std::size_t i = 0; i < before.size(); ++i)
-    if (glm::length(before.position[i] - hole) < 0.3) EXPECT_EQ(e.position[i], before.position[i]) << i;
+    if (glm::length(before.position[i] - hole) < 0.3) {
+      EXPECT_EQ(e.position[i], before.position[i]) << i;
+    }
   EXPECT_EQ(test::all_pairs(e, 0.01).violations, 0);
   for (const BareSpot& s : find_bare_spots(map, e, basis).spots)
     EXPECT_GT(glm::length(s.position - hole), 0.3) << "a spot left by the hole";
