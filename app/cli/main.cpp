@@ -5,11 +5,15 @@
 #include "core/input_error.h"
 #include "core/printable.h"
 #include "core/interrupted.h"
+#include "core/regular_file.h"
+#include "available_memory.h"
 #include "interrupt.h"
 
 #include <CLI/CLI.hpp>
 
+#include <cstdint>
 #include <exception>
+#include <new>
 #include <iostream>
 
 int main(int argc, char** argv) {
@@ -34,10 +38,15 @@ int main(int argc, char** argv) {
     std::cerr << "paver: interrupted; nothing was written, the output folder is as it was\n";
     return paver::cli::interrupted_exit_code();
   } catch (const paver::InputError& e) {
-    std::cerr << "paver: error: " << paver::printable(e.what()) << "\n";
+    std::cerr << "paver: error: " << paver::printable_cut(e.what(), paver::kMaxMessageBytes) << "\n";
+    return 2;
+  } catch (const std::bad_alloc&) {
+    // An input too large for this machine is the input's problem, not ours: exit 2, with the figure.
+    std::cerr << "paver: error: ran out of memory (" << paver::byte_size_text(std::uintmax_t(paver::app::available_memory_bytes()))
+              << " was free when it stopped); simplify the surface or the design, or run on a machine with more memory\n";
     return 2;
   } catch (const std::exception& e) {
-    std::cerr << "paver: internal error: " << paver::printable(e.what()) << "\n";
+    std::cerr << "paver: internal error: " << paver::printable_cut(e.what(), paver::kMaxMessageBytes) << "\n";
     return 1;
   }
   return 2;

@@ -54,7 +54,7 @@ int run_param(const ParamArgs& args) {
   }
   const Stopwatch load_watch;
   const LoadedSurface loaded = load_checked_surface(
-      args.surface, [](const std::string& w) { std::cerr << "paver: warning: " << printable(w) << "\n"; });
+      args.surface, [](const std::string& w) { std::cerr << "paver: warning: " << printable_cut(w, kMaxMessageBytes) << "\n"; });
   if (loaded.mesh.boundary_loops.empty())
     throw InputError(args.surface + ": is a closed surface; `paver param` maps one open surface, and `paver run` "
                      "cuts a closed one into charts (--cut)");

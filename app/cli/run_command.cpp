@@ -169,8 +169,10 @@ void set_up_design(const RunArgs& args, PipelineRequest& request) {
 
 // --subtract: the flags checked now, the cut made with the other files (into `cut_summary`).
 using ExtraWriter = std::function<void(const PipelineResult&, const fs::path&, StageTimings&, nlohmann::json&)>;
-ExtraWriter set_up_cut(const RunArgs& args, PipelineRequest& request, Progress& progress,
-                       std::optional<PreviewImages>& previews, nlohmann::json& cut_summary) {
+// Without CGAL only the flag checks run, so the other parameters go unused there.
+ExtraWriter set_up_cut(const RunArgs& args, [[maybe_unused]] PipelineRequest& request,
+                       [[maybe_unused]] Progress& progress, [[maybe_unused]] std::optional<PreviewImages>& previews,
+                       [[maybe_unused]] nlohmann::json& cut_summary) {
   if (args.cutter != "seat" && args.cutter != "element")
     throw InputError("--cutter " + printable(args.cutter) + ": use seat (girdle, seat cone, hole through) or element");
   if (!args.subtract && args.thickness) throw InputError("--thickness is the metal's for --subtract: add --subtract");
@@ -224,6 +226,9 @@ app::BackendChoice set_up_solving(const RunArgs& args, PipelineRequest& request,
   options.resolve_collisions = !args.no_resolve;
   options.refill = !args.no_refill;
   options.stop = &interrupt_requested();
+  // NaN passes CLI11's range check (every comparison with it is false).
+  if (!(args.max_output_gb >= 0.001 && args.max_output_gb <= 1e6))
+    throw InputError("--max-output-gb " + number_text(args.max_output_gb) + ": must be a number from 0.001 to 1e6 (GB)");
   app::BackendChoice backend = app::choose_backend(args.backend, args.device, args.threads);
   options.solver = backend.factory;
   return backend;
@@ -242,7 +247,7 @@ std::string written_files(const MeshFormats& formats, bool cut, bool png) {
 int run_run(const RunArgs& args) {
   nothing_written_yet();
   PipelineRequest request;
-  const auto warn = [](const std::string& w) { std::cerr << "paver: warning: " << printable(w) << "\n"; };
+  const auto warn = [](const std::string& w) { std::cerr << "paver: warning: " << printable_cut(w, kMaxMessageBytes) << "\n"; };
   request.on_warning = warn;
   set_up_design(args, request);
   Progress progress(args.quiet, stderr_is_terminal());

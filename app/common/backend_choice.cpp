@@ -1,6 +1,7 @@
 #include "backend_choice.h"
 
 #include "core/input_error.h"
+#include "core/printable.h"
 
 #include <cstdlib>
 
@@ -14,6 +15,9 @@ namespace paver::app {
 BackendChoice choose_backend(const std::string& backend, const std::string& device, int threads) {
   if (backend != "cpu" && backend != "vulkan" && backend != "auto")
     throw InputError("backend '" + backend + "': use cpu, vulkan or auto");
+  if (backend == "cpu" && !device.empty())
+    throw InputError("--device " + printable(device) + " names a Vulkan device, but --backend cpu solves on the CPU; "
+                     "drop --device, or use --backend vulkan");
   BackendChoice choice{cpu_solver_factory(threads), "cpu", ""};
   if (backend == "cpu") return choice;
   // A device the user named, by --device or $PAVER_VULKAN_DEVICE, must exist and is used, whatever

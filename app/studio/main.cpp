@@ -84,10 +84,10 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "paver-studio: Vulkan validation: %s\n", message.c_str());
     return runner ? runner->exit_code() : 0;
   } catch (const paver::InputError& e) {
-    std::fprintf(stderr, "paver-studio: error: %s\n", paver::printable(e.what()).c_str());
+    std::fprintf(stderr, "paver-studio: error: %s\n", paver::printable_cut(e.what(), paver::kMaxMessageBytes).c_str());
     return 2;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "paver-studio: %s\n", paver::printable(e.what()).c_str());
+    std::fprintf(stderr, "paver-studio: %s\n", paver::printable_cut(e.what(), paver::kMaxMessageBytes).c_str());
     return 1;
   }
 }

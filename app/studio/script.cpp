@@ -4,6 +4,7 @@
 #include "map/surface_charts.h"
 
 #include "core/input_error.h"
+#include "core/regular_file.h"
 #include "file_browser.h"
 #include "synthetic_input.h"
 #include "pattern/unit_cell.h"
@@ -12,6 +13,7 @@
 #include <charconv>
 #include <iterator>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <sstream>
 #include <type_traits>
@@ -303,11 +305,8 @@ std::vector<ScriptCommand> parse_script(std::string_view text, const std::string
 }
 
 std::vector<ScriptCommand> load_script(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open the script for reading");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_script(text.str(), path);
+  // A script is a few hundred lines; a pipe, a device or a huge file is refused before reading.
+  return parse_script(read_regular_file(path, std::uintmax_t(16) << 20, path, "script file"), path);
 }
 
 }  // namespace paver::studio

@@ -8,7 +8,17 @@ namespace paver {
 
 class InputError : public std::runtime_error {
 public:
-  explicit InputError(const std::string& message) : std::runtime_error(message) {}
+  // A NUL from a file or a flag is written \x00: what() is read up to the first NUL, which cut
+  // the message short there.
+  explicit InputError(const std::string& message) : std::runtime_error(without_nul(message)) {}
+
+private:
+  static std::string without_nul(const std::string& message) {
+    if (message.find('\0') == std::string::npos) return message;
+    std::string out;
+    for (const char c : message) out += c == '\0' ? std::string("\\x00") : std::string(1, c);
+    return out;
+  }
 };
 
 // An InputError about one of the design's keys found past the file's own validation (its unit cell,

@@ -3,6 +3,7 @@
 // escape sequences, ...) and DEL are written as \xNN, so a message is never cut at a NUL nor drives
 // the terminal. With `ascii_only`, bytes from 0x80 on too (file contents that may be binary);
 // without, UTF-8 names such as "bagué.obj" are kept.
+#include <cstddef>
 #include <string>
 #include <string_view>
 
@@ -23,6 +24,19 @@ inline std::string printable(std::string_view text, bool ascii_only = false) {
     }
   }
   return out;
+}
+
+// The longest message line the programs print: a value quoted from a file or a flag is cut to fit.
+inline constexpr std::size_t kMaxMessageBytes = 2000;
+
+// `text` made printable and, when longer than `max` bytes, cut in its middle ("/home/.../out"), so
+// that a 5,000-character path or a 60 MB value makes a line a terminal can show.
+inline std::string printable_cut(std::string_view text, std::size_t max = 160) {
+  std::string shown = printable(text);
+  if (shown.size() <= max) return shown;
+  const std::size_t keep = max / 2;
+  return shown.substr(0, keep) + "[... " + std::to_string(shown.size() - 2 * keep) + " bytes ...]" +
+         shown.substr(shown.size() - keep);
 }
 
 }  // namespace paver

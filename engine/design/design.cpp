@@ -114,6 +114,12 @@ void check_edits(const std::string& source, const ElementEdits& edits, const Ele
 }  // namespace
 
 void validate_design(const Design& design, const std::string& source) {
+  // Every pair of edge elements is checked for overlap on every cell edge: 10,000 of them took 35 s
+  // to be refused. No cell has use for more than a few per edge.
+  if (design.elements.edge.size() > kMaxEdgeElements)
+    fail(source, "'" + key_path(Key::elements_edge) + "' lists " + std::to_string(design.elements.edge.size()) +
+                     " edge elements; a design holds at most " + std::to_string(kMaxEdgeElements) +
+                     " (a few per cell edge): remove some");
   if (const std::optional<std::string> problem = key_range_problem(design)) fail(source, *problem);
   check_operators(source, design.pattern);
   check_custom_shape(source, design.elements);

@@ -69,6 +69,9 @@ struct BeadDesign {
   double scale = 1;                       // in (0, 2]: above 1 the bead reaches over the stones' girdles
 };
 
+// The most edge elements one design holds (validate_design refuses more).
+inline constexpr std::size_t kMaxEdgeElements = 64;
+
 struct ElementsDesign {
   VertexElementDesign vertex;
   std::vector<EdgeElementDesign> edge;

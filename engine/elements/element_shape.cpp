@@ -245,6 +245,14 @@ ShapeMesh custom_shape_from_soup(const PolygonSoup& soup, const std::string& sou
                       "model it with +Z as the surface normal");
   shape.positions.reserve(points.size());
   for (const glm::dvec3& p : points) shape.positions.emplace_back((p - centre) / width);
+  // A shape of flat slivers (every face a line or a point) makes elements of no size at all.
+  double area = 0;
+  for (const glm::ivec3& t : shape.triangles)
+    area += glm::length(glm::cross(shape.positions[size_t(t.y)] - shape.positions[size_t(t.x)],
+                                   shape.positions[size_t(t.z)] - shape.positions[size_t(t.x)])) / 2;
+  if (!(area > 1e-9))
+    shape_error(source, "its faces have no area (every triangle is degenerate: its corners are on one line); "
+                      "model the element as a solid or a surface with area");
   return shape;
 }
 

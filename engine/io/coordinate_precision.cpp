@@ -1,4 +1,5 @@
 #include "io/coordinate_precision.h"
+#include "core/number_text.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -13,11 +14,7 @@ namespace {
 constexpr double kFloat32Rounding = 0x1.0p-24;   // of the magnitude
 constexpr double kSixDigitsRounding = 5e-6;       // of the magnitude: the 6th significant digit, half
 
-std::string three_digits(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", value);
-  return text;
-}
+std::string three_digits(double value) { return significant_text(value); }
 
 double smallest_diameter(const Elements& elements) {
   return *std::min_element(elements.diameter.begin(), elements.diameter.end());

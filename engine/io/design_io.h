@@ -1,10 +1,11 @@
 #pragma once
-// design.json: the file form of Design. Version 2 (1 is read too: Design::kVersion). Unknown keys and out-of-range values are
+// design.json: the file form of Design. Version 3 (1 and 2 are read too: Design::kVersion). Unknown keys and out-of-range values are
 // errors that name the key ("pattern.operators[2].offset: ..."); missing keys take defaults.
 #include "design/design.h"
 
 #include <nlohmann/json_fwd.hpp>
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -21,6 +22,10 @@ nlohmann::json design_to_json(const Design& design);
 // Parses and reads a design file's text; `source` names it in errors. Syntax errors name the
 // line and column.
 Design design_from_text(std::string_view text, const std::string& source, std::vector<std::string>* notes = nullptr);
+
+// The largest design file read (a million edits is about 10 MiB); a larger file, a pipe or a device
+// is refused before reading.
+constexpr std::uintmax_t kMaxDesignFileBytes = std::uintmax_t(64) << 20;
 
 // Reads and validates a design file. Syntax errors name the line and column.
 Design load_design(const std::filesystem::path& path, std::vector<std::string>* notes = nullptr);

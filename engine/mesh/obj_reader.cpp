@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <utility>
 #include <unordered_set>
 
 namespace paver {
@@ -48,6 +49,22 @@ long long corner_vertex(std::string_view corner, const std::string& source, int 
   }
 }
 
+// The lines that start with "v" and "f" (after blanks), as a cheap first pass over the text.
+std::pair<long long, long long> count_vertex_and_face_lines(std::string_view text) {
+  long long vertices = 0, faces = 0;
+  std::size_t at = 0;
+  while (at < text.size()) {
+    while (at < text.size() && (text[at] == ' ' || text[at] == '\t')) ++at;
+    if (at + 1 < text.size() && (text[at + 1] == ' ' || text[at + 1] == '\t')) {
+      vertices += text[at] == 'v';
+      faces += text[at] == 'f';
+    }
+    const std::size_t end = text.find('\n', at);
+    at = end == std::string_view::npos ? text.size() : end + 1;
+  }
+  return {vertices, faces};
+}
+
 }  // namespace
 
 PolygonSoup read_obj(std::string_view text, const std::string& source) {
@@ -64,6 +81,12 @@ PolygonSoup read_obj(std::string_view text, const std::string& source) {
     fail(source, "is not a text OBJ file (it starts with binary data); export the surface as OBJ, or give the file "
                  "its format's extension (.ply, .stl)");
   PolygonSoup soup;
+  // Counted before any is stored, so that a file of millions of repeated lines is refused before
+  // its memory is taken, and the arrays are allocated once.
+  const auto [vertex_lines, face_lines] = count_vertex_and_face_lines(text);
+  check_mesh_counts(source, vertex_lines, face_lines);
+  soup.positions.reserve(std::size_t(vertex_lines));
+  soup.polygons.reserve(std::size_t(face_lines));
   CoordinateReader coordinates(source, "vertex", "vertices", 1);
   // Indices past the vertices defined so far: allowed, but checked once the file is read.
   struct ForwardReference {
@@ -98,6 +121,10 @@ PolygonSoup read_obj(std::string_view text, const std::string& source) {
       if (tokens.size() < 4)
         fail(source, at_line(number) + "a face needs at least 3 vertices but this one has " +
                          std::to_string(tokens.size() - 1));
+      if (tokens.size() - 1 > kMaxPolygonCorners)
+        fail(source, at_line(number) + "the face has " + std::to_string(tokens.size() - 1) +
+                         " corners; Paver reads faces of up to " + std::to_string(kMaxPolygonCorners) +
+                         ": triangulate it in the modeller");
       corners.clear();
       for (size_t i = 1; i < tokens.size(); ++i) {
         long long index = corner_vertex(tokens[i], source, number);

@@ -14,6 +14,16 @@
 
 namespace paver::mesh_detail {
 
+void check_mesh_counts(const std::string& source, long long vertices, long long faces) {
+  const auto millions = [](long long n) { return std::to_string(n / 1'000'000) + " million"; };
+  if (faces > kMaxMeshFaces)
+    fail(source, "has " + std::to_string(faces) + " faces; Paver reads surfaces of up to " + millions(kMaxMeshFaces) +
+                     " faces: decimate the mesh first (a pavement needs far fewer)");
+  if (vertices > kMaxMeshVertices)
+    fail(source, "has " + std::to_string(vertices) + " vertices; Paver reads surfaces of up to " +
+                     millions(kMaxMeshVertices) + " vertices: decimate the mesh first (a pavement needs far fewer)");
+}
+
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f'; }
 
 std::string_view trim(std::string_view s) {

@@ -9,6 +9,16 @@
 
 namespace paver::mesh_detail {
 
+// What a surface file may hold, checked before the memory for it is taken: a 10-million-triangle
+// scan reads; a file of 60 million repeated faces (10 GB) or one face of 100,000 corners (8 GB in
+// the map of its slivers) is refused at once.
+inline constexpr long long kMaxMeshFaces = 20'000'000;
+inline constexpr long long kMaxMeshVertices = 20'000'000;
+inline constexpr std::size_t kMaxPolygonCorners = 1024;
+
+// Throws InputError naming `source` when the counts pass the limits above.
+void check_mesh_counts(const std::string& source, long long vertices, long long faces);
+
 bool is_space(char c);
 std::string_view trim(std::string_view s);
 std::string lowercase(std::string_view s);

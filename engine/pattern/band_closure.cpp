@@ -1,4 +1,5 @@
 #include "pattern/band_closure.h"
+#include "core/number_text.h"
 
 #include "core/input_error.h"
 #include "pattern/design_cell.h"
@@ -55,13 +56,10 @@ BandClosure close_band(const SurfaceMap& map, const UnitCell& cell, const Placem
   // At least three steps around: fewer would join a point to itself or twice to another. Elements
   // that may not come closer (stones, or a gap at its limit) then need room for three.
   if (never_closer && steps < 3) {
-    char fit[32], most[32];
-    std::snprintf(fit, sizeof fit, "%.3g", steps);
-    std::snprintf(most, sizeof most, "%.4g", cell.spacing * steps / 3);
     throw InputError(std::string("rows ") + (closure.rows_across ? "across" : "along") +
-                     " the band need 3 lattice steps around it, and " + fit +
-                     " fit at this D: the elements cannot come closer to close it (that way D is at most " + most +
-                     ")");
+                     " the band need 3 lattice steps around it, and " + significant_text(steps) +
+                     " fit at this D: the elements cannot come closer to close it (that way D is at most " +
+                     significant_text(cell.spacing * steps / 3, 4) + ")");
   }
   closure.around = std::max(3, int(never_closer ? std::floor(steps) : std::round(steps)));
   closure.spacing = cell.spacing * around_length / (closure.around * glm::length(v));
@@ -69,10 +67,7 @@ BandClosure close_band(const SurfaceMap& map, const UnitCell& cell, const Placem
 }
 
 std::string describe_band_closure(const BandClosure& closure) {
-  char before[32], after[32];
-  std::snprintf(before, sizeof before, "%.4g", closure.spacing_before);
-  std::snprintf(after, sizeof after, "%.4g", closure.spacing);
-  return "D " + std::string(before) + " -> " + after + ": " + std::to_string(closure.around) +
+  return "D " + significant_text(closure.spacing_before, 4) + " -> " + significant_text(closure.spacing, 4) + ": " + std::to_string(closure.around) +
          " lattice steps close the band (rows " + (closure.rows_across ? "across" : "along") + " it)" +
          (closure.stones_kept ? "; the stones keep their size, the gap takes the change" : "") +
          band_rows_choice(closure);

@@ -1,4 +1,5 @@
 #include "pattern/design_overlap.h"
+#include "core/number_text.h"
 #include "design/design_keys.h"
 
 #include "core/contact_rule.h"
@@ -31,11 +32,7 @@ std::string of_cell(glm::ivec2 c) {
   return " of the cell at (" + std::to_string(c.x) + ", " + std::to_string(c.y) + ")";
 }
 
-std::string format(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.3g", v);
-  return b;
-}
+std::string format(double v) { return significant_text(v); }
 
 // With a gap: the largest that this layout keeps (elements that touch by design keep none), with
 // the check's own `rounding` allowance, rounded down to three digits so that it is one that fits.

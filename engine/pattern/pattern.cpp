@@ -1,4 +1,5 @@
 #include "pattern/pattern.h"
+#include "core/number_text.h"
 
 #include "core/input_error.h"
 
@@ -16,11 +17,7 @@ namespace {
 
 double map_area(const SurfaceMap& map) { return surface_area(map.mesh); }
 
-std::string format_number(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.3g", v);
-  return buffer;
-}
+std::string format_number(double v) { return significant_text(v); }
 
 }  // namespace
 

@@ -203,11 +203,7 @@ Pavement pave_lattice_or_adaptive(const SurfaceMap& map, Design design, const Pa
 
 // --- pattern.topology auto: the lattice, or the adaptive pattern where the lattice fails ---
 
-std::string three_significant(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", value);
-  return text;
-}
+std::string three_significant(double value) { return significant_text(value); }
 
 // Why a lattice pavement calls for the adaptive pattern: it tore or left bare patches (the
 // verdict's own bounds), which is what a map distorting the lattice does. Empty when it did not.

@@ -1,4 +1,5 @@
 #include "pipeline/map_surface.h"
+#include "core/number_text.h"
 
 #include "core/input_error.h"
 #include "core/stopwatch.h"
@@ -21,9 +22,7 @@ namespace {
 void check_surface_size(const std::filesystem::path& path, const SurfaceMesh& mesh) {
   const double size = bounding_box_diagonal(mesh);
   if (!(size >= kMinSurfaceSize && size <= kMaxSurfaceSize)) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%.3g", size);
-    throw InputError(path.string() + ": the surface is " + text +
+    throw InputError(path.string() + ": the surface is " + significant_text(size) +
                      " units across; the optimizer computes in single precision and handles 1e-6 to 1e9: rescale "
                      "the model (to millimetres, say) and try again");
   }

@@ -19,8 +19,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <optional>
 #include <utility>
 
@@ -35,12 +37,11 @@ using Warn = std::function<void(const std::string&)>;
 void refuse_large_output(const ElementMeshSize& size, const PipelineRequest& request, const SurfaceMesh& surface) {
   const double bytes = expected_mesh_bytes(size, request.formats, surface);
   if (bytes <= request.max_output_bytes) return;
-  char text[320];
-  std::snprintf(text, sizeof text,
-                "the mesh files would take about %.3g GB (%zu elements, %zu triangles); the limit is %.3g GB: "
-                "use a lighter element shape, a larger spacing or fewer elements, or raise the limit (--max-output-gb)",
-                bytes / 1e9, size.elements, size.faces, request.max_output_bytes / 1e9);
-  throw InputError(text);
+  throw InputError("the mesh files would take about " + significant_text(bytes / 1e9) + " GB (" +
+                   std::to_string(size.elements) + " elements, " + std::to_string(size.faces) +
+                   " triangles); the limit is " + significant_text(request.max_output_bytes / 1e9) +
+                   " GB: use a lighter element shape, a larger spacing or fewer elements, or raise the limit "
+                   "(--max-output-gb)");
 }
 
 // Runs `check`, naming the design file in front of a DesignError (the pattern's cell, its
@@ -91,9 +92,8 @@ std::string band_width_text(const SurfaceMap& map) {
   const double rims =
       0.5 * (loop_length(m.positions, m.boundary_loops[0]) + loop_length(m.positions, m.boundary_loops[1]));
   if (!(rims > 0)) return "";
-  char across[32];
-  std::snprintf(across, sizeof across, "%.3g", surface_area(m) / rims);  // an estimate: three digits
-  return "; the band is about " + std::string(across) + " across, its area over its rims' mean length";
+  // An estimate: three digits.
+  return "; the band is about " + significant_text(surface_area(m) / rims) + " across, its area over its rims' mean length";
 }
 
 // placement.fit_offset where no lattice is laid over the map to shift (a band paved seamlessly,
@@ -172,6 +172,10 @@ void try_other_cut_axes(const PipelineRequest& request, const Design& design, co
 // output would replace an input or a file of the user's. Returns the design's cell.
 UnitCell check_request(PipelineRequest& request, PipelineResult& result, const Warn& warn) {
   const Design& design = request.design;
+  // NaN passed every comparison and ended in "the limit is -nan GB" after the work.
+  if (!(request.max_output_bytes > 0))
+    throw InputError("the output size limit (--max-output-gb) is " + number_text(request.max_output_bytes / 1e9) +
+                     " GB; give a positive number");
   validate_design(design, request.design_source);
   UnitCell cell = naming_the_design_file(request, [&] { return check_design_cell(design); });
   result.info = RunInfo{request.surface_path.string(), request.design_source, design.pattern.spacing <= 0};
@@ -247,6 +251,31 @@ void refuse_large_output_early(PipelineRequest& request, const PipelineResult& r
   };
 }
 
+// Elements so small beside the part's coordinates that a mesh file's 32-bit numbers cannot draw
+// them (an element scale of 1e-300 wrote zero-size elements): refused once the pattern's D is
+// known, before the solves. 2^-17 of the largest coordinate leaves an element some 128 steps of
+// float32 across.
+void refuse_elements_too_small(PipelineRequest& request, const PipelineResult& result) {
+  double largest = 0;
+  for (const glm::dvec3& p : result.map->mesh.positions)
+    largest = std::max({largest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+  std::function<void(const Pattern&, const Design&)> caller_hook = std::move(request.pavement.on_pattern);
+  request.pavement.on_pattern = [largest, caller_hook](const Pattern& pattern, const Design& used) {
+    const double smallest_drawn = largest * std::ldexp(1.0, -17);
+    const auto refuse_below = [&](Key key, double scale) {
+      const double diameter = scale * used.pattern.spacing;
+      if (diameter >= smallest_drawn) return;
+      throw InputError(key_path(key) + " " + number_text(scale) + ": the elements would be " + number_text(diameter) +
+                       " surface units across (scale x D = " + number_text(used.pattern.spacing) +
+                       "), too small to draw in a mesh file beside coordinates of up to " + number_text(largest) +
+                       " (at least " + number_text(smallest_drawn) + " is needed); use a larger scale or spacing");
+    };
+    if (used.elements.vertex.enabled) refuse_below(Key::vertex_scale, used.elements.vertex.scale);
+    for (const EdgeElementDesign& edge : used.elements.edge) refuse_below(Key::edge_scale, edge.scale);
+    if (caller_hook) caller_hook(pattern, used);
+  };
+}
+
 // What the pavement did not use of the design, or did in a way the user should hear of.
 void warn_about_pavement(const Design& design, const PipelineResult& result, const Warn& warn) {
   for (const std::string& w : row_alignment_warnings(design.placement.align, result.pavement)) warn(w);
@@ -263,6 +292,10 @@ void warn_about_pavement(const Design& design, const PipelineResult& result, con
 void refuse_empty_pavement(const PipelineResult& result) {
   if (result.pavement.elements.size() > 0) return;
   const Pavement& p = result.pavement;
+  const long deleted = long(p.design.edits.deleted.size()) - long(p.deletions_missed);
+  if (deleted > 0)
+    throw InputError("no element is left: '" + key_path(Key::edits_deleted) + "' deletes every one of the " +
+                     count_text(deleted, "element", "elements") + " the pattern placed; delete fewer");
   const double margin = is_atlas(*result.map) ? 0 : p.design.elements.margin;  // none on a closed surface
   const std::string why = p.eliminated == 0 ? "was dropped"
                           : margin > 0      ? "crossed its boundary or the margin along it"
@@ -317,6 +350,7 @@ PipelineResult run_pipeline(PipelineRequest request) {
   check_stop();
   warn_about_surface(design, *result.map, warn);
   refuse_large_output_early(request, result, cell);
+  refuse_elements_too_small(request, result);
   result.pavement =
       naming_the_design_file(request, [&] { return make_pavement(*result.map, design, request.pavement); });
   check_stop();  // the solves ended early: a partial pavement is not a result

@@ -141,9 +141,10 @@ double mean_area_factor(const SurfaceMap& map, const SolverParams& params, const
     weight[t.x] += third, weight[t.y] += third, weight[t.z] += third;
   }
   double sum = 0, total = 0;
+  const GuidanceField field(guidance);
   for (size_t v = 0; v < weight.size() && v < map.curvature.size(); ++v) {
     // The painted field scales the spacing on top of the curvature's (solver/guidance_field.h).
-    const double painted = guidance.empty() || v >= map.uv.size() ? 1.0 : guidance_factor(guidance, map.uv[v]);
+    const double painted = guidance.empty() || v >= map.uv.size() ? 1.0 : field.factor(map.uv[v]);
     const double factor = (1 + params.c + params.m * normalised_curvature(map, map.curvature[v])) * painted;
     sum += weight[v] * factor * factor, total += weight[v];
   }

@@ -31,7 +31,11 @@ Verdict judge_pavement(const PavementQuality& q) {
     v.problems.push_back(format("the pattern is torn: 5%% of its springs are more than %.0f%% off their "
                                 "target (p95 deviation %.3g)",
                                 100 * kTornSpringDeviation, q.spring_deviation_p95));
-  if (has_bare_patches(q))
+  if (has_bare_patches(q) && !(q.fill > 0))
+    v.problems.push_back("the fill could not be measured: a strip half an element wide along the rim covers the "
+                         "surface's whole area (a rim that long is spiky or torn), so nothing shows the pavement "
+                         "covers it; look at the preview, and smooth the rim or use smaller elements");
+  else if (has_bare_patches(q))
     v.problems.push_back(format("bare patches: %.0f%% of the elements that the pattern's density puts on this "
                                 "surface (below %.0f%%)",
                                 100 * q.fill, 100 * kBareFill));

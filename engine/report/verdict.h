@@ -21,7 +21,8 @@ inline constexpr double kBareFill = 0.85;
 // The two problems a map that distorts the lattice causes; judge_pavement names them, and
 // topology auto (pipeline/pavement.h) and the CLI's hint act on them.
 inline bool pattern_is_torn(const PavementQuality& q) { return q.spring_deviation_p95 > kTornSpringDeviation; }
-inline bool has_bare_patches(const PavementQuality& q) { return q.fill > 0 && q.fill < kBareFill; }
+// A fill that could not be measured (0) is not a pass: the verdict can never say ok under kBareFill.
+inline bool has_bare_patches(const PavementQuality& q) { return q.elements > 0 && !(q.fill >= kBareFill); }
 
 struct Verdict {
   bool ok = true;

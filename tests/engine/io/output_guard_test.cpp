@@ -169,5 +169,30 @@ TEST(OutputFolderCheck, AcceptsAFolderToBeMadeWithoutMakingIt) {
   std::filesystem::remove_all(base);
 }
 
+// These were refused only after the whole pipeline had run, naming the staging folder.
+TEST(OutputFolderCheck, AFolderThatCanNeverBeMadeIsRefusedUpFront) {
+  namespace fs = std::filesystem;
+  const fs::path base = fs::temp_directory_path() / ("paver_check_unmakeable_" + std::to_string(::getpid()));
+  fs::remove_all(base);
+  fs::create_directories(base);
+  fs::create_symlink(base / "loop_b", base / "loop_a");
+  fs::create_symlink(base / "loop_a", base / "loop_b");
+  fs::create_symlink(base / "gone", base / "dangling");
+  const std::string long_name(300, 'n');
+  fs::path long_path = base;
+  for (int i = 0; i < 25; ++i) long_path /= std::string(200, 'p');
+  const std::vector<std::pair<fs::path, std::string>> cases = {
+      {base / "loop_a", "symbolic links"},          {base / "loop_a" / "below", "symbolic links"},
+      {base / "dangling", "leads nowhere"},         {base / long_name, "300 bytes long"},
+      {long_path, "bytes a path may have"}};
+  for (const auto& one : cases) {
+    const std::string message = error_of([&] { check_output_folder(one.first); });
+    EXPECT_TRUE(Contains(message, one.second)) << message;
+    EXPECT_LT(message.size(), 400u) << "the message names the problem, not 5,000 characters of path";
+  }
+  EXPECT_FALSE(fs::exists(base / "gone"));
+  fs::remove_all(base);
+}
+
 }  // namespace
 }  // namespace paver

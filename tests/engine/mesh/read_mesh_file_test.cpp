@@ -47,7 +47,7 @@ TEST_F(ReadMeshFileTest, TooLargeFileIsRefusedBeforeReading) {
 
 TEST_F(ReadMeshFileTest, DirectoryIsRefused) {
   fs::create_directories(dir_ / "mesh.obj");
-  EXPECT_TRUE(Contains(error_of([&] { read_mesh_file(dir_ / "mesh.obj", "mesh.obj"); }), "is a directory"));
+  EXPECT_TRUE(Contains(error_of([&] { read_mesh_file(dir_ / "mesh.obj", "mesh.obj"); }), "is a folder"));
 }
 
 // A pipe or a device has no length to check counts against (and /dev/zero never ends): refused by kind.

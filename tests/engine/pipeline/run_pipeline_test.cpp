@@ -12,6 +12,8 @@
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 #include <atomic>
@@ -198,15 +200,32 @@ TEST_F(RunPipeline, AnOpenCustomShapeIsWarnedAbout) {
 }
 
 // Element scale 1e-9 used to hang (boundary segments bucketed into billions of cells of a
-// billionth of the part; the proximity grid's indices overflowed). Now it paves like any other.
-TEST_F(RunPipeline, TinyElementsPaveLikeAnyOther) {
+// billionth of the part; the proximity grid's indices overflowed); 1e-300 then wrote elements of
+// no size. Elements too small for a mesh file's float32 beside the part's coordinates are refused
+// once D is known, before the solves; small ones that a file can draw pave like any other.
+TEST_F(RunPipeline, TinyElementsPaveAndElementsTooSmallToDrawAreRefused) {
+  for (const double scale : {1e-9, 1e-300}) {
+    PipelineRequest request = dome_request();
+    request.map = test::bundled_map("dome");
+    request.design.elements.vertex.scale = scale;
+    std::vector<std::string> stages;
+    request.pavement.on_stage = [&](const std::string& stage) { stages.push_back(stage); };
+    try {
+      run_pipeline(request);
+      ADD_FAILURE() << "scale " << scale << " was paved";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("elements.vertex.scale"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("too small to draw"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(std::count(stages.begin(), stages.end(), "optimize"), 0) << "refused before the solves";
+  }
   PipelineRequest request = dome_request();
   request.map = test::bundled_map("dome");
-  request.design.elements.vertex.scale = 1e-9;
+  request.design.elements.vertex.scale = 1e-3;
   const PipelineResult result = run_pipeline(request);
   EXPECT_GT(result.pavement.elements.size(), 100u);
   EXPECT_EQ(result.pavement.after.contact_violations, 0);
-  EXPECT_GT(result.pavement.after.neighbor_ratio.min, 1e8) << "elements a billionth of D apart by D";
+  EXPECT_GT(result.pavement.after.neighbor_ratio.min, 100) << "elements a thousandth of D apart by D";
 }
 
 // Runs `request`, which must be refused over its output limit (the error names --max-output-gb);

@@ -6,7 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
+#include <vector>
 
 namespace paver {
 namespace {
@@ -42,6 +44,25 @@ TEST(Verdict, CountsReadInTheRightNumber) {
   ASSERT_EQ(v.problems.size(), 2u);
   EXPECT_EQ(v.problems[0].rfind("2 pairs are closer", 0), 0u) << v.problems[0];
   EXPECT_EQ(v.problems[1], "3 elements cross the surface boundary or its margin of 0.5");
+}
+
+// A star-shaped disk (2,000 rim vertices) was "ok" with fill 0.000: a fill that could not be
+// measured passed the rule it fails. The verdict can never be ok under its own threshold.
+TEST(Verdict, NeverOkWithTheFillUnderItsThreshold) {
+  for (const double fill : {0.0, 1e-6, 0.5, kBareFill - 1e-9, std::nan("")}) {
+    PavementQuality q = sound();
+    q.fill = fill;
+    const Verdict v = judge_pavement(q);
+    EXPECT_FALSE(v.ok) << fill;
+    ASSERT_EQ(v.problems.size(), 1u) << fill;
+    EXPECT_NE(v.problems[0].find(fill > 0 ? "bare patches" : "could not be measured"), std::string::npos) << v.problems[0];
+  }
+  PavementQuality q = sound();
+  q.fill = kBareFill;
+  EXPECT_TRUE(judge_pavement(q).ok);
+  q.elements = 0;
+  q.fill = 0;
+  EXPECT_EQ(judge_pavement(q).problems, (std::vector<std::string>{"no elements were placed"}));
 }
 
 }  // namespace
