@@ -7,7 +7,6 @@
 
 #include "map/lifting.h"
 
-#include "io/output_set.h"
 #include "io/output_guard.h"
 #include "io/stl_unit_warning.h"
 #include "panels/panels.h"
@@ -361,11 +360,13 @@ void export_outputs(Studio& s, const fs::path& folder) {
   timings.insert(timings.end(), pavement.timings.begin(), pavement.timings.end());
   const RunInfo info{s.doc.surface.path.string(), s.doc.design_path.empty() ? "studio" : s.doc.design_path.string(),
                      s.doc.design.pattern.spacing <= 0};
-  write_run_outputs(folder, info, *s.doc.surface.map, pavement, timings,
-                    {.custom = custom_shape(s.doc), .formats = kStudioExportFormats});
+  const std::vector<std::string> untidy = write_run_outputs(
+      folder, info, *s.doc.surface.map, pavement, timings, {.custom = custom_shape(s.doc), .formats = kStudioExportFormats});
   s.ui.export_dir = folder.string();  // the File panel shows where the files went (a script's export too)
   const std::string stl_units = stl_unit_warning(pavement.design.units, {"elements.stl"});
-  report_status(s.doc, "exported to " + folder.string() + (stl_units.empty() ? "" : "; warning: " + stl_units));
+  std::string status = "exported to " + folder.string() + (stl_units.empty() ? "" : "; warning: " + stl_units);
+  for (const std::string& w : untidy) status += "; warning: " + w;
+  report_status(s.doc, status);
 }
 
 void cut_metal(Studio& s, const fs::path& folder, double thickness) {

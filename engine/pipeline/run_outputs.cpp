@@ -73,13 +73,13 @@ std::vector<std::string> run_output_names() {
   return names;
 }
 
-void write_run_outputs(const fs::path& folder, const RunInfo& info, const SurfaceMap& map, const Pavement& pavement,
-                       StageTimings& timings, const RunOutputOptions& options, const ExtraOutputs& extras) {
+std::vector<std::string> write_run_outputs(const fs::path& folder, const RunInfo& info, const SurfaceMap& map,
+                                           const Pavement& pavement, StageTimings& timings,
+                                           const RunOutputOptions& options, const ExtraOutputs& extras) {
   const auto check_stop = [&] {
     if (options.stop && options.stop->load()) throw Interrupted();
   };
   check_stop();
-  OutputSet::remove_stale_staging(folder);  // left by runs that were killed
   OutputSet set(folder, run_output_names());
   try {
     const Stopwatch watch;
@@ -97,6 +97,7 @@ void write_run_outputs(const fs::path& folder, const RunInfo& info, const Surfac
   }
   check_stop();
   set.publish("report.json");
+  return set.warnings();
 }
 
 nlohmann::json write_run_report(const fs::path& folder, const RunInfo& info, const SurfaceMap& map,

@@ -51,11 +51,12 @@ void write_run_files(const std::filesystem::path& folder, const SurfaceMap& map,
 // sections of their own to report.json), then write_run_report with every timing and
 // report.html from it (with the extras' preview.png, if any); then the set is published into `folder` at once. Throws
 // Interrupted, leaving `folder` as it was, when options.stop becomes true before publishing.
+// Returns what the publish could not tidy (OutputSet::warnings), for the caller to pass on.
 using ExtraOutputs =
     std::function<void(const std::filesystem::path& staging, StageTimings& timings, nlohmann::json& report_sections)>;
-void write_run_outputs(const std::filesystem::path& folder, const RunInfo& info, const SurfaceMap& map,
-                       const Pavement& pavement, StageTimings& timings, const RunOutputOptions& options = {},
-                       const ExtraOutputs& extras = {});
+std::vector<std::string> write_run_outputs(const std::filesystem::path& folder, const RunInfo& info,
+                                           const SurfaceMap& map, const Pavement& pavement, StageTimings& timings,
+                                           const RunOutputOptions& options = {}, const ExtraOutputs& extras = {});
 
 // Writes report.json (with `sections`, an object whose keys are added at its top level) and
 // returns its content.

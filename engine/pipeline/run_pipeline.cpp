@@ -326,9 +326,11 @@ void export_outputs(PipelineRequest& request, PipelineResult& result, const Warn
       !w.empty())
     warn(w);
   if (request.on_export) request.on_export();
-  write_run_outputs(*request.out, result.info, *result.map, result.pavement, result.timings,
-                    {.custom = result.custom_shape.get(), .formats = request.formats, .stop = request.pavement.stop},
-                    extras);
+  const std::vector<std::string> untidy =
+      write_run_outputs(*request.out, result.info, *result.map, result.pavement, result.timings,
+                        {.custom = result.custom_shape.get(), .formats = request.formats, .stop = request.pavement.stop},
+                        extras);
+  for (const std::string& w : untidy) warn(w);
 }
 
 }  // namespace
