@@ -1,12 +1,14 @@
 // Repairs, each reported in LoadedSurface::warnings: degenerate faces are dropped, polygons are
-// triangulated, unreferenced vertices are dropped, faces are reoriented consistently.
+// triangulated, unreferenced vertices are dropped, faces are reoriented consistently; vertices at
+// one position are joined where the file left faces apart, never where that would make a bowtie or
+// an edge of more than two faces (a good scan with two vertices at one point stays as it is), and
+// a bowtie vertex of the file's own is split, one copy per fan.
 // Several connected components: we KEEP THE LARGEST (by face count) and drop the others with a
 // warning. Stray specks and leftover fragments are common in scans and exports, and refusing the
 // whole file for them would be unhelpful; the warning says how much was dropped, so a user with
-// two real pieces notices. Components are joined through shared vertices, so pieces touching at a
-// single vertex stay one component and are refused as non-manifold there. The manifold,
-// orientation and boundary checks look at the kept component only.
-// Everything else (non-manifold, non-orientable, handles) is an InputError
+// two real pieces notices. Pieces that touched at a single vertex are two once it is split. The
+// manifold, orientation and boundary checks look at the kept component only.
+// Everything else (non-manifold edges, non-orientable, handles) is an InputError
 // that names the file, the place and the fix.
 #include "mesh/mesh_repair.h"
 #include "core/edge_key.h"
@@ -136,26 +138,138 @@ struct Components {
   long long dropped_faces = 0;
 };
 
-// Points every corner at the first vertex with its position (as the STL reader's Welder joins
-// corners: exactly equal, 0 and -0 alike); returns how many vertices that left unused. The
-// positions stay, so that messages keep naming the file's own vertex numbers; the unused ones are
-// dropped later, without a second warning.
-long long weld_equal_positions(const std::vector<glm::dvec3>& positions, std::vector<std::vector<int>>& polygons) {
+// For every vertex, the first vertex with exactly its position (0 and -0 alike, as the STL reader's
+// Welder joins corners): the vertex itself when it is the first.
+std::vector<int> first_at_same_position(const std::vector<glm::dvec3>& positions) {
   std::vector<int> order(positions.size());
   std::iota(order.begin(), order.end(), 0);
   const auto key = [&](int i) { return std::tie(positions[i].x, positions[i].y, positions[i].z); };
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return key(a) < key(b); });
   std::vector<int> first(positions.size());
-  long long welded = 0;
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    const bool same = k > 0 && key(order[k]) == key(order[k - 1]);
-    first[order[k]] = same ? first[order[k - 1]] : order[k];
-    welded += same;
+  for (std::size_t k = 0; k < order.size(); ++k)
+    first[order[k]] = k > 0 && key(order[k]) == key(order[k - 1]) ? first[order[k - 1]] : order[k];
+  return first;
+}
+
+// How the file's own vertices became the surface's: joined where the file left faces apart at one
+// position, kept apart where joining them would make an edge of more than two faces or a vertex
+// where fans of faces meet at a point, and split (one copy per fan) where the file's own vertex is
+// such a point (a bowtie).
+struct Welding {
+  long long joined = 0;     // file vertices that became another's
+  long long split = 0;      // file vertices that needed copies, one per fan but the first
+  int collapsed_faces = 0;  // faces whose corners all lay at one point (left out of the triangles)
+};
+
+// The vertex of every triangle corner: `file_triangles` (the file's own vertex numbers) joined by
+// position, then parted again where joining broke the surface (see Welding). Split copies are
+// appended to `positions`; faces whose corners join are removed from `file_triangles`.
+Welding weld(std::vector<glm::dvec3>& positions, std::vector<glm::ivec3>& file_triangles,
+             std::vector<glm::ivec3>& triangles) {
+  const std::vector<int> first = first_at_same_position(positions);
+  Welding welding;
+  // Two corners at one position give a face of no area, which the triangulation left out; three
+  // at one point pass its relative test (no edge to measure by), so they are left out here.
+  welding.collapsed_faces = int(std::erase_if(file_triangles, [&](const glm::ivec3& t) {
+    return first[t.x] == first[t.y] || first[t.y] == first[t.z] || first[t.x] == first[t.z];
+  }));
+  triangles = file_triangles;
+  for (glm::ivec3& t : triangles)
+    for (int c = 0; c < 3; ++c) t[c] = first[t[c]];
+  // An edge of more than two faces made by joining is undone at both ends, repeatedly (each round
+  // parts at least one join, so this ends).
+  std::vector<char> parted(positions.size(), 0);
+  for (bool changed = true; changed;) {
+    changed = false;
+    const Edges edges = collect_edges(triangles);
+    for (const auto& [begin, end] : edges.ranges) {
+      if (end - begin <= 2) continue;
+      for (std::size_t k = begin; k < end; ++k) {
+        const Side& side = edges.sides[k];
+        for (int c : {side.corner, (side.corner + 1) % 3}) {
+          const int file_vertex = file_triangles[side.triangle][c];
+          if (triangles[side.triangle][c] == file_vertex) continue;
+          parted[first[file_vertex]] = 1;
+        }
+      }
+    }
+    for (std::size_t f = 0; f < triangles.size(); ++f)
+      for (int c = 0; c < 3; ++c)
+        if (parted[triangles[f][c]] && triangles[f][c] != file_triangles[f][c]) {
+          triangles[f][c] = file_triangles[f][c];
+          changed = true;
+        }
   }
-  if (welded == 0) return 0;
-  for (std::vector<int>& polygon : polygons)
-    for (int& corner : polygon) corner = first[corner];
-  return welded;
+
+  // Fans: corners of one vertex joined across the edges of exactly two faces. A vertex on an edge of
+  // more than two faces is left alone: that edge is refused later, by name.
+  const Edges edges = collect_edges(triangles);
+  DisjointSets corners(triangles.size() * 3);
+  std::vector<char> on_bad_edge(positions.size(), 0);
+  for (const auto& [begin, end] : edges.ranges) {
+    const Side& s = edges.sides[begin];
+    if (end - begin > 2) {
+      on_bad_edge[triangles[s.triangle][s.corner]] = on_bad_edge[triangles[s.triangle][(s.corner + 1) % 3]] = 1;
+      continue;
+    }
+    if (end - begin != 2) continue;
+    const Side& r = edges.sides[begin + 1];
+    const glm::ivec3& ts = triangles[s.triangle];
+    const glm::ivec3& tr = triangles[r.triangle];
+    for (int vertex : {ts[s.corner], ts[(s.corner + 1) % 3]})
+      corners.unite(s.triangle * 3 + corner_of(ts, vertex), r.triangle * 3 + corner_of(tr, vertex));
+  }
+  // Each fan after a vertex's first takes a file vertex of its own where one of its corners had
+  // one that no fan took yet (a join undone), else a copy (a bowtie of the file's, split).
+  const std::size_t file_vertex_count = positions.size();
+  std::vector<int> fan_vertex(triangles.size() * 3, -1);  // per fan root
+  std::vector<char> taken(file_vertex_count, 0);
+  std::vector<char> copied(file_vertex_count, 0);
+  std::vector<int> fan_roots;
+  for (int corner = 0; corner < int(triangles.size() * 3); ++corner)
+    if (corners.find(corner) == corner) fan_roots.push_back(corner);
+  // First pass: the fan of a corner that kept its vertex number holds that vertex.
+  for (int corner = 0; corner < int(triangles.size() * 3); ++corner) {
+    const int vertex = triangles[corner / 3][corner % 3];
+    const int root = corners.find(corner);
+    if (fan_vertex[root] < 0 && !taken[vertex] && vertex == file_triangles[corner / 3][corner % 3]) {
+      fan_vertex[root] = vertex;
+      taken[vertex] = 1;
+    }
+  }
+  // Second: a fan of joined corners takes one of their own file vertices still free, else (in the
+  // order of the fans) the joined vertex when free, else a copy.
+  for (int corner = 0; corner < int(triangles.size() * 3); ++corner) {
+    const int root = corners.find(corner);
+    if (fan_vertex[root] >= 0) continue;
+    const int own = file_triangles[corner / 3][corner % 3];
+    if (!taken[own] && !on_bad_edge[triangles[corner / 3][corner % 3]]) {
+      fan_vertex[root] = own;
+      taken[own] = 1;
+    }
+  }
+  for (int root : fan_roots) {
+    if (fan_vertex[root] >= 0) continue;
+    const int vertex = triangles[root / 3][root % 3];
+    if (!taken[vertex] || on_bad_edge[vertex]) {
+      fan_vertex[root] = vertex;
+      taken[vertex] = 1;
+      continue;
+    }
+    fan_vertex[root] = int(positions.size());
+    positions.push_back(positions[vertex]);
+    if (!copied[vertex]) ++welding.split;
+    copied[vertex] = 1;
+  }
+  for (int corner = 0; corner < int(triangles.size() * 3); ++corner)
+    triangles[corner / 3][corner % 3] = fan_vertex[corners.find(corner)];
+  // Joins: the file's vertices that the triangles use, less the surface's own (copies aside).
+  std::vector<char> file_used(file_vertex_count, 0), used(positions.size(), 0);
+  for (const glm::ivec3& t : file_triangles) file_used[t.x] = file_used[t.y] = file_used[t.z] = 1;
+  for (const glm::ivec3& t : triangles) used[t.x] = used[t.y] = used[t.z] = 1;
+  const long long copies = static_cast<long long>(positions.size() - file_vertex_count);
+  welding.joined = std::count(file_used.begin(), file_used.end(), 1) - std::count(used.begin(), used.end(), 1) + copies;
+  return welding;
 }
 
 // Keeps the triangles of the largest component (through shared vertices; see the top comment).
@@ -318,26 +432,29 @@ LoadedSurface check_and_repair(std::vector<glm::dvec3> positions, const std::vec
   check_indices_and_coordinates(positions, given_polygons, source);
   // Corners at exactly the same position are one vertex, whatever the format (STL's reader did
   // this alone): an OBJ or PLY exported with every face's corners apart paved one triangle of 800,
-  // the "largest component", with the verdict ok.
-  std::vector<std::vector<int>> polygons = given_polygons;
-  const long long welded = weld_equal_positions(positions, polygons);
-  if (welded > 0)
-    loaded.warnings.push_back(source + ": joined " + count_of(welded, "vertex", "vertices") +
-                              " at exactly the position of another (faces exported apart)");
-
-  Triangulation triangulation = triangulate(positions, polygons, degenerate_area(positions, polygons));
-  std::vector<glm::ivec3>& triangles = triangulation.triangles;
-  loaded.dropped_degenerate_faces = triangulation.degenerate + collapsed_faces;
+  // the "largest component", with the verdict ok. But only where joining mends the surface: a good
+  // scan with two vertices at one position must not become a bowtie of our making.
+  Triangulation triangulation = triangulate(positions, given_polygons, degenerate_area(positions, given_polygons));
+  const std::size_t file_vertex_count = positions.size();
+  std::vector<glm::ivec3> triangles;
+  const Welding welding = weld(positions, triangulation.triangles, triangles);
+  loaded.dropped_degenerate_faces = triangulation.degenerate + welding.collapsed_faces + collapsed_faces;
   const std::string degenerate = count_of(loaded.dropped_degenerate_faces, "degenerate face", "degenerate faces");
   if (triangles.empty())
     fail(source,
          "contains no faces after dropping " + degenerate + " (zero area or repeated vertices); check the export");
+  if (welding.joined > 0)
+    loaded.warnings.push_back(source + ": joined " + count_of(welding.joined, "vertex", "vertices") +
+                              " at exactly the position of another (faces exported apart)");
+  if (welding.split > 0)
+    loaded.warnings.push_back(source + ": split " + count_of(welding.split, "vertex", "vertices") +
+                              " where separate fans of faces met at one point (a bowtie), one copy per fan");
   if (loaded.dropped_degenerate_faces > 0)
     loaded.warnings.push_back(source + ": dropped " + degenerate + " (zero area or repeated vertices)");
 
-  std::vector<char> used(positions.size(), 0);
-  for (const glm::ivec3& t : triangles) used[t.x] = used[t.y] = used[t.z] = 1;
-  const long long unreferenced = std::count(used.begin(), used.end(), 0) - welded;  // welded ones were said
+  std::vector<char> file_used(file_vertex_count, 0);
+  for (const glm::ivec3& t : triangulation.triangles) file_used[t.x] = file_used[t.y] = file_used[t.z] = 1;
+  const long long unreferenced = std::count(file_used.begin(), file_used.end(), 0);
   if (unreferenced > 0)
     loaded.warnings.push_back(source + ": dropped " +
                               count_of(unreferenced, "unreferenced vertex", "unreferenced vertices") +
@@ -368,7 +485,7 @@ LoadedSurface check_and_repair(std::vector<glm::dvec3> positions, const std::vec
   const std::vector<std::vector<int>> loops = boundary_loops(triangles, edges, positions);
 
   // Compact the vertices to those the kept faces use.
-  std::fill(used.begin(), used.end(), 0);
+  std::vector<char> used(positions.size(), 0);
   for (const glm::ivec3& t : triangles) used[t.x] = used[t.y] = used[t.z] = 1;
   std::vector<int> new_index(positions.size(), -1);
   SurfaceMesh& mesh = loaded.mesh;

@@ -664,14 +664,20 @@ TEST_F(MeshLoaderTest, NonManifoldEdgeIsRefused) {
   EXPECT_TRUE(Contains(message, "vertices 0 and 1"));
 }
 
-TEST_F(MeshLoaderTest, BowtieVertexIsRefused) {
-  const std::string message =
-      load_error(write("bowtie.obj", "v 0 0 0\nv 1 1 0\nv 1 -1 0\nv -1 1 0\nv -1 -1 0\nf 1 2 3\nf 1 4 5\n"));
-  EXPECT_TRUE(Contains(message, "1 non-manifold vertex"));
-  EXPECT_TRUE(Contains(message, "vertex 0"));
+// Two triangles touching at a vertex: split there, they are two pieces, and the larger is kept.
+TEST_F(MeshLoaderTest, ABowtieVertexIsSplitWithAWarning) {
+  const LoadedSurface loaded =
+      load_surface(write("bowtie.obj", "v 0 0 0\nv 1 1 0\nv 1 -1 0\nv -2 2 0\nv -2 -2 0\nf 1 2 3\nf 1 4 5\n"));
+  EXPECT_EQ(loaded.mesh.face_count(), 1);
+  EXPECT_EQ(loaded.dropped_components, 1);
+  ASSERT_GE(loaded.warnings.size(), 2u);
+  EXPECT_TRUE(Contains(loaded.warnings[0], "split 1 vertex where separate fans of faces met at one point"))
+      << loaded.warnings[0];
+  EXPECT_TRUE(Contains(loaded.warnings[1], "kept the largest")) << loaded.warnings[1];
+  expect_valid_surface(loaded.mesh);
 }
 
-TEST_F(MeshLoaderTest, ConesTouchingAtTheTipAreRefused) {
+TEST_F(MeshLoaderTest, ConesTouchingAtTheTipAreSplitThere) {
   std::vector<glm::dvec3> positions = {{0, 0, 0}};
   std::vector<std::vector<int>> faces;
   const int n = 6;
@@ -684,9 +690,73 @@ TEST_F(MeshLoaderTest, ConesTouchingAtTheTipAreRefused) {
     }
     for (int i = 0; i < n; ++i) faces.push_back({0, first + i, first + (i + 1) % n});
   }
-  const std::string message = error_of([&] { make_surface(positions, faces, "cones"); });
-  EXPECT_TRUE(Contains(message, "cones: has 1 non-manifold vertex"));
-  EXPECT_TRUE(Contains(message, "2 separate fans"));
+  const LoadedSurface loaded = make_surface(positions, faces, "cones");
+  EXPECT_EQ(loaded.mesh.face_count(), n) << "one cone, a disk, is kept";
+  EXPECT_EQ(loaded.mesh.boundary_loops.size(), 1u);
+  EXPECT_TRUE(Contains(loaded.warnings.at(0), "cones: split 1 vertex")) << loaded.warnings[0];
+  expect_valid_surface(loaded.mesh);
+}
+
+// A strip bent round until its outer corners meet at one point, the inner ones apart: a disk whose
+// rim touches itself. `shared_corner`: the file uses one vertex there (a bowtie of its own) rather
+// than two at one position (what scanners and CAD exports write).
+std::pair<std::vector<glm::dvec3>, std::vector<std::vector<int>>> strip_touching_itself(bool shared_corner) {
+  const int n = 8;
+  std::vector<glm::dvec3> positions;
+  std::vector<std::vector<int>> faces;
+  for (int i = 0; i <= n; ++i) {
+    const double outer = 2 * std::numbers::pi * i / n, inner = outer * (n - 0.5) / n;
+    positions.emplace_back(2 * std::cos(outer), 2 * std::sin(outer), 0);  // 2i
+    positions.emplace_back(std::cos(inner), std::sin(inner), 0);          // 2i + 1
+  }
+  positions[2 * n] = positions[0];  // exactly, not through the cosine's rounding
+  for (int i = 0; i < n; ++i) {
+    const int next_outer = shared_corner && i + 1 == n ? 0 : 2 * (i + 1);
+    faces.push_back({2 * i, next_outer, 2 * (i + 1) + 1, 2 * i + 1});
+  }
+  return {positions, faces};
+}
+
+TEST_F(MeshLoaderTest, TwoVerticesAtOnePointAreNotJoinedIntoABowtie) {
+  auto [positions, faces] = strip_touching_itself(false);
+  const LoadedSurface loaded = make_surface(positions, faces, "strip");
+  EXPECT_TRUE(loaded.warnings.empty()) << "a good surface needs no repair: " << loaded.warnings.at(0);
+  EXPECT_EQ(loaded.mesh.vertex_count(), int(positions.size()));
+  EXPECT_EQ(loaded.mesh.face_count(), 16);
+  EXPECT_EQ(loaded.mesh.boundary_loops.size(), 1u) << "a disk, its rim touching itself";
+  expect_valid_surface(loaded.mesh);
+}
+
+TEST_F(MeshLoaderTest, AFilesOwnBowtieVertexIsSplitIntoADisk) {
+  auto [positions, faces] = strip_touching_itself(true);
+  const LoadedSurface loaded = make_surface(positions, faces, "strip");
+  ASSERT_EQ(loaded.warnings.size(), 2u);  // the split, and the unused vertex at the corner
+  EXPECT_TRUE(Contains(loaded.warnings[0], "strip: split 1 vertex")) << loaded.warnings[0];
+  EXPECT_EQ(loaded.dropped_components, 0);
+  EXPECT_EQ(loaded.mesh.face_count(), 16);
+  EXPECT_EQ(loaded.mesh.vertex_count(), int(positions.size()));
+  EXPECT_EQ(loaded.mesh.boundary_loops.size(), 1u);
+  expect_valid_surface(loaded.mesh);
+}
+
+// Three squares exported apart along one line: joining them would put three faces on an edge, so
+// they stay apart (three pieces; the largest kept) rather than being refused as a fin.
+TEST_F(MeshLoaderTest, JoiningThatWouldMakeAFinIsUndone) {
+  std::vector<glm::dvec3> positions;
+  std::vector<std::vector<int>> faces;
+  const std::vector<glm::dvec3> out = {{1, 0, 0}, {0, 1, 0}, {-1, -1, 0}};
+  for (int sheet = 0; sheet < 3; ++sheet) {
+    const int first = int(positions.size());
+    const double length = sheet == 0 ? 2.0 : 1.0;
+    positions.insert(positions.end(),
+                     {{0, 0, 0}, {0, 0, 1}, glm::dvec3(0, 0, 1) + length * out[sheet], length * out[sheet]});
+    faces.push_back({first, first + 1, first + 2, first + 3});
+  }
+  const LoadedSurface loaded = make_surface(positions, faces, "fins");
+  EXPECT_EQ(loaded.mesh.face_count(), 2);
+  EXPECT_EQ(loaded.dropped_components, 2);
+  for (const std::string& warning : loaded.warnings) EXPECT_FALSE(Contains(warning, "joined")) << warning;
+  expect_valid_surface(loaded.mesh);
 }
 
 TEST_F(MeshLoaderTest, MoebiusStripIsRefused) {
