@@ -1,6 +1,7 @@
 #include "map/surface_charts.h"
 
 #include "core/input_error.h"
+#include "core/printable.h"
 #include "map/bijective_map.h"
 #include "map/map_quality.h"
 #include "mesh/mean_curvature.h"
@@ -134,34 +135,15 @@ SplitSurface split_along_plane(const SurfaceMesh& closed, glm::dvec3 normal, dou
 
 }  // namespace
 
-ChartCut cut_into_charts(const SurfaceMesh& closed, CutAxis axis, const std::string& source) {
+namespace {
+
+// The closed surface split across the plane dot(normal, p) = offset, each piece checked as an open
+// surface (check_and_repair, which throws InputError naming the chart when a piece has handles).
+ChartCut cut_across(const SurfaceMesh& closed, glm::dvec3 normal, double offset, const std::string& axis_name,
+                    const std::string& source) {
   ChartCut cut;
-  // The area centroid and, for the automatic axis, the principal axis of the area.
-  const int nf = closed.face_count();
-  std::vector<double> face_area(nf);
-  double area = 0;
-  glm::dvec3 centre(0);
-  for (int f = 0; f < nf; ++f) {
-    const glm::ivec3 t = closed.triangles[f];
-    face_area[f] = detail::triangle_area(closed.positions[t.x], closed.positions[t.y], closed.positions[t.z]);
-    area += face_area[f];
-    centre += face_area[f] * face_centroid(closed, t);
-  }
-  centre /= area;
-  if (axis == CutAxis::Auto) {
-    Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-    for (int f = 0; f < nf; ++f) {
-      const glm::dvec3 d = face_centroid(closed, closed.triangles[f]) - centre;
-      const Eigen::Vector3d e(d.x, d.y, d.z);
-      covariance += face_area[f] * e * e.transpose();
-    }
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
-    const Eigen::Vector3d longest = solver.eigenvectors().col(2);  // eigenvalues ascend
-    cut.normal = glm::normalize(glm::dvec3(longest.x(), longest.y(), longest.z()));
-  } else {
-    cut.normal = axis == CutAxis::X ? glm::dvec3(1, 0, 0) : axis == CutAxis::Y ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1);
-  }
-  cut.offset = glm::dot(cut.normal, centre);
+  cut.normal = normal;
+  cut.offset = offset;
   SplitSurface split = split_along_plane(closed, cut.normal, cut.offset);
   cut.surface = std::move(split.mesh);
   const SurfaceMesh& surface = cut.surface;
@@ -170,7 +152,7 @@ ChartCut cut_into_charts(const SurfaceMesh& closed, CutAxis axis, const std::str
   std::map<int, std::vector<int>> faces_of_piece;
   for (int f = 0; f < surface.face_count(); ++f) faces_of_piece[piece[f]].push_back(f);
   if (faces_of_piece.size() < 2)
-    throw InputError(source + ": the plane across its " + std::string(axis == CutAxis::Auto ? "longest axis" : "axis") +
+    throw InputError(source + ": the plane across its " + axis_name +
                      " leaves all of the closed surface on one side; choose another --cut axis");
 
   for (const auto& [first, faces] : faces_of_piece) {
@@ -189,14 +171,77 @@ ChartCut cut_into_charts(const SurfaceMesh& closed, CutAxis axis, const std::str
         polygon.push_back(index[v]);
       }
     }
-    const std::string chart_name =
-        source + " (chart " + std::to_string(cut.charts.size() + 1) + " of the closed surface cut across its " +
-        (axis == CutAxis::Auto ? "longest axis" : std::string(enum_name(axis)) + " axis") + ")";
+    const std::string chart_name = source + " (chart " + std::to_string(cut.charts.size() + 1) +
+                                   " of the closed surface cut across its " + axis_name + ")";
     LoadedSurface chart = check_and_repair(std::move(positions), polygons, chart_name, 0);
     cut.charts.push_back(std::move(chart.mesh));
     cut.vertex_of.push_back(std::move(vertex_of));
   }
   return cut;
+}
+
+}  // namespace
+
+long long closed_surface_handles(const SurfaceMesh& closed) {
+  return (2 - static_cast<long long>(closed.vertex_count()) + static_cast<long long>(closed.face_count()) / 2) / 2;
+}
+
+bool cuts_into_charts(const SurfaceMesh& closed, CutAxis axis) {
+  if (closed_surface_handles(closed) == 0) return true;
+  try {
+    cut_into_charts(closed, axis, "");
+    return true;
+  } catch (const InputError&) {
+    return false;
+  }
+}
+
+ChartCut cut_into_charts(const SurfaceMesh& closed, CutAxis axis, const std::string& source) {
+  // The area centroid and, for the automatic axis, the principal axes of the area.
+  const int nf = closed.face_count();
+  std::vector<double> face_area(nf);
+  double area = 0;
+  glm::dvec3 centre(0);
+  for (int f = 0; f < nf; ++f) {
+    const glm::ivec3 t = closed.triangles[f];
+    face_area[f] = detail::triangle_area(closed.positions[t.x], closed.positions[t.y], closed.positions[t.z]);
+    area += face_area[f];
+    centre += face_area[f] * face_centroid(closed, t);
+  }
+  centre /= area;
+  if (axis != CutAxis::Auto) {
+    const glm::dvec3 normal =
+        axis == CutAxis::X ? glm::dvec3(1, 0, 0) : axis == CutAxis::Y ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1);
+    return cut_across(closed, normal, glm::dot(normal, centre), std::string(enum_name(axis)) + " axis", source);
+  }
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for (int f = 0; f < nf; ++f) {
+    const glm::dvec3 d = face_centroid(closed, closed.triangles[f]) - centre;
+    const Eigen::Vector3d e(d.x, d.y, d.z);
+    covariance += face_area[f] * e * e.transpose();
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
+  const auto principal = [&](int k) {  // eigenvalues ascend: 2 is the longest axis, 0 the shortest
+    const Eigen::Vector3d a = solver.eigenvectors().col(k);
+    return glm::normalize(glm::dvec3(a.x(), a.y(), a.z()));
+  };
+  const long long handles = closed_surface_handles(closed);
+  if (handles == 0) return cut_across(closed, principal(2), glm::dot(principal(2), centre), "longest axis", source);
+  // A surface with handles (a solid ring, a pretzel) is cut where the plane runs through all of
+  // them: across its shortest axis first (a ring lying flat, cut into its upper and lower halves,
+  // two bands), then the others; the first plane whose charts have no handles is taken.
+  const char* names[3] = {"shortest axis", "middle axis", "longest axis"};
+  std::string last_error;
+  for (int k = 0; k < 3; ++k) {
+    try {
+      return cut_across(closed, principal(k), glm::dot(principal(k), centre), names[k], source);
+    } catch (const InputError& e) {
+      last_error = e.what();
+    }
+  }
+  throw InputError(source + ": has " + std::to_string(handles) + (handles == 1 ? " handle" : " handles") +
+                   " and no plane across its three axes cuts through all of them (" + printable_cut(last_error) +
+                   "); cut it into pieces without handles in the modelling tool");
 }
 
 std::optional<SurfaceMap> map_closed_surface(const SurfaceMesh& closed, CutAxis axis, const std::string& source,

@@ -31,10 +31,19 @@ struct ChartCut {
   double offset = 0;
 };
 
-// Cuts a closed surface (no boundary loop, no handle) through its area centroid, splitting the
-// faces the plane crosses so that the seams are straight, not stepped by whole faces. Throws
-// InputError, naming `source`, when a chart is not a surface Paver maps (it has handles).
+// Cuts a closed surface (no boundary loop) through its area centroid, splitting the faces the plane
+// crosses so that the seams are straight, not stepped by whole faces. Automatically: across its
+// longest axis, or, when it has handles (a solid ring), across the first of its shortest, middle
+// and longest axes that leaves charts without handles (a ring lying flat: its upper and lower
+// halves, two bands). Throws InputError, naming `source`, when a chart is not a surface Paver maps
+// (it has handles).
 ChartCut cut_into_charts(const SurfaceMesh& closed, CutAxis axis, const std::string& source);
+
+// The handles of a closed, connected, oriented surface: V - E + F = 2 - 2 * handles, E = 3F / 2.
+long long closed_surface_handles(const SurfaceMesh& closed);
+
+// Whether cutting across `axis` leaves charts Paver maps (always, for a surface without handles).
+bool cuts_into_charts(const SurfaceMesh& closed, CutAxis axis);
 
 // Maps each chart (bijective ARAP, as an open surface) and lays them out: the atlas. `progress`
 // gets (chart, charts) before each; `stop` is polled between charts. Empty when stopped.

@@ -500,12 +500,13 @@ LoadedSurface check_and_repair(std::vector<glm::dvec3> positions, const std::vec
                           static_cast<long long>(edges.ranges.size()) + static_cast<long long>(triangles.size());
   const long long loop_count = static_cast<long long>(loops.size());
   const long long handles = (2 - loop_count - euler) / 2;
-  if (handles != 0)
+  // A closed surface with handles (a solid ring) is cut into charts without them by the map stage.
+  if (handles != 0 && loop_count > 0)
     fail(source, "has " + count_of(handles, "handle", "handles") + " (V - E + F = " + std::to_string(euler) + " with " +
                      count_of(loop_count, "boundary loop", "boundary loops") + "; a surface without handles has " +
                      std::to_string(2 - loop_count) +
-                     "); Paver needs a surface without handles (a disk, a band, a surface with holes, or a closed "
-                     "one like a bead): cut through the handles or fill them" +
+                     "); Paver paves an open surface without handles (a disk, a band, a surface with holes) or a "
+                     "closed one (a bead, a solid ring): cut through the handles or fill them" +
                      note);
 
   mesh.triangles.reserve(triangles.size());

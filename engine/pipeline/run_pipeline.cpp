@@ -10,6 +10,7 @@
 #include "io/coordinate_precision.h"
 #include "io/element_export.h"
 #include "io/output_guard.h"
+#include "map/surface_charts.h"
 #include "io/output_set.h"
 #include "pattern/pattern.h"
 #include "pipeline/choices.h"
@@ -124,6 +125,9 @@ void try_other_cut_axes(const PipelineRequest& request, const Design& design, co
   const Stopwatch watch;
   const std::atomic<bool>* stop = request.pavement.stop;
   std::vector<std::shared_ptr<const SurfaceMap>> maps = {result.map};
+  // A surface with handles was cut automatically where the plane runs through all of them.
+  const std::string first_cut =
+      closed_surface_handles(closed) == 0 ? "the longest axis" : "the axis that cuts through its handles";
   std::vector<Candidate> candidates = {{"longest", [&](const Pavement*) { return std::move(result.pavement); }, {}}};
   for (const CutAxis axis : {CutAxis::X, CutAxis::Y, CutAxis::Z}) {
     candidates.push_back({std::string(enum_name(axis)),
@@ -136,7 +140,8 @@ void try_other_cut_axes(const PipelineRequest& request, const Design& design, co
                             cut.placement.cut_axis = axis;
                             return make_pavement(*map, cut, request.pavement);
                           },
-                          {}});
+                          // A ring's charts across some axes keep its handle: not a pavement.
+                          [&closed, axis](const Pavement&) { return cuts_into_charts(closed, axis); }});
     maps.emplace_back();
   }
   const double first_ms = [&] {
@@ -152,10 +157,10 @@ void try_other_cut_axes(const PipelineRequest& request, const Design& design, co
   result.map = maps[std::size_t(choice.kept_index)];
   const auto rounded = [](double fill) { return number_text(std::round(fill * 1000) / 1000); };
   if (choice.kept_index == 0) {
-    result.cut_axis_choice = "the longest axis: no other cut did better";
+    result.cut_axis_choice = first_cut + ": no other cut did better";
   } else {
     const std::string axis = candidates[std::size_t(choice.kept_index)].name;
-    result.cut_axis_choice = axis + ": cut across the longest axis, the pavement had " +
+    result.cut_axis_choice = axis + ": cut across " + first_cut + ", the pavement had " +
                              count_text(first_problems, "problem", "problems") + " (fill " + rounded(first_fill) +
                              "); across " + axis + ", " +
                              count_text(judge_pavement(result.pavement.after).problems.size(), "problem", "problems") +

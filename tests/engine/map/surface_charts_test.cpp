@@ -17,6 +17,10 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
+#include <map>
+#include <numbers>
+#include <optional>
+#include <cmath>
 #include <string>
 #include <tuple>
 
@@ -104,23 +108,92 @@ TEST(SurfaceCharts, TheAtlasIsBijectiveAndKeepsTheClosedSurfacesArea) {
   EXPECT_NEAR(surface_area(closed_map("bead").mesh), surface_area(bead), 1e-9 * surface_area(bead));
 }
 
-TEST(SurfaceCharts, AClosedSurfaceWithAHandleIsRefusedSayingHowToCutIt) {
-  const SurfaceMesh torus = test::grid_surface(24, 12, [](double u, double v) {
-    const double a = 2 * std::numbers::pi * u, b = 2 * std::numbers::pi * v;
-    return glm::dvec3((3 + std::cos(b)) * std::cos(a), (3 + std::cos(b)) * std::sin(a), std::sin(b));
-  });
-  // grid_surface leaves the seams open; weld them into a closed torus.
+// A closed torus (a solid ring's surface, genus 1), 24 x 12 quads around its two circles.
+std::pair<std::vector<glm::dvec3>, std::vector<std::vector<int>>> closed_torus() {
+  constexpr int kU = 24, kV = 12;
+  std::vector<glm::dvec3> positions;
+  for (int j = 0; j < kV; ++j)
+    for (int i = 0; i < kU; ++i) {
+      const double a = 2 * std::numbers::pi * i / kU, b = 2 * std::numbers::pi * j / kV;
+      positions.emplace_back((3 + std::cos(b)) * std::cos(a), (3 + std::cos(b)) * std::sin(a), std::sin(b));
+    }
+  const auto index = [](int i, int j) { return (j % kV) * kU + i % kU; };
   std::vector<std::vector<int>> faces;
-  const auto weld = [](int i) {
-    const int column = i % 25, row = i / 25;
-    return (row % 12) * 24 + column % 24;
+  for (int j = 0; j < kV; ++j)
+    for (int i = 0; i < kU; ++i) faces.push_back({index(i, j), index(i + 1, j), index(i + 1, j + 1), index(i, j + 1)});
+  return {positions, faces};
+}
+
+// A closed plate `holes` cells apart pierced `holes` times (a pretzel, genus `holes`): a grid of unit
+// cells 3 high and 2 * holes + 1 long with every other middle cell open, its top and bottom
+// 0.8 apart and walls along every rim.
+std::pair<std::vector<glm::dvec3>, std::vector<std::vector<int>>> pierced_plate(int holes) {
+  const int nx = 2 * holes + 1, ny = 3, steps = 4;  // each unit cell in 4 x 4 quads
+  const auto open = [&](int cx, int cy) { return cy == 1 && cx % 2 == 1; };
+  std::vector<glm::dvec3> positions;
+  std::map<std::tuple<int, int, int>, int> vertex;  // (x, y, layer) on the grid of quads
+  const auto at = [&](int x, int y, int layer) {
+    const auto key = std::make_tuple(x, y, layer);
+    if (const auto found = vertex.find(key); found != vertex.end()) return found->second;
+    positions.emplace_back(double(x) / steps, double(y) / steps, layer == 0 ? 0.4 : -0.4);
+    return vertex[key] = int(positions.size()) - 1;
   };
-  std::vector<glm::dvec3> positions(24 * 12);
-  for (int i = 0; i < torus.vertex_count(); ++i) positions[weld(i)] = torus.positions[i];
-  for (const glm::ivec3& t : torus.triangles) faces.push_back({weld(t.x), weld(t.y), weld(t.z)});
+  std::vector<std::vector<int>> faces;
+  const auto solid = [&](int x, int y) {  // the quad at (x, y), in quads
+    return x >= 0 && y >= 0 && x < nx * steps && y < ny * steps && !open(x / steps, y / steps);
+  };
+  for (int y = 0; y < ny * steps; ++y)
+    for (int x = 0; x < nx * steps; ++x) {
+      if (!solid(x, y)) continue;
+      faces.push_back({at(x, y, 0), at(x + 1, y, 0), at(x + 1, y + 1, 0), at(x, y + 1, 0)});
+      faces.push_back({at(x, y + 1, 1), at(x + 1, y + 1, 1), at(x + 1, y, 1), at(x, y, 1)});
+      // Walls where the neighbour is missing, facing it.
+      if (!solid(x, y - 1)) faces.push_back({at(x, y, 1), at(x + 1, y, 1), at(x + 1, y, 0), at(x, y, 0)});
+      if (!solid(x, y + 1)) faces.push_back({at(x + 1, y + 1, 1), at(x, y + 1, 1), at(x, y + 1, 0), at(x + 1, y + 1, 0)});
+      if (!solid(x - 1, y)) faces.push_back({at(x, y + 1, 1), at(x, y, 1), at(x, y, 0), at(x, y + 1, 0)});
+      if (!solid(x + 1, y)) faces.push_back({at(x + 1, y, 1), at(x + 1, y + 1, 1), at(x + 1, y + 1, 0), at(x + 1, y, 0)});
+    }
+  return {positions, faces};
+}
+
+// A solid ring and pretzels of 2 to 4 holes are cut where the plane runs through every handle
+// (across their shortest axis: the upper and lower halves), mapped bijectively and paved with no
+// contact across the seams.
+TEST(SurfaceCharts, ClosedSurfacesWithHandlesAreCutIntoChartsWithoutAndPaved) {
+  std::vector<std::tuple<std::string, long long, std::vector<glm::dvec3>, std::vector<std::vector<int>>>> cases;
+  auto [torus_positions, torus_faces] = closed_torus();
+  cases.emplace_back("torus", 1, torus_positions, torus_faces);
+  for (int holes = 2; holes <= 4; ++holes) {
+    auto [positions, faces] = pierced_plate(holes);
+    cases.emplace_back("plate with " + std::to_string(holes) + " holes", holes, positions, faces);
+  }
+  for (const auto& [name, genus, positions, faces] : cases) {
+    const SurfaceMesh closed = make_surface(positions, faces, name).mesh;
+    ASSERT_TRUE(closed.boundary_loops.empty()) << name;
+    EXPECT_EQ(closed_surface_handles(closed), genus) << name;
+    const ChartCut cut = cut_into_charts(closed, CutAxis::Auto, name);
+    EXPECT_EQ(cut.charts.size(), 2u) << name << ": the upper half and the lower";
+    EXPECT_NEAR(std::abs(cut.normal.z), 1.0, 1e-9) << name << ": across the shortest axis";
+    for (const SurfaceMesh& chart : cut.charts)
+      EXPECT_EQ(chart.boundary_loops.size(), std::size_t(genus + 1)) << name << ": a disk with a hole per handle";
+    const std::optional<SurfaceMap> map = map_closed_surface(closed, CutAxis::Auto, name);
+    ASSERT_TRUE(map) << name;
+    EXPECT_TRUE(map->parameterization.quality.bijective()) << name;
+    Design design;
+    design.pattern.spacing = default_spacing(map->mesh, design.pattern.tessellation);
+    const Pavement p = make_pavement(*map, design);
+    EXPECT_GT(p.elements.size(), 50u) << name;
+    const test::AllPairs truth = test::all_pairs(p.elements, design.elements.gap);
+    EXPECT_EQ(truth.violations, 0) << name << ": smallest clearance " << truth.min_clearance;
+    EXPECT_EQ(p.after.boundary_crossings, 0) << name;
+  }
+  // Across the long axis the plate's halves keep a hole each whole: a handle, refused by name.
+  auto [positions, faces] = pierced_plate(2);
+  const SurfaceMesh plate = make_surface(positions, faces, "plate").mesh;
+  EXPECT_FALSE(cuts_into_charts(plate, CutAxis::X));
   try {
-    make_surface(positions, faces, "torus");
-    FAIL() << "a closed torus was accepted";
+    cut_into_charts(plate, CutAxis::X, "plate");
+    FAIL() << "a chart with a handle was accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("1 handle"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("cut through the handles"), std::string::npos) << e.what();
