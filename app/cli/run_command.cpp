@@ -50,6 +50,7 @@ struct KeyFlag {
 
 struct RunArgs {
   std::string surface;
+  std::vector<std::string> region;
   std::string design;
   std::deque<KeyFlag> keys;  // a deque: CLI11 holds pointers into it
   std::optional<double> stone;
@@ -153,6 +154,9 @@ void warn_about_flags(const RunArgs& args, const Design& design, const std::func
 // The request's design and its sources: the file, the flags over it, checked together.
 void set_up_design(const RunArgs& args, PipelineRequest& request) {
   request.surface_path = args.surface;
+  for (const std::string& name : args.region)
+    if (name.empty()) throw InputError("--region has an empty name; give the OBJ group names, comma-separated");
+  request.surface_region = args.region;
   request.design_source = args.design.empty() ? "defaults" : args.design;
   request.design_path = args.design;
   Design& design = request.design;
@@ -331,6 +335,10 @@ std::function<int()> add_run_command(CLI::App& app) {
                   "Stone diameter, surface units: the vertex elements become round brilliants of this size, with "
                   "D = stone + gap so that neighbouring stones are exactly the gap apart (instead of --spacing)");
   cmd->add_option("--out", args->out, "Output folder")->capture_default_str();
+  cmd->add_option("--region", args->region,
+                  "Pave only these named parts of the surface (OBJ 'g' or 'o' names, comma-separated), their borders "
+                  "as rims: a solid ring's outer face")
+      ->delimiter(',');
   cmd->add_flag("--no-optimize", args->no_optimize, "Skip the section 5 optimizer (initial pavement only)");
   cmd->add_flag("--no-postprocess", args->no_postprocess, "Skip boundary filling and elimination (5.4)");
   cmd->add_option("--threads", args->threads, "Solver threads (0 = all cores; no more than the cores are used)")->check(CLI::Range(0, 1024));

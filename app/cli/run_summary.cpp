@@ -219,7 +219,9 @@ void print_times(const StageTimings& timings) {
 bool print_run_summary(const PipelineResult& result, const SummaryContext& context) {
   const Pavement& pavement = result.pavement;
   const bool ok = print_verdict(result);
-  print_surface_and_map(*result.map, context.surface);
+  std::string region;  // the parts paved, as --region named them
+  for (const std::string& name : result.info.region) region += (region.empty() ? " (region " : ",") + name;
+  print_surface_and_map(*result.map, context.surface + (region.empty() ? "" : region + ")"));
   print_pattern(pavement, result.counts);
   print_choices(result);
   print_optimize(pavement, context);

@@ -17,7 +17,10 @@ struct LoadedSurface {
   int dropped_components = 0;
 };
 
-LoadedSurface load_surface(const std::filesystem::path& path);
+// `region`: when given, only the faces of the OBJ parts (`g` or `o` lines) of these names are
+// kept, their borders the surface's rims; a name the file does not have is an InputError that
+// lists the names it has.
+LoadedSurface load_surface(const std::filesystem::path& path, const std::vector<std::string>& region = {});
 
 // The same checks and repairs for a mesh built in memory (vertices + polygon faces).
 // `source` names it in error messages.

@@ -96,6 +96,11 @@ PolygonSoup read_obj(std::string_view text, const std::string& source) {
   std::vector<ForwardReference> forward;
   std::vector<std::string_view> tokens;
   std::vector<int> corners;
+  // The names in force (`o` then `g`), and their set's index once a face has used them.
+  std::string object_name;
+  std::vector<std::string> group_names;
+  int group_set = -1;
+  bool names_changed = false;
 
   LineReader reader(text);
   std::string_view line;
@@ -117,6 +122,10 @@ PolygonSoup read_obj(std::string_view text, const std::string& source) {
       double value = 0.0;
       if (tokens.size() < 3 || !parse_double(tokens[1], value) || !parse_double(tokens[2], value))
         fail(source, at_line(number) + "a 'vt' line needs 2 or 3 numbers (u v [w]); fix or delete the line");
+    } else if (keyword == "g" || keyword == "o") {
+      if (keyword == "o") object_name = tokens.size() > 1 ? std::string(tokens[1]) : std::string();
+      else group_names.assign(tokens.begin() + 1, tokens.end());
+      names_changed = true;
     } else if (keyword == "f") {
       if (tokens.size() < 4)
         fail(source, at_line(number) + "a face needs at least 3 vertices but this one has " +
@@ -142,8 +151,29 @@ PolygonSoup read_obj(std::string_view text, const std::string& source) {
         corners.push_back(int(index - 1));
       }
       remove_repeated_corners(corners);
-      if (corners.size() < 3) ++soup.collapsed_faces;
-      else soup.polygons.push_back(corners);
+      if (corners.size() < 3) {
+        ++soup.collapsed_faces;
+        continue;
+      }
+      if (names_changed) {
+        names_changed = false;
+        std::vector<std::string> names;
+        if (!object_name.empty()) names.push_back(object_name);
+        for (const std::string& name : group_names)
+          if (name != "default" && std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+        if (names.empty()) {
+          group_set = -1;
+        } else {
+          const auto known = std::find(soup.group_sets.begin(), soup.group_sets.end(), names);
+          group_set = int(known - soup.group_sets.begin());
+          if (known == soup.group_sets.end()) soup.group_sets.push_back(std::move(names));
+        }
+      }
+      // Faces before the first name belong to none; the list is kept only once a name appears.
+      if (group_set >= 0 && soup.polygon_group.size() < soup.polygons.size())
+        soup.polygon_group.resize(soup.polygons.size(), -1);
+      if (!soup.group_sets.empty()) soup.polygon_group.push_back(group_set);
+      soup.polygons.push_back(corners);
     }
   }
   const long long vertices = static_cast<long long>(soup.positions.size());

@@ -4,6 +4,7 @@
 // makes the SurfaceMesh Paver paves out of it.
 #include <glm/vec3.hpp>
 
+#include <string>
 #include <vector>
 
 namespace paver {
@@ -16,6 +17,11 @@ struct PolygonSoup {
   // Faces the reader left out because fewer than 3 of their corners are distinct (an OBJ face
   // repeating a vertex, an STL facet whose corners weld together); reported as degenerate.
   int collapsed_faces = 0;
+  // The named parts an OBJ's `g` and `o` lines put faces in (`--region` paves some of them): per
+  // polygon an index into `group_sets`, each the names in force at that face; -1 for none. Empty
+  // when the file names no parts.
+  std::vector<std::vector<std::string>> group_sets;
+  std::vector<int> polygon_group;
 };
 
 }  // namespace paver

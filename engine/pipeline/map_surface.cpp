@@ -89,8 +89,9 @@ std::shared_ptr<const SurfaceMap> map_closed_mesh(const SurfaceMesh& closed, con
   }
 }
 
-LoadedSurface load_checked_surface(const std::filesystem::path& path, const PipelineWarning& warn) {
-  LoadedSurface loaded = load_surface(path);
+LoadedSurface load_checked_surface(const std::filesystem::path& path, const PipelineWarning& warn,
+                                   const std::vector<std::string>& region) {
+  LoadedSurface loaded = load_surface(path, region);
   if (warn)
     for (const std::string& w : loaded.warnings) warn(w);
   check_surface_size(path, loaded.mesh);
@@ -100,7 +101,8 @@ LoadedSurface load_checked_surface(const std::filesystem::path& path, const Pipe
 
 MappedSurface map_surface_file(const std::filesystem::path& path, const PipelineProgress& progress,
                                const StopRequested& stop, const PipelineWarning& warn, CutAxis cut,
-                               const std::function<void(const SurfaceMesh&)>& check_loaded) {
+                               const std::function<void(const SurfaceMesh&)>& check_loaded,
+                               const std::vector<std::string>& region) {
   const auto report = [&](float fraction, const std::string& stage) {
     if (progress) progress(fraction, stage);
   };
@@ -108,7 +110,7 @@ MappedSurface map_surface_file(const std::filesystem::path& path, const Pipeline
   MappedSurface out;
   Stopwatch watch;
   report(0.0f, "loading");
-  LoadedSurface loaded = load_checked_surface(path, warn);
+  LoadedSurface loaded = load_checked_surface(path, warn, region);
   out.warnings = std::move(loaded.warnings);
   out.timings.emplace_back("load", watch.milliseconds());
   if (check_loaded) check_loaded(loaded.mesh);

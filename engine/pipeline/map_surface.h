@@ -49,7 +49,9 @@ std::shared_ptr<const SurfaceMap> map_closed_mesh(const SurfaceMesh& closed, con
 
 // Stage 1: the surface loaded (mesh/mesh_loader.h), its repairs told to `warn`, and checked
 // (size, a stray vertex): what every command that reads a surface reads it through.
-LoadedSurface load_checked_surface(const std::filesystem::path& path, const PipelineWarning& warn = {});
+// `region`: the named parts to keep (mesh/mesh_loader.h), all when empty.
+LoadedSurface load_checked_surface(const std::filesystem::path& path, const PipelineWarning& warn = {},
+                                   const std::vector<std::string>& region = {});
 
 // Throws InputError for a file Paver cannot pave (naming the file), std::runtime_error naming the
 // file when the map fails.
@@ -59,6 +61,7 @@ LoadedSurface load_checked_surface(const std::filesystem::path& path, const Pipe
 MappedSurface map_surface_file(const std::filesystem::path& path, const PipelineProgress& progress = {},
                                const StopRequested& stop = {}, const PipelineWarning& warn = {},
                                CutAxis cut = CutAxis::Auto,
-                               const std::function<void(const SurfaceMesh&)>& check_loaded = {});
+                               const std::function<void(const SurfaceMesh&)>& check_loaded = {},
+                               const std::vector<std::string>& region = {});
 
 }  // namespace paver

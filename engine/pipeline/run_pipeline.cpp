@@ -183,7 +183,8 @@ UnitCell check_request(PipelineRequest& request, PipelineResult& result, const W
                      " GB; give a positive number");
   validate_design(design, request.design_source);
   UnitCell cell = naming_the_design_file(request, [&] { return check_design_cell(design); });
-  result.info = RunInfo{request.surface_path.string(), request.design_source, design.pattern.spacing <= 0};
+  result.info = RunInfo{request.surface_path.string(), request.design_source, design.pattern.spacing <= 0,
+                        request.surface_region};
   if (uses_custom_shape(design.elements)) {
     result.custom_shape = request.custom_shape
                               ? std::move(request.custom_shape)
@@ -217,7 +218,7 @@ std::shared_ptr<const SurfaceMesh> map_the_surface(PipelineRequest& request, Pip
   };
   MappedSurface mapped = map_surface_file(
       request.surface_path, request.progress, [&] { return stop && stop->load(); }, request.on_warning,
-      design.placement.cut_axis, refuse_tiny_spacing);
+      design.placement.cut_axis, refuse_tiny_spacing, request.surface_region);
   result.map = std::move(mapped.map);
   result.warnings = std::move(mapped.warnings);
   result.timings = std::move(mapped.timings);

@@ -33,6 +33,8 @@ struct PipelineRequest {
   // once per surface and re-runs the rest on every design change; then `map_timings` says how
   // long that took, for the report).
   std::filesystem::path surface_path;
+  // Only these named parts of the surface file (OBJ groups, `--region`), their borders its rims.
+  std::vector<std::string> surface_region;
   std::shared_ptr<const SurfaceMap> map;
   StageTimings map_timings;
 

@@ -95,6 +95,7 @@ nlohmann::json band_json(const SurfaceMap& map, const Pavement& pavement) {
 nlohmann::json surface_json(const RunInfo& info, const SurfaceMap& map) {
   const bool atlas = is_atlas(map);
   return {{"path", info.surface_path},
+          {"region", info.region},
           {"vertices", atlas ? map.closed_surface_vertices : map.mesh.vertex_count()},
           {"faces", atlas ? map.closed_surface_faces : map.mesh.face_count()},
           {"boundary_vertices", atlas ? 0 : boundary_vertex_count(map.mesh)},

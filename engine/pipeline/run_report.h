@@ -6,6 +6,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include <string>
+#include <vector>
 
 namespace paver {
 
@@ -13,6 +14,7 @@ struct RunInfo {
   std::string surface_path;
   std::string design_source;         // design file, or "defaults"
   bool spacing_derived = false;      // spacing came from the surface size
+  std::vector<std::string> region;   // the surface's parts paved (--region), all when empty
 };
 
 // What the CLI's summary and the report count.

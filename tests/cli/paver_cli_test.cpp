@@ -1,6 +1,7 @@
 // End-to-end tests of the `paver` command-line tool (app/cli): the real binary is run on the
 // bundled surfaces, and its exit codes, messages and output files are checked.
 #include "cli_runner.h"
+#include "test_meshes.h"
 
 #include <gtest/gtest.h>
 
@@ -165,6 +166,34 @@ TEST_F(PaverRun, APlateWithTwoHolesIsPavedAroundThem) {
       EXPECT_GE(std::hypot(dx, dy), 0.5 * row.diameter - 1e-9)
           << "a stone at (" << row.p[0] << ", " << row.p[1] << ") reaches into the hole at x = " << hole_x;
     }
+}
+
+// A solid ring's outer face alone (--region outer): paved as a band, every stone on the outer
+// cylinder facing out, none past its rims; checked from placements.csv against the ring's own
+// dimensions, not the engine's map.
+TEST_F(PaverRun, ARegionPavesASolidRingsOuterFaceOnly) {
+  const fs::path ring = dir() / "solid_ring.obj";
+  write_file_text(ring, test::solid_ring_obj());
+  const fs::path out = dir() / "out";
+  const CliResult r =
+      paver({"run", ring.string(), "--region", "outer", "--stone", "1.5", "--gap", "0.1", "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  EXPECT_NE(r.out.find("solid_ring.obj (region outer)"), std::string::npos) << describe(r);
+  const json report = read_json(out / "report.json");
+  EXPECT_EQ(report["surface"]["region"], json::array({"outer"}));
+  EXPECT_EQ(report["surface"]["boundary_loops"].get<int>(), 2);
+  EXPECT_EQ(report["quality_after"]["contact_violations"].get<long>(), 0);
+  const std::vector<Placement> rows = read_placements(out / "placements.csv");
+  ASSERT_GE(rows.size(), 70u) << "two rows of stones round a 63 mm circumference";
+  for (const Placement& row : rows) {
+    EXPECT_NEAR(std::hypot(row.p[0], row.p[1]), 10.0, 0.01) << "a stone off the outer face";
+    EXPECT_GT((row.p[0] * row.n[0] + row.p[1] * row.n[1]) / 10.0, 0.99) << "a stone not facing out";
+    EXPECT_LE(std::abs(row.p[2]) + 0.5 * row.diameter, 2.0 + 1e-6) << "a stone past the ring's edge";
+  }
+  const CliResult wrong = paver({"run", ring.string(), "--region", "outside", "--out", (dir() / "o2").string()});
+  EXPECT_EQ(wrong.exit_code, 2) << describe(wrong);
+  EXPECT_NE(wrong.err.find("it has ring, outer, inner, top, bottom"), std::string::npos) << describe(wrong);
+  EXPECT_FALSE(fs::exists(dir() / "o2"));
 }
 
 TEST_F(PaverRun, RimRowsRingThePendantsPiercingsOnRequest) {

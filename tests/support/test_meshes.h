@@ -5,6 +5,7 @@
 #include "mesh/surface_mesh.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <utility>
@@ -110,6 +111,38 @@ inline SurfaceMesh subdivide(const SurfaceMesh& mesh) {
     faces.push_back({ab, bc, ca});
   }
   return make_surface(std::move(positions), faces, "subdivided").mesh;
+}
+
+// A solid ring as a jeweller models one, written as an OBJ with its faces in the groups `outer`,
+// `inner`, `top` and `bottom`: a band of radii 10 and 8.5 and height 4 around z, `around` quads
+// round and `rows` high on each cylinder.
+inline std::string solid_ring_obj(int around = 120, int rows = 8) {
+  const double outer = 10, inner = 8.5, half_height = 2;
+  std::string obj = "# a solid ring\no ring\n";
+  const auto vertex = [&](bool on_outer, int i, int j) {  // 1-based: the outer cylinder's first
+    return 1 + (on_outer ? 0 : around * (rows + 1)) + j * around + (i % around);
+  };
+  for (const double radius : {outer, inner})
+    for (int j = 0; j <= rows; ++j)
+      for (int i = 0; i < around; ++i) {
+        const double a = 2 * 3.14159265358979323846 * i / around;
+        obj += "v " + std::to_string(radius * std::cos(a)) + " " + std::to_string(radius * std::sin(a)) + " " +
+               std::to_string(-half_height + 2 * half_height * j / rows) + "\n";
+      }
+  const auto face = [&](int a, int b, int c, int d) {
+    obj += "f " + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(c) + " " + std::to_string(d) + "\n";
+  };
+  obj += "g outer\n";
+  for (int i = 0; i < around; ++i)
+    for (int j = 0; j < rows; ++j) face(vertex(true, i, j), vertex(true, i + 1, j), vertex(true, i + 1, j + 1), vertex(true, i, j + 1));
+  obj += "g inner\n";
+  for (int i = 0; i < around; ++i)
+    for (int j = 0; j < rows; ++j) face(vertex(false, i, j), vertex(false, i, j + 1), vertex(false, i + 1, j + 1), vertex(false, i + 1, j));
+  obj += "g top\n";
+  for (int i = 0; i < around; ++i) face(vertex(true, i, rows), vertex(true, i + 1, rows), vertex(false, i + 1, rows), vertex(false, i, rows));
+  obj += "g bottom\n";
+  for (int i = 0; i < around; ++i) face(vertex(true, i, 0), vertex(false, i, 0), vertex(false, i + 1, 0), vertex(true, i + 1, 0));
+  return obj;
 }
 
 }  // namespace paver::test

@@ -7,6 +7,7 @@
 #include "input_error_assertions.h"
 
 #include "temp_folder.h"
+#include "test_meshes.h"
 
 #include <gtest/gtest.h>
 
@@ -236,6 +237,36 @@ TEST_F(MeshLoaderTest, SelfIntersectingPolygonFallsBackToFan) {
   EXPECT_EQ(loaded.mesh.face_count(), 3);
   EXPECT_EQ(loaded.mesh.outer_loop().size(), 5u);
   expect_valid_surface(loaded.mesh);
+}
+
+// --region: a solid ring's outer face alone is a band, its borders rims; the whole ring is closed.
+TEST_F(MeshLoaderTest, ARegionKeepsTheNamedPartsOnly) {
+  const fs::path ring = write("solid_ring.obj", test::solid_ring_obj(60, 4));
+  const LoadedSurface whole = load_surface(ring);
+  EXPECT_TRUE(whole.mesh.boundary_loops.empty());
+  EXPECT_EQ(whole.mesh.face_count(), 2 * (60 * 4 * 2 + 60 * 2));
+  const LoadedSurface outer = load_surface(ring, {"outer"});
+  EXPECT_TRUE(outer.warnings.empty()) << outer.warnings.at(0);
+  EXPECT_EQ(outer.mesh.face_count(), 2 * 60 * 4) << "every face of the group, the first too";
+  EXPECT_EQ(outer.mesh.vertex_count(), 60 * 5);
+  EXPECT_EQ(outer.mesh.boundary_loops.size(), 2u) << "a band";
+  for (const glm::dvec3& p : outer.mesh.positions) EXPECT_NEAR(std::hypot(p.x, p.y), 10.0, 1e-4);
+  const LoadedSurface outer_and_top = load_surface(ring, {"outer", "top"});
+  EXPECT_EQ(outer_and_top.mesh.face_count(), 2 * 60 * 5);
+  EXPECT_EQ(outer_and_top.mesh.boundary_loops.size(), 2u);
+  // The object's name (`o ring`) names every face.
+  EXPECT_EQ(load_surface(ring, {"ring"}).mesh.face_count(), whole.mesh.face_count());
+  expect_valid_surface(outer.mesh);
+}
+
+TEST_F(MeshLoaderTest, ARegionTheFileDoesNotNameIsRefusedListingItsParts) {
+  const fs::path ring = write("solid_ring.obj", test::solid_ring_obj(12, 2));
+  std::string message = error_of([&] { load_surface(ring, {"outr"}); });
+  EXPECT_TRUE(Contains(message, "--region outr: the file has no part of that name; it has ring, outer, inner, top, bottom"))
+      << message;
+  const fs::path plain = write("plain.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  message = error_of([&] { load_surface(plain, {"outer"}); });
+  EXPECT_TRUE(Contains(message, "the file names no parts")) << message;
 }
 
 TEST_F(MeshLoaderTest, ReadsOff) {
