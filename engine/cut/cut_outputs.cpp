@@ -11,10 +11,12 @@
 
 namespace paver {
 
-void write_cut_files(const std::filesystem::path& folder, const CutSolid& cut, const Elements& stones, Units units,
-                     const ShapeMesh* custom, const std::atomic<bool>* stop) {
+void write_cut_files(const std::filesystem::path& folder, const CutSolid& cut, Units units,
+                     const std::atomic<bool>* stop) {
   write_mesh_stl(folder / "cut.stl", cut.mesh, "cut solid", stop);
-  write_pavement_3mf(folder / "cut.3mf", &cut.mesh, stones, units, {.custom = custom, .stop = stop}, "metal");
+  // The metal alone, so that a slicer slices it as it is: the stones in it were printable objects
+  // that stopped PrusaSlicer ("no extrusions in the first layer: gem"); they are in paved.3mf.
+  write_pavement_3mf(folder / "cut.3mf", &cut.mesh, Elements{}, units, {.stop = stop}, "metal");
 }
 
 nlohmann::json cut_json(const CutSolid& cut, CutterKind cutter, double thickness, Units units) {

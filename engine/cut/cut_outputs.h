@@ -14,10 +14,11 @@
 namespace paver {
 
 
-// Writes `folder`/cut.stl and `folder`/cut.3mf; `custom` is the design's custom shape when a
-// stone uses it. Throws InputError naming the file; Interrupted when `stop` becomes true.
-void write_cut_files(const std::filesystem::path& folder, const CutSolid& cut, const Elements& stones, Units units,
-                     const ShapeMesh* custom = nullptr, const std::atomic<bool>* stop = nullptr);
+// Writes `folder`/cut.stl and `folder`/cut.3mf, the metal alone (beads joined), for the slicer to
+// slice as it is: the stones are paved.3mf's. Throws InputError naming the file; Interrupted when
+// `stop` becomes true.
+void write_cut_files(const std::filesystem::path& folder, const CutSolid& cut, Units units,
+                     const std::atomic<bool>* stop = nullptr);
 
 // report.json's `cut`: the cutter and thickness, counts, volumes in mm^3 and the metal's weight in
 // every alloy of report/metal_weight.h.

@@ -67,7 +67,7 @@ NMR::eModelUnit model_unit(Units units) {
 }
 
 // Adds a mesh object; a closed, consistently oriented one is a printable "model", anything else
-// a "surface" (3MF forbids open meshes as models).
+// a "surface" (3MF forbids open meshes as models; only a custom shape can be one).
 void add_mesh_object(const Writer3mf& w, const Handle& model, Handle& object, const std::string& name,
                      std::vector<NMR::MODELMESHVERTEX>& vertices, std::vector<NMR::MODELMESHTRIANGLE>& triangles) {
   w.check(NMR::lib3mf_model_addmeshobject(model.get(), object.out()), model, "adding an object");
@@ -137,7 +137,11 @@ void write_pavement_3mf(const std::filesystem::path& path, const SurfaceMesh* su
     to_middle.m_fFields[row][row] = 1;
     to_middle.m_fFields[row][3] = float(middle[row]);
   }
-  if (surface && surface->face_count() > 0) {
+  // An open surface cannot be a build item that slicers take: 3MF allows only closed meshes as
+  // printable "model" objects, and PrusaSlicer reads nothing else (a build item of type "surface"
+  // made it refuse the whole file: "Found item with invalid object id"). It is left out; the
+  // surface is in elements.glb.
+  if (surface && surface->face_count() > 0 && surface->boundary_loops.empty()) {
     vertices.clear();
     for (const glm::dvec3& position : surface->positions) {
       const glm::dvec3 p = position - middle;

@@ -11,6 +11,8 @@
 #include "map/surface_map.h"
 #include "pipeline/pavement.h"
 #include "surface_maps.h"
+#include "temp_folder.h"
+#include "threemf_read_back.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -95,6 +97,26 @@ TEST(SolidCut, SeatsInAFlatPlateRemoveExactlyTheirVolumeWithinIt) {
   // The gems' culets lie a pavilion and half a girdle below the surface: inside a 1 mm plate.
   EXPECT_NEAR(cut.deepest_stone, (kGemPavilionDepth + kGemGirdleHalf) * d, 1e-6);
   EXPECT_EQ(stones_stand_out_warning(cut, thickness, Units::Millimetre), "");
+}
+
+// cut.3mf is the metal alone, one printable model in one build item, so that a slicer slices it as
+// it is: the stones in it stopped PrusaSlicer ("no extrusions in the first layer: gem").
+class MetalFiles : public test::TempFolderTest {};
+
+TEST_F(MetalFiles, HoldTheMetalAlone) {
+  const double d = 2, thickness = 1;
+  const SurfaceMap plate = flat_plate(10, 8);
+  const CutSolid cut = cut_pavement(plate, stones_on_plate({{3, 3}, {6, 4}}, d, ShapeKind::Gem),
+                                    {.cutter = CutterKind::Seat, .thickness = thickness});
+  write_cut_files(dir_, cut, Units::Millimetre);
+  const test::ReadBack3mf r = test::read_3mf(dir_ / "cut.3mf");
+  ASSERT_EQ(r.meshes.size(), 1u);
+  EXPECT_EQ(r.meshes.begin()->second.name, "metal");
+  EXPECT_EQ(r.meshes.begin()->second.type, DWORD(NMR::MODELOBJECTTYPE_MODEL));
+  EXPECT_EQ(r.meshes.begin()->second.triangles, cut.mesh.triangles.size());
+  EXPECT_TRUE(r.components.empty()) << "no stones in the metal's file";
+  EXPECT_EQ(r.build_items.size(), 1u);
+  EXPECT_TRUE(std::filesystem::is_regular_file(dir_ / "cut.stl"));
 }
 
 TEST(SolidCut, StonesDeeperThanTheMetalAreWarnedOf) {

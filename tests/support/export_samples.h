@@ -29,4 +29,13 @@ inline SurfaceMesh unit_square_surface() {
   return m;
 }
 
+// A closed unit cube, its faces outward: a surface 3MF takes as a printable model.
+inline SurfaceMesh unit_cube_surface() {
+  SurfaceMesh m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  m.triangles = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
+                 {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}};
+  return m;
+}
+
 }  // namespace paver::test

@@ -21,7 +21,7 @@ class ThreeMfExport : public test::TempFolderTest {};
 
 TEST_F(ThreeMfExport, HoldsTheSurfaceOneObjectPerShapeAndAComponentPerElementInOrder) {
   const Elements elements = test::every_shape_elements();
-  const SurfaceMesh surface = test::unit_square_surface();
+  const SurfaceMesh surface = test::unit_cube_surface();
   const std::filesystem::path path = dir_ / "paved.3mf";
   write_pavement_3mf(path, &surface, elements, Units::Millimetre);
   const test::ReadBack3mf r = test::read_3mf(path);
@@ -36,8 +36,8 @@ TEST_F(ThreeMfExport, HoldsTheSurfaceOneObjectPerShapeAndAComponentPerElementInO
   for (const auto& [id, m] : r.meshes) {
     id_by_name[m.name] = id;
     if (m.name == "surface") {
-      EXPECT_EQ(m.type, DWORD(NMR::MODELOBJECTTYPE_SURFACE)) << "an open surface is not a printable solid";
-      EXPECT_EQ(m.triangles, 2u);
+      EXPECT_EQ(m.type, DWORD(NMR::MODELOBJECTTYPE_MODEL)) << "a closed surface is a printable solid";
+      EXPECT_EQ(m.triangles, 12u);
       for (std::size_t v = 0; v < surface.positions.size(); ++v)
         EXPECT_LT(glm::length(test::apply_3mf(r.build_items[0], m.positions[v]) - surface.positions[v]), 1e-6);
     } else {
@@ -65,7 +65,7 @@ TEST_F(ThreeMfExport, HoldsTheSurfaceOneObjectPerShapeAndAComponentPerElementInO
 // itself (the same for surface and stones) is rounded that coarsely.
 TEST_F(ThreeMfExport, APieceFarFromTheOriginKeepsItsStonesInPlaceOnIt) {
   Elements elements = test::every_shape_elements();
-  SurfaceMesh surface = test::unit_square_surface();
+  SurfaceMesh surface = test::unit_cube_surface();
   const glm::dvec3 far(1e5, -2e5, 3e4);
   for (glm::dvec3& p : elements.position) p += far;
   for (glm::dvec3& p : surface.positions) p += far;
@@ -88,7 +88,7 @@ TEST_F(ThreeMfExport, APieceFarFromTheOriginKeepsItsStonesInPlaceOnIt) {
 // coordinates keeps its place too (its float middle, 5400003, printed as 5.4e+06, moved it 3 m).
 TEST_F(ThreeMfExport, APieceInSurveyCoordinatesStaysWhereItIs) {
   Elements elements = test::every_shape_elements();
-  SurfaceMesh surface = test::unit_square_surface();
+  SurfaceMesh surface = test::unit_cube_surface();
   const glm::dvec3 far(500006.15, 5400003.27, 120.5);
   for (glm::dvec3& p : elements.position) p += far;
   for (glm::dvec3& p : surface.positions) p += far;
@@ -117,7 +117,23 @@ TEST_F(ThreeMfExport, BeadsAreAnObjectOfTheirOwn) {
   const test::ReadBack3mf r = test::read_3mf(dir_ / "beads.3mf");
   EXPECT_EQ(r.components.size(), stones);
   EXPECT_EQ(r.bead_components.size(), 2u);
-  EXPECT_EQ(r.build_items.size(), 3u) << "the surface, the stones and the beads";
+  EXPECT_EQ(r.build_items.size(), 2u) << "the stones and the beads (an open surface is left out)";
+}
+
+// PrusaSlicer reads only objects of type "model" and refuses the whole file when a build item or a
+// component names any other ("Found item with invalid object id"): an open surface, which 3MF
+// does not allow as a model, is left out, and everything the build names is a model.
+TEST_F(ThreeMfExport, EverythingTheBuildNamesIsAModelAsSlicersRequire) {
+  const Elements elements = test::every_shape_elements();
+  const SurfaceMesh open = test::unit_square_surface();
+  write_pavement_3mf(dir_ / "open.3mf", &open, elements, Units::Millimetre);
+  const test::ReadBack3mf r = test::read_3mf(dir_ / "open.3mf");
+  EXPECT_EQ(r.build_items.size(), 1u) << "the stones alone";
+  for (const auto& [id, m] : r.meshes) {
+    EXPECT_NE(m.name, "surface");
+    EXPECT_EQ(m.type, DWORD(NMR::MODELOBJECTTYPE_MODEL)) << m.name;
+  }
+  for (const auto& c : r.components) EXPECT_TRUE(r.meshes.count(c.object)) << "a component names object " << c.object;
 }
 
 TEST_F(ThreeMfExport, TheModelUnitIsTheDesigns) {
