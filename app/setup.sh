@@ -23,6 +23,12 @@ packages=(
 )
 # libFuzzer and the sanitizer runtimes come with clang's compiler-rt.
 [ "$mode" = sanitize ] && packages+=(clang libclang-rt-dev)
+# The programs the tests open Paver's files with (tests/cli/client_programs_test.cpp); node runs
+# the Khronos glTF validator, from npm below.
+if [ "$mode" = test ]; then
+  packages+=(prusa-slicer admesh)
+  command -v npm >/dev/null || packages+=(nodejs npm)
+fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -52,6 +58,13 @@ case "$mode" in
     echo "       pattern on the 2D map)"
     ;;
   test)
+    # The glTF validator is npm's, not Debian's: into build/clients, once. Without the registry
+    # its test skips, loudly.
+    if [ ! -d build/clients/node_modules/gltf-validator ]; then
+      npm install --silent --no-audit --no-fund --prefix build/clients gltf-validator >/dev/null 2>&1 ||
+        echo "setup: warning: could not install the glTF validator from npm; its test will skip" >&2
+    fi
+    export PAVER_GLTF_VALIDATOR_MODULES="$PWD/build/clients/node_modules"
     if ! ctest --test-dir build --output-on-failure -j"$jobs"; then
       # A long log cuts a failure's text out of view: run the failed ones again, alone, so their
       # messages end the log (and a failure that passes alone shows itself as timing-dependent).
