@@ -26,7 +26,7 @@ packages=(
 # The programs the tests open Paver's files with (tests/cli/client_programs_test.cpp); node runs
 # the Khronos glTF validator, from npm below.
 if [ "$mode" = test ]; then
-  packages+=(prusa-slicer admesh)
+  packages+=(prusa-slicer admesh blender python3-numpy)
   command -v npm >/dev/null || packages+=(nodejs npm)
 fi
 missing=()

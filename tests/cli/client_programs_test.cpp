@@ -1,14 +1,21 @@
 // The programs jewellers open Paver's files with, run on a small pavement's files as they are:
 // PrusaSlicer loads paved.3mf and slices cut.3mf, admesh finds cut.stl one closed part needing no
-// repair. app/setup.sh test installs them (Debian's prusa-slicer and admesh); a machine without
-// them skips, loudly, saying what to install.
+// repair, Blender 3.4 imports elements.glb with every stone where placements.csv has it.
+// app/setup.sh test installs them (Debian's prusa-slicer, admesh, blender and python3-numpy); a
+// machine without them skips, loudly, saying what to install.
 #include "cli_runner.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <regex>
+#include <sstream>
 #include <string>
+#include <vector>
 
 namespace paver::cli_test {
 namespace {
@@ -59,6 +66,49 @@ TEST_F(ClientPrograms, PrusaSlicerAndAdmeshTakeTheFilesAsTheyAre) {
   EXPECT_EQ(admesh_figure(admesh.out, "Degenerate facets"), 0) << admesh.out;
 }
 #endif
+
+// Blender 3.4 refused every elements.glb over 20,000 stones ("Extension EXT_mesh_gpu_instancing is
+// not available"): a node per stone now up to kGltfInstancingThreshold. Here a small pendant, every
+// stone imported, at its place in metres (glTF's unit; Blender turns glTF's y-up into its z-up, so
+// the extents are compared as a set).
+TEST_F(ClientPrograms, BlenderImportsEveryStoneAtItsPlace) {
+  if (!installed("blender"))
+    GTEST_SKIP() << "*** Blender is not installed (apt-get install blender python3-numpy, as app/setup.sh test "
+                    "does): elements.glb was NOT imported into Blender";
+  const fs::path out = dir() / "out";
+  const CliResult run = paver({"run", "assets/surfaces/pendant.obj", "--stone", "3", "--gap", "0.2", "--formats", "glb",
+                               "--quiet", "--out", out.string()});
+  ASSERT_EQ(run.exit_code, 0) << describe(run);
+  const CliResult blender = run_program(
+      "blender", {"-b", "--python", std::string(PAVER_SOURCE_DIR) + "/tests/support/blender_import.py", "--",
+                  (out / "elements.glb").string()},
+      dir());
+  EXPECT_EQ(blender.exit_code, 0) << describe(blender);
+  std::smatch match;
+  ASSERT_TRUE(std::regex_search(blender.out, match, std::regex(R"(imported (\d+) (\d+) (\S+) (\S+) (\S+))")))
+      << describe(blender);
+  // placements.csv: id,kind,x,y,z,... in millimetres.
+  std::ifstream csv(out / "placements.csv");
+  std::string line;
+  std::getline(csv, line);
+  std::size_t stones = 0;
+  std::array<double, 3> extent{};
+  while (std::getline(csv, line)) {
+    std::stringstream fields(line);
+    std::string field;
+    std::vector<std::string> row;
+    while (std::getline(fields, field, ',')) row.push_back(field);
+    ASSERT_GE(row.size(), 5u) << line;
+    ++stones;
+    for (int axis = 0; axis < 3; ++axis) extent[axis] = std::max(extent[axis], std::abs(std::stod(row[2 + axis])) * 1e-3);
+  }
+  EXPECT_EQ(std::stoul(match[1].str()), stones) << "every stone imported";
+  std::array<double, 3> imported = {std::stod(match[3].str()), std::stod(match[4].str()), std::stod(match[5].str())};
+  std::sort(extent.begin(), extent.end());
+  std::sort(imported.begin(), imported.end());
+  for (int axis = 0; axis < 3; ++axis)
+    EXPECT_NEAR(imported[axis], extent[axis], 1e-6) << "the stones where placements.csv has them, in metres";
+}
 
 }  // namespace
 }  // namespace paver::cli_test
