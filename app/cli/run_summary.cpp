@@ -148,7 +148,8 @@ void print_elements(const SurfaceMap& map, const Pavement& pavement, const Pavem
                 pavement.rim_rows.made_way);
   const BillOfStones bill = bill_of_stones(pavement.elements, pavement.design.units);
   for (const StoneRow& row : bill.rows) {
-    std::printf("stones   %ld %s of %.2f mm", row.count, std::string(enum_name(row.shape)).c_str(), row.diameter_mm);
+    std::printf("stones   %ld %s of %s mm", row.count, std::string(enum_name(row.shape)).c_str(),
+                diameter_mm_text(row.diameter_mm).c_str());
     // Three significant digits each, so that count x each gives the total to its last digit.
     if (row.carat_each) std::printf(", %.3g ct each, %s ct", *row.carat_each, carat_total_text(row.carat_total).c_str());
     std::printf("\n");

@@ -42,6 +42,14 @@ std::string carat_each_text(double carats) {
   std::snprintf(text, sizeof text, "%.4g", carats);
   return text;
 }
+std::string diameter_mm_text(double diameter_mm) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3f", diameter_mm);
+  std::string s = text;
+  if (s.size() > 1 && s.back() == '0' && s.find('.') != std::string::npos) s.pop_back();
+  return s;
+}
+
 std::string carat_total_text(double carats) {
   char text[32];
   std::snprintf(text, sizeof text, "%.4f", carats);
@@ -72,15 +80,25 @@ BillOfStones bill_of_stones(const Elements& elements, Units units) {
   BillOfStones bill;
   bill.units = units;
   const double mm = millimetres_per_unit(units);
-  // Hundredths of a millimetre as integers: equal sizes group exactly.
-  std::map<std::pair<ShapeKind, long long>, long> counts;
-  for (std::size_t i = 0; i < elements.size(); ++i)
-    ++counts[{elements.shape[i], std::llround(elements.diameter[i] * mm * 100)}];
-  for (const auto& [key, count] : counts) {
-    StoneRow row{key.first, double(key.second) / 100, count, std::nullopt, 0};
+  // Microns as integers: equal sizes group exactly, and a 0.015 mm bead is not billed as 0.02 mm
+  // (hundredths did that). Carats come from the stones' own diameters, not the rounded size.
+  struct Group {
+    long count = 0;
+    double carats = 0;
+  };
+  std::map<std::pair<ShapeKind, long long>, Group> groups;
+  for (std::size_t i = 0; i < elements.size(); ++i) {
+    const double d_mm = elements.diameter[i] * mm;
+    Group& group = groups[{elements.shape[i], std::llround(d_mm * 1000)}];
+    ++group.count;
+    if (elements.shape[i] == ShapeKind::Gem) group.carats += round_brilliant_carat(d_mm);
+  }
+  for (const auto& [key, group] : groups) {
+    const long count = group.count;
+    StoneRow row{key.first, double(key.second) / 1000, count, std::nullopt, 0};
     if (row.shape == ShapeKind::Gem) {
-      row.carat_each = round_brilliant_carat(row.diameter_mm);
-      row.carat_total = *row.carat_each * double(count);
+      row.carat_each = group.carats / double(count);
+      row.carat_total = group.carats;
     }
     bill.count += count;
     bill.carat_total += row.carat_total;

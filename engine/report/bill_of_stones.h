@@ -16,7 +16,7 @@ namespace paver {
 
 struct StoneRow {
   ShapeKind shape;
-  double diameter_mm;                 // rounded to 0.01 mm: a size a stone can be ordered in
+  double diameter_mm;                 // to the micron: sizes that differ less are one row
   long count = 0;
   std::optional<double> carat_each;   // round brilliants only
   double carat_total = 0;             // 0 for shapes without carats
@@ -38,7 +38,11 @@ struct BillOfStones {
 std::string carat_each_text(double carats);
 std::string carat_total_text(double carats);
 
-// Groups `elements` by shape and diameter (converted to mm from `units`, rounded to 0.01 mm).
+// A stone's diameter in mm as the bill gives it: two decimals, a third where the size has one
+// (1.50, 1.015), never rounded to a size it is not.
+std::string diameter_mm_text(double diameter_mm);
+
+// Groups `elements` by shape and diameter (converted to mm from `units`, to the micron).
 BillOfStones bill_of_stones(const Elements& elements, Units units);
 
 // Weight of a diamond round brilliant of this girdle diameter, in carats: the trade's chart from

@@ -153,7 +153,9 @@ std::string report_html(const json& report, const std::string& preview_png) {
   row(html, {"shape", "diameter (mm)", "count", "carat each", "carats"}, true);
   if (at(stones, "rows").is_array())
     for (const json& r : at(stones, "rows"))
-      row(html, {text_of(at(r, "shape")), fixed(at(r, "diameter_mm"), 2), text_of(at(r, "count")),
+      row(html, {text_of(at(r, "shape")),
+                 at(r, "diameter_mm").is_number() ? diameter_mm_text(at(r, "diameter_mm").get<double>()) : "&ndash;",
+                 text_of(at(r, "count")),
                  carats(at(r, "carat_each"), carat_each_text), carats(at(r, "carat_total"), carat_total_text)});
   row(html, {"<b>total</b>", "", "<b>" + text_of(at(stones, "count")) + "</b>", "",
              "<b>" + carats(at(stones, "carat_total"), carat_total_text) + "</b>"});

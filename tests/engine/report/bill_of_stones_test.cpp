@@ -38,9 +38,25 @@ TEST(BillOfStones, GroupsByShapeAndSizeInMillimetres) {
   EXPECT_DOUBLE_EQ(bill.rows[1].diameter_mm, 1.2);
   EXPECT_DOUBLE_EQ(bill.rows[2].diameter_mm, 1.5);
   EXPECT_EQ(bill.rows[2].count, 2);
-  EXPECT_DOUBLE_EQ(*bill.rows[2].carat_each, round_brilliant_carat(1.5));
-  EXPECT_DOUBLE_EQ(bill.carat_total, round_brilliant_carat(1.2) + 2 * round_brilliant_carat(1.5));
+  EXPECT_NEAR(*bill.rows[2].carat_each, round_brilliant_carat(1.5), 1e-9);  // one stone is 1e-10 mm larger
+  EXPECT_NEAR(bill.carat_total, round_brilliant_carat(1.2) + 2 * round_brilliant_carat(1.5), 1e-9);
   EXPECT_DOUBLE_EQ(bill_of_stones(e, Units::Inch).rows[2].diameter_mm, 3.81);
+}
+
+// A jeweller's trial found 0.015 mm billed as 0.02 mm and weighed as that: sizes are kept to the
+// micron, shown as precisely as they are, and weighed from the stones' own diameters.
+TEST(BillOfStones, SizesAreNotRoundedToOnesTheStonesAreNot) {
+  const Elements e = stones({{1.015, ShapeKind::Gem}, {1.015, ShapeKind::Gem}, {1.02, ShapeKind::Gem}, {1.5, ShapeKind::Gem}});
+  const BillOfStones bill = bill_of_stones(e, Units::Millimetre);
+  ASSERT_EQ(bill.rows.size(), 3u) << "1.015 and 1.02 mm are two sizes";
+  EXPECT_DOUBLE_EQ(bill.rows[0].diameter_mm, 1.015);
+  EXPECT_EQ(bill.rows[0].count, 2);
+  EXPECT_NEAR(*bill.rows[0].carat_each, round_brilliant_carat(1.015), 1e-15);
+  EXPECT_NE(*bill.rows[0].carat_each, round_brilliant_carat(1.02));
+  EXPECT_EQ(diameter_mm_text(bill.rows[0].diameter_mm), "1.015");
+  EXPECT_EQ(diameter_mm_text(bill.rows[1].diameter_mm), "1.02");
+  EXPECT_EQ(diameter_mm_text(bill.rows[2].diameter_mm), "1.50");
+  EXPECT_EQ(diameter_mm_text(0.015), "0.015");
 }
 
 TEST(BillOfStones, CaratsFollowTheTradeChartAndNeverJump) {
