@@ -65,6 +65,41 @@ std::pair<long long, long long> count_vertex_and_face_lines(std::string_view tex
   return {vertices, faces};
 }
 
+// The parts an OBJ's `o` and `g` lines name (PolygonSoup::group_sets), given to each face.
+class PartNames {
+public:
+  void read(std::string_view keyword, const std::vector<std::string_view>& tokens) {
+    if (keyword == "o") object_ = tokens.size() > 1 ? std::string(tokens[1]) : std::string();
+    else groups_.assign(tokens.begin() + 1, tokens.end());
+    changed_ = true;
+  }
+  // Before the face is added to `soup`: its names' set; faces before the first name have none, and
+  // the per-face list is kept only once a name appears.
+  void add_face(PolygonSoup& soup) {
+    if (changed_) {
+      changed_ = false;
+      std::vector<std::string> names;
+      if (!object_.empty()) names.push_back(object_);
+      for (const std::string& name : groups_)
+        if (name != "default" && std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+      set_ = -1;
+      if (!names.empty()) {
+        const auto known = std::find(soup.group_sets.begin(), soup.group_sets.end(), names);
+        set_ = int(known - soup.group_sets.begin());
+        if (known == soup.group_sets.end()) soup.group_sets.push_back(std::move(names));
+      }
+    }
+    if (set_ >= 0 && soup.polygon_group.size() < soup.polygons.size()) soup.polygon_group.resize(soup.polygons.size(), -1);
+    if (!soup.group_sets.empty()) soup.polygon_group.push_back(set_);
+  }
+
+private:
+  std::string object_;
+  std::vector<std::string> groups_;
+  int set_ = -1;
+  bool changed_ = false;
+};
+
 }  // namespace
 
 PolygonSoup read_obj(std::string_view text, const std::string& source) {
@@ -96,11 +131,7 @@ PolygonSoup read_obj(std::string_view text, const std::string& source) {
   std::vector<ForwardReference> forward;
   std::vector<std::string_view> tokens;
   std::vector<int> corners;
-  // The names in force (`o` then `g`), and their set's index once a face has used them.
-  std::string object_name;
-  std::vector<std::string> group_names;
-  int group_set = -1;
-  bool names_changed = false;
+  PartNames parts;
 
   LineReader reader(text);
   std::string_view line;
@@ -123,9 +154,7 @@ PolygonSoup read_obj(std::string_view text, const std::string& source) {
       if (tokens.size() < 3 || !parse_double(tokens[1], value) || !parse_double(tokens[2], value))
         fail(source, at_line(number) + "a 'vt' line needs 2 or 3 numbers (u v [w]); fix or delete the line");
     } else if (keyword == "g" || keyword == "o") {
-      if (keyword == "o") object_name = tokens.size() > 1 ? std::string(tokens[1]) : std::string();
-      else group_names.assign(tokens.begin() + 1, tokens.end());
-      names_changed = true;
+      parts.read(keyword, tokens);
     } else if (keyword == "f") {
       if (tokens.size() < 4)
         fail(source, at_line(number) + "a face needs at least 3 vertices but this one has " +
@@ -155,24 +184,7 @@ PolygonSoup read_obj(std::string_view text, const std::string& source) {
         ++soup.collapsed_faces;
         continue;
       }
-      if (names_changed) {
-        names_changed = false;
-        std::vector<std::string> names;
-        if (!object_name.empty()) names.push_back(object_name);
-        for (const std::string& name : group_names)
-          if (name != "default" && std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
-        if (names.empty()) {
-          group_set = -1;
-        } else {
-          const auto known = std::find(soup.group_sets.begin(), soup.group_sets.end(), names);
-          group_set = int(known - soup.group_sets.begin());
-          if (known == soup.group_sets.end()) soup.group_sets.push_back(std::move(names));
-        }
-      }
-      // Faces before the first name belong to none; the list is kept only once a name appears.
-      if (group_set >= 0 && soup.polygon_group.size() < soup.polygons.size())
-        soup.polygon_group.resize(soup.polygons.size(), -1);
-      if (!soup.group_sets.empty()) soup.polygon_group.push_back(group_set);
+      parts.add_face(soup);
       soup.polygons.push_back(corners);
     }
   }
