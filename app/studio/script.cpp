@@ -149,10 +149,15 @@ void parse_choice(const LineParser& p) {
       p.need_choice(enum_from_name<Tessellation>(p.rest).has_value(), enum_choices_words<Tessellation>());
       break;
     case Kind::CutAxis: p.need_choice(enum_from_name<CutAxis>(p.rest).has_value(), enum_choices_words<CutAxis>()); break;
-    case Kind::Key:
-      p.need_choice(key_from_name(p.rest).has_value(), "E, P, I, V, L, C, R, N, Delete, Escape or Space");
-      p.out.key = *key_from_name(p.rest);
+    case Kind::Key: {
+      // "Shift+P": the key with Shift held, as a hand presses it.
+      const bool shift = p.rest.rfind("Shift+", 0) == 0;
+      const std::string_view name = std::string_view(p.rest).substr(shift ? 6 : 0);
+      p.need_choice(key_from_name(name).has_value(), "E, P, I, V, L, C, R, N, Delete, Escape or Space, each also as Shift+P");
+      p.out.key = *key_from_name(name);
+      p.out.shift = shift;
       break;
+    }
     case Kind::Browse:
       p.need_choice(browse_purpose_from_name(p.rest).has_value(), "surface, design, save, export or shape");
       break;

@@ -5,6 +5,7 @@
 #include "element_editing.h"
 
 #include "core/input_error.h"
+#include "core/printable.h"
 
 #include <cstdio>
 #include <initializer_list>
@@ -196,7 +197,7 @@ void ScriptRunner::act(Studio& s, const ScriptCommand& c) {
       break;
     }
     case Kind::Key: {
-      const std::vector<InputFrame> frames = key_frames(c.key, map_to_window(s, glm::dvec2(0), false));
+      const std::vector<InputFrame> frames = key_frames(c.key, map_to_window(s, glm::dvec2(0), false), c.shift);
       s.input_queue.insert(s.input_queue.end(), frames.begin(), frames.end());
       frames_left_ = 3;
       break;
@@ -242,6 +243,12 @@ void ScriptRunner::fail(Studio& s, const std::string& message, int code) {
 void ScriptRunner::frame(Studio& s) {
   if (finished_) return;
   const Messages& messages = s.doc.messages;
+  // The session's log says what each command did, every status line the designer would have seen.
+  if (messages.status != status_said_) {
+    status_said_ = messages.status;
+    std::printf("status: %s\n", printable_cut(status_said_, kMaxMessageBytes).c_str());
+    std::fflush(stdout);
+  }
   const std::string where =
       next_ < commands_.size() ? source_ + ":" + std::to_string(commands_[next_].line) + ": " : source_ + ": ";
   if (messages.error_count > errors_seen_) return fail(s, where + messages.error, messages.error_is_input ? 2 : 1);

@@ -31,6 +31,7 @@ private:
   std::vector<ScriptCommand> commands_;
   std::string source_;
   std::size_t next_ = 0;
+  std::string status_said_;                   // the status line last written to the log
   Phase phase_ = Phase::Ready;
   int frames_left_ = 0;                       // wait N, orbit
   float orbit_step_ = 0;                      // orbit: radians per frame

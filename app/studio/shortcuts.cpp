@@ -34,7 +34,8 @@ const std::vector<Shortcut>& shortcut_list() {
       {"E", "edit stones: clicks in the views select, drag (either view: in 3D start on the stone) and add (Ctrl+click, 2D) single elements"},
       {"Shift+drag (2D, edit stones)", "select every element in a box"},
       {"Del", "delete the selected elements"},
-      {"P", "pin / unpin the selected elements (they stay where they are while the rest relaxes)"},
+      {"P", "pin the selected elements (they stay where they are while the rest relaxes)"},
+      {"Shift+P", "unpin the selected elements (they relax with the rest again)"},
       {"Esc", "deselect"},
       {"Drop a file", "a surface opens, a .json design loads"},
   };
@@ -76,9 +77,10 @@ void handle_shortcuts(Studio& s) {
   if (pressed(GLFW_KEY_E)) s.ui.edit_elements = !s.ui.edit_elements;
   if (pressed(GLFW_KEY_ESCAPE)) clear_selection(s.ui);
   if (pressed(GLFW_KEY_DELETE) && s.ui.selected_element >= 0) delete_selected(s);
-  // P toggles the clicked element's pin; a box follows it (all pinned, or all let go).
+  // P pins, Shift+P lets go: never a toggle, which un-pinned a stone a drag had pinned and let it
+  // slide back. A box follows the clicked element's selection.
   if (pressed(GLFW_KEY_P) && s.ui.selected_element >= 0 && s.doc.result.pavement)
-    pin_selected(s, !is_pinned(s.doc.design, *s.doc.result.pavement, s.ui.selected_element));
+    pin_selected(s, !ImGui::GetIO().KeyShift);
   if (pressed(GLFW_KEY_L)) s.views.style.show_lattice = !s.views.style.show_lattice;
   if (pressed(GLFW_KEY_C))
     s.views.colour_mode = s.views.colour_mode == render::ColourMode::NeighbourRatio ? render::ColourMode::ElementType

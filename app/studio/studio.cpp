@@ -302,9 +302,12 @@ bool edit_selection(Studio& s, const char* done, const EditOne& edit_one) {
     }
     return d;
   });
+  // Every edit says what it did: a silent toggle let a dragged stone slide back unnoticed.
   if (taken && ids.size() > 1)
     report_status(s.doc, std::string(done) + " " + std::to_string(ids.size() - std::size_t(skipped)) + " elements" +
                              (skipped ? ", left " + std::to_string(skipped) + " that cannot take it (beads, refill)" : ""));
+  else if (taken)
+    report_status(s.doc, std::string(done) + " element " + std::to_string(ids.front()));
   return taken;
 }
 
@@ -420,12 +423,8 @@ bool within_budget(Studio& s) {
   if (!(points > s.run.point_budget)) return true;
   s.run.budget_asked = revision;
   s.run.budget_points = points;
-  char text[400];
-  std::snprintf(text, sizeof text,
-                "D = %.4g would place about %.3g elements, above the studio's budget of %.3g: about %.1f GB of "
-                "memory and %.0f s to solve on 2 cores",
-                d.pattern.spacing, points, s.run.point_budget, points * kStudioBytesPerPoint / 1e9,
-                points * kStudioSecondsPerPoint);
+  const std::string text = "D = " + significant_text(d.pattern.spacing, 4) + " would place about " +
+                           large_design_text(s.run.budget_points, s.run.point_budget);
   if (s.script_mode)
     report_error(s.doc,
                  std::string(text) + "; a script does not ask: use a larger spacing, or `paver run` for the full design",
@@ -433,6 +432,12 @@ bool within_budget(Studio& s) {
   else
     report_status(s.doc, text);
   return false;
+}
+
+std::string large_design_text(double points, double budget) {
+  return rounded_figure_text(points) + " elements, above the studio's budget of " + rounded_figure_text(budget) +
+         ": about " + rounded_figure_text(points * kStudioBytesPerPoint / 1e9) + " GB of memory and " +
+         duration_text(points * kStudioSecondsPerPoint) + " to solve on 2 cores";
 }
 
 void grant_budget(Studio& s) {

@@ -18,10 +18,13 @@ std::vector<InputFrame> drag_frames(glm::vec2 from, glm::vec2 to, bool shift, bo
   return frames;
 }
 
-std::vector<InputFrame> key_frames(int key, glm::vec2 at) {
+std::vector<InputFrame> key_frames(int key, glm::vec2 at, bool shift) {
   InputFrame down{at};
   down.key = key;
-  return {down, InputFrame{at}};
+  down.shift = shift;
+  InputFrame up{at};
+  up.shift = shift;
+  return {down, up};
 }
 
 std::optional<int> key_from_name(std::string_view name) {

@@ -21,8 +21,8 @@ struct InputFrame {
 std::vector<InputFrame> click_frames(glm::vec2 at, bool shift, bool ctrl);
 // Press at `from`, move to `to` in `steps` frames, release there.
 std::vector<InputFrame> drag_frames(glm::vec2 from, glm::vec2 to, bool shift, bool ctrl, int steps = 8);
-// One key pressed for a frame and released, the mouse at `at` (where it was).
-std::vector<InputFrame> key_frames(int key, glm::vec2 at);
+// One key pressed for a frame and released, the mouse at `at` (where it was), Shift held or not.
+std::vector<InputFrame> key_frames(int key, glm::vec2 at, bool shift = false);
 
 // The GLFW key a script names (E, P, I, V, L, C, R, N, Delete, Escape, Space), or none.
 std::optional<int> key_from_name(std::string_view name);

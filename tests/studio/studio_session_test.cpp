@@ -429,8 +429,9 @@ TEST_F(StudioSession, ADesignBeyondTheBudgetIsRefusedBeforeItRuns) {
   std::ofstream(script) << "open assets/surfaces/pendant.obj\nspacing 0.0162\noptimize\n";
   const Outcome r = studio("--script " + quote(script.string()) + " --backend cpu --width 640 --height 480", dir_);
   EXPECT_EQ(r.exit_code, 2) << describe(r);  // the design's fault, as for `paver run`
-  EXPECT_NE(r.err.find("would place about 2.67e+06 elements, above the studio's budget"), std::string::npos)
+  EXPECT_NE(r.err.find("would place about 2,670,000 elements, above the studio's budget of"), std::string::npos)
       << describe(r);
+  EXPECT_EQ(r.err.find("e+"), std::string::npos) << "figures for people, not scientific notation: " << describe(r);
   // optimize waits for a pavement of this design, which never ran.
   EXPECT_EQ(r.out.find("script 3: optimize"), std::string::npos) << "it ran: " << describe(r);
 }
@@ -542,6 +543,49 @@ TEST_F(StudioSession, ABoxSelectionIsDeletedInOneStep) {
   EXPECT_EQ(saved["edits"]["deleted"].size(), boxed.size());
   // One undo step brings every one of them back.
   EXPECT_TRUE(read_text(undone_dir / "placements.csv") == read_text(before_dir / "placements.csv"));
+}
+
+// A designer's trial: a drag pins the stone, and P then un-pinned it (a toggle), so it slid back
+// 0.3 D with nothing said. P pins, Shift+P lets go, and each says what it did.
+TEST_F(StudioSession, ADragThenPKeepsTheStoneWhereItWasDroppedAndShiftPLetsGo) {
+  ASSERT_NO_FATAL_FAILURE(pave_lattice_pendant());
+  const fs::path base = dir_ / "base";
+  const std::map<long, Row> before = placements_by_id(base / "placements.csv");
+  const double D = nlohmann::json::parse(read_text(base / "design.json"))["pattern"]["spacing"].get<double>();
+  long dragged = -1;
+  double nearest = 1e300;
+  for (const auto& [id, row] : before)
+    if (row.kind == 'V' && std::hypot(row.u, row.v) < nearest) nearest = std::hypot(row.u, row.v), dragged = id;
+  const Row centre = before.at(dragged);
+  const fs::path held = dir_ / "held", let_go = dir_ / "let_go", script = dir_ / "drag_p.txt";
+  std::ofstream(script) << std::setprecision(17) << "open assets/surfaces/pendant.obj\n"
+                        << "set pattern.topology lattice\n"
+                        << "optimize\n"
+                        << "view2d\n"
+                        << "key I\n"
+                        << "key E\n"
+                        << "mouse_drag " << centre.u << " " << centre.v << " " << centre.u + 0.3 * D << " " << centre.v << "\n"
+                        << "optimize\n"
+                        << "key P\n"
+                        << "optimize\n"
+                        << "export " << held.string() << "\n"
+                        << "key Shift+P\n"
+                        << "optimize\n"
+                        << "export " << let_go.string() << "\n";
+  const Outcome r = run_script(script);
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const std::map<long, Row> after = placements_by_id(held / "placements.csv");
+  ASSERT_TRUE(after.count(dragged));
+  EXPECT_NEAR(after.at(dragged).u, centre.u + 0.3 * D, 0.1 * D) << "P let the dragged stone slide back";
+  const nlohmann::json kept = nlohmann::json::parse(read_text(held / "design.json"));
+  ASSERT_EQ(kept["edits"]["moved"].size(), 1u) << kept["edits"].dump();
+  EXPECT_TRUE(kept["edits"]["moved"][0]["pinned"].get<bool>()) << "P after a drag keeps the pin";
+  EXPECT_NE(r.out.find("pinned element " + std::to_string(dragged)), std::string::npos) << "P says what it did: "
+                                                                                          << describe(r);
+  const nlohmann::json released = nlohmann::json::parse(read_text(let_go / "design.json"));
+  ASSERT_EQ(released["edits"]["moved"].size(), 1u) << released["edits"].dump();
+  EXPECT_FALSE(released["edits"]["moved"][0]["pinned"].get<bool>()) << "Shift+P lets go";
+  EXPECT_NE(r.out.find("unpinned element " + std::to_string(dragged)), std::string::npos) << describe(r);
 }
 
 // The mouse and the keys, played into the window (not the script's element commands): E turns

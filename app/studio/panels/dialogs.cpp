@@ -60,11 +60,9 @@ void dialogs(Studio& s) {
     ImGui::OpenPopup("Large design");
   ImGui::SetNextWindowSize(ImVec2(520, 0));
   if (ImGui::BeginPopupModal("Large design", nullptr, ImGuiWindowFlags_NoSavedSettings)) {
-    ImGui::TextWrapped("This design would place about %.3g elements: about %.1f GB of memory and %.0f s of solving "
-                       "on this machine (the studio's budget is %.3g). The studio stays responsive and Stop ends the "
-                       "run, but the views will be slow.",
-                       s.run.budget_points, s.run.budget_points * kStudioBytesPerPoint / 1e9,
-                       s.run.budget_points * kStudioSecondsPerPoint, s.run.point_budget);
+    ImGui::TextWrapped("This design would place about %s. The studio stays responsive and the Solver panel's "
+                       "Reset ends the run, but the views will be slow.",
+                       large_design_text(s.run.budget_points, s.run.point_budget).c_str());
     if (ImGui::Button("Run anyway", ImVec2(140, 0))) {
       ImGui::CloseCurrentPopup();
       grant_budget(s);

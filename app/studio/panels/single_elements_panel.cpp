@@ -18,9 +18,9 @@ void single_elements_panel(Studio& s) {
   help_marker("Click a stone to select it, in either view. Drag it to move it (in the 3D view it slides along the "
               "surface): it stays where you drop "
               "it and its neighbours within three spacings make room; Ctrl+click adds a stone of the vertex size. "
-              "Del deletes the selected stone (its place stays empty), P pins or unpins it (a pinned stone stays "
+              "Del deletes the selected stone (its place stays empty), P pins it and Shift+P lets it go (a pinned stone stays "
               "put while the rest relaxes; an orange dot marks it, and the stones you added). Edits are undoable, saved in the design file, and `paver run` repeats "
-              "them. Shift+drag in the 2D map selects every stone in a box: Del and P then take them all.");
+              "them. Shift+drag in the 2D map selects every stone in a box: Del, P and Shift+P then take them all.");
   const Pavement* pavement = s.doc.result.pavement.get();
   if (!s.ui.box_selected.empty()) {
     ImGui::Text("%zu stones selected (a box)", selection(s.ui).size());
@@ -35,7 +35,7 @@ void single_elements_panel(Studio& s) {
     const int id = s.ui.selected_element;
     ImGui::TextWrapped("%s", describe_element(s.doc.design, *pavement, id).c_str());
     const bool pinned = is_pinned(s.doc.design, *pavement, id);
-    if (ImGui::Button(pinned ? "unpin (P)" : "pin (P)")) pin_selected(s, !pinned);
+    if (ImGui::Button(pinned ? "unpin (Shift+P)" : "pin (P)")) pin_selected(s, !pinned);
     ImGui::SameLine();
     if (ImGui::Button("delete (Del)")) delete_selected(s);
     // Typed numbers apply on the button, not on every keystroke.

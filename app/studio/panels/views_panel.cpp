@@ -571,7 +571,7 @@ void toolbar(Studio& s) {
   ImGui::Checkbox("edit stones (E)", &s.ui.edit_elements);
   help_marker("Click a stone to select it (either view); drag it to move it, in 3D along the surface (it stays where you "
               "drop it, its neighbours make room), Ctrl+click to add one, Shift+drag a box to select many. Del "
-              "deletes the selected stones, P pins or unpins them. Every edit is undoable and saved with the design.");
+              "deletes the selected stones, P pins them, Shift+P lets them go. Every edit is undoable and saved with the design.");
   next_item("swap views (V)");
   if (ImGui::Button("swap views (V)")) swap_views(s);
   next_item("inset (I)");
