@@ -169,10 +169,32 @@ std::shared_ptr<const ShapeMesh> shared_custom_shape(Document& doc) {
 
 const ShapeMesh* custom_shape(Document& doc) { return shared_custom_shape(doc).get(); }
 
-void report_status(Document& doc, std::string text) { doc.messages.status = std::move(text); }
+void report_status(Document& doc, std::string text) {
+  doc.messages.status = std::move(text);
+  doc.messages.status_from_run = false;
+}
+
+void report_run_status(Document& doc, std::string text) {
+  report_status(doc, std::move(text));
+  doc.messages.status_from_run = true;
+}
+
+void report_run_error(Document& doc, std::string text, bool input) {
+  report_error(doc, std::move(text), input);
+  doc.messages.status_from_run = doc.messages.error_from_run = true;
+}
+
+void mark_run_started(Document& doc) {
+  // The previous run's error no longer applies to the design now being solved.
+  if (doc.messages.error_from_run) doc.messages.error.clear();
+  doc.messages.error_from_run = false;
+  if (doc.messages.status_from_run)
+    report_status(doc, "solving the changed design; the last result stays on screen until the new one is done");
+}
 
 void report_error(Document& doc, std::string text, bool input) {
   doc.messages.status = "error: " + text;
+  doc.messages.status_from_run = doc.messages.error_from_run = false;
   doc.messages.error = std::move(text);
   doc.messages.error_kept_design = false;
   doc.messages.error_is_input = input;

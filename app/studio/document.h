@@ -53,6 +53,9 @@ struct Messages {
   int error_count = 0;                    // errors reported so far (a script stops on a new one)
   bool error_kept_design = false;         // the error refused a design change (so the design is unchanged)
   bool error_is_input = false;            // the last error was the user's input (a script exits 2), not a bug (1)
+  // The status line (and the error dialog) tell of a run's outcome: a newer run makes them stale.
+  bool status_from_run = false;
+  bool error_from_run = false;
 };
 
 struct Document {
@@ -107,6 +110,11 @@ std::shared_ptr<const ShapeMesh> shared_custom_shape(Document& doc);
 void prepare_output(const Document& doc, const std::filesystem::path& path, bool may_be_design = false);
 
 void report_status(Document& doc, std::string text);
+// A run's outcome: its verdict, or why it failed. Made stale by the next run (mark_run_started).
+void report_run_status(Document& doc, std::string text);
+void report_run_error(Document& doc, std::string text, bool input);
+// A new run began: a previous run's status gives way to "solving", its error dialog closes.
+void mark_run_started(Document& doc);
 void report_error(Document& doc, std::string text, bool input = false);  // status line and the error dialog
 void report_error(Document& doc, const std::exception& e);  // an InputError is the user's input
 

@@ -63,7 +63,7 @@ void take_run_outcome(Studio& s) {
   std::optional<RunOutcome> outcome = s.live.take_outcome();
   if (!outcome || outcome->revision != s.doc.revision) return;  // an older design's: dropped
   if (!outcome->pavement) {
-    report_error(s.doc, outcome->error, outcome->input_error);
+    report_run_error(s.doc, outcome->error, outcome->input_error);
     return;
   }
   const Pavement& p = *outcome->pavement;
@@ -82,7 +82,7 @@ void take_run_outcome(Studio& s) {
     }
   }
   const Verdict& verdict = s.doc.result.verdict;
-  report_status(s.doc, std::string(verdict.ok ? "ok: " : "NOT OK (Report panel says why): ") +
+  report_run_status(s.doc, std::string(verdict.ok ? "ok: " : "NOT OK (Report panel says why): ") +
                            std::to_string(p.elements.size()) + " elements, " +
                            std::to_string(p.after.contact_violations) + " contact violations; " +
                            std::to_string(p.solve.iterations) + " iterations (" +
@@ -469,6 +469,7 @@ void run_now(Studio& s, bool paused, int step) {
   request.custom_shape = shared_custom_shape(s.doc);
   request.paused = paused;
   request.step = step;
+  mark_run_started(s.doc);
   s.live.start(std::move(request));
 }
 

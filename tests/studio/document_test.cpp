@@ -156,4 +156,26 @@ TEST(Document, AResultCarriesItsRatiosAndHistogram) {
 }
 
 }  // namespace
+// A designer's trial: the last result's "ok: 949 elements" stayed on screen while a 10k run solved,
+// and an old run's error after another change. A new run makes a run's status and error stale; an
+// edit's own status line stays.
+TEST(Document, ANewRunMakesTheLastRunsStatusAndErrorStale) {
+  Document doc;
+  report_run_status(doc, "ok: 949 elements, 0 contact violations; 200 iterations (converged)");
+  mark_run_started(doc);
+  EXPECT_EQ(doc.messages.status.rfind("solving the changed design", 0), 0u) << doc.messages.status;
+  report_run_error(doc, "the pattern places no element on this surface", true);
+  EXPECT_FALSE(doc.messages.error.empty());
+  mark_run_started(doc);
+  EXPECT_TRUE(doc.messages.error.empty()) << "the old run's error no longer applies";
+  EXPECT_EQ(doc.messages.status.rfind("solving", 0), 0u) << doc.messages.status;
+  EXPECT_EQ(doc.messages.error_count, 1) << "a script still sees that an error happened";
+  report_status(doc, "pinned element 12");
+  mark_run_started(doc);
+  EXPECT_EQ(doc.messages.status, "pinned element 12") << "what the edit did stays said";
+  report_error(doc, "cannot read design.json", true);
+  mark_run_started(doc);
+  EXPECT_EQ(doc.messages.error, "cannot read design.json") << "an error of the user's action, not a run's, stays";
+}
+
 }  // namespace paver::studio

@@ -47,7 +47,9 @@ void dialogs(Studio& s) {
     ImGui::TextDisabled("%s", doc.messages.error_kept_design
                                   ? "The design is unchanged."
                                   : "The views keep the last pavement that could be made; Ctrl+Z undoes the last change.");
-    if (ImGui::Button("OK", ImVec2(120, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter))) {
+    // Closed by OK, or when a newer run has made the error stale (mark_run_started).
+    if (ImGui::Button("OK", ImVec2(120, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter)) ||
+        doc.messages.error.empty()) {
       doc.messages.error.clear();
       ImGui::CloseCurrentPopup();
     }
