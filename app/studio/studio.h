@@ -65,6 +65,7 @@ struct UiState {
   bool add_virtual = false;            // Add makes a virtual edge
   MapDrag map_drag = MapDrag::None;
   bool quit_dialog = false;            // asking Save / Discard / Cancel
+  std::string quit_message;            // why the Quit dialog's Save did not save
   std::optional<std::filesystem::path> screenshot;  // write the next presented frame here
   std::string select_panel;            // a script's `panel NAME`: selected on the next frame
   double cut_thickness = 1;            // Cut metal: the metal's thickness, surface units

@@ -77,24 +77,38 @@ void dialogs(Studio& s) {
     ImGui::EndPopup();
   }
 
-  if (s.ui.quit_dialog && doc.messages.error.empty() && !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId))
+  if (s.ui.quit_dialog && doc.messages.error.empty() && !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) {
     ImGui::OpenPopup("Quit");
+    // A bundled design cannot be saved over: offer a name of the user's own (save_as_start), as the
+    // file browser does, rather than a path that Save then refuses.
+    if (s.ui.design_path.empty() || is_bundled_design(s.ui.design_path))
+      s.ui.design_path = doc.design_path.empty() ? std::string("my_design.json") : save_as_start(doc.design_path).string();
+  }
   ImGui::SetNextWindowSize(ImVec2(460, 0));
   if (ImGui::BeginPopupModal("Quit", nullptr, ImGuiWindowFlags_NoSavedSettings)) {
     ImGui::TextWrapped("The design has changes that are not saved.");
-    if (s.ui.design_path.empty()) s.ui.design_path = doc.design_path.string();
     ImGui::InputText("design file", &s.ui.design_path);
     const auto close = [&](bool quit) {
       s.ui.quit_dialog = false;
       s.quit = quit;
+      s.ui.quit_message.clear();
       ImGui::CloseCurrentPopup();
     };
-    if (ImGui::Button("Save", ImVec2(120, 0)) && !s.ui.design_path.empty() && save_design_file(doc, s.ui.design_path))
-      close(true);
+    if (ImGui::Button("Save", ImVec2(120, 0))) {
+      // Said here: the error dialog cannot open over this one.
+      if (s.ui.design_path.empty()) s.ui.quit_message = "give the design a file name to save it to";
+      else if (save_design_file(doc, s.ui.design_path)) close(true);
+      else s.ui.quit_message = doc.messages.error, doc.messages.error.clear();
+    }
     ImGui::SameLine();
     if (ImGui::Button("Discard", ImVec2(120, 0))) close(true);
     ImGui::SameLine();
     if (ImGui::Button("Cancel", ImVec2(120, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) close(false);
+    if (!s.ui.quit_message.empty()) {
+      ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.45f, 0.4f, 1));
+      ImGui::TextWrapped("%s", s.ui.quit_message.c_str());
+      ImGui::PopStyleColor();
+    }
     ImGui::EndPopup();
   }
 }
