@@ -238,9 +238,10 @@ app::BackendChoice set_up_solving(const RunArgs& args, PipelineRequest& request,
 }
 
 // The files `paver run` writes, as the summary's last line lists them.
-std::string written_files(const MeshFormats& formats, bool cut, bool png) {
+std::string written_files(const MeshFormats& formats, bool beads, bool cut, bool png) {
   std::string written = "placements.csv, stones.csv";
   for (const std::string& name : mesh_file_names(formats)) written += ", " + name;
+  if (formats.stl && beads) written += ", beads.stl";
   written += ", design.json, report.json, report.html";
   if (cut) written += png ? ", cut.stl, cut.3mf, cut.png" : ", cut.stl, cut.3mf";
   if (png) written += ", preview.png, param.png";
@@ -286,6 +287,7 @@ int run_run(const RunArgs& args) {
   };
   std::vector<std::string> stl_files;
   if (request.formats.stl) stl_files.push_back("elements.stl");
+  if (request.formats.stl && request.design.elements.beads.enabled) stl_files.push_back("beads.stl");
   if (args.subtract) stl_files.push_back("cut.stl");
   const std::string stl_units = stl_unit_warning(request.design.units, stl_files);
   if (!stl_units.empty()) warn(stl_units);
@@ -293,7 +295,8 @@ int run_run(const RunArgs& args) {
   const PipelineResult result = run_pipeline(std::move(request));
   progress.finish();
   const SummaryContext summary{args.surface, backend.name, backend.device, cut_summary,
-                               written_files(formats, !cut_summary.is_null(), args.png), out.string()};
+                               written_files(formats, result.pavement.beads.size() > 0, !cut_summary.is_null(), args.png),
+                               out.string()};
   // The files are written either way (to look at); a script learns from the code that they failed.
   return print_run_summary(result, summary) ? 0 : kExitVerdictNotOk;
 }

@@ -57,7 +57,12 @@ void write_run_files(const fs::path& folder, const SurfaceMap& map, const Paveme
   const MeshFormats& formats = options.formats;
   if (formats.ply) write_elements_ply(folder / "elements.ply", exported, mesh_options);
   if (formats.obj) write_elements_obj(folder / "elements.obj", exported, mesh_options);
-  if (formats.stl) write_elements_stl(folder / "elements.stl", exported, mesh_options);
+  // STL has no groups: the stones and the beads (metal, cast with the piece) are files of their own,
+  // so that a shop can print or render one without the other (one file mixed them).
+  if (formats.stl) {
+    write_elements_stl(folder / "elements.stl", pavement.elements, mesh_options);
+    if (pavement.beads.size() > 0) write_elements_stl(folder / "beads.stl", pavement.beads, mesh_options);
+  }
   if (formats.glb)
     write_pavement_glb(folder / "elements.glb", {.mesh = &map.mesh, .normals = &map.normals}, exported,
                        pavement.design.units, mesh_options);
@@ -68,7 +73,7 @@ void write_run_files(const fs::path& folder, const SurfaceMap& map, const Paveme
 
 std::vector<std::string> run_output_names() {
   std::vector<std::string> names = {"placements.csv", "stones.csv", "design.json", "report.json", "report.html", "preview.png",
-                                    "param.png",      "cut.stl",     "cut.3mf",     "cut.png"};
+                                    "param.png",      "cut.stl",     "cut.3mf",     "cut.png",     "beads.stl"};
   for (std::string& name : all_mesh_file_names()) names.push_back(std::move(name));
   return names;
 }

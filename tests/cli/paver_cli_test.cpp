@@ -196,6 +196,29 @@ TEST_F(PaverRun, ARegionPavesASolidRingsOuterFaceOnly) {
   EXPECT_FALSE(fs::exists(dir() / "o2"));
 }
 
+// STL has no groups: elements.stl mixed the stones with the beads (metal). The stones are
+// elements.stl, the beads beads.stl; together they are every face elements.ply has.
+TEST_F(PaverRun, StonesAndBeadsAreSeparateStlFiles) {
+  const fs::path out = dir() / "out";
+  const CliResult r = paver({"run", "assets/surfaces/pendant.obj", "--stone", "3", "--gap", "0.2", "--beads", "--formats",
+                             "ply,stl", "--quiet", "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  EXPECT_NE(r.out.find("elements.stl, beads.stl"), std::string::npos) << describe(r);
+  const auto stl_faces = [](const fs::path& path) { return (fs::file_size(path) - 84) / 50; };
+  const std::string ply = read_file_text(out / "elements.ply");
+  const std::size_t at = ply.find("element face ");
+  ASSERT_NE(at, std::string::npos);
+  const std::size_t ply_faces = std::stoul(ply.substr(at + 13));
+  std::size_t stones = 0, beads = 0;
+  for (const Placement& row : read_placements(out / "placements.csv")) (row.kind == 'B' ? beads : stones) += 1;
+  ASSERT_GT(beads, 0u);
+  const std::size_t stone_faces = stl_faces(out / "elements.stl"), bead_faces = stl_faces(out / "beads.stl");
+  EXPECT_EQ(stone_faces + bead_faces, ply_faces);
+  EXPECT_EQ(stone_faces % stones, 0u) << "elements.stl holds whole stones only";
+  EXPECT_EQ(bead_faces % beads, 0u) << "beads.stl holds whole beads only";
+  EXPECT_NE(stone_faces / stones, bead_faces / beads) << "a gem and a bead are different meshes";
+}
+
 TEST_F(PaverRun, RimRowsRingThePendantsPiercingsOnRequest) {
   const fs::path out = dir() / "rims";
   const CliResult r = paver({"run", "assets/surfaces/pendant_pierced.obj", "--rim-rows", "holes", "--out", out.string()});
