@@ -11,6 +11,7 @@
 #include "io/stl_unit_warning.h"
 #include "panels/panels.h"
 #include "recent_files.h"
+#include "core/stopwatch.h"
 #include "pipeline/run_outputs.h"
 #include "shortcuts.h"
 
@@ -353,18 +354,58 @@ bool result_is_final(const Studio& s) {
 // The studio exports every format: a designer hands the set on and should not have to choose.
 constexpr MeshFormats kStudioExportFormats{.ply = true, .obj = true, .stl = true, .glb = true, .threemf = true};
 
+namespace {
+
+// A view as the screen shows it, at the 3D view's size on screen (1280 x 800 before it was drawn):
+// 0, the 3D view, centred (a PNG has no inset to make room for), with its legend; 1, the whole 2D
+// map framed to fit (on screen it may be the small inset).
+render::Image view_image(Studio& s, int view) {
+  const std::vector<double>& shown = s.scene.rendered[0];
+  const int width = shown.size() >= 2 ? int(shown[0]) : 1280, height = shown.size() >= 2 ? int(shown[1]) : 800;
+  if (view == 0) {
+    render::OrbitCamera centred = s.views.camera;
+    centred.screen_shift_x = 0;
+    s.renderer.render_3d(width, height, centred, s.views.style);
+  } else {
+    const render::MapView whole = render::frame_map(
+        map_for_topology(*s.doc.surface.map, s.doc.design.pattern.topology), double(width) / double(height));
+    s.renderer.render_2d(width, height, whole, s.views.style);
+  }
+  s.scene.rendered[std::size_t(view)].clear();  // the screen's view is drawn again next frame, whole
+  s.scene.redraw_whole[std::size_t(view)] = true;
+  render::Image image = s.renderer.read_back(view);
+  if (view == 0 && s.views.show_legend && s.views.style.show_elements) {
+    if (s.views.colour_mode == render::ColourMode::NeighbourRatio)
+      render::draw_ratio_legend(image);
+    else
+      render::draw_type_legend(image);
+  }
+  return image;
+}
+
+}  // namespace
+
 void export_outputs(Studio& s, const fs::path& folder) {
   if (!result_is_final(s))
     throw InputError("nothing to export yet: the pavement for this design is not finished (run it, or wait)");
   const Pavement& pavement = *s.doc.result.pavement;
-  check_run_outputs(folder, kStudioExportFormats, {},
+  check_run_outputs(folder, kStudioExportFormats, {folder / "preview.png", folder / "param.png"},
                     {s.doc.surface.path, s.doc.design_path, s.doc.design.elements.custom_shape});
   StageTimings timings = s.doc.surface.timings;
   timings.insert(timings.end(), pavement.timings.begin(), pavement.timings.end());
   const RunInfo info{s.doc.surface.path.string(), s.doc.design_path.empty() ? "studio" : s.doc.design_path.string(),
                      s.doc.design.pattern.spacing <= 0};
-  const std::vector<std::string> untidy = write_run_outputs(
-      folder, info, *s.doc.surface.map, pavement, timings, {.custom = custom_shape(s.doc), .formats = kStudioExportFormats});
+  // The pictures `paver run --png` writes, drawn by the studio's own renderer as the views show them;
+  // before report.json and report.html, which embeds preview.png.
+  const ExtraOutputs pictures = [&](const fs::path& staging, StageTimings& stages, nlohmann::json&) {
+    const Stopwatch watch;
+    render::write_png(staging / "preview.png", view_image(s, 0));
+    render::write_png(staging / "param.png", view_image(s, 1));
+    stages.emplace_back("png", watch.milliseconds());
+  };
+  const std::vector<std::string> untidy =
+      write_run_outputs(folder, info, *s.doc.surface.map, pavement, timings,
+                        {.custom = custom_shape(s.doc), .formats = kStudioExportFormats}, pictures);
   s.ui.export_dir = folder.string();  // the File panel shows where the files went (a script's export too)
   const std::string stl_units = stl_unit_warning(pavement.design.units, {"elements.stl"});
   std::string status = "exported to " + folder.string() + (stl_units.empty() ? "" : "; warning: " + stl_units);
@@ -386,22 +427,7 @@ void cut_metal(Studio& s, const fs::path& folder, double thickness) {
 
 void save_view_png(Studio& s, const fs::path& path) {
   if (!s.doc.surface.map) throw InputError("nothing to save yet: open a surface first");
-  // The 3D view at its size on screen, but centred: the PNG has no inset to make room for.
-  const std::vector<double>& shown = s.scene.rendered[0];
-  const int width = shown.size() >= 2 ? int(shown[0]) : 1280, height = shown.size() >= 2 ? int(shown[1]) : 800;
-  render::OrbitCamera centred = s.views.camera;
-  centred.screen_shift_x = 0;
-  s.renderer.render_3d(width, height, centred, s.views.style);
-  s.scene.rendered[0].clear();  // the screen's view is drawn again next frame, whole
-  s.scene.redraw_whole[0] = true;
-  render::Image image = s.renderer.read_back(0);
-  // The legend of the colouring on screen, as the screen draws it.
-  if (s.views.show_legend && s.views.style.show_elements) {
-    if (s.views.colour_mode == render::ColourMode::NeighbourRatio)
-      render::draw_ratio_legend(image);
-    else
-      render::draw_type_legend(image);
-  }
+  const render::Image image = view_image(s, 0);
   prepare_output(s.doc, path);
   render::write_png(path, image);
   report_status(s.doc, "saved " + path.string());

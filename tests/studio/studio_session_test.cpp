@@ -141,8 +141,16 @@ TEST_F(StudioSession, ScriptedEditExportsWhatTheCliWritesAndScreenshotShowsThePa
 
   // Redo brought dt 0.25 back, and the export carries it.
   for (const char* name : {"placements.csv", "stones.csv", "elements.ply", "elements.obj", "elements.stl",
-                           "elements.glb", "paved.3mf", "design.json", "report.json", "report.html"})
+                           "elements.glb", "paved.3mf", "design.json", "report.json", "report.html", "preview.png",
+                           "param.png"})
     EXPECT_TRUE(fs::is_regular_file(exported / name)) << name;
+  // Export all draws both pictures, as `paver run --png` does, and report.html embeds the preview
+  // rather than telling the user to run the CLI with --png.
+  for (const char* name : {"preview.png", "param.png"})
+    EXPECT_GT(fs::file_size(exported / name), 10000u) << name << " is not a picture of the pavement";
+  const std::string html = read_text(exported / "report.html");
+  EXPECT_NE(html.find("data:image/png;base64,"), std::string::npos);
+  EXPECT_EQ(html.find("run with --png"), std::string::npos);
   const nlohmann::json design = nlohmann::json::parse(read_text(exported / "design.json"));
   EXPECT_EQ(design["solver"]["dt"].get<double>(), 0.25);
   EXPECT_EQ(design["pattern"]["tessellation"], "hex");
