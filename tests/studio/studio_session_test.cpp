@@ -323,6 +323,15 @@ std::map<long, Row> placements_by_id(const fs::path& csv) {
   return rows;
 }
 
+// The vertex element whose map point is nearest (u, v).
+long nearest_vertex_element(const std::map<long, Row>& rows, double u, double v) {
+  long nearest = -1;
+  double best = 1e300;
+  for (const auto& [id, row] : rows)
+    if (row.kind == 'V' && std::hypot(row.u - u, row.v - v) < best) best = std::hypot(row.u - u, row.v - v), nearest = id;
+  return nearest;
+}
+
 // The contact rule over all pairs, from the file: pairs closer than the sum of their radii.
 long contact_violations(const std::map<long, Row>& rows) {
   long violations = 0;
@@ -560,10 +569,7 @@ TEST_F(StudioSession, ADragThenPKeepsTheStoneWhereItWasDroppedAndShiftPLetsGo) {
   const fs::path base = dir_ / "base";
   const std::map<long, Row> before = placements_by_id(base / "placements.csv");
   const double D = nlohmann::json::parse(read_text(base / "design.json"))["pattern"]["spacing"].get<double>();
-  long dragged = -1;
-  double nearest = 1e300;
-  for (const auto& [id, row] : before)
-    if (row.kind == 'V' && std::hypot(row.u, row.v) < nearest) nearest = std::hypot(row.u, row.v), dragged = id;
+  const long dragged = nearest_vertex_element(before, 0, 0);
   const Row centre = before.at(dragged);
   const fs::path held = dir_ / "held", let_go = dir_ / "let_go", script = dir_ / "drag_p.txt";
   std::ofstream(script) << std::setprecision(17) << "open assets/surfaces/pendant.obj\n"
@@ -605,23 +611,12 @@ TEST_F(StudioSession, TheMouseAndKeysEditStones) {
   const std::map<long, Row> before = placements_by_id(base / "placements.csv");
   const double D = nlohmann::json::parse(read_text(base / "design.json"))["pattern"]["spacing"].get<double>();
   // The vertex element nearest the map's middle is dragged; one three spacings left of it deleted.
-  long dragged = -1, deleted = -1;
-  double nearest = 1e300, off = 1e300;
-  for (const auto& [id, row] : before)
-    if (row.kind == 'V' && std::hypot(row.u, row.v) < nearest) nearest = std::hypot(row.u, row.v), dragged = id;
+  const long dragged = nearest_vertex_element(before, 0, 0);
   const Row centre = before.at(dragged);
-  for (const auto& [id, row] : before) {
-    const double o = std::hypot(row.u - (centre.u - 3 * D), row.v - centre.v);
-    if (row.kind == 'V' && o < off) off = o, deleted = id;
-  }
+  const long deleted = nearest_vertex_element(before, centre.u - 3 * D, centre.v);
   const Row gone = before.at(deleted);
   // And one three spacings right of it is pinned with P.
-  long pinned = -1;
-  off = 1e300;
-  for (const auto& [id, row] : before) {
-    const double o = std::hypot(row.u - (centre.u + 3 * D), row.v - centre.v);
-    if (row.kind == 'V' && o < off) off = o, pinned = id;
-  }
+  const long pinned = nearest_vertex_element(before, centre.u + 3 * D, centre.v);
   const Row held = before.at(pinned);
   const double add_u = centre.u + 0.5 * D, add_v = centre.v - 3 * D;
   const fs::path exported = dir_ / "mouse", script = dir_ / "mouse.txt";
