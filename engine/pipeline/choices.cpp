@@ -236,7 +236,17 @@ Pavement choose_topology(const SurfaceMap& map, const Design& design, const Pave
        [&](const Pavement* best) {
          Design grown = best->design;
          grown.placement = design.placement;
-         if (best->band_closure) grown.pattern.spacing = best->band_closure->spacing_before;
+         if (best->band_closure) {
+           // The closure's spacing is undone, and with it the stone scales it adjusted to keep the
+           // stones' size: the adaptive pattern at D with the closed band's scales made 2 mm stones
+           // 1.992 mm (issue 40, "stones as ordered").
+           grown.pattern.spacing = best->band_closure->spacing_before;
+           if (best->band_closure->stones_kept) {
+             grown.elements.vertex.scale = design.elements.vertex.scale;
+             for (std::size_t k = 0; k < grown.elements.edge.size() && k < design.elements.edge.size(); ++k)
+               grown.elements.edge[k].scale = design.elements.edge[k].scale;
+           }
+         }
          grown.pattern.topology = Topology::Adaptive;
          return pave_lattice_or_adaptive(map, std::move(grown), options);
        },

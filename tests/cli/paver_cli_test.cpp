@@ -219,6 +219,22 @@ TEST_F(PaverRun, StonesAndBeadsAreSeparateStlFiles) {
   EXPECT_NE(stone_faces / stones, bead_faces / beads) << "a gem and a bead are different meshes";
 }
 
+// --stone S means every stone is S (issue 40, "stones as ordered"): on the vase band the topology
+// chooser grows the adaptive pattern after a band closure had changed D and scaled the stones to
+// keep their size; the adaptive pattern took back D but kept the scales, and 3 mm stones came out
+// 2.94 mm.
+TEST_F(PaverRun, EveryStoneIsTheSizeOrderedWhicheverPatternWins) {
+  const fs::path out = dir() / "out";
+  const CliResult r = paver({"run", "assets/surfaces/vase_band.obj", "--stone", "3", "--gap", "0.1", "--formats", "ply",
+                             "--quiet", "--out", out.string()});
+  ASSERT_TRUE(r.exit_code == 0 || r.exit_code == 3) << describe(r);
+  EXPECT_NE(r.out.find("topology auto: adaptive"), std::string::npos) << "the case is the adaptive one: " << describe(r);
+  const std::vector<Placement> rows = read_placements(out / "placements.csv");
+  ASSERT_GT(rows.size(), 1000u);
+  for (const Placement& row : rows) ASSERT_NEAR(row.diameter, 3.0, 1e-9) << "stone " << row.id;
+  EXPECT_NE(r.out.find("gem of 3.00 mm"), std::string::npos) << describe(r);
+}
+
 TEST_F(PaverRun, RimRowsRingThePendantsPiercingsOnRequest) {
   const fs::path out = dir() / "rims";
   const CliResult r = paver({"run", "assets/surfaces/pendant_pierced.obj", "--rim-rows", "holes", "--out", out.string()});
