@@ -173,7 +173,11 @@ ChartCut cut_across(const SurfaceMesh& closed, glm::dvec3 normal, double offset,
     }
     const std::string chart_name = source + " (chart " + std::to_string(cut.charts.size() + 1) +
                                    " of the closed surface cut across its " + axis_name + ")";
-    LoadedSurface chart = check_and_repair(std::move(positions), polygons, chart_name, 0);
+    // The chart's vertices must stay those of vertex_of: no joining, no splitting (a chart that
+    // pinches at a vertex on the plane is refused as non-manifold, and another axis tried).
+    LoadedSurface chart = check_and_repair(std::move(positions), polygons, chart_name, 0, VertexRepair::None);
+    if (chart.mesh.vertex_count() != int(vertex_of.size()))
+      throw InputError(chart_name + ": the cut left vertices no face of the chart uses; choose another --cut axis");
     cut.charts.push_back(std::move(chart.mesh));
     cut.vertex_of.push_back(std::move(vertex_of));
   }

@@ -84,6 +84,7 @@ void keep_region(PolygonSoup& soup, const std::vector<std::string>& region, cons
   soup.polygons = std::move(kept);
   soup.collapsed_faces = 0;  // faces left out of the region are no concern of this run
   soup.polygon_group.clear();
+  soup.group_sets.clear();
 }
 
 }  // namespace

@@ -138,14 +138,17 @@ struct Components {
   long long dropped_faces = 0;
 };
 
-// For every vertex, the first vertex with exactly its position (0 and -0 alike, as the STL reader's
-// Welder joins corners): the vertex itself when it is the first.
-std::vector<int> first_at_same_position(const std::vector<glm::dvec3>& positions) {
-  std::vector<int> order(positions.size());
-  std::iota(order.begin(), order.end(), 0);
+// For every vertex a face uses, the first such vertex with exactly its position (0 and -0 alike, as
+// the STL reader's Welder joins corners): the vertex itself when it is the first. A vertex no face
+// uses is its own, and never another's: it must not become a fan's vertex unannounced.
+std::vector<int> first_at_same_position(const std::vector<glm::dvec3>& positions, const std::vector<char>& used) {
+  std::vector<int> order;
+  for (int v = 0; v < int(positions.size()); ++v)
+    if (used[std::size_t(v)]) order.push_back(v);
   const auto key = [&](int i) { return std::tie(positions[i].x, positions[i].y, positions[i].z); };
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return key(a) < key(b); });
   std::vector<int> first(positions.size());
+  std::iota(first.begin(), first.end(), 0);
   for (std::size_t k = 0; k < order.size(); ++k)
     first[order[k]] = k > 0 && key(order[k]) == key(order[k - 1]) ? first[order[k - 1]] : order[k];
   return first;
@@ -166,7 +169,9 @@ struct Welding {
 // appended to `positions`; faces whose corners join are removed from `file_triangles`.
 Welding weld(std::vector<glm::dvec3>& positions, std::vector<glm::ivec3>& file_triangles,
              std::vector<glm::ivec3>& triangles) {
-  const std::vector<int> first = first_at_same_position(positions);
+  std::vector<char> file_used(positions.size(), 0);
+  for (const glm::ivec3& t : file_triangles) file_used[t.x] = file_used[t.y] = file_used[t.z] = 1;
+  const std::vector<int> first = first_at_same_position(positions, file_used);
   Welding welding;
   // Two corners at one position give a face of no area, which the triangulation left out; three
   // at one point pass its relative test (no edge to measure by), so they are left out here.
@@ -251,7 +256,7 @@ Welding weld(std::vector<glm::dvec3>& positions, std::vector<glm::ivec3>& file_t
   for (int root : fan_roots) {
     if (fan_vertex[root] >= 0) continue;
     const int vertex = triangles[root / 3][root % 3];
-    if (!taken[vertex] || on_bad_edge[vertex]) {
+    if ((!taken[vertex] && file_used[std::size_t(vertex)]) || on_bad_edge[vertex]) {
       fan_vertex[root] = vertex;
       taken[vertex] = 1;
       continue;
@@ -263,12 +268,12 @@ Welding weld(std::vector<glm::dvec3>& positions, std::vector<glm::ivec3>& file_t
   }
   for (int corner = 0; corner < int(triangles.size() * 3); ++corner)
     triangles[corner / 3][corner % 3] = fan_vertex[corners.find(corner)];
-  // Joins: the file's vertices that the triangles use, less the surface's own (copies aside).
-  std::vector<char> file_used(file_vertex_count, 0), used(positions.size(), 0);
+  // Joins: the file's vertices its kept faces use that no corner has any more.
+  std::fill(file_used.begin(), file_used.end(), 0);
   for (const glm::ivec3& t : file_triangles) file_used[t.x] = file_used[t.y] = file_used[t.z] = 1;
+  std::vector<char> used(positions.size(), 0);
   for (const glm::ivec3& t : triangles) used[t.x] = used[t.y] = used[t.z] = 1;
-  const long long copies = static_cast<long long>(positions.size() - file_vertex_count);
-  welding.joined = std::count(file_used.begin(), file_used.end(), 1) - std::count(used.begin(), used.end(), 1) + copies;
+  for (std::size_t v = 0; v < file_vertex_count; ++v) welding.joined += file_used[v] && !used[v];
   return welding;
 }
 
@@ -424,7 +429,7 @@ std::vector<std::vector<int>> boundary_loops(const std::vector<glm::ivec3>& tria
 }  // namespace
 
 LoadedSurface check_and_repair(std::vector<glm::dvec3> positions, const std::vector<std::vector<int>>& given_polygons,
-                               const std::string& source, int collapsed_faces) {
+                               const std::string& source, int collapsed_faces, VertexRepair repair) {
   LoadedSurface loaded;
   if (given_polygons.empty() && collapsed_faces == 0)
     fail(source, "contains no faces (" + count_of(static_cast<long long>(positions.size()), "vertex", "vertices") +
@@ -437,7 +442,9 @@ LoadedSurface check_and_repair(std::vector<glm::dvec3> positions, const std::vec
   Triangulation triangulation = triangulate(positions, given_polygons, degenerate_area(positions, given_polygons));
   const std::size_t file_vertex_count = positions.size();
   std::vector<glm::ivec3> triangles;
-  const Welding welding = weld(positions, triangulation.triangles, triangles);
+  Welding welding;
+  if (repair == VertexRepair::JoinAndSplit) welding = weld(positions, triangulation.triangles, triangles);
+  else triangles = triangulation.triangles;
   loaded.dropped_degenerate_faces = triangulation.degenerate + welding.collapsed_faces + collapsed_faces;
   const std::string degenerate = count_of(loaded.dropped_degenerate_faces, "degenerate face", "degenerate faces");
   if (triangles.empty())

@@ -708,6 +708,20 @@ TEST_F(MeshLoaderTest, ABowtieVertexIsSplitWithAWarning) {
   expect_valid_surface(loaded.mesh);
 }
 
+// A vertex no face uses, at the bowtie's position and numbered before it, is not taken as the
+// second fan's vertex: the split is a copy, said as one, and the unused vertex is dropped and said.
+TEST_F(MeshLoaderTest, AnUnusedVertexAtABowtieIsNotTakenForAFan) {
+  const LoadedSurface loaded = load_surface(
+      write("bowtie_unused.obj", "v 0 0 0\nv 0 0 0\nv 1 1 0\nv 1 -1 0\nv -2 2 0\nv -2 -2 0\nf 2 3 4\nf 2 5 6\n"));
+  std::string said;
+  for (const std::string& w : loaded.warnings) said += w + "\n";
+  EXPECT_TRUE(Contains(said, "split 1 vertex")) << said;
+  EXPECT_TRUE(Contains(said, "dropped 1 unreferenced vertex")) << said;
+  EXPECT_FALSE(Contains(said, "joined")) << said;
+  EXPECT_EQ(loaded.mesh.face_count(), 1);
+  expect_valid_surface(loaded.mesh);
+}
+
 TEST_F(MeshLoaderTest, ConesTouchingAtTheTipAreSplitThere) {
   std::vector<glm::dvec3> positions = {{0, 0, 0}};
   std::vector<std::vector<int>> faces;
