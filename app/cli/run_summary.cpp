@@ -2,6 +2,7 @@
 
 #include "core/printable.h"
 #include "design/design_keys.h"
+#include "map/surface_charts.h"
 #include "pattern/adaptive_pattern.h"
 #include "report/bill_of_stones.h"
 #include "report/verdict.h"
@@ -38,8 +39,7 @@ void print_surface_and_map(const SurfaceMap& map, const std::string& surface) {
   const auto& q = map.parameterization.quality;
   const auto& pr = map.parameterization.report;
   const int holes = map.mesh.hole_count();
-  // A closed surface's handles, from its Euler characteristic (V - E + F = 2 - 2 handles, E = 3F / 2).
-  const long long handles = (2 - static_cast<long long>(map.closed_surface_vertices) + map.closed_surface_faces / 2) / 2;
+  const long long handles = closed_surface_handles(map.closed_surface_vertices, map.closed_surface_faces);
   const std::string handle_text = handles == 1 ? " with 1 handle" : handles > 1 ? " with " + std::to_string(handles) + " handles" : "";
   const std::string shape = is_atlas(map) ? "a closed surface" + handle_text + ", cut into " + std::to_string(chart_count(map)) +
                                                 " charts (" + std::to_string(map.mesh.boundary_loops.size()) +

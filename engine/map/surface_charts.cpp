@@ -186,8 +186,10 @@ ChartCut cut_across(const SurfaceMesh& closed, glm::dvec3 normal, double offset,
 
 }  // namespace
 
+long long closed_surface_handles(long long vertices, long long faces) { return (2 - vertices + faces / 2) / 2; }
+
 long long closed_surface_handles(const SurfaceMesh& closed) {
-  return (2 - static_cast<long long>(closed.vertex_count()) + static_cast<long long>(closed.face_count()) / 2) / 2;
+  return closed_surface_handles(closed.vertex_count(), closed.face_count());
 }
 
 bool cuts_into_charts(const SurfaceMesh& closed, CutAxis axis) {

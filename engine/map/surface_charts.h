@@ -39,7 +39,9 @@ struct ChartCut {
 // (it has handles).
 ChartCut cut_into_charts(const SurfaceMesh& closed, CutAxis axis, const std::string& source);
 
-// The handles of a closed, connected, oriented surface: V - E + F = 2 - 2 * handles, E = 3F / 2.
+// The handles of a closed, connected, oriented surface: V - E + F = 2 - 2 * handles, E = 3F / 2;
+// from its counts (an atlas keeps those of the surface it was cut from).
+long long closed_surface_handles(long long vertices, long long faces);
 long long closed_surface_handles(const SurfaceMesh& closed);
 
 // Whether cutting across `axis` leaves charts Paver maps (always, for a surface without handles).
