@@ -323,6 +323,11 @@ std::map<long, Row> placements_by_id(const fs::path& csv) {
   return rows;
 }
 
+// A script's start for editing stones with the mouse: the lattice pendant paved, the 2D view large
+// without the inset, stone editing on.
+constexpr const char* kMouseEditingOnTheLatticePendant =
+    "open assets/surfaces/pendant.obj\nset pattern.topology lattice\noptimize\nview2d\nkey I\nkey E\n";
+
 // The vertex element whose map point is nearest (u, v).
 long nearest_vertex_element(const std::map<long, Row>& rows, double u, double v) {
   long nearest = -1;
@@ -572,12 +577,7 @@ TEST_F(StudioSession, ADragThenPKeepsTheStoneWhereItWasDroppedAndShiftPLetsGo) {
   const long dragged = nearest_vertex_element(before, 0, 0);
   const Row centre = before.at(dragged);
   const fs::path held = dir_ / "held", let_go = dir_ / "let_go", script = dir_ / "drag_p.txt";
-  std::ofstream(script) << std::setprecision(17) << "open assets/surfaces/pendant.obj\n"
-                        << "set pattern.topology lattice\n"
-                        << "optimize\n"
-                        << "view2d\n"
-                        << "key I\n"
-                        << "key E\n"
+  std::ofstream(script) << std::setprecision(17) << kMouseEditingOnTheLatticePendant
                         << "mouse_drag " << centre.u << " " << centre.v << " " << centre.u + 0.3 * D << " " << centre.v << "\n"
                         << "optimize\n"
                         << "key P\n"
@@ -620,12 +620,7 @@ TEST_F(StudioSession, TheMouseAndKeysEditStones) {
   const Row held = before.at(pinned);
   const double add_u = centre.u + 0.5 * D, add_v = centre.v - 3 * D;
   const fs::path exported = dir_ / "mouse", script = dir_ / "mouse.txt";
-  std::ofstream(script) << std::setprecision(17) << "open assets/surfaces/pendant.obj\n"
-                        << "set pattern.topology lattice\n"
-                        << "optimize\n"
-                        << "view2d\n"
-                        << "key I\n"
-                        << "key E\n"
+  std::ofstream(script) << std::setprecision(17) << kMouseEditingOnTheLatticePendant
                         << "mouse_drag " << centre.u << " " << centre.v << " " << centre.u + 0.4 * D << " " << centre.v << "\n"
                         << "optimize\n"
                         << "click " << held.u << " " << held.v << "\n"
