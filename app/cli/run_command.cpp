@@ -18,6 +18,7 @@
 #include "io/element_export.h"
 #include "io/stl_unit_warning.h"
 #include "pipeline/run_pipeline.h"
+#include "report/ring_size.h"
 #ifdef PAVER_WITH_CGAL
 #include "cut/cut_outputs.h"
 #endif
@@ -67,6 +68,8 @@ struct RunArgs {
   std::string formats = "ply,obj,glb,3mf";
   bool subtract = false;
   std::optional<double> thickness;
+  std::optional<double> inside_diameter;  // mm
+  std::vector<std::string> ring_size;     // system and size
   std::string cutter = "seat";
   bool quiet = false;
 
@@ -171,6 +174,30 @@ void set_up_design(const RunArgs& args, PipelineRequest& request) {
   validate_design(design, args.design.empty() ? "command line" : args.design);
 }
 
+// A ring's finger side from --inside-diameter or --ring-size (mm), and the flag as given.
+struct RingFinger {
+  double inside_diameter_mm = 0;
+  std::string given;
+};
+
+std::optional<RingFinger> ring_finger(const RunArgs& args) {
+  if (args.inside_diameter && !args.ring_size.empty())
+    throw InputError("--inside-diameter and --ring-size both set the ring's finger side: give one of them");
+  std::optional<RingFinger> finger;
+  if (args.inside_diameter)
+    finger = RingFinger{finite_positive("--inside-diameter", *args.inside_diameter, "the ring's inside diameter, mm"),
+                        "--inside-diameter " + number_text(*args.inside_diameter)};
+  if (!args.ring_size.empty()) {
+    const std::string given = "--ring-size " + printable(args.ring_size[0]) + " " + printable(args.ring_size[1]);
+    const std::optional<RingSizeSystem> system = enum_from_name<RingSizeSystem>(args.ring_size[0]);
+    if (!system) throw InputError(given + ": the size's system is US, EU or UK (--ring-size US 7)");
+    finger = RingFinger{ring_inside_diameter_mm(*system, args.ring_size[1]), given};
+  }
+  if (finger && !args.subtract)
+    throw InputError(finger->given + " sets the finger side of the metal that --subtract makes: add --subtract");
+  return finger;
+}
+
 // --subtract: the flags checked now, the cut made with the other files (into `cut_summary`).
 using ExtraWriter = std::function<void(const PipelineResult&, const fs::path&, StageTimings&, nlohmann::json&)>;
 // Without CGAL only the flag checks run, so the other parameters go unused there.
@@ -180,6 +207,7 @@ ExtraWriter set_up_cut(const RunArgs& args, [[maybe_unused]] PipelineRequest& re
   if (args.cutter != "seat" && args.cutter != "element")
     throw InputError("--cutter " + printable(args.cutter) + ": use seat (girdle, seat cone, hole through) or element");
   if (!args.subtract && args.thickness) throw InputError("--thickness is the metal's for --subtract: add --subtract");
+  [[maybe_unused]] const std::optional<RingFinger> finger = ring_finger(args);
   if (!args.subtract) return {};
   if (!args.thickness) throw InputError("--subtract needs --thickness T: how thick the metal is, surface units");
   // Checked in every build, so that a bad value says so before "this build has no CGAL".
@@ -187,14 +215,22 @@ ExtraWriter set_up_cut(const RunArgs& args, [[maybe_unused]] PipelineRequest& re
       finite_positive("--thickness", *args.thickness, "the metal's thickness, surface units");
 #ifdef PAVER_WITH_CGAL
   const fs::path out = args.out;
+  // A ring at its size: the band checked once it is mapped, before the pattern.
+  auto side = std::make_shared<std::optional<FingerSide>>();
+  if (finger)
+    request.check_map = [side, finger, thickness, per_mm = 1 / millimetres_per_unit(request.design.units)](
+                            const SurfaceMap& map) {
+      *side = check_finger_side(map, finger->inside_diameter_mm * per_mm, thickness, finger->given);
+    };
   request.extra_outputs.insert(request.extra_outputs.end(), {out / "cut.stl", out / "cut.3mf"});
   if (args.png) request.extra_outputs.push_back(out / "cut.png");
   const CutterKind cutter = *enum_from_name<CutterKind>(args.cutter);
   const auto warn = request.on_warning;
-  return [&progress, &previews, &cut_summary, warn, thickness, cutter](const PipelineResult& r, const fs::path& folder,
+  return [&progress, &previews, &cut_summary, warn, thickness, cutter, side](const PipelineResult& r, const fs::path& folder,
                                                                       StageTimings& timings, nlohmann::json& sections) {
     const CutOptions cut_options{.cutter = cutter, .thickness = thickness, .custom = r.custom_shape.get(),
-                                 .stop = &interrupt_requested(), .beads = &r.pavement.beads};
+                                 .stop = &interrupt_requested(), .beads = &r.pavement.beads,
+                                 .finger_side = *side ? &**side : nullptr};
     // Before the cut, which cannot report its progress: refused when it would not fit in memory,
     // and its size said (docs/benchmarks.md: it grows faster than the count).
     refuse_cut_beyond_memory(r.pavement.elements, cut_options, app::available_memory_bytes());
@@ -353,6 +389,12 @@ std::function<int()> add_run_command(CLI::App& app) {
   cmd->add_flag("--subtract", args->subtract,
                 "Also write the metal with the stones' seats cut out (cut.stl, cut.3mf) and its weight; needs --thickness");
   cmd->add_option("--thickness", args->thickness, "Metal thickness for --subtract, surface units (against the normals)");
+  cmd->add_option("--inside-diameter", args->inside_diameter,
+                  "A band's ring size for --subtract, mm: the metal's finger side a cylinder this wide, --thickness "
+                  "then its least thickness");
+  cmd->add_option("--ring-size", args->ring_size, "The same as a ring size: US 7, EU 54 or UK N1/2")
+      ->expected(2)
+      ->type_name("SYSTEM SIZE");
   cmd->add_option("--cutter", args->cutter, "What --subtract cuts: seat (girdle, seat cone, hole through) or element")
       ->capture_default_str();
   cmd->add_flag("--png", args->png, "Also render preview.png (3D) and param.png (2D) offscreen with Vulkan");

@@ -174,6 +174,14 @@ void print_cut(const nlohmann::json& cut, Units units) {
               cut["cutter"].get<std::string>().c_str(), cut["thickness"].get<double>(), unit.c_str(),
               cut["volume_mm3"].get<double>(), cut["shell_volume_mm3"].get<double>(),
               cut["removed_mm3"].get<double>(), std::to_string(cut["triangles"].get<std::size_t>()).c_str());
+  if (cut.contains("ring")) {
+    const nlohmann::json& ring = cut["ring"];
+    const nlohmann::json& sizes = ring["nearest_sizes"];
+    std::printf("ring     inside diameter %.2f mm (US %s, EU %s, UK %s); metal %.3g to %.3g %s thick\n",
+                ring["inside_diameter_mm"].get<double>(), sizes["US"]["size"].get<std::string>().c_str(),
+                sizes["EU"]["size"].get<std::string>().c_str(), sizes["UK"]["size"].get<std::string>().c_str(),
+                cut["thinnest_metal"].get<double>(), cut["thickest_metal"].get<double>(), unit.c_str());
+  }
   std::printf("metal   ");
   for (const auto& row : cut["metal"])
     std::printf(" %s %.2f g;", row["alloy"].get<std::string>().c_str(), row["grams"].get<double>());

@@ -394,7 +394,7 @@ void export_outputs(Studio& s, const fs::path& folder) {
   StageTimings timings = s.doc.surface.timings;
   timings.insert(timings.end(), pavement.timings.begin(), pavement.timings.end());
   const RunInfo info{s.doc.surface.path.string(), s.doc.design_path.empty() ? "studio" : s.doc.design_path.string(),
-                     s.doc.design.pattern.spacing <= 0};
+                     s.doc.design.pattern.spacing <= 0, {}};
   // The pictures `paver run --png` writes, drawn by the studio's own renderer as the views show them;
   // before report.json and report.html, which embeds preview.png.
   const ExtraOutputs pictures = [&](const fs::path& staging, StageTimings& stages, nlohmann::json&) {

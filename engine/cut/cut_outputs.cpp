@@ -3,6 +3,7 @@
 #include "io/element_export.h"
 #include "io/threemf_export.h"
 #include "report/metal_weight.h"
+#include "report/ring_size.h"
 
 #include <nlohmann/json.hpp>
 
@@ -21,7 +22,8 @@ void write_cut_files(const std::filesystem::path& folder, const CutSolid& cut, U
 
 nlohmann::json cut_json(const CutSolid& cut, CutterKind cutter, double thickness, Units units) {
   const double mm = millimetres_per_unit(units), mm3 = mm * mm * mm;
-  return {{"cutter", enum_name(cutter)},
+  const double metal = cut.thinnest_metal > 0 ? cut.thinnest_metal : thickness;
+  nlohmann::json json = {{"cutter", enum_name(cutter)},
           {"thickness", thickness},
           {"cutters", cut.cutters},
           {"united_cutters", cut.united_cutters},
@@ -33,12 +35,19 @@ nlohmann::json cut_json(const CutSolid& cut, CutterKind cutter, double thickness
           {"closed_manifold_oriented", true},
           // Deeper than the metal is thick, the culets stand out of its back (the finger's side of a ring).
           {"deepest_stone", cut.deepest_stone},
-          {"stones_stand_out_behind", std::max(0.0, cut.deepest_stone - thickness)},
+          {"thinnest_metal", metal},
+          {"thickest_metal", cut.thickest_metal > 0 ? cut.thickest_metal : thickness},
+          {"stones_stand_out_behind", std::max(0.0, cut.deepest_stone - metal)},
           {"metal", metal_weights_json(cut.volume, units)},
           {"files", {"cut.stl", "cut.3mf"}}};
+  if (cut.inside_diameter > 0)
+    json["ring"] = {{"inside_diameter_mm", cut.inside_diameter * mm},
+                    {"nearest_sizes", nearest_ring_sizes_json(cut.inside_diameter * mm)}};
+  return json;
 }
 
 std::string stones_stand_out_warning(const CutSolid& cut, double thickness, Units units) {
+  if (cut.thinnest_metal > 0) thickness = cut.thinnest_metal;  // a ring's metal is thinnest nearest the finger
   if (cut.deepest_stone <= thickness) return {};
   const std::string unit(enum_name(units));
   char text[320];

@@ -244,8 +244,15 @@ CutSolid cut_pavement(const SurfaceMap& map, const Elements& elements, const Cut
   // A closed surface's metal is a hollow shell of the whole surface (its atlas's charts would each
   // get a wall at their seams).
   const bool closed = is_atlas(map);
-  const SurfaceMesh shell_mesh = thick_shell(closed ? map.closed_surface : map.mesh,
-                                             closed ? map.closed_surface_normals : map.normals, options.thickness);
+  const FingerSide* ring = options.finger_side;
+  const SurfaceMesh shell_mesh = ring ? ring_shell(map.mesh, *ring)
+                                      : thick_shell(closed ? map.closed_surface : map.mesh,
+                                                    closed ? map.closed_surface_normals : map.normals, options.thickness);
+  // The seats' holes reach through the metal where it is thickest.
+  const double deepest_metal = ring ? ring->thickest() : options.thickness;
+  result.thinnest_metal = ring ? ring->thinnest() : options.thickness;
+  result.thickest_metal = deepest_metal;
+  result.inside_diameter = ring ? 2 * ring->inside_radius : 0;
   if (PMP::does_self_intersect(to_cgal<RoundedMesh>(shell_mesh)))
     throw InputError("--thickness " + number_text(options.thickness) +
                      ": the metal folds into itself (the surface curves more tightly than that somewhere); use a "
@@ -264,7 +271,7 @@ CutSolid cut_pavement(const SurfaceMap& map, const Elements& elements, const Cut
     for (const glm::vec3& v : shapes[elements.shape[i]].positions)
       result.deepest_stone = std::max(result.deepest_stone, -double(v.z) * d);
     const SurfaceMesh unit = unit_cutter(options.cutter, shapes[elements.shape[i]], cutter_reach_above(),
-                                         cutter_reach_below(options.thickness, d));
+                                         cutter_reach_below(deepest_metal, d));
     for (const glm::dvec3& v : unit.positions) reach = std::max(reach, d * glm::length(v));
     cutters.push_back(to_cgal(placed_cutter(unit, elements.position[i], elements.normal[i], d)));
   }

@@ -7,6 +7,7 @@
 // united first, cluster by cluster; the disjoint clusters then form one mesh that is subtracted
 // in a single difference. CGAL is GPL-3.0-or-later: this part is its own library (engine_cut),
 // and a binary that links it is GPL-3.0-or-later (README, "Licence").
+#include "cut/finger_side.h"
 #include "cut/seat_cutter.h"
 #include "elements/elements.h"
 #include "map/surface_map.h"
@@ -21,6 +22,9 @@ struct CutOptions {
   const ShapeMesh* custom = nullptr;       // the design's custom shape, for CutterKind::Element
   const std::atomic<bool>* stop = nullptr; // checked between cutters and before the difference
   const Elements* beads = nullptr;         // beads (elements/beads.h): metal, joined to the solid
+  // A band at a ring size (cut/finger_side.h): its finger side a cylinder, `thickness` then the
+  // least metal, checked by check_finger_side before the pavement.
+  const FingerSide* finger_side = nullptr;
 };
 
 struct CutSolid {
@@ -31,6 +35,9 @@ struct CutSolid {
   int united_cutters = 0;       // cutters that touched another and were united with it first
   int beads = 0;                // beads joined to the metal
   double deepest_stone = 0;     // how far the lowest stone reaches below the surface (a gem's culet), surface units
+  double thinnest_metal = 0;    // the metal's least thickness: `thickness`, or a ring's at its nearest to the finger
+  double thickest_metal = 0;    // and its greatest
+  double inside_diameter = 0;   // a ring's finger side (surface units); 0 when the metal follows the normals
   double milliseconds = 0;
 };
 

@@ -15,10 +15,17 @@ SurfaceMesh thick_shell(const SurfaceMesh& surface, const std::vector<glm::dvec3
     throw InputError("--thickness " + number_text(thickness) + ": the metal needs a thickness above 0 (surface units)");
   if (normals.size() != surface.positions.size())
     throw std::invalid_argument("thick_shell: one normal per vertex is needed");
+  std::vector<glm::dvec3> bottom(surface.positions.size());
+  for (std::size_t v = 0; v < bottom.size(); ++v) bottom[v] = surface.positions[v] - thickness * normals[v];
+  return shell_between(surface, bottom);
+}
+
+SurfaceMesh shell_between(const SurfaceMesh& surface, const std::vector<glm::dvec3>& bottom) {
+  if (bottom.size() != surface.positions.size()) throw std::invalid_argument("shell_between: one bottom point per vertex");
   const int n = surface.vertex_count();
   SurfaceMesh shell;
   shell.positions = surface.positions;
-  for (int v = 0; v < n; ++v) shell.positions.push_back(surface.positions[std::size_t(v)] - thickness * normals[std::size_t(v)]);
+  shell.positions.insert(shell.positions.end(), bottom.begin(), bottom.end());
   for (const glm::ivec3& t : surface.triangles) {
     shell.triangles.push_back(t);                                  // top, facing along the normals
     shell.triangles.emplace_back(t.x + n, t.z + n, t.y + n);       // bottom, facing against them

@@ -15,4 +15,9 @@ namespace paver {
 // tighter than `thickness` the bottom folds into itself, which the boolean stage checks.
 SurfaceMesh thick_shell(const SurfaceMesh& surface, const std::vector<glm::dvec3>& normals, double thickness);
 
+// The closed solid between `surface` (its top) and a copy of it with vertex v at `bottom[v]`
+// (#V), joined by walls along the boundary: what thick_shell and a ring's shell (cut/finger_side.h)
+// both are. Outward-oriented when the bottom lies behind the top, against its normals.
+SurfaceMesh shell_between(const SurfaceMesh& surface, const std::vector<glm::dvec3>& bottom);
+
 }  // namespace paver

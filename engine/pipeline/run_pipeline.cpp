@@ -357,6 +357,7 @@ PipelineResult run_pipeline(PipelineRequest request) {
   const std::shared_ptr<const SurfaceMesh> closed_surface = map_the_surface(request, result, cell);
   check_stop();
   warn_about_surface(design, *result.map, warn);
+  if (request.check_map) request.check_map(*result.map);
   refuse_large_output_early(request, result, cell);
   refuse_elements_too_small(request, result);
   result.pavement =

@@ -69,6 +69,10 @@ struct PipelineRequest {
   // cannot poll `stop`).
   std::function<void()> on_export;
 
+  // The caller's own checks of the mapped surface, before the pattern (the CLI's ring size needs a
+  // band): it may throw InputError, and nothing is written then.
+  std::function<void(const SurfaceMap&)> check_map;
+
   PipelineProgress progress;               // loading and mapping progress
   PipelineWarning on_warning;              // the loader's repairs, as soon as they are known
 };

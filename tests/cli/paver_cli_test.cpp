@@ -1595,10 +1595,11 @@ TEST_F(PaverRun, FormatsNarrowTheMeshFiles) {
 #ifdef PAVER_WITH_CGAL
 // Reads a binary STL back, welding corners that are the same float triple, and counts the
 // directed edges that do not pair up with one reverse edge (0: closed, edge-manifold, oriented);
-// also sums the volume.
+// also sums the volume and finds the corners' least distance from the z axis (a ring's finger side).
 struct StlCheck {
   std::size_t triangles = 0, unpaired_edges = 0;
   double volume = 0;
+  double nearest_to_z_axis = std::numeric_limits<double>::infinity();
 };
 StlCheck check_stl(const fs::path& path) {
   const std::string bytes = read_file_text(path);
@@ -1618,6 +1619,7 @@ StlCheck check_stl(const fs::path& path) {
       std::memcpy(xyz.data(), bytes.data() + 84 + 50 * std::size_t(t) + 12 + 12 * k, 12);
       corner[k] = ids.emplace(xyz, int(ids.size())).first->second;
       p[k] = {xyz[0], xyz[1], xyz[2]};
+      c.nearest_to_z_axis = std::min(c.nearest_to_z_axis, std::hypot(double(xyz[0]), double(xyz[1])));
     }
     for (int k = 0; k < 3; ++k) ++directed[{corner[k], corner[(k + 1) % 3]}];
     c.volume += (p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) - p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
@@ -1678,10 +1680,56 @@ TEST_F(PaverRun, SubtractWritesTheMetalWithItsSeatsAsOneClosedSolid) {
 }
 #endif
 
-// Ctrl-C while the map is being made (loading, factorization, ARAP) ends `paver run` and `paver
-// param` at once: exit 130, "nothing was written", no output. Uninterrupted, the map alone takes
-// about 30 s here, and a stop polled between ARAP chunks came up to 10 s late; the watchdog kills
-// (exit 137) a run that did not end within 6 s of the signal.
+#ifdef PAVER_WITH_CGAL
+// A ring at its size (issue 43): the ring band (outside 10.65-11.25 mm from its axis, z) cut with
+// --inside-diameter 17.3 gets a round finger side at radius 8.65 under a domed outside; the
+// report and the summary give the size in three systems; --ring-size US 7 is the same ring; a
+// size the band cannot take, or on a surface that is no band, is refused before any work.
+TEST_F(PaverRun, InsideDiameterMakesTheFingerSideACylinderAtThatSize) {
+  const fs::path out = dir() / "out";
+  const CliResult r = paver({"run", "assets/surfaces/ring_band.obj", "--stone", "1.5", "--gap", "0.1", "--subtract",
+                             "--thickness", "1.2", "--inside-diameter", "17.3", "--quiet", "--formats", "ply", "--out",
+                             out.string()});
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const StlCheck stl = check_stl(out / "cut.stl");
+  EXPECT_EQ(stl.unpaired_edges, 0u);
+  // The cylinder is the band's polygon of vertices: its flat sides lie up to 0.008 mm inside 8.65.
+  EXPECT_NEAR(stl.nearest_to_z_axis, 8.65, 0.05);
+  const json cut = read_json(out / "report.json")["cut"];
+  EXPECT_NEAR(cut["ring"]["inside_diameter_mm"].get<double>(), 17.3, 1e-9);
+  EXPECT_EQ(cut["ring"]["nearest_sizes"]["US"]["size"], "7");
+  EXPECT_NEAR(cut["thinnest_metal"].get<double>(), 10.65 - 8.65, 1e-3);
+  EXPECT_NEAR(cut["thickest_metal"].get<double>(), 11.25 - 8.65, 1e-3);
+  EXPECT_NE(r.out.find("ring     inside diameter 17.30 mm (US 7"), std::string::npos) << describe(r);
+
+  const fs::path us = dir() / "us7";
+  const CliResult sized = paver({"run", "assets/surfaces/ring_band.obj", "--stone", "1.5", "--gap", "0.1", "--subtract",
+                                 "--thickness", "1.2", "--ring-size", "US", "7", "--quiet", "--formats", "ply", "--out",
+                                 us.string()});
+  ASSERT_EQ(sized.exit_code, 0) << describe(sized);
+  EXPECT_NEAR(read_json(us / "report.json")["cut"]["ring"]["inside_diameter_mm"].get<double>(), 11.63 + 7 * 0.8128, 1e-9);
+
+  const fs::path bad = dir() / "bad";
+  const std::vector<std::string> ring = {"run", "assets/surfaces/ring_band.obj", "--stone", "1.5", "--subtract",
+                                         "--thickness", "1.2", "--out", bad.string()};
+  const auto with = [&](std::vector<std::string> base, std::initializer_list<std::string> more) {
+    base.insert(base.end(), more);
+    return paver(base);
+  };
+  expect_input_error(with(ring, {"--inside-diameter", "19"}), bad,
+                     {"--inside-diameter 19: the band comes within 10.65", "at most 18.9"});
+  expect_input_error(with(ring, {"--ring-size", "UK", "7"}), bad, {"--ring-size UK 7: a UK size is a letter A to Z"});
+  expect_input_error(with(ring, {"--ring-size", "FR", "7"}), bad, {"--ring-size FR 7: the size's system is US, EU or UK"});
+  expect_input_error(with(ring, {"--ring-size", "US", "7", "--inside-diameter", "17"}), bad, {"give one of them"});
+  expect_input_error(paver({"run", "assets/surfaces/ring_band.obj", "--inside-diameter", "17", "--out", bad.string()}),
+                     bad, {"--inside-diameter 17 sets the finger side of the metal that --subtract makes"});
+  expect_input_error(paver({"run", "assets/surfaces/pendant.obj", "--subtract", "--thickness", "1", "--inside-diameter",
+                            "17", "--out", bad.string()}),
+                     bad, {"--inside-diameter 17: a ring size is for a band", "this surface has 1 rim;"});
+}
+
+#endif
+
 // A closed bead's metal: a hollow shell with its seats cut, one closed solid in cut.stl.
 TEST_F(PaverRun, SubtractOnAClosedBeadCutsAHollowShell) {
   const fs::path out = dir() / "out";
@@ -1701,6 +1749,10 @@ TEST_F(PaverRun, SubtractOnAClosedBeadCutsAHollowShell) {
 #endif
 }
 
+// Ctrl-C while the map is being made (loading, factorization, ARAP) ends `paver run` and `paver
+// param` at once: exit 130, "nothing was written", no output. Uninterrupted, the map alone takes
+// about 30 s here, and a stop polled between ARAP chunks came up to 10 s late; the watchdog kills
+// (exit 137) a run that did not end within 6 s of the signal.
 TEST_F(PaverRun, InterruptDuringMappingStopsAtOnce) {
   const fs::path surface = write_large_grid(dir());
   struct Try {

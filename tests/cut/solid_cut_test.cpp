@@ -2,6 +2,7 @@
 // volumes worked out by hand and by an independent edge and volume count.
 #include "cut/seat_cutter.h"
 #include "cut/cut_outputs.h"
+#include "cut/finger_side.h"
 #include "cut/solid_cut.h"
 #include "cut/thick_shell.h"
 
@@ -12,6 +13,7 @@
 #include "pipeline/pavement.h"
 #include "surface_maps.h"
 #include "temp_folder.h"
+#include "test_meshes.h"
 #include "threemf_read_back.h"
 
 #include <gtest/gtest.h>
@@ -72,6 +74,44 @@ TEST(ThickShell, IsClosedOrientedAndAreaTimesThicknessOnAPlate) {
   EXPECT_NEAR(test::signed_volume(shell), 80.0, 1e-9);
   EXPECT_THROW(thick_shell(plate.mesh, plate.normals, 0.0), InputError);
   EXPECT_THROW(thick_shell(plate.mesh, plate.normals, std::nan("")), InputError);
+}
+
+// A ring's finger side (issue 43): a crowned band about a tilted axis, its shell's inside on the
+// cylinder of the size to within rounding, closed and oriented; a size the band cannot take, a
+// band facing its axis, and a surface with one rim are refused.
+TEST(FingerSide, IsACylinderAboutTheBandsOwnAxis) {
+  const glm::dvec3 axis = glm::normalize(glm::dvec3(0.3, -0.2, 1)), centre(4, -2, 7);
+  const glm::dvec3 e1 = glm::normalize(glm::cross(axis, glm::dvec3(1, 0, 0))), e2 = glm::cross(axis, e1);
+  const auto radius = [](double v) { return 10 + 0.5 * std::sin(std::numbers::pi * v); };
+  SurfaceMap band;
+  band.mesh = test::band_surface(96, 8, [&](double u, double v) {
+    const double a = 2 * std::numbers::pi * u;
+    return centre + radius(v) * (std::cos(a) * e1 + std::sin(a) * e2) + 6 * (v - 0.5) * axis;
+  });
+  for (const glm::dvec3& p : band.mesh.positions) {
+    const glm::dvec3 r = p - centre - glm::dot(p - centre, axis) * axis;
+    band.normals.push_back(glm::normalize(r));
+  }
+  const FingerSide side = check_finger_side(band, 17.3, 1.2, "--inside-diameter 17.3");
+  EXPECT_NEAR(glm::dot(side.axis.direction, axis) * glm::dot(side.axis.direction, axis), 1.0, 1e-9);
+  EXPECT_NEAR(side.thinnest(), 10 - 8.65, 1e-9);
+  EXPECT_NEAR(side.thickest(), 10.5 - 8.65, 1e-9);
+  const SurfaceMesh shell = ring_shell(band.mesh, side);
+  EXPECT_EQ(test::unpaired_edges(shell), 0u);
+  const std::size_t n = band.mesh.positions.size();
+  for (std::size_t v = n; v < 2 * n; ++v) {
+    const glm::dvec3 r = shell.positions[v] - centre;
+    ASSERT_NEAR(glm::length(r - glm::dot(r, axis) * axis), 8.65, 1e-9);
+  }
+  const double height = 6, polygon = 96 / (2 * std::numbers::pi) * std::sin(2 * std::numbers::pi / 96);
+  EXPECT_GT(test::signed_volume(shell), polygon * std::numbers::pi * (100 - 8.65 * 8.65) * height);
+  EXPECT_LT(test::signed_volume(shell), std::numbers::pi * (10.5 * 10.5 - 8.65 * 8.65) * height);
+
+  EXPECT_THROW(check_finger_side(band, 18, 1.2, "--inside-diameter 18"), InputError);  // 1.0 of metal < 1.2
+  SurfaceMap inward = band;
+  for (glm::dvec3& normal : inward.normals) normal = -normal;
+  EXPECT_THROW(check_finger_side(inward, 17.3, 1.2, "--inside-diameter 17.3"), InputError);
+  EXPECT_THROW(check_finger_side(flat_plate(10, 5), 17.3, 1.2, "--inside-diameter 17.3"), InputError);
 }
 
 // The volume the seats take out of a flat plate is worked out by hand: each seat is a stack of
