@@ -55,6 +55,7 @@ struct RunArgs {
   std::string design;
   std::deque<KeyFlag> keys;  // a deque: CLI11 holds pointers into it
   std::optional<double> stone;
+  std::vector<double> stone_sizes;  // --stone-sizes: the main stone, then the smaller stocked sizes
   std::string out = "out";
   bool no_optimize = false;
   bool no_postprocess = false;
@@ -117,15 +118,32 @@ std::string apply_flags(const RunArgs& args, Design& design) {
                        *problem);
     say(flag_name(f.key), f.text());
   }
-  if (args.stone) {
+  std::optional<double> main_stone = args.stone;
+  if (!args.stone_sizes.empty()) {
+    if (args.stone) throw InputError("--stone and --stone-sizes both set the main stone (the first size): give one of them");
+    if (args.flag(Key::fill_sizes))
+      throw InputError("--stone-sizes and " + flag_name(Key::fill_sizes) +
+                       " both set the smaller sizes (the sizes after the first): give one of them");
+    for (const double size : args.stone_sizes) finite_positive("--stone-sizes", size, "stocked stone diameters, surface units");
+    for (std::size_t k = 1; k < args.stone_sizes.size(); ++k)
+      if (!(args.stone_sizes[k] < args.stone_sizes[0]))
+        throw InputError("--stone-sizes: " + number_text(args.stone_sizes[k]) + " is not smaller than the first size, " +
+                         number_text(args.stone_sizes[0]) + ", the main stone: list the sizes largest first");
+    main_stone = args.stone_sizes[0];
+    design.elements.fill_sizes.assign(args.stone_sizes.begin() + 1, args.stone_sizes.end());
+    std::string list;
+    for (const double size : args.stone_sizes) list += (list.empty() ? "" : ",") + number_text(size);
+    say("--stone-sizes", list);
+  }
+  if (main_stone) {
     if (args.flag(Key::pattern_spacing))
       throw InputError("--stone and " + flag_name(Key::pattern_spacing) +
                        " both set the spacing (D = stone + gap): give one of them");
-    const double stone = finite_positive("--stone", *args.stone, "the stone's diameter, surface units");
+    const double stone = finite_positive("--stone", *main_stone, "the stone's diameter, surface units");
     set_stone_size(design, stone);
     // Pavé is a close packing: with no pattern asked for anywhere, stones go on a triangle lattice.
     if (!args.flag(Key::pattern_tessellation) && args.design.empty()) design.pattern.tessellation = Tessellation::Triangle;
-    say("--stone", number_text(*args.stone));
+    if (args.stone) say("--stone", number_text(*args.stone));
   }
   return given;
 }
@@ -372,6 +390,10 @@ std::function<int()> add_run_command(CLI::App& app) {
   cmd->add_option("--stone", args->stone,
                   "Stone diameter, surface units: the vertex elements become round brilliants of this size, with "
                   "D = stone + gap so that neighbouring stones are exactly the gap apart (instead of --spacing)");
+  cmd->add_option("--stone-sizes", args->stone_sizes,
+                  "Stocked stone diameters, largest first, comma-separated: the first as --stone, and what it leaves "
+                  "filled with the largest of the others that fits (" + key_path(Key::fill_sizes) + ")")
+      ->delimiter(',');
   cmd->add_option("--out", args->out, "Output folder")->capture_default_str();
   cmd->add_option("--region", args->region,
                   "Pave only these named parts of the surface (OBJ 'g' or 'o' names, comma-separated), their borders "

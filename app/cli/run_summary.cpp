@@ -140,6 +140,13 @@ void print_elements(const SurfaceMap& map, const Pavement& pavement, const Pavem
               pavement.elements.size(), counts.vertex_elements, counts.edge_elements, pavement.refill.added,
               pavement.spots_closed.added);
   if (is_atlas(map)) std::printf(" (%d across the seams)", pavement.refill.on_seams);
+  if (!pavement.size_fill.sizes.empty()) {
+    std::printf(", %d of smaller stocked sizes (", pavement.size_fill.added());
+    for (std::size_t k = 0; k < pavement.size_fill.sizes.size(); ++k)
+      std::printf("%s%d of %s", k ? ", " : "", pavement.size_fill.sizes[k].added,
+                  diameter_mm_text(pavement.size_fill.sizes[k].diameter * millimetres_per_unit(pavement.design.units)).c_str());
+    std::printf(" mm)");
+  }
   std::printf("\n");
   if (pavement.design.elements.rim_rows != RimRows::None)
     std::printf("rim rows %s: %d of %zu rims, %d elements along them; %d pattern elements made way\n",

@@ -66,6 +66,9 @@ struct UiState {
   MapDrag map_drag = MapDrag::None;
   bool quit_dialog = false;            // asking Save / Discard / Cancel
   std::string quit_message;            // why the Quit dialog's Save did not save
+  std::string fill_sizes_text;         // the stocked sizes field as typed (applied on Enter)
+  std::string fill_sizes_problem;      // why the last list typed there was not taken
+  bool fill_sizes_editing = false;
   std::optional<std::filesystem::path> screenshot;  // write the next presented frame here
   std::string select_panel;            // a script's `panel NAME`: selected on the next frame
   double cut_thickness = 1;            // Cut metal: the metal's thickness, surface units

@@ -113,6 +113,19 @@ void check_edits(const std::string& source, const ElementEdits& edits, const Ele
 
 }  // namespace
 
+// Fill sizes are smaller stocked stones than the main one (when the spacing gives its size now).
+void check_fill_sizes(const std::string& source, const Design& design) {
+  const ElementsDesign& e = design.elements;
+  if (e.fill_sizes.empty()) return;
+  if (!e.vertex.enabled) return;  // the main stones are off: nothing to fill around (pave_once skips it)
+  const double main = e.vertex.scale * design.pattern.spacing;
+  for (std::size_t k = 0; k < e.fill_sizes.size(); ++k)
+    if (design.pattern.spacing > 0 && !(e.fill_sizes[k] < main))
+      fail(source, "'" + key_path(Key::fill_sizes) + "[" + std::to_string(k) + "]' " + number_text(e.fill_sizes[k]) +
+                       " is not smaller than the main stone (" + number_text(main) +
+                       "): list the smaller stocked sizes only");
+}
+
 void validate_design(const Design& design, const std::string& source) {
   // Every pair of edge elements is checked for overlap on every cell edge: 10,000 of them took 35 s
   // to be refused. No cell has use for more than a few per edge.
@@ -128,6 +141,7 @@ void validate_design(const Design& design, const std::string& source) {
     fail(source, "c + m must be >= 0 (eq. 5: the further-apart distance cannot be negative); got c = " +
                      number_text(s.c) + ", m = " + number_text(s.m));
   check_edits(source, design.edits, design.elements);
+  check_fill_sizes(source, design);
 }
 
 }  // namespace paver

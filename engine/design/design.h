@@ -81,15 +81,18 @@ struct ElementsDesign {
   double margin = 0;                      // free band along the boundary: no footprint nearer, surface units
   RimRows rim_rows = RimRows::None;       // a row of V-elements along the rims (elements/rim_rows.h)
   bool close_spots = false;               // stones pushed into the bare spots left (elements/bare_spots.h)
+  // Stocked sizes smaller than the main stone, surface units: what it leaves is filled with the
+  // largest that fits (elements/stone_sizes.h).
+  std::vector<double> fill_sizes;
   BeadDesign beads;
 };
 
 struct Design {
   // design.json's version, written by save_design. Version 1 (before 2026-11-27) differs only in a
   // default: solver.mu_stretched was 0.5 then; version 2 (before 2026-12-02) has no
-  // elements.close_spots. All are read, so that an earlier build says which versions it reads
+  // elements.close_spots; version 3 (before 2026-12-03) has no elements.fill_sizes. All are read, so that an earlier build says which versions it reads
   // rather than that a new key is unknown.
-  static constexpr int kVersion = 3;
+  static constexpr int kVersion = 4;
   static constexpr int kOldestVersion = 1;
   Units units = Units::Millimetre;
   PatternDesign pattern;

@@ -91,6 +91,11 @@ constexpr Row kRows[] = {
      "after the pass, a stone pushed into every bare spot where one fits, its neighbours moving to make room "
      "(docs/contact.md)",
      "close-spots", "Elements > Stones (jewellery) > close bare spots"},
+    {Key::fill_sizes, "elements.fill_sizes", ValueRange::above(0), "each a stocked size smaller than the main stone",
+     kSurfaceUnits,
+     "stocked stone sizes smaller than the main stone: after the pass, every place where one fits gets the largest "
+     "that fits (docs/stones.md)",
+     "fill-sizes", "Elements > Stones (jewellery) > fill with smaller sizes"},
     {Key::beads_enabled, "elements.beads.enabled", {}, {}, {},
      "a bead (shared prong) in the gap of every three stones in contact (docs/stones.md)", "beads",
      "Elements > Stones (jewellery) > beads between stones"},
@@ -150,7 +155,7 @@ constexpr Row kRows[] = {
 template <class T>
 constexpr bool kIsItems = false;
 template <class T>
-constexpr bool kIsItems<std::vector<T>> = !std::is_same_v<T, int>;
+constexpr bool kIsItems<std::vector<T>> = !std::is_same_v<T, int> && !std::is_same_v<T, double>;
 
 template <class T>
 KeyType type_of() {
@@ -162,6 +167,7 @@ KeyType type_of() {
   else if constexpr (std::is_same_v<T, glm::dvec2>) return KeyType::Pair;
   else if constexpr (std::is_same_v<T, glm::ivec2>) return KeyType::IntPair;
   else if constexpr (std::is_same_v<T, std::vector<int>>) return KeyType::IntList;
+  else if constexpr (std::is_same_v<T, std::vector<double>>) return KeyType::NumberList;
   else {
     static_assert(kIsItems<T>, "a key's field of a type the table does not know");
     return KeyType::Objects;
@@ -255,7 +261,9 @@ std::string refusal(const DesignKey& row, bool integer) {
 }
 
 bool counts_integers(KeyType type) { return type == KeyType::Integer || type == KeyType::IntPair || type == KeyType::IntList; }
-bool is_numeric(KeyType type) { return counts_integers(type) || type == KeyType::Number || type == KeyType::Pair; }
+bool is_numeric(KeyType type) {
+  return counts_integers(type) || type == KeyType::Number || type == KeyType::Pair || type == KeyType::NumberList;
+}
 
 // The range check of one key's value (and every number in it), naming it with its index.
 class RangeCheck {
@@ -271,8 +279,9 @@ public:
       check(row, path, double(value), std::is_same_v<T, int>);
     } else if constexpr (std::is_same_v<T, glm::dvec2> || std::is_same_v<T, glm::ivec2>) {
       for (int k = 0; k < 2; ++k) check(row, path + "[" + std::to_string(k) + "]", double(value[k]), std::is_same_v<T, glm::ivec2>);
-    } else if constexpr (std::is_same_v<T, std::vector<int>>) {
-      for (std::size_t k = 0; k < value.size(); ++k) check(row, path + "[" + std::to_string(k) + "]", value[k], true);
+    } else if constexpr (std::is_same_v<T, std::vector<int>> || std::is_same_v<T, std::vector<double>>) {
+      for (std::size_t k = 0; k < value.size(); ++k)
+        check(row, path + "[" + std::to_string(k) + "]", double(value[k]), std::is_same_v<T, std::vector<int>>);
     } else if constexpr (kIsItems<T>) {
       for (std::size_t i = 0; i < value.size(); ++i)
         visit_item_keys(value[i], [&](Key k, const auto& field) { (*this)(k, field, i); });
@@ -305,6 +314,19 @@ std::optional<std::string> parse_flag(const DesignKey& row, std::string_view tex
       return std::string(std::is_same_v<T, int> ? "must be a whole number" : "must be a number");
     if (!row.range.contains(double(value))) return "must be " + refusal(row, std::is_same_v<T, int>);
     out = value;
+    return std::nullopt;
+  } else if constexpr (std::is_same_v<T, std::vector<double>>) {
+    // Comma-separated: "1.3,1.1,0.9"; an empty text is the empty list.
+    std::vector<double> values;
+    for (std::size_t start = 0; start < text.size();) {
+      const std::size_t comma = std::min(text.find(',', start), text.size());
+      double value = 0;
+      if (const std::optional<std::string> problem = parse_flag(row, text.substr(start, comma - start), value))
+        return problem->starts_with("must be a number") ? "must be numbers separated by commas (1.3,1.1,0.9)" : *problem;
+      values.push_back(value);
+      start = comma + 1;
+    }
+    out = std::move(values);
     return std::nullopt;
   } else {
     return std::string("is not a flag");
@@ -369,6 +391,7 @@ std::string design_keys_markdown() {
       case KeyType::Pair: return "[x, y]";
       case KeyType::IntPair: return "[i, j] integers";
       case KeyType::IntList: return "[i, ...] integers";
+      case KeyType::NumberList: return "[x, ...] numbers";
       case KeyType::Objects: return "array of objects";
     }
     return "";

@@ -47,6 +47,7 @@ enum class Key {
   margin,
   rim_rows,
   close_spots,
+  fill_sizes,
   beads_enabled,
   beads_scale,
   placement_offset,
@@ -85,6 +86,7 @@ enum class KeyType {
   Pair,     // [x, y] of numbers
   IntPair,  // [i, j] of integers
   IntList,  // [i, ...] of integers
+  NumberList,  // [x, ...] of numbers
   Objects,  // an array of objects, whose fields are keys of their own
 };
 
@@ -135,6 +137,7 @@ void visit_keys(D& d, Visit&& visit) {
   visit(Key::margin, d.elements.margin);
   visit(Key::rim_rows, d.elements.rim_rows);
   visit(Key::close_spots, d.elements.close_spots);
+  visit(Key::fill_sizes, d.elements.fill_sizes);
   visit(Key::beads_enabled, d.elements.beads.enabled);
   visit(Key::beads_scale, d.elements.beads.scale);
   visit(Key::placement_offset, d.placement.offset);

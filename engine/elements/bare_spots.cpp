@@ -116,9 +116,9 @@ void search_face(const SurfaceMap& map, const FreeRoom& room, const SpotBasis& b
 }
 
 // The spots, the widest first, each a stone of `stone` that keeps the gap to those before it.
-std::vector<BareSpot> distinct_spots(std::vector<BareSpot> fitting, double gap) {
-  std::sort(fitting.begin(), fitting.end(), [](const BareSpot& a, const BareSpot& b) {
-    if (a.fits != b.fits) return a.fits > b.fits;
+std::vector<BareSpot> distinct_spots(std::vector<BareSpot> fitting, double gap, SpotOrder order) {
+  std::sort(fitting.begin(), fitting.end(), [order](const BareSpot& a, const BareSpot& b) {
+    if (a.fits != b.fits) return order == SpotOrder::WidestFirst ? a.fits > b.fits : a.fits < b.fits;
     return std::tie(a.position.x, a.position.y, a.position.z) < std::tie(b.position.x, b.position.y, b.position.z);
   });
   std::vector<BareSpot> spots;
@@ -154,7 +154,7 @@ namespace {
 
 // The spots on the faces `faces` (all when empty).
 SpotSearch search_faces(const SurfaceMap& map, const Elements& elements, const SpotBasis& basis, double slack,
-                        const std::vector<int>& faces) {
+                        const std::vector<int>& faces, SpotOrder order = SpotOrder::WidestFirst) {
   SpotSearch search;
   if (!(basis.stone > 0) || elements.size() == 0 || map.mesh.face_count() == 0) return search;
   const FreeRoom room(map, elements, basis, reach_of(basis));
@@ -171,7 +171,7 @@ SpotSearch search_faces(const SurfaceMap& map, const Elements& elements, const S
     fitting.insert(fitting.end(), s.spots.begin(), s.spots.end());
   });
   search.widest = std::max(0.0, search.widest);
-  search.spots = distinct_spots(std::move(fitting), basis.gap);
+  search.spots = distinct_spots(std::move(fitting), basis.gap, order);
   return search;
 }
 
@@ -191,8 +191,9 @@ std::vector<int> faces_near(const SurfaceMap& map, const std::vector<glm::dvec3>
 
 }  // namespace
 
-SpotSearch find_bare_spots(const SurfaceMap& map, const Elements& elements, const SpotBasis& basis, double slack) {
-  return search_faces(map, elements, basis, slack, {});
+SpotSearch find_bare_spots(const SurfaceMap& map, const Elements& elements, const SpotBasis& basis, double slack,
+                           SpotOrder order) {
+  return search_faces(map, elements, basis, slack, {}, order);
 }
 
 namespace {

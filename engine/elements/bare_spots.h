@@ -79,11 +79,15 @@ struct SpotSearch {
   double widest = 0;            // the widest stone that fits anywhere (capped at a few d: "at least")
 };
 
+// Which spots are taken first where they exclude each other: the widest (a hole's middle: the
+// verdict's), or the tightest (a stone against its neighbours: the densest filling).
+enum class SpotOrder { WidestFirst, TightestFirst };
+
 // Inputs: the map the elements' uv are on, the elements, the basis, and how much narrower than the
 // basis's spot stone a spot may be (0 for the spots the verdict counts). Output: the spots, found
 // on the surface in 3D over all elements.
 SpotSearch find_bare_spots(const SurfaceMap& map, const Elements& elements, const SpotBasis& basis,
-                           double slack = 0);
+                           double slack = 0, SpotOrder order = SpotOrder::WidestFirst);
 
 struct SpotClosing {
   int added = 0;       // stones of the design's size put into spots

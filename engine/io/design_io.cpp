@@ -157,7 +157,9 @@ public:
     fail("'" + path + "' must be one of " + enum_choices_quoted<E>() + ", got " + value.dump());
   }
 
-  void read(const json& value, const std::string& path, std::vector<int>& out) const {
+  template <class Number>
+    requires std::is_same_v<Number, int> || std::is_same_v<Number, double>
+  void read(const json& value, const std::string& path, std::vector<Number>& out) const {
     if (!value.is_array()) wrong_type(value, path, "an array");
     out.assign(value.size(), 0);
     for (size_t i = 0; i < value.size(); ++i) read(value[i], indexed(path, i), out[i]);
@@ -213,7 +215,8 @@ Json value_json(const T& value) {
     return std::string(enum_name(value));
   } else if constexpr (std::is_same_v<T, glm::dvec2> || std::is_same_v<T, glm::ivec2>) {
     return Json::array({value.x, value.y});
-  } else if constexpr (std::is_same_v<T, std::vector<int>> || std::is_arithmetic_v<T> ||
+  } else if constexpr (std::is_same_v<T, std::vector<int>> || std::is_same_v<T, std::vector<double>> ||
+                       std::is_arithmetic_v<T> ||
                        std::is_same_v<T, std::string>) {
     return value;
   } else {  // an array of objects

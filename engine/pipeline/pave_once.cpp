@@ -210,6 +210,12 @@ void close_spots(const PaveContext& c, PaveState& s) {
                        c.options.stop);
 }
 
+void fill_sizes(const PaveContext& c, PaveState& s) {
+  const ElementsDesign& spec = s.design.elements;
+  s.pavement.size_fill =
+      fill_with_smaller_sizes(c.map, s.pavement.elements, spec, spec.vertex.scale * s.design.pattern.spacing, c.options.stop);
+}
+
 void number(const PaveContext&, PaveState& s) {
   number_elements(s.pavement.elements, s.pavement.pattern, s.design.edits.added);
 }
@@ -268,6 +274,11 @@ constexpr PaveStep kSteps[] = {
      lay_rim_rows},
     {"refill", [](const PaveState& s, const PavementOptions& o) { return o.refill && kWithoutOverlap(s, o); }, refill},
     {"close_spots", closes_spots, close_spots},
+    {"fill_sizes",
+     [](const PaveState& s, const PavementOptions& o) {
+       return !s.design.elements.fill_sizes.empty() && s.design.elements.vertex.enabled && kWithoutOverlap(s, o);
+     },
+     fill_sizes},
     {"ids", nullptr, number},
     {"deletions", [](const PaveState& s, const PavementOptions&) { return !s.design.edits.deleted.empty(); },
      delete_edited},

@@ -203,6 +203,13 @@ void add_after_the_solve(nlohmann::json& report, const Pavement& pavement) {
                                  {"pushed_in", pavement.spots_closed.pushed},
                                  {"rounds", pavement.spots_closed.rounds},
                                  {"milliseconds", pavement.spots_closed.milliseconds}};
+  nlohmann::json sizes = nlohmann::json::array();
+  for (const SizeFill::Size& size : pavement.size_fill.sizes)
+    sizes.push_back({{"diameter", size.diameter}, {"added", size.added}});
+  report["fill_sizes"] = {{"sizes", sizes},
+                          {"added", pavement.size_fill.added()},
+                          {"searches", pavement.size_fill.rounds},
+                          {"milliseconds", pavement.size_fill.milliseconds}};
   report["rim_rows"] = {{"rims", std::string(enum_name(pavement.design.elements.rim_rows))},
                         {"loops", pavement.rim_rows.loops},
                         {"placed", pavement.rim_rows.placed},

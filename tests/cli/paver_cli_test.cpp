@@ -1749,6 +1749,43 @@ TEST_F(PaverRun, SubtractOnAClosedBeadCutsAHollowShell) {
 #endif
 }
 
+// Stocked sizes (issue 43): --stone-sizes 1.5,1.3,1.1,0.9 paves the pierced pendant with 1.5 mm
+// stones and fills what they leave with the smaller sizes: only stocked sizes, a bill row for each,
+// the design file keeping the smaller ones; sizes out of order or not smaller are refused.
+TEST_F(PaverRun, StoneSizesFillWhatTheMainSizeLeavesWithStockedSizes) {
+  const fs::path out = dir() / "out";
+  const CliResult r = paver({"run", "assets/surfaces/pendant_pierced.obj", "--stone-sizes", "1.5,1.3,1.1,0.9", "--gap",
+                             "0.1", "--margin", "0.3", "--quiet", "--formats", "ply", "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  std::set<double> sizes;
+  for (const Placement& row : read_placements(out / "placements.csv")) sizes.insert(row.diameter);
+  for (const double d : sizes) EXPECT_TRUE(d == 1.5 || d == 1.3 || d == 1.1 || d == 0.9) << d;
+  EXPECT_GE(sizes.size(), 2u);
+  const std::string bill = read_file_text(out / "stones.csv");
+  for (const double d : sizes) {
+    char row[32];
+    std::snprintf(row, sizeof row, "\ngem,%g,", d);
+    EXPECT_NE(bill.find(row), std::string::npos) << "a bill row for " << d << " mm:\n" << bill;
+  }
+  const json report = read_json(out / "report.json");
+  EXPECT_EQ(report["quality_after"]["contact_violations"].get<long>(), 0);
+  EXPECT_EQ(read_json(out / "design.json")["elements"]["fill_sizes"], json::array({1.3, 1.1, 0.9}));
+  EXPECT_NE(r.out.find("of smaller stocked sizes ("), std::string::npos) << describe(r);
+
+  const fs::path bad = dir() / "bad";
+  const std::vector<std::string> run = {"run", "assets/surfaces/pendant_pierced.obj", "--out", bad.string()};
+  const auto with = [&](std::initializer_list<std::string> more) {
+    std::vector<std::string> args = run;
+    args.insert(args.end(), more);
+    return paver(args);
+  };
+  expect_input_error(with({"--stone-sizes", "1.3,1.5"}), bad, {"--stone-sizes: 1.5 is not smaller than the first size"});
+  expect_input_error(with({"--stone-sizes", "1.5,1.3", "--stone", "1.5"}), bad, {"give one of them"});
+  expect_input_error(with({"--stone", "1.5", "--fill-sizes", "1.6"}), bad,
+                     {"'elements.fill_sizes[0]' 1.6 is not smaller than the main stone (1.5)"});
+  expect_input_error(with({"--stone", "1.5", "--fill-sizes", "1.1,x"}), bad, {"--fill-sizes 1.1,x: must be numbers"});
+}
+
 // Ctrl-C while the map is being made (loading, factorization, ARAP) ends `paver run` and `paver
 // param` at once: exit 130, "nothing was written", no output. Uninterrupted, the map alone takes
 // about 30 s here, and a stop polled between ARAP chunks came up to 10 s late; the watchdog kills

@@ -7,6 +7,8 @@
 
 #include "elements/element_shape.h"
 #include "core/input_error.h"
+#include "core/number_text.h"
+#include "design/design_keys.h"
 
 #include <imgui_stdlib.h>
 
@@ -46,7 +48,44 @@ bool length_field(const char* label, double& value, const char* unit) {
   return changed;
 }
 
-void jewellery_section(Document& doc, Design& d) {
+std::string sizes_text(const std::vector<double>& sizes) {
+  std::string text;
+  for (const double size : sizes) text += (text.empty() ? "" : ", ") + number_text(size);
+  return text;
+}
+
+// Stocked sizes typed as a list ("1.3, 1.1, 0.9"), applied on Enter and checked as design.json's
+// key is; a list that is not taken says why under the field and stays as typed.
+void fill_sizes_field(Document& doc, Design& d, UiState& ui, const char* unit) {
+  if (!ui.fill_sizes_editing && ui.fill_sizes_problem.empty()) ui.fill_sizes_text = sizes_text(d.elements.fill_sizes);
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8);
+  const bool entered = ImGui::InputTextWithHint("fill sizes", "none", &ui.fill_sizes_text,
+                                                ImGuiInputTextFlags_EnterReturnsTrue);
+  ui.fill_sizes_editing = ImGui::IsItemActive() && !entered;
+  ImGui::SameLine();
+  ImGui::TextUnformatted(unit);
+  if (entered) {
+    std::string compact;
+    for (const char c : ui.fill_sizes_text)
+      if (c != ' ') compact += c;
+    Design next = d;
+    ui.fill_sizes_problem.clear();
+    if (const std::optional<std::string> problem = set_key_from_text(next, Key::fill_sizes, compact)) {
+      ui.fill_sizes_problem = "fill sizes " + *problem;
+    } else {
+      try {
+        validate_design(next, "the studio");
+        d = next;
+        change_design(doc, d);
+      } catch (const InputError& e) {
+        ui.fill_sizes_problem = e.what();
+      }
+    }
+  }
+  if (!ui.fill_sizes_problem.empty()) ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "%s", ui.fill_sizes_problem.c_str());
+}
+
+void jewellery_section(Document& doc, Design& d, UiState& ui) {
   section("Stones (jewellery)");
   const std::string unit(enum_name(d.units));
   if (ImGui::BeginCombo("units", unit.c_str())) {
@@ -90,13 +129,16 @@ void jewellery_section(Document& doc, Design& d) {
   help_marker("A small bead of metal (a shared prong) in the gap between every three stones in contact; "
               "triangle patterns have them, grid and hex do not.");
   if (d.elements.beads.enabled) fraction_slider(doc, d, "bead size", d.elements.beads.scale, 0.5, 2.0);
+  fill_sizes_field(doc, d, ui, unit.c_str());
+  help_marker("Stocked sizes smaller than the stone, as a supplier sells melee (1.3, 1.1, 0.9): after the "
+              "pass, every place where one fits gets the largest that fits. Type the list and press Enter.");
 }
 
 }  // namespace
 
 void elements_panel(Document& doc, UiState& ui) {
   Design d = doc.design;
-  jewellery_section(doc, d);
+  jewellery_section(doc, d, ui);
   section("V-elements (on the pattern's vertices)");
   if (ImGui::Checkbox("enabled", &d.elements.vertex.enabled)) change_design(doc, d);
   fraction_slider(doc, d, "s##vertex", d.elements.vertex.scale, 0.05, 1.0);

@@ -46,6 +46,8 @@ Design non_default_design() {
   d.elements.gap = 0.1 / 3;
   d.elements.margin = 0.35;
   d.elements.rim_rows = RimRows::Holes;
+  d.elements.close_spots = true;
+  d.elements.fill_sizes = {0.1 / 3, 0.025};
   d.elements.beads = {true, 1.25};
   d.placement.offset = {-1.5, 2.0 / 3.0};
   d.placement.rotation_deg = -37.5;
@@ -107,6 +109,8 @@ void expect_same(const Design& a, const Design& b) {
   EXPECT_EQ(a.elements.gap, b.elements.gap);
   EXPECT_EQ(a.elements.margin, b.elements.margin);
   EXPECT_EQ(a.elements.rim_rows, b.elements.rim_rows);
+  EXPECT_EQ(a.elements.close_spots, b.elements.close_spots);
+  EXPECT_EQ(a.elements.fill_sizes, b.elements.fill_sizes);
   EXPECT_EQ(a.elements.beads.enabled, b.elements.beads.enabled);
   EXPECT_EQ(a.elements.beads.scale, b.elements.beads.scale);
   EXPECT_EQ(a.placement.offset, b.placement.offset);
@@ -170,12 +174,13 @@ TEST(DesignIo, RoundTripKeepsEveryField) {
 TEST(DesignIo, WritesEveryKey) {
   const json j = design_to_json(Design{});
   EXPECT_EQ(j.at("version"), Design::kVersion);
-  EXPECT_EQ(Design::kVersion, 3);
+  EXPECT_EQ(Design::kVersion, 4);
   EXPECT_EQ(j.at("units"), "mm");
   EXPECT_EQ(j.at("pattern").size(), 5u);
   EXPECT_EQ(j.at("pattern").at("topology"), "auto");
-  EXPECT_EQ(j.at("elements").size(), 9u);
+  EXPECT_EQ(j.at("elements").size(), 10u);
   EXPECT_EQ(j.at("elements").at("close_spots"), false);
+  EXPECT_EQ(j.at("elements").at("fill_sizes"), json::array());
   EXPECT_EQ(j.at("elements").at("rim_rows"), "none");
   EXPECT_EQ(j.at("elements").at("beads").size(), 2u);
   EXPECT_EQ(j.at("elements").at("vertex").size(), 3u);
@@ -313,9 +318,9 @@ TEST(DesignIo, NamesMustBeKnown) {
 
 TEST(DesignIo, VersionIsRequiredAndOneThisBuildReads) {
   EXPECT_TRUE(contains(json_error(R"({"pattern": {}})"), "d.json: missing key 'version'"));
-  const std::string newer = json_error(R"({"version": 4, "future_key": 1})");
-  EXPECT_TRUE(contains(newer, "'version' is 4"));
-  EXPECT_TRUE(contains(newer, "reads versions 1 to 3"));
+  const std::string newer = json_error(R"({"version": 5, "future_key": 1})");
+  EXPECT_TRUE(contains(newer, "'version' is 5"));
+  EXPECT_TRUE(contains(newer, "reads versions 1 to 4"));
   EXPECT_TRUE(contains(json_error(R"({"version": 0})"), "'version' is 0"));
   EXPECT_TRUE(contains(json_error(R"({"version": "1"})"), "'version' must be an integer, got string"));
 }
@@ -549,7 +554,7 @@ TEST_F(DesignIoFile, SaveThenLoadGivesTheSameDesign) {
 
   // Pretty-printed, 2-space indent, version first, trailing newline.
   const std::string text = read(path);
-  EXPECT_EQ(text.rfind("{\n  \"version\": 3,\n  \"units\": \"in\",\n  \"pattern\": {\n    \"tessellation\": \"grid\"", 0), 0u)
+  EXPECT_EQ(text.rfind("{\n  \"version\": 4,\n  \"units\": \"in\",\n  \"pattern\": {\n    \"tessellation\": \"grid\"", 0), 0u)
       << text;
   EXPECT_EQ(text.back(), '\n');
 
