@@ -2,6 +2,7 @@
 
 #include "core/printable.h"
 #include "design/design_keys.h"
+#include "elements/beads.h"
 #include "map/surface_charts.h"
 #include "pattern/adaptive_pattern.h"
 #include "report/bill_of_stones.h"
@@ -166,10 +167,16 @@ void print_elements(const SurfaceMap& map, const Pavement& pavement, const Pavem
     std::printf("stones   total %ld, %s ct (stones.csv)\n", bill.count, carat_total_text(bill.carat_total).c_str());
   if (pavement.design.elements.beads.enabled) {
     const nlohmann::json beads = beads_json(pavement);
-    std::printf("beads    %zu shared prongs of %.2f to %.2f mm, between every three stones in contact%s\n",
+    const std::size_t underheld = beads["stones_underheld"].get<std::size_t>();
+    std::printf("beads    %zu shared prongs of %.2f to %.2f mm; %s held all round by at least %d (the least %d), "
+                "the widest open angle around a stone %.0f degrees\n",
                 beads["count"].get<std::size_t>(), beads["diameter_mm_min"].get<double>(),
                 beads["diameter_mm_max"].get<double>(),
-                pavement.beads.size() == 0 ? " (none: no three stones touch; beads need a tri pattern)" : "");
+                underheld == 0 ? "every stone"
+                               : (std::to_string(pavement.elements.size() - underheld) + " of " +
+                                  std::to_string(pavement.elements.size()) + " stones")
+                                     .c_str(),
+                kBeadsPerStone, beads["holders_least"].get<int>(), beads["widest_open_deg"].get<double>());
   }
 }
 

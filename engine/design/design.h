@@ -66,7 +66,9 @@ struct EdgeElementDesign {
 // (elements/beads.h). `scale` times the largest sphere that fits there between their footprints.
 struct BeadDesign {
   bool enabled = false;
-  double scale = 1;                       // in (0, 2]: above 1 the bead reaches over the stones' girdles
+  double scale = 1;                       // in (0, 2]: of the largest that fits between its stones
+  double min_diameter = 0.5;              // castable, surface units (mm for jewellery)
+  double over = 0.05;                     // how far a bead reaches over each girdle it holds, surface units
 };
 
 // The most edge elements one design holds (validate_design refuses more).
@@ -90,7 +92,8 @@ struct ElementsDesign {
 struct Design {
   // design.json's version, written by save_design. Version 1 (before 2026-11-27) differs only in a
   // default: solver.mu_stretched was 0.5 then; version 2 (before 2026-12-02) has no
-  // elements.close_spots; version 3 (before 2026-12-03) has no elements.fill_sizes. All are read, so that an earlier build says which versions it reads
+  // elements.close_spots; version 3 (before 2026-12-03) has no elements.fill_sizes, elements.beads.min_diameter or
+  // elements.beads.over. All are read, so that an earlier build says which versions it reads
   // rather than that a new key is unknown.
   static constexpr int kVersion = 4;
   static constexpr int kOldestVersion = 1;

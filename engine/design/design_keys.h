@@ -50,6 +50,8 @@ enum class Key {
   fill_sizes,
   beads_enabled,
   beads_scale,
+  beads_min_diameter,
+  beads_over,
   placement_offset,
   rotation_deg,
   placement_scale,
@@ -140,6 +142,8 @@ void visit_keys(D& d, Visit&& visit) {
   visit(Key::fill_sizes, d.elements.fill_sizes);
   visit(Key::beads_enabled, d.elements.beads.enabled);
   visit(Key::beads_scale, d.elements.beads.scale);
+  visit(Key::beads_min_diameter, d.elements.beads.min_diameter);
+  visit(Key::beads_over, d.elements.beads.over);
   visit(Key::placement_offset, d.placement.offset);
   visit(Key::rotation_deg, d.placement.rotation_deg);
   visit(Key::placement_scale, d.placement.scale);

@@ -287,6 +287,10 @@ void warn_about_pavement(const Design& design, const PipelineResult& result, con
   for (const std::string& w : row_alignment_warnings(design.placement.align, result.pavement)) warn(w);
   if (const auto w = offset_fit_warning(design, result.pavement)) warn(*w);
   if (const auto w = fine_beads_warning(result.pavement.beads, result.pavement.design.units)) warn(*w);
+  if (result.pavement.design.elements.beads.enabled)
+    if (const auto w = underheld_stones_warning(result.pavement.elements,
+                                                measure_bead_hold(result.pavement.elements, result.pavement.beads)))
+      warn(*w);
   if (design.elements.rim_rows == RimRows::Holes && band_rims_alike(*result.map))
     warn(key_and_flag(Key::rim_rows) +
          " holes: this band's two rims are its edges, not a hole, so no row is laid; "

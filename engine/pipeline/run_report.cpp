@@ -1,5 +1,7 @@
 #include "pipeline/run_report.h"
 
+#include "elements/beads.h"
+
 #include "report/bill_of_stones.h"
 
 #include "report/pavement_quality.h"
@@ -24,21 +26,7 @@ nlohmann::json edits_json(const Pavement& pavement) {
 
 // The beads (shared prongs): how many and how large, in mm; {"enabled": false} without them.
 nlohmann::json beads_json(const Pavement& pavement) {
-  const BeadDesign& design = pavement.design.elements.beads;
-  nlohmann::json j = {{"enabled", design.enabled}};
-  if (!design.enabled) return j;
-  const Elements& beads = pavement.beads;
-  const double mm = millimetres_per_unit(pavement.design.units);
-  double smallest = 0, largest = 0;
-  if (beads.size() > 0) {
-    smallest = *std::min_element(beads.diameter.begin(), beads.diameter.end()) * mm;
-    largest = *std::max_element(beads.diameter.begin(), beads.diameter.end()) * mm;
-  }
-  j["scale"] = design.scale;
-  j["count"] = beads.size();
-  j["diameter_mm_min"] = smallest;
-  j["diameter_mm_max"] = largest;
-  return j;
+  return bead_hold_json(pavement.elements, pavement.beads, pavement.design.elements, pavement.design.units);
 }
 
 PavementCounts count_pavement(const Pavement& pavement) {

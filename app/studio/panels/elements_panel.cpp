@@ -126,9 +126,18 @@ void jewellery_section(Document& doc, Design& d, UiState& ui) {
               "trimmed: around the holes (every rim but the outer edge) or along every rim. The pattern's "
               "stones that the row would touch make way. A closed surface has no rims.");
   if (ImGui::Checkbox("beads between stones", &d.elements.beads.enabled)) change_design(doc, d);
-  help_marker("A small bead of metal (a shared prong) in the gap between every three stones in contact; "
-              "triangle patterns have them, grid and hex do not.");
-  if (d.elements.beads.enabled) fraction_slider(doc, d, "bead size", d.elements.beads.scale, 0.5, 2.0);
+  help_marker("Small beads of metal (shared prongs) that hold every stone from at least three sides: one in the "
+              "gap between every three stones in contact, more around the stones that need them (rim stones, "
+              "grids).");
+  if (d.elements.beads.enabled) {
+    if (length_field("least bead", d.elements.beads.min_diameter, unit.c_str()) && d.elements.beads.min_diameter > 0)
+      change_design(doc, d);
+    help_marker("No bead is smaller: a cast bead is about 0.5-0.6 mm.");
+    if (length_field("bead over girdle", d.elements.beads.over, unit.c_str()) && d.elements.beads.over >= 0)
+      change_design(doc, d);
+    help_marker("How far each bead reaches over the girdle of every stone it holds.");
+    fraction_slider(doc, d, "bead size", d.elements.beads.scale, 0.5, 2.0);
+  }
   fill_sizes_field(doc, d, ui, unit.c_str());
   help_marker("Stocked sizes smaller than the stone, as a supplier sells melee (1.3, 1.1, 0.9): after the "
               "pass, every place where one fits gets the largest that fits. Type the list and press Enter.");

@@ -48,7 +48,7 @@ Design non_default_design() {
   d.elements.rim_rows = RimRows::Holes;
   d.elements.close_spots = true;
   d.elements.fill_sizes = {0.1 / 3, 0.025};
-  d.elements.beads = {true, 1.25};
+  d.elements.beads = {true, 1.25, 0.4, 0.125};
   d.placement.offset = {-1.5, 2.0 / 3.0};
   d.placement.rotation_deg = -37.5;
   d.placement.scale = 1.7;
@@ -113,6 +113,8 @@ void expect_same(const Design& a, const Design& b) {
   EXPECT_EQ(a.elements.fill_sizes, b.elements.fill_sizes);
   EXPECT_EQ(a.elements.beads.enabled, b.elements.beads.enabled);
   EXPECT_EQ(a.elements.beads.scale, b.elements.beads.scale);
+  EXPECT_EQ(a.elements.beads.min_diameter, b.elements.beads.min_diameter);
+  EXPECT_EQ(a.elements.beads.over, b.elements.beads.over);
   EXPECT_EQ(a.placement.offset, b.placement.offset);
   EXPECT_EQ(a.placement.rotation_deg, b.placement.rotation_deg);
   EXPECT_EQ(a.placement.scale, b.placement.scale);
@@ -182,7 +184,8 @@ TEST(DesignIo, WritesEveryKey) {
   EXPECT_EQ(j.at("elements").at("close_spots"), false);
   EXPECT_EQ(j.at("elements").at("fill_sizes"), json::array());
   EXPECT_EQ(j.at("elements").at("rim_rows"), "none");
-  EXPECT_EQ(j.at("elements").at("beads").size(), 2u);
+  EXPECT_EQ(j.at("elements").at("beads").size(), 4u);
+  EXPECT_EQ(j.at("elements").at("beads").at("min_diameter"), 0.5);
   EXPECT_EQ(j.at("elements").at("vertex").size(), 3u);
   EXPECT_EQ(j.at("placement").size(), 7u);
   EXPECT_EQ(j.at("placement").at("band_rows"), "auto");
