@@ -21,6 +21,9 @@
 #include "report/ring_size.h"
 #ifdef PAVER_WITH_CGAL
 #include "cut/cut_outputs.h"
+#include "cut/seat_rules.h"
+#include "io/shape_table.h"
+#include "report/verdict.h"
 #endif
 
 #include <charconv>
@@ -71,6 +74,7 @@ struct RunArgs {
   std::optional<double> thickness;
   std::optional<double> inside_diameter;  // mm
   std::vector<std::string> ring_size;     // system and size
+  std::optional<double> culet_clearance, seat_wall;  // production rules of the cut (surface units)
   std::string cutter = "seat";
   bool quiet = false;
 
@@ -226,6 +230,13 @@ ExtraWriter set_up_cut(const RunArgs& args, [[maybe_unused]] PipelineRequest& re
     throw InputError("--cutter " + printable(args.cutter) + ": use seat (girdle, seat cone, hole through) or element");
   if (!args.subtract && args.thickness) throw InputError("--thickness is the metal's for --subtract: add --subtract");
   [[maybe_unused]] const std::optional<RingFinger> finger = ring_finger(args);
+  if (!args.subtract && (args.culet_clearance || args.seat_wall))
+    throw InputError(std::string(args.culet_clearance ? "--culet-clearance" : "--seat-wall") +
+                     " is a rule of the metal that --subtract cuts: add --subtract");
+  if (args.culet_clearance && !(std::isfinite(*args.culet_clearance)))
+    throw InputError("--culet-clearance " + number_text(*args.culet_clearance) + ": must be a finite number (surface units)");
+  if (args.seat_wall && !(std::isfinite(*args.seat_wall)))
+    throw InputError("--seat-wall " + number_text(*args.seat_wall) + ": must be a finite number (surface units)");
   if (!args.subtract) return {};
   if (!args.thickness) throw InputError("--subtract needs --thickness T: how thick the metal is, surface units");
   // Checked in every build, so that a bad value says so before "this build has no CGAL".
@@ -244,7 +255,8 @@ ExtraWriter set_up_cut(const RunArgs& args, [[maybe_unused]] PipelineRequest& re
   if (args.png) request.extra_outputs.push_back(out / "cut.png");
   const CutterKind cutter = *enum_from_name<CutterKind>(args.cutter);
   const auto warn = request.on_warning;
-  return [&progress, &previews, &cut_summary, warn, thickness, cutter, side](const PipelineResult& r, const fs::path& folder,
+  const SeatRules rules{args.culet_clearance, args.seat_wall};
+  return [&progress, &previews, &cut_summary, warn, thickness, cutter, side, rules](const PipelineResult& r, const fs::path& folder,
                                                                       StageTimings& timings, nlohmann::json& sections) {
     const CutOptions cut_options{.cutter = cutter, .thickness = thickness, .custom = r.custom_shape.get(),
                                  .stop = &interrupt_requested(), .beads = &r.pavement.beads,
@@ -260,7 +272,20 @@ ExtraWriter set_up_cut(const RunArgs& args, [[maybe_unused]] PipelineRequest& re
     write_cut_files(folder, cut, r.pavement.design.units, &interrupt_requested());
     if (previews) previews->write_solid(folder / "cut.png", cut.mesh, r.map->mesh);
     timings.emplace_back("cut", watch.milliseconds());
-    cut_summary = sections["cut"] = cut_json(cut, cutter, thickness, r.pavement.design.units);
+    cut_summary = cut_json(cut, cutter, thickness, r.pavement.design.units);
+    // The production rules: a broken one makes the verdict NOT OK, in report.json as in the summary.
+    const ShapeTable shapes(r.pavement.elements, r.custom_shape.get(), "cut");
+    const SeatCheck seats = check_seats(r.pavement.elements, shapes, cutter, thickness, cut_options.finger_side, rules);
+    cut_summary["seats"] = seat_check_json(seats);
+    const std::vector<std::string> problems = seat_rule_problems(seats);
+    cut_summary["seats"]["problems"] = problems;
+    sections["cut"] = cut_summary;
+    if (!problems.empty()) {
+      Verdict verdict = judge_pavement(r.pavement.after);
+      verdict.ok = false;
+      verdict.problems.insert(verdict.problems.end(), problems.begin(), problems.end());
+      sections["verdict"] = to_json(verdict);
+    }
     const std::string stand_out = stones_stand_out_warning(cut, thickness, r.pavement.design.units);
     if (!stand_out.empty()) warn(stand_out);
     const std::string rounded = coordinate_rounding_warning(r.pavement.elements, "cut.stl", "cut.3mf");
@@ -417,6 +442,12 @@ std::function<int()> add_run_command(CLI::App& app) {
   cmd->add_option("--ring-size", args->ring_size, "The same as a ring size: US 7, EU 54 or UK N1/2")
       ->expected(2)
       ->type_name("SYSTEM SIZE");
+  cmd->add_option("--culet-clearance", args->culet_clearance,
+                  "A rule for --subtract: at least this much metal under every stone's culet (surface units); a "
+                  "stone that breaks it makes the run NOT OK");
+  cmd->add_option("--seat-wall", args->seat_wall,
+                  "A rule for --subtract: at least this much metal between two seats at their girdles (surface "
+                  "units); a stone that breaks it makes the run NOT OK");
   cmd->add_option("--cutter", args->cutter, "What --subtract cuts: seat (girdle, seat cone, hole through) or element")
       ->capture_default_str();
   cmd->add_flag("--png", args->png, "Also render preview.png (3D) and param.png (2D) offscreen with Vulkan");

@@ -1,5 +1,6 @@
 #include "run_summary.h"
 
+#include "core/number_text.h"
 #include "core/printable.h"
 #include "design/design_keys.h"
 #include "elements/beads.h"
@@ -16,9 +17,15 @@
 namespace paver::cli {
 namespace {
 
-bool print_verdict(const PipelineResult& result) {
+bool print_verdict(const PipelineResult& result, const nlohmann::json& cut) {
   const Pavement& pavement = result.pavement;
-  const Verdict verdict = judge_pavement(pavement.after);
+  Verdict verdict = judge_pavement(pavement.after);
+  // The cut metal's production rules (--culet-clearance, --seat-wall), when one is broken.
+  if (cut.is_object() && cut.contains("seats"))
+    for (const nlohmann::json& problem : cut["seats"]["problems"]) {
+      verdict.ok = false;
+      verdict.problems.push_back(problem.get<std::string>());
+    }
   std::printf("verdict  %s\n", verdict.ok ? "ok: no contact violations, no boundary crossings, pattern intact"
                                           : "NOT OK:");
   for (const std::string& problem : verdict.problems) std::printf("         - %s\n", problem.c_str());
@@ -196,6 +203,14 @@ void print_cut(const nlohmann::json& cut, Units units) {
                 sizes["EU"]["size"].get<std::string>().c_str(), sizes["UK"]["size"].get<std::string>().c_str(),
                 cut["thinnest_metal"].get<double>(), cut["thickest_metal"].get<double>(), unit.c_str());
   }
+  if (cut.contains("seats")) {
+    const nlohmann::json& seats = cut["seats"];
+    const auto figure = [](const nlohmann::json& v) { return v.is_number() ? significant_text(v.get<double>(), 3) : std::string("-"); };
+    std::printf("seats    least metal under a culet %s, between two seats %s; tables up to %s above the surface "
+                "(%s)\n",
+                figure(seats["least_culet_metal"]).c_str(), figure(seats["least_seat_wall"]).c_str(),
+                figure(seats["highest_table"]).c_str(), unit.c_str());
+  }
   std::printf("metal   ");
   for (const auto& row : cut["metal"])
     std::printf(" %s %.2f g;", row["alloy"].get<std::string>().c_str(), row["grams"].get<double>());
@@ -241,7 +256,7 @@ void print_times(const StageTimings& timings) {
 
 bool print_run_summary(const PipelineResult& result, const SummaryContext& context) {
   const Pavement& pavement = result.pavement;
-  const bool ok = print_verdict(result);
+  const bool ok = print_verdict(result, context.cut);
   std::string region;  // the parts paved, as --region named them
   for (const std::string& name : result.info.region) region += (region.empty() ? " (region " : ",") + name;
   print_surface_and_map(*result.map, context.surface + (region.empty() ? "" : region + ")"));

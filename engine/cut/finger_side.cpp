@@ -62,6 +62,8 @@ BandAxis band_axis(const SurfaceMesh& band) {
 
 }  // namespace
 
+double distance_from_axis(const BandAxis& axis, const glm::dvec3& p) { return glm::length(off_axis(axis, p)); }
+
 FingerSide check_finger_side(const SurfaceMap& map, double inside_diameter, double thickness,
                              const std::string& given) {
   if (!is_band(map))

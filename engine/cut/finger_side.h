@@ -28,6 +28,9 @@ struct FingerSide {
   double thickest() const { return farthest - inside_radius; }
 };
 
+// How far p lies from the axis.
+double distance_from_axis(const BandAxis& axis, const glm::dvec3& p);
+
 // Checks that the map is a band running once around one axis, facing away from it, and at least
 // `thickness` outside the cylinder of `inside_diameter` (surface units) everywhere. Throws
 // InputError naming the flag (`given`: "--inside-diameter 17.3"), the figures and the fix.

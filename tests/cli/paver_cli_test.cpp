@@ -1709,6 +1709,22 @@ TEST_F(PaverRun, InsideDiameterMakesTheFingerSideACylinderAtThatSize) {
   EXPECT_NEAR(cut["thickest_metal"].get<double>(), 11.25 - 8.65, 1e-3);
   EXPECT_NE(r.out.find("ring     inside diameter 17.30 mm (US 7"), std::string::npos) << describe(r);
 
+  EXPECT_NEAR(cut["seats"]["least_seat_wall"].get<double>(), 0.1 - 0.02 * 1.5, 1e-3) << "the gap less the seats' clearance";
+  EXPECT_TRUE(cut["seats"]["broken"].empty());
+
+  // A production rule broken: NOT OK (exit 3), in the summary and report.json, naming the stones.
+  const fs::path strict = dir() / "strict";
+  const CliResult broken = paver({"run", "assets/surfaces/ring_band.obj", "--stone", "1.5", "--gap", "0.1", "--subtract",
+                                  "--thickness", "1.2", "--inside-diameter", "17.3", "--seat-wall", "0.1", "--quiet",
+                                  "--formats", "ply", "--out", strict.string()});
+  EXPECT_EQ(broken.exit_code, 3) << describe(broken);
+  EXPECT_NE(broken.out.find("of metal between their seats (--seat-wall; the least 0.07"), std::string::npos)
+      << describe(broken);
+  const json verdict = read_json(strict / "report.json")["verdict"];
+  EXPECT_FALSE(verdict["ok"].get<bool>());
+  ASSERT_FALSE(verdict["problems"].empty());
+  EXPECT_NE(verdict["problems"].back().get<std::string>().find("--seat-wall"), std::string::npos) << verdict.dump();
+
   const fs::path us = dir() / "us7";
   const CliResult sized = paver({"run", "assets/surfaces/ring_band.obj", "--stone", "1.5", "--gap", "0.1", "--subtract",
                                  "--thickness", "1.2", "--ring-size", "US", "7", "--quiet", "--formats", "ply", "--out",
@@ -1727,6 +1743,8 @@ TEST_F(PaverRun, InsideDiameterMakesTheFingerSideACylinderAtThatSize) {
                      {"--inside-diameter 19: the band comes within 10.65", "at most 18.9"});
   expect_input_error(with(ring, {"--ring-size", "UK", "7"}), bad, {"--ring-size UK 7: a UK size is a letter A to Z"});
   expect_input_error(with(ring, {"--ring-size", "FR", "7"}), bad, {"--ring-size FR 7: the size's system is US, EU or UK"});
+  expect_input_error(paver({"run", "assets/surfaces/ring_band.obj", "--culet-clearance", "0.2", "--out", bad.string()}),
+                     bad, {"--culet-clearance is a rule of the metal that --subtract cuts"});
   expect_input_error(with(ring, {"--ring-size", "US", "7", "--inside-diameter", "17"}), bad, {"give one of them"});
   expect_input_error(paver({"run", "assets/surfaces/ring_band.obj", "--inside-diameter", "17", "--out", bad.string()}),
                      bad, {"--inside-diameter 17 sets the finger side of the metal that --subtract makes"});

@@ -3,6 +3,7 @@
 #include "cut/seat_cutter.h"
 #include "cut/cut_outputs.h"
 #include "cut/finger_side.h"
+#include "cut/seat_rules.h"
 #include "cut/solid_cut.h"
 #include "cut/thick_shell.h"
 
@@ -112,6 +113,43 @@ TEST(FingerSide, IsACylinderAboutTheBandsOwnAxis) {
   for (glm::dvec3& normal : inward.normals) normal = -normal;
   EXPECT_THROW(check_finger_side(inward, 17.3, 1.2, "--inside-diameter 17.3"), InputError);
   EXPECT_THROW(check_finger_side(flat_plate(10, 5), 17.3, 1.2, "--inside-diameter 17.3"), InputError);
+}
+
+// Production rules (issue 43) on two gems 1.0 apart on a flat plate, worked out by hand: a seat is
+// 1% of d wider than its stone each side, a gem reaches `below` d under its girdle's middle.
+TEST(SeatRules, CuletMetalAndSeatWallsAreMeasuredAndBrokenRulesNameTheirStones) {
+  Elements stones;
+  const double d = 0.8;
+  for (int k = 0; k < 3; ++k)
+    stones.push_back(ElementKind::Vertex, k, 0, {double(k), 0.0}, {1.0 * k, 0.0, 0.0}, {0, 0, 1}, d, ShapeKind::Gem);
+  stones.id = {10, 11, 12};
+  stones.position[2] = {5, 0, 0};  // far from both
+  double below = 0, above = 0;
+  for (const glm::vec3& v : make_builtin_shape(ShapeKind::Gem).positions) {
+    below = std::max(below, -double(v.z));
+    above = std::max(above, double(v.z));
+  }
+  const ShapeTable shapes(stones, nullptr, "cut");
+  const SeatCheck loose = check_seats(stones, shapes, CutterKind::Seat, 0.5, nullptr, {});
+  EXPECT_NEAR(loose.least_culet_metal, 0.5 - below * d, 1e-6);
+  EXPECT_NEAR(loose.least_seat_wall, 1.0 - (1 + 2 * kSeatClearance) * d, 1e-12);
+  EXPECT_NEAR(loose.highest_table, above * d, 1e-6);
+  EXPECT_TRUE(loose.breaks.empty()) << "no rule set, none broken";
+  EXPECT_NEAR(check_seats(stones, shapes, CutterKind::Element, 0.5, nullptr, {}).least_seat_wall, 1.0 - d, 1e-12)
+      << "an element cutter is the stone itself";
+
+  const SeatCheck strict = check_seats(stones, shapes, CutterKind::Seat, 0.5, nullptr, {0.2, 0.2});
+  ASSERT_EQ(strict.breaks.size(), 2u);
+  EXPECT_EQ(strict.breaks[0].rule, "culet clearance");
+  EXPECT_EQ(strict.breaks[0].stone_ids, (std::vector<int>{10, 11, 12})) << "every culet has too little metal";
+  EXPECT_EQ(strict.breaks[1].rule, "seat wall");
+  EXPECT_EQ(strict.breaks[1].stone_ids, (std::vector<int>{10, 11})) << "the third stone stands apart";
+  const std::vector<std::string> problems = seat_rule_problems(strict);
+  ASSERT_EQ(problems.size(), 2u);
+  EXPECT_NE(problems[1].find("2 stones stand with less than 0.2 of metal between their seats"), std::string::npos)
+      << problems[1];
+  EXPECT_NE(problems[1].find("ids 10, 11)"), std::string::npos) << problems[1];
+  EXPECT_TRUE(check_seats(stones, shapes, CutterKind::Seat, 0.5, nullptr, {0.1, 0.15}).breaks.empty());
 }
 
 // The volume the seats take out of a flat plate is worked out by hand: each seat is a stack of
