@@ -91,6 +91,11 @@ FingerSide check_finger_side(const SurfaceMap& map, double inside_diameter, doub
   if (!(facing > 0))
     throw InputError(given + ": this band faces its axis (it is an inside face): the stones go on the outside of a "
                              "ring; flip the surface's faces or pave its outer face");
+  if (side.thinnest() <= 0)
+    throw InputError(given + ": that finger side (" + significant_text(inside_diameter, 4) +
+                     " across) is wider than the band, which comes within " + significant_text(side.nearest, 4) +
+                     " of its axis; use an inside diameter of at most " +
+                     significant_text(2 * (side.nearest - thickness), 4) + " for --thickness " + number_text(thickness));
   if (side.thinnest() < thickness)
     throw InputError(given + ": the band comes within " + significant_text(side.nearest, 4) +
                      " of its axis, which leaves " + significant_text(side.thinnest(), 3) +

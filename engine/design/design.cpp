@@ -117,6 +117,9 @@ void check_edits(const std::string& source, const ElementEdits& edits, const Ele
 void check_fill_sizes(const std::string& source, const Design& design) {
   const ElementsDesign& e = design.elements;
   if (e.fill_sizes.empty()) return;
+  if (e.fill_sizes.size() > kMaxFillSizes)
+    fail(source, "'" + key_path(Key::fill_sizes) + "' lists " + std::to_string(e.fill_sizes.size()) +
+                     " sizes; at most " + std::to_string(kMaxFillSizes) + " (a supplier's sieve sizes): list fewer");
   if (!e.vertex.enabled) return;  // the main stones are off: nothing to fill around (pave_once skips it)
   const double main = e.vertex.scale * design.pattern.spacing;
   for (std::size_t k = 0; k < e.fill_sizes.size(); ++k)
@@ -124,6 +127,11 @@ void check_fill_sizes(const std::string& source, const Design& design) {
       fail(source, "'" + key_path(Key::fill_sizes) + "[" + std::to_string(k) + "]' " + number_text(e.fill_sizes[k]) +
                        " is not smaller than the main stone (" + number_text(main) +
                        "): list the smaller stocked sizes only");
+  for (std::size_t k = 0; k < e.fill_sizes.size(); ++k)
+    if (design.pattern.spacing > 0 && e.fill_sizes[k] < kLeastFillShare * main)
+      fail(source, "'" + key_path(Key::fill_sizes) + "[" + std::to_string(k) + "]' " + number_text(e.fill_sizes[k]) +
+                       " is less than a quarter of the main stone (" + number_text(main) +
+                       "), too small to set beside it (and to search for room at): list larger sizes");
 }
 
 void validate_design(const Design& design, const std::string& source) {

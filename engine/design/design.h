@@ -71,6 +71,12 @@ struct BeadDesign {
   double over = 0.05;                     // how far a bead reaches over each girdle it holds, surface units
 };
 
+// Fill sizes (elements.fill_sizes): at most this many, none under this share of the main stone
+// (the search for room steps at an eighth of the size, so a tiny one would sweep the surface in
+// nanometres).
+inline constexpr std::size_t kMaxFillSizes = 32;
+inline constexpr double kLeastFillShare = 0.25;
+
 // The most edge elements one design holds (validate_design refuses more).
 inline constexpr std::size_t kMaxEdgeElements = 64;
 

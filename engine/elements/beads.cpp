@@ -251,6 +251,9 @@ double largest_of(const Elements& stones) {
 Elements place_beads(const SurfaceMap& map, const Elements& stones, const ElementsDesign& design) {
   if (!design.beads.enabled || stones.size() == 0) return Elements{};
   const double largest = largest_of(stones);
+  // A bead four times the largest stone reaches past every table it touches: none can be placed
+  // (the warning says so), and its reach would make every search visit every stone.
+  if (!(design.beads.min_diameter <= 4 * largest)) return Elements{};
   const double reach = largest * (1 + kBeadContactSlack) + design.gap + std::max(design.beads.min_diameter, largest);
   Placer placer{map, stones, design, largest, PointHash(stones.position, stone_cells(stones, reach)), std::nullopt,
                 Elements{}, BeadGrid(reach), std::vector<int>(stones.size(), 0)};

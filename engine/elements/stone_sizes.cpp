@@ -46,7 +46,7 @@ SizeFill fill_with_smaller_sizes(const SurfaceMap& map, Elements& elements, cons
   SizeFill fill;
   std::vector<double> sizes;
   for (const double d : spec.fill_sizes)
-    if (d > 0 && d < main_stone) sizes.push_back(d);
+    if (d >= kLeastFillShare * main_stone && d < main_stone) sizes.push_back(d);
   std::sort(sizes.begin(), sizes.end(), std::greater<>());
   sizes.erase(std::unique(sizes.begin(), sizes.end()), sizes.end());
   for (const double d : sizes) {

@@ -28,7 +28,7 @@ struct SizeFill {
 
 // Inputs: the map the elements' uv are on, the elements (appended to: V-elements of the design's
 // vertex shape, source -1), the design's elements (fill_sizes, gap, margin, vertex shape) and the
-// main stone's diameter; sizes not smaller than it are not used. Stops between searches when
+// main stone's diameter; sizes not smaller than it, or under kLeastFillShare of it, are not used. Stops between searches when
 // `stop` becomes true.
 SizeFill fill_with_smaller_sizes(const SurfaceMap& map, Elements& elements, const ElementsDesign& spec,
                                  double main_stone, const std::atomic<bool>* stop = nullptr);

@@ -1809,6 +1809,7 @@ TEST_F(PaverRun, StoneSizesFillWhatTheMainSizeLeavesWithStockedSizes) {
   expect_input_error(with({"--stone", "1.5", "--fill-sizes", "1.6"}), bad,
                      {"'elements.fill_sizes[0]' 1.6 is not smaller than the main stone (1.5)"});
   expect_input_error(with({"--stone", "1.5", "--fill-sizes", "1.1,x"}), bad, {"--fill-sizes 1.1,x: must be numbers"});
+  expect_input_error(with({"--stone-sizes", "1.5,0.3"}), bad, {"0.3 is less than a quarter of the main stone (1.5)"});
 }
 
 // Ctrl-C while the map is being made (loading, factorization, ARAP) ends `paver run` and `paver
