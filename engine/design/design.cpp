@@ -117,21 +117,24 @@ void check_edits(const std::string& source, const ElementEdits& edits, const Ele
 void check_fill_sizes(const std::string& source, const Design& design) {
   const ElementsDesign& e = design.elements;
   if (e.fill_sizes.empty()) return;
+  // The key quoted, built by appending: GCC 12 misreads "'" + a string here as an overlapping copy.
+  std::string key = "'";
+  key += key_path(Key::fill_sizes);
   if (e.fill_sizes.size() > kMaxFillSizes)
-    fail(source, "'" + key_path(Key::fill_sizes) + "' lists " + std::to_string(e.fill_sizes.size()) +
-                     " sizes; at most " + std::to_string(kMaxFillSizes) + " (a supplier's sieve sizes): list fewer");
-  if (!e.vertex.enabled) return;  // the main stones are off: nothing to fill around (pave_once skips it)
+    fail(source, key + "' lists " + std::to_string(e.fill_sizes.size()) + " sizes; at most " +
+                     std::to_string(kMaxFillSizes) + " (a supplier's sieve sizes): list fewer");
+  if (!e.vertex.enabled || !(design.pattern.spacing > 0)) return;  // no main stone to fill around (yet)
   const double main = e.vertex.scale * design.pattern.spacing;
-  for (std::size_t k = 0; k < e.fill_sizes.size(); ++k)
-    if (design.pattern.spacing > 0 && !(e.fill_sizes[k] < main))
-      fail(source, "'" + key_path(Key::fill_sizes) + "[" + std::to_string(k) + "]' " + number_text(e.fill_sizes[k]) +
-                       " is not smaller than the main stone (" + number_text(main) +
-                       "): list the smaller stocked sizes only");
-  for (std::size_t k = 0; k < e.fill_sizes.size(); ++k)
-    if (design.pattern.spacing > 0 && e.fill_sizes[k] < kLeastFillShare * main)
-      fail(source, "'" + key_path(Key::fill_sizes) + "[" + std::to_string(k) + "]' " + number_text(e.fill_sizes[k]) +
-                       " is less than a quarter of the main stone (" + number_text(main) +
-                       "), too small to set beside it (and to search for room at): list larger sizes");
+  for (std::size_t k = 0; k < e.fill_sizes.size(); ++k) {
+    const double size = e.fill_sizes[k];
+    if (size < main && size >= kLeastFillShare * main) continue;
+    std::string message = key + "[" + std::to_string(k) + "]' " + number_text(size);
+    message += size >= main ? " is not smaller than the main stone (" + number_text(main) +
+                                  "): list the smaller stocked sizes only"
+                            : " is less than a quarter of the main stone (" + number_text(main) +
+                                  "), too small to set beside it (and to search for room at): list larger sizes";
+    fail(source, message);
+  }
 }
 
 void validate_design(const Design& design, const std::string& source) {
