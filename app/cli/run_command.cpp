@@ -251,7 +251,7 @@ ExtraWriter set_up_cut(const RunArgs& args, [[maybe_unused]] PipelineRequest& re
                             const SurfaceMap& map) {
       *side = check_finger_side(map, finger->inside_diameter_mm * per_mm, thickness, finger->given);
     };
-  request.extra_outputs.insert(request.extra_outputs.end(), {out / "cut.stl", out / "cut.3mf"});
+  for (const std::string& name : cut_file_names()) request.extra_outputs.push_back(out / name);
   if (args.png) request.extra_outputs.push_back(out / "cut.png");
   const CutterKind cutter = *enum_from_name<CutterKind>(args.cutter);
   const auto warn = request.on_warning;
@@ -269,7 +269,7 @@ ExtraWriter set_up_cut(const RunArgs& args, [[maybe_unused]] PipelineRequest& re
                    "on 2 cores)");
     const Stopwatch watch;
     const CutSolid cut = cut_pavement(*r.map, r.pavement.elements, cut_options);
-    write_cut_files(folder, cut, r.pavement.design.units, &interrupt_requested());
+    write_cut_files(folder, cut, r.pavement.elements, r.pavement.design.units, &interrupt_requested());
     if (previews) previews->write_solid(folder / "cut.png", cut.mesh, r.map->mesh);
     timings.emplace_back("cut", watch.milliseconds());
     cut_summary = cut_json(cut, cutter, thickness, r.pavement.design.units);
@@ -288,7 +288,7 @@ ExtraWriter set_up_cut(const RunArgs& args, [[maybe_unused]] PipelineRequest& re
     }
     const std::string stand_out = stones_stand_out_warning(cut, thickness, r.pavement.design.units);
     if (!stand_out.empty()) warn(stand_out);
-    const std::string rounded = coordinate_rounding_warning(r.pavement.elements, "cut.stl", "cut.3mf");
+    const std::string rounded = coordinate_rounding_warning(r.pavement.elements, "cut.stl", "cut.3mf and stones.3mf");
     if (!rounded.empty()) warn(rounded);
   };
 #else
@@ -322,7 +322,9 @@ std::string written_files(const MeshFormats& formats, bool beads, bool cut, bool
   for (const std::string& name : mesh_file_names(formats)) written += ", " + name;
   if (formats.stl && beads) written += ", beads.stl";
   written += ", design.json, report.json, report.html";
-  if (cut) written += png ? ", cut.stl, cut.3mf, cut.png" : ", cut.stl, cut.3mf";
+  if (cut)
+    for (const std::string& name : cut_file_names()) written += ", " + name;
+  if (cut && png) written += ", cut.png";
   if (png) written += ", preview.png, param.png";
   return written;
 }
@@ -434,7 +436,8 @@ std::function<int()> add_run_command(CLI::App& app) {
                   "Mesh files to write, comma-separated: ply, obj, stl, glb (glTF 2.0 binary), 3mf")
       ->capture_default_str();
   cmd->add_flag("--subtract", args->subtract,
-                "Also write the metal with the stones' seats cut out (cut.stl, cut.3mf) and its weight; needs --thickness");
+                "Also write the metal with the stones' seats cut out (cut.stl, cut.3mf), the stones alone (stones.3mf) "
+                "and the metal's weight; needs --thickness");
   cmd->add_option("--thickness", args->thickness, "Metal thickness for --subtract, surface units (against the normals)");
   cmd->add_option("--inside-diameter", args->inside_diameter,
                   "A band's ring size for --subtract, mm: the metal's finger side a cylinder this wide, --thickness "

@@ -45,11 +45,11 @@ void MetalCutter::start(std::shared_ptr<const SurfaceMap> map, std::shared_ptr<c
       refuse_cut_beyond_memory(pavement->elements, cut_options, app::available_memory_bytes());
       const CutSolid cut = cut_pavement(*map, pavement->elements, cut_options);
       make_output_folder(folder);
-      write_cut_files(folder, cut, pavement->design.units, &stopped);
+      write_cut_files(folder, cut, pavement->elements, pavement->design.units, &stopped);
       const double mm = millimetres_per_unit(pavement->design.units);
       const double mm3 = cut.volume * mm * mm * mm;
       char text[256];
-      std::snprintf(text, sizeof text, "wrote %s/cut.stl and cut.3mf: %d seats, metal %.4g mm3, %.2f g of 18k gold, "
+      std::snprintf(text, sizeof text, "wrote %s/cut.stl, cut.3mf and stones.3mf: %d seats, metal %.4g mm3, %.2f g of 18k gold, "
                     "%.0f ms", folder.string().c_str(), cut.cutters, mm3,
                     metal_grams(cut.volume, pavement->design.units, jewellery_alloys()[1]), cut.milliseconds);
       std::string said = text;

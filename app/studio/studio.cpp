@@ -7,6 +7,7 @@
 
 #include "map/lifting.h"
 
+#include "io/mesh_formats.h"
 #include "io/output_guard.h"
 #include "io/stl_unit_warning.h"
 #include "panels/panels.h"
@@ -419,7 +420,9 @@ void cut_metal(Studio& s, const fs::path& folder, double thickness) {
   if (!(thickness > 0) || !std::isfinite(thickness))
     throw InputError("metal thickness " + std::to_string(thickness) + ": it needs to be above 0 (surface units)");
   const std::vector<fs::path> inputs = {s.doc.surface.path, s.doc.design_path, s.doc.design.elements.custom_shape};
-  refuse_overwriting_inputs(inputs, {folder / "cut.stl", folder / "cut.3mf"});
+  std::vector<fs::path> outputs;
+  for (const std::string& name : cut_file_names()) outputs.push_back(folder / name);
+  refuse_overwriting_inputs(inputs, outputs);
   check_output_folder(folder);
   s.cutter.start(s.doc.surface.map, s.doc.result.pavement, shared_custom_shape(s.doc), thickness, folder);
   report_status(s.doc, "cutting the seats into the metal...");

@@ -1,6 +1,7 @@
 #include "cut/cut_outputs.h"
 
 #include "io/element_export.h"
+#include "io/mesh_formats.h"
 #include "io/threemf_export.h"
 #include "report/metal_weight.h"
 #include "report/ring_size.h"
@@ -12,12 +13,15 @@
 
 namespace paver {
 
-void write_cut_files(const std::filesystem::path& folder, const CutSolid& cut, Units units,
+void write_cut_files(const std::filesystem::path& folder, const CutSolid& cut, const Elements& stones, Units units,
                      const std::atomic<bool>* stop) {
   write_mesh_stl(folder / "cut.stl", cut.mesh, "cut solid", stop);
   // The metal alone, so that a slicer slices it as it is: the stones in it were printable objects
   // that stopped PrusaSlicer ("no extrusions in the first layer: gem"); they are in paved.3mf.
   write_pavement_3mf(folder / "cut.3mf", &cut.mesh, Elements{}, units, {.stop = stop}, "metal");
+  // The stones alone, in the same frame: what the setter sets into the metal (paved.3mf has the
+  // beads too, which the metal holds now).
+  write_pavement_3mf(folder / "stones.3mf", nullptr, stones, units, {.stop = stop});
 }
 
 nlohmann::json cut_json(const CutSolid& cut, CutterKind cutter, double thickness, Units units) {
@@ -39,7 +43,7 @@ nlohmann::json cut_json(const CutSolid& cut, CutterKind cutter, double thickness
           {"thickest_metal", cut.thickest_metal > 0 ? cut.thickest_metal : thickness},
           {"stones_stand_out_behind", std::max(0.0, cut.deepest_stone - metal)},
           {"metal", metal_weights_json(cut.volume, units)},
-          {"files", {"cut.stl", "cut.3mf"}}};
+          {"files", cut_file_names()}};
   if (cut.inside_diameter > 0)
     json["ring"] = {{"inside_diameter_mm", cut.inside_diameter * mm},
                     {"nearest_sizes", nearest_ring_sizes_json(cut.inside_diameter * mm)}};

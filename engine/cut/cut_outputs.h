@@ -4,6 +4,7 @@
 // report.json's `cut` section.
 #include "cut/solid_cut.h"
 #include "design/design.h"
+#include "elements/elements.h"
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -14,10 +15,11 @@
 namespace paver {
 
 
-// Writes `folder`/cut.stl and `folder`/cut.3mf, the metal alone (beads joined), for the slicer to
-// slice as it is: the stones are paved.3mf's. Throws InputError naming the file; Interrupted when
-// `stop` becomes true.
-void write_cut_files(const std::filesystem::path& folder, const CutSolid& cut, Units units,
+// Writes the files of io/mesh_formats.h's cut_file_names into `folder`: cut.stl and cut.3mf, the
+// metal alone (beads joined), for the slicer to slice as it is, and stones.3mf, `stones` alone
+// (no beads: the metal holds them), for the setter. Throws InputError naming the file;
+// Interrupted when `stop` becomes true.
+void write_cut_files(const std::filesystem::path& folder, const CutSolid& cut, const Elements& stones, Units units,
                      const std::atomic<bool>* stop = nullptr);
 
 // report.json's `cut`: the cutter and thickness, counts, volumes in mm^3 and the metal's weight in

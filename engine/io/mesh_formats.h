@@ -30,6 +30,10 @@ std::vector<std::string> mesh_file_names(const MeshFormats& formats);
 // Every mesh file name any format can make (the output set's known names).
 std::vector<std::string> all_mesh_file_names();
 
+// The files a cut of the metal writes (cut/cut_outputs.h), for the shop: the metal with its seats
+// and beads (cut.stl, cut.3mf) and the stones alone (stones.3mf), to be set into it.
+inline std::vector<std::string> cut_file_names() { return {"cut.stl", "cut.3mf", "stones.3mf"}; }
+
 // About how many bytes the mesh files take: checked before writing (and, from the pattern,
 // before the solve) against the user's limit.
 double expected_mesh_bytes(const ElementMeshSize& size, const MeshFormats& formats, const SurfaceMesh& surface);

@@ -186,7 +186,8 @@ TEST_F(MetalFiles, HoldTheMetalAlone) {
   const SurfaceMap plate = flat_plate(10, 8);
   const CutSolid cut = cut_pavement(plate, stones_on_plate({{3, 3}, {6, 4}}, d, ShapeKind::Gem),
                                     {.cutter = CutterKind::Seat, .thickness = thickness});
-  write_cut_files(dir_, cut, Units::Millimetre);
+  const Elements stones = stones_on_plate({{3, 3}, {6, 4}}, d, ShapeKind::Gem);
+  write_cut_files(dir_, cut, stones, Units::Millimetre);
   const test::ReadBack3mf r = test::read_3mf(dir_ / "cut.3mf");
   ASSERT_EQ(r.meshes.size(), 1u);
   EXPECT_EQ(r.meshes.begin()->second.name, "metal");
@@ -195,6 +196,11 @@ TEST_F(MetalFiles, HoldTheMetalAlone) {
   EXPECT_TRUE(r.components.empty()) << "no stones in the metal's file";
   EXPECT_EQ(r.build_items.size(), 1u);
   EXPECT_TRUE(std::filesystem::is_regular_file(dir_ / "cut.stl"));
+  // The stones alone, for the setter: the stones' object, no metal, no beads.
+  const test::ReadBack3mf alone = test::read_3mf(dir_ / "stones.3mf");
+  EXPECT_EQ(alone.components.size(), stones.size()) << "one component per stone";
+  EXPECT_TRUE(alone.bead_components.empty());
+  for (const auto& [id, mesh] : alone.meshes) EXPECT_NE(mesh.name, "metal");
 }
 
 TEST(SolidCut, StonesDeeperThanTheMetalAreWarnedOf) {

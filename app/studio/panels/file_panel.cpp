@@ -142,7 +142,8 @@ void file_panel(Studio& s) {
   ImGui::EndDisabled();
   help_marker(MetalCutter::available()
                   ? "The surface thickened into metal this thick (surface units, against the normals) with a seat "
-                    "cut for each stone and the beads joined: cut.stl and cut.3mf in the folder above, as `paver "
+                    "cut for each stone and the beads joined: cut.stl and cut.3mf, and the stones alone in stones.3mf, in the "
+                    "folder above, as `paver "
                     "run --subtract` writes them. It runs in the background."
                   : "This studio was built without CGAL (-DPAVER_WITH_CGAL=OFF): no cut.");
   path_field("##png", s.ui.png_path, {"3D view PNG"});
