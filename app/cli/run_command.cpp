@@ -269,7 +269,8 @@ ExtraWriter set_up_cut(const RunArgs& args, [[maybe_unused]] PipelineRequest& re
                    "on 2 cores)");
     const Stopwatch watch;
     const CutSolid cut = cut_pavement(*r.map, r.pavement.elements, cut_options);
-    write_cut_files(folder, cut, r.pavement.elements, r.pavement.design.units, &interrupt_requested());
+    write_cut_files(folder, cut, r.pavement.elements, r.custom_shape.get(), r.pavement.design.units,
+                    &interrupt_requested());
     if (previews) previews->write_solid(folder / "cut.png", cut.mesh, r.map->mesh);
     timings.emplace_back("cut", watch.milliseconds());
     cut_summary = cut_json(cut, cutter, thickness, r.pavement.design.units);

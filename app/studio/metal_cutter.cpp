@@ -45,7 +45,7 @@ void MetalCutter::start(std::shared_ptr<const SurfaceMap> map, std::shared_ptr<c
       refuse_cut_beyond_memory(pavement->elements, cut_options, app::available_memory_bytes());
       const CutSolid cut = cut_pavement(*map, pavement->elements, cut_options);
       make_output_folder(folder);
-      write_cut_files(folder, cut, pavement->elements, pavement->design.units, &stopped);
+      write_cut_files(folder, cut, pavement->elements, custom.get(), pavement->design.units, &stopped);
       const double mm = millimetres_per_unit(pavement->design.units);
       const double mm3 = cut.volume * mm * mm * mm;
       char text[256];

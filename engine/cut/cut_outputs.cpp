@@ -13,15 +13,15 @@
 
 namespace paver {
 
-void write_cut_files(const std::filesystem::path& folder, const CutSolid& cut, const Elements& stones, Units units,
-                     const std::atomic<bool>* stop) {
+void write_cut_files(const std::filesystem::path& folder, const CutSolid& cut, const Elements& stones,
+                     const ShapeMesh* custom, Units units, const std::atomic<bool>* stop) {
   write_mesh_stl(folder / "cut.stl", cut.mesh, "cut solid", stop);
   // The metal alone, so that a slicer slices it as it is: the stones in it were printable objects
   // that stopped PrusaSlicer ("no extrusions in the first layer: gem"); they are in paved.3mf.
   write_pavement_3mf(folder / "cut.3mf", &cut.mesh, Elements{}, units, {.stop = stop}, "metal");
   // The stones alone, in the same frame: what the setter sets into the metal (paved.3mf has the
   // beads too, which the metal holds now).
-  write_pavement_3mf(folder / "stones.3mf", nullptr, stones, units, {.stop = stop});
+  write_pavement_3mf(folder / "stones.3mf", nullptr, stones, units, {.custom = custom, .stop = stop});
 }
 
 nlohmann::json cut_json(const CutSolid& cut, CutterKind cutter, double thickness, Units units) {

@@ -17,10 +17,10 @@ namespace paver {
 
 // Writes the files of io/mesh_formats.h's cut_file_names into `folder`: cut.stl and cut.3mf, the
 // metal alone (beads joined), for the slicer to slice as it is, and stones.3mf, `stones` alone
-// (no beads: the metal holds them), for the setter. Throws InputError naming the file;
-// Interrupted when `stop` becomes true.
-void write_cut_files(const std::filesystem::path& folder, const CutSolid& cut, const Elements& stones, Units units,
-                     const std::atomic<bool>* stop = nullptr);
+// (no beads: the metal holds them), for the setter; `custom` is the design's custom shape, for
+// stones that use it. Throws InputError naming the file; Interrupted when `stop` becomes true.
+void write_cut_files(const std::filesystem::path& folder, const CutSolid& cut, const Elements& stones,
+                     const ShapeMesh* custom, Units units, const std::atomic<bool>* stop = nullptr);
 
 // report.json's `cut`: the cutter and thickness, counts, volumes in mm^3 and the metal's weight in
 // every alloy of report/metal_weight.h.

@@ -14,6 +14,9 @@
 namespace paver {
 namespace {
 
+// A band faces away from its axis when its normals' mean share along the radius is at least this.
+constexpr double kRadialShare = 0.5;
+
 // Newell's normal of a closed loop (its length the loop's area, times 2) and its centre.
 void loop_plane(const SurfaceMesh& mesh, const std::vector<int>& loop, glm::dvec3& normal, glm::dvec3& centre) {
   normal = glm::dvec3(0);
@@ -88,6 +91,11 @@ FingerSide check_finger_side(const SurfaceMap& map, double inside_diameter, doub
     side.farthest = std::max(side.farthest, r);
     if (r > 0) facing += glm::dot(map.normals[v], radial / r);
   }
+  // A flat plate with a hole has two rims around its normal too, but its normals lie along the
+  // axis: a band's run out from it, mostly.
+  if (std::abs(facing) < kRadialShare * double(map.mesh.positions.size()))
+    throw InputError(given + ": this surface's rims run around one axis but it does not face away from it (a flat "
+                             "plate with a hole?): a ring size is for a band around a finger; leave it out");
   if (!(facing > 0))
     throw InputError(given + ": this band faces its axis (it is an inside face): the stones go on the outside of a "
                              "ring; flip the surface's faces or pave its outer face");

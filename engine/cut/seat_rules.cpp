@@ -32,7 +32,7 @@ void note_break(std::vector<SeatRuleBreak>& breaks, const char* rule, double lim
   auto it = std::find_if(breaks.begin(), breaks.end(), [&](const SeatRuleBreak& b) { return b.rule == rule; });
   if (it == breaks.end()) it = breaks.insert(breaks.end(), SeatRuleBreak{rule, limit, value, {}});
   it->worst = std::min(it->worst, value);
-  if (std::find(it->stone_ids.begin(), it->stone_ids.end(), id) == it->stone_ids.end()) it->stone_ids.push_back(id);
+  it->stone_ids.push_back(id);  // made unique once, at the end
 }
 
 }  // namespace
@@ -72,7 +72,10 @@ SeatCheck check_seats(const Elements& stones, const ShapeTable& shapes, CutterKi
       }
     });
   }
-  for (SeatRuleBreak& b : check.breaks) std::sort(b.stone_ids.begin(), b.stone_ids.end());
+  for (SeatRuleBreak& b : check.breaks) {
+    std::sort(b.stone_ids.begin(), b.stone_ids.end());
+    b.stone_ids.erase(std::unique(b.stone_ids.begin(), b.stone_ids.end()), b.stone_ids.end());
+  }
   return check;
 }
 

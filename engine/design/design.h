@@ -67,8 +67,8 @@ struct EdgeElementDesign {
 struct BeadDesign {
   bool enabled = false;
   double scale = 1;                       // in (0, 2]: of the largest that fits between its stones
-  double min_diameter = 0.5;              // castable, surface units (mm for jewellery)
-  double over = 0.05;                     // how far a bead reaches over each girdle it holds, surface units
+  double min_diameter = 0.5;              // castable, mm whatever the surface's unit
+  double over = 0.05;                     // how far a bead reaches over each girdle it holds, mm
 };
 
 // Fill sizes (elements.fill_sizes): at most this many, none under this share of the main stone

@@ -102,10 +102,10 @@ constexpr Row kRows[] = {
     {Key::beads_scale, "elements.beads.scale", ValueRange::open_closed(0, 2), {}, {},
      "the bead over the largest that fits between its stones, when that is larger than its least size", {},
      "Elements > Stones (jewellery) > bead size"},
-    {Key::beads_min_diameter, "elements.beads.min_diameter", ValueRange::above(0), {}, kSurfaceUnits,
+    {Key::beads_min_diameter, "elements.beads.min_diameter", ValueRange::above(0), {}, "mm",
      "the least bead, castable (a cast bead is about 0.5-0.6 mm; docs/stones.md)", "bead-min",
      "Elements > Stones (jewellery) > least bead"},
-    {Key::beads_over, "elements.beads.over", kNonNegative, {}, kSurfaceUnits,
+    {Key::beads_over, "elements.beads.over", kNonNegative, {}, "mm",
      "how far a bead reaches over the girdle of each stone it holds", "bead-over",
      "Elements > Stones (jewellery) > bead reach over the girdle"},
     {Key::placement_offset, "placement.offset", {}, {}, "pattern-plane units, as D", "the pattern moved over the map",
@@ -331,6 +331,7 @@ std::optional<std::string> parse_flag(const DesignKey& row, std::string_view tex
         return problem->starts_with("must be a number") ? "must be numbers separated by commas (1.3,1.1,0.9)" : *problem;
       values.push_back(value);
       start = comma + 1;
+      if (start == text.size()) return std::string("must be numbers separated by commas (1.3,1.1,0.9)");  // "1.3,"
     }
     out = std::move(values);
     return std::nullopt;

@@ -28,25 +28,33 @@ constexpr int kBeadDirections = 48;
 // The beads placed so far, found by position as they grow.
 class BeadGrid {
 public:
-  explicit BeadGrid(double cell) : cell_(cell) {}
-  void add(const glm::dvec3& p, int bead) { cells_[key(cell_of(p))].push_back(bead); }
+  // Cells counted from `origin` (the stones' lower corner), in 64 bits: no coordinate overflows.
+  BeadGrid(double cell, const glm::dvec3& origin) : cell_(cell), origin_(origin) {}
+  void add(const glm::dvec3& p, int bead) {
+    const Cell c = cell_of(p);
+    cells_[key(c[0], c[1], c[2])].push_back(bead);
+  }
   template <class Visit>
   void for_each_near(const glm::dvec3& p, Visit&& visit) const {
-    const glm::ivec3 c = cell_of(p);
+    const Cell c = cell_of(p);
     for (int x = -1; x <= 1; ++x)
       for (int y = -1; y <= 1; ++y)
         for (int z = -1; z <= 1; ++z)
-          if (const auto it = cells_.find(key(c + glm::ivec3(x, y, z))); it != cells_.end())
+          if (const auto it = cells_.find(key(c[0] + x, c[1] + y, c[2] + z)); it != cells_.end())
             for (const int b : it->second) visit(b);
   }
 
 private:
-  glm::ivec3 cell_of(const glm::dvec3& p) const { return glm::ivec3(glm::floor(p / cell_)); }
-  static std::uint64_t key(glm::ivec3 c) {
-    return (std::uint64_t(std::uint32_t(c.x)) * 73856093u) ^ (std::uint64_t(std::uint32_t(c.y)) * 19349663u) ^
-           (std::uint64_t(std::uint32_t(c.z)) * 83492791u);
+  using Cell = std::array<std::int64_t, 3>;
+  Cell cell_of(const glm::dvec3& p) const {
+    const glm::dvec3 q = glm::floor((p - origin_) / cell_);
+    return {std::int64_t(q.x), std::int64_t(q.y), std::int64_t(q.z)};
+  }
+  static std::uint64_t key(std::int64_t x, std::int64_t y, std::int64_t z) {
+    return (std::uint64_t(x) * 73856093u) ^ (std::uint64_t(y) * 19349663u) ^ (std::uint64_t(z) * 83492791u);
   }
   double cell_;
+  glm::dvec3 origin_;
   std::unordered_map<std::uint64_t, std::vector<int>> cells_;
 };
 
@@ -256,7 +264,7 @@ Elements place_beads(const SurfaceMap& map, const Elements& stones, const Elemen
   if (!(design.beads.min_diameter <= 4 * largest)) return Elements{};
   const double reach = largest * (1 + kBeadContactSlack) + design.gap + std::max(design.beads.min_diameter, largest);
   Placer placer{map, stones, design, largest, PointHash(stones.position, stone_cells(stones, reach)), std::nullopt,
-                Elements{}, BeadGrid(reach), std::vector<int>(stones.size(), 0)};
+                Elements{}, BeadGrid(reach, stone_cells(stones, reach).origin), std::vector<int>(stones.size(), 0)};
   if (!is_atlas(map)) placer.rims.emplace(map.mesh, reach);
   triangle_beads(placer);
   own_beads(placer);

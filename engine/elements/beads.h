@@ -43,7 +43,8 @@ inline constexpr double kTableShare = 0.22;
 // (a cast bead is about 0.5-0.6 mm; elements.beads.min_diameter is 0.5 by default).
 inline constexpr double kFinestCastBeadMm = 0.2;
 
-// Elements of kind Bead, shape Sphere; none unless design.beads.enabled.
+// Elements of kind Bead, shape Sphere; none unless design.beads.enabled. Every length of `design`
+// in surface units (the pass converts the bead sizes from mm).
 Elements place_beads(const SurfaceMap& map, const Elements& stones, const ElementsDesign& design);
 
 // How the beads hold the stones, counted apart from how they were placed: holders per stone

@@ -232,7 +232,12 @@ void measure_final(const PaveContext& c, PaveState& s) {
 }
 
 void lay_beads(const PaveContext& c, PaveState& s) {
-  s.pavement.beads = place_beads(c.map, s.pavement.elements, s.design.elements);
+  // The bead sizes are millimetres (a caster's), the surface's unit may not be.
+  ElementsDesign spec = s.design.elements;
+  const double per_mm = 1 / millimetres_per_unit(s.design.units);
+  spec.beads.min_diameter *= per_mm;
+  spec.beads.over *= per_mm;
+  s.pavement.beads = place_beads(c.map, s.pavement.elements, spec);
   number_beads(s.pavement.beads, s.pavement.elements);
 }
 

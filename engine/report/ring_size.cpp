@@ -19,7 +19,7 @@ namespace {
 constexpr double kUsZeroMm = 11.63, kUsStepMm = 0.8128, kUsLargest = 16;
 constexpr double kEuSmallest = 38, kEuLargest = 76;
 constexpr double kUkAMm = 37.5, kUkHalfStepMm = 0.625;  // circumference
-constexpr int kUkHalfSizes = 2 * 25 + 1;                // A to Z 1/2
+constexpr int kUkHalfSizes = 2 * 26;                    // A to Z 1/2
 
 std::optional<double> number_in(const std::string& text) {
   double value = 0;

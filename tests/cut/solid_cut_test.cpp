@@ -113,6 +113,13 @@ TEST(FingerSide, IsACylinderAboutTheBandsOwnAxis) {
   for (glm::dvec3& normal : inward.normals) normal = -normal;
   EXPECT_THROW(check_finger_side(inward, 17.3, 1.2, "--inside-diameter 17.3"), InputError);
   EXPECT_THROW(check_finger_side(flat_plate(10, 5), 17.3, 1.2, "--inside-diameter 17.3"), InputError);
+  SurfaceMap washer;  // two rims around one axis, but flat: its normals lie along the axis
+  washer.mesh = test::band_surface(64, 4, [](double u, double v) {
+    const double a = 2 * std::numbers::pi * u;
+    return glm::dvec3((10 + 2 * v) * std::cos(a), (10 + 2 * v) * std::sin(a), 0.0);
+  });
+  washer.normals.assign(washer.mesh.positions.size(), glm::dvec3(0, 0, 1));
+  EXPECT_THROW(check_finger_side(washer, 17.3, 0.5, "--inside-diameter 17.3"), InputError);
 }
 
 // Production rules (issue 43) on two gems 1.0 apart on a flat plate, worked out by hand: a seat is
@@ -187,7 +194,7 @@ TEST_F(MetalFiles, HoldTheMetalAlone) {
   const CutSolid cut = cut_pavement(plate, stones_on_plate({{3, 3}, {6, 4}}, d, ShapeKind::Gem),
                                     {.cutter = CutterKind::Seat, .thickness = thickness});
   const Elements stones = stones_on_plate({{3, 3}, {6, 4}}, d, ShapeKind::Gem);
-  write_cut_files(dir_, cut, stones, Units::Millimetre);
+  write_cut_files(dir_, cut, stones, nullptr, Units::Millimetre);
   const test::ReadBack3mf r = test::read_3mf(dir_ / "cut.3mf");
   ASSERT_EQ(r.meshes.size(), 1u);
   EXPECT_EQ(r.meshes.begin()->second.name, "metal");
