@@ -280,6 +280,10 @@ ExtraWriter set_up_cut(const RunArgs& args, [[maybe_unused]] PipelineRequest& re
     cut_summary["seats"] = seat_check_json(seats);
     const std::vector<std::string> problems = seat_rule_problems(seats);
     cut_summary["seats"]["problems"] = problems;
+    // On a ring each culet has its own metal to the finger side: the deepest stone need not stand
+    // where the metal is thinnest.
+    const bool ring = cut_options.finger_side != nullptr;
+    if (ring) cut_summary["stones_stand_out_behind"] = std::max(0.0, -seats.least_culet_metal);
     sections["cut"] = cut_summary;
     if (!problems.empty()) {
       Verdict verdict = judge_pavement(r.pavement.after);
@@ -287,7 +291,14 @@ ExtraWriter set_up_cut(const RunArgs& args, [[maybe_unused]] PipelineRequest& re
       verdict.problems.insert(verdict.problems.end(), problems.begin(), problems.end());
       sections["verdict"] = to_json(verdict);
     }
-    const std::string stand_out = stones_stand_out_warning(cut, thickness, r.pavement.design.units);
+    const std::string unit(enum_name(r.pavement.design.units));
+    const std::string stand_out =
+        !ring ? stones_stand_out_warning(cut, thickness, r.pavement.design.units)
+        : seats.least_culet_metal < 0
+            ? "on this ring the stones' culets stand out of the finger side by up to " +
+                  significant_text(-seats.least_culet_metal, 3) + " " + unit +
+                  ": use a smaller inside diameter (more metal) or smaller stones"
+            : "";
     if (!stand_out.empty()) warn(stand_out);
     const std::string rounded = coordinate_rounding_warning(r.pavement.elements, "cut.stl", "cut.3mf and stones.3mf");
     if (!rounded.empty()) warn(rounded);

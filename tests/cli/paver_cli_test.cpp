@@ -1711,6 +1711,9 @@ TEST_F(PaverRun, InsideDiameterMakesTheFingerSideACylinderAtThatSize) {
 
   EXPECT_NEAR(cut["seats"]["least_seat_wall"].get<double>(), 0.1 - 0.02 * 1.5, 1e-3) << "the gap less the seats' clearance";
   EXPECT_TRUE(cut["seats"]["broken"].empty());
+  EXPECT_EQ(cut["stones_stand_out_behind"].get<double>(), 0.0) << "every culet has its own 1.3 mm or more of metal";
+  EXPECT_GT(cut["seats"]["least_culet_metal"].get<double>(), 1.0);
+  EXPECT_EQ(r.err.find("stand out"), std::string::npos) << describe(r);
 
   // A production rule broken: NOT OK (exit 3), in the summary and report.json, naming the stones.
   const fs::path strict = dir() / "strict";
