@@ -16,7 +16,6 @@
 #include <cstdint>
 #include <limits>
 #include <numbers>
-#include <unordered_map>
 #include <vector>
 
 namespace paver {
@@ -25,51 +24,20 @@ namespace {
 // Around a stone that needs holders, beads are tried every 360 / kBeadDirections degrees.
 constexpr int kBeadDirections = 48;
 
-// The beads placed so far, found by position as they grow.
-class BeadGrid {
-public:
-  // Cells counted from `origin` (the stones' lower corner), in 64 bits: no coordinate overflows.
-  BeadGrid(double cell, const glm::dvec3& origin) : cell_(cell), origin_(origin) {}
-  void add(const glm::dvec3& p, int bead) {
-    const Cell c = cell_of(p);
-    cells_[key(c[0], c[1], c[2])].push_back(bead);
-  }
-  template <class Visit>
-  void for_each_near(const glm::dvec3& p, Visit&& visit) const {
-    const Cell c = cell_of(p);
-    for (int x = -1; x <= 1; ++x)
-      for (int y = -1; y <= 1; ++y)
-        for (int z = -1; z <= 1; ++z)
-          if (const auto it = cells_.find(key(c[0] + x, c[1] + y, c[2] + z)); it != cells_.end())
-            for (const int b : it->second) visit(b);
-  }
-
-private:
-  using Cell = std::array<std::int64_t, 3>;
-  Cell cell_of(const glm::dvec3& p) const {
-    const glm::dvec3 q = glm::floor((p - origin_) / cell_);
-    return {std::int64_t(q.x), std::int64_t(q.y), std::int64_t(q.z)};
-  }
-  static std::uint64_t key(std::int64_t x, std::int64_t y, std::int64_t z) {
-    return (std::uint64_t(x) * 73856093u) ^ (std::uint64_t(y) * 19349663u) ^ (std::uint64_t(z) * 83492791u);
-  }
-  double cell_;
-  glm::dvec3 origin_;
-  std::unordered_map<std::uint64_t, std::vector<int>> cells_;
-};
-
 struct Placer {
+  // `grid` covers the stones and every bead near them, its cells as wide as a search reaches.
+  Placer(const SurfaceMap& surface, const Elements& placed, const ElementsDesign& spec, const CellGrid& grid)
+      : map(surface), stones(placed), design(spec), stone_hash(placed.position, grid),
+        bead_hash(beads.position, grid, PointHash::Fill::None), holders(placed.size(), 0) {}
+
   const SurfaceMap& map;
   const Elements& stones;
   const ElementsDesign& design;
-  double largest = 0;  // stone
   PointHash stone_hash;
   std::optional<BoundaryIndex> rims;
   Elements beads;
-  BeadGrid bead_grid;
+  PointHash bead_hash;  // over beads.position, each inserted as it is placed
   std::vector<int> holders;  // #stones
-
-  double bead_reach() const { return 0.5 * largest + 0.5 * std::max(design.beads.min_diameter, largest) + largest; }
 
   bool holds(int s, const glm::dvec3& p, double diameter) const {
     const double d = stones.diameter[std::size_t(s)];
@@ -85,7 +53,7 @@ struct Placer {
       clear = clear && into <= kTableShare * d;
     });
     if (!clear) return false;
-    bead_grid.for_each_near(p, [&](int b) {
+    bead_hash.for_each_near(p, [&](int b) {
       clear = clear && glm::length(p - beads.position[std::size_t(b)]) >=
                            0.5 * (diameter + beads.diameter[std::size_t(b)]) + design.gap;
     });
@@ -93,8 +61,8 @@ struct Placer {
   }
 
   void add(int holding, glm::dvec2 uv, const glm::dvec3& p, const glm::dvec3& n, double diameter) {
-    bead_grid.add(p, int(beads.size()));
     beads.push_back(ElementKind::Bead, holding, 0, uv, p, n, diameter, ShapeKind::Sphere);
+    bead_hash.insert(int(beads.size()) - 1);
     stone_hash.for_each_near(p, [&](int s) {
       if (holds(s, p, diameter)) ++holders[std::size_t(s)];
     });
@@ -172,7 +140,7 @@ std::optional<glm::dvec2> uv_step(const SurfaceMap& map, glm::dvec2 uv, const gl
 std::vector<double> holder_angles(const Placer& placer, int s, const ElementFrame& frame) {
   std::vector<double> angles;
   const glm::dvec3 centre = placer.stones.position[std::size_t(s)];
-  placer.bead_grid.for_each_near(centre, [&](int b) {
+  placer.bead_hash.for_each_near(centre, [&](int b) {
     const glm::dvec3 p = placer.beads.position[std::size_t(b)];
     if (!placer.holds(s, p, placer.beads.diameter[std::size_t(b)])) return;
     angles.push_back(std::atan2(glm::dot(p - centre, frame.b), glm::dot(p - centre, frame.t)));
@@ -263,8 +231,7 @@ Elements place_beads(const SurfaceMap& map, const Elements& stones, const Elemen
   // (the warning says so), and its reach would make every search visit every stone.
   if (!(design.beads.min_diameter <= 4 * largest)) return Elements{};
   const double reach = largest * (1 + kBeadContactSlack) + design.gap + std::max(design.beads.min_diameter, largest);
-  Placer placer{map, stones, design, largest, PointHash(stones.position, stone_cells(stones, reach)), std::nullopt,
-                Elements{}, BeadGrid(reach, stone_cells(stones, reach).origin), std::vector<int>(stones.size(), 0)};
+  Placer placer(map, stones, design, stone_cells(stones, reach));
   if (!is_atlas(map)) placer.rims.emplace(map.mesh, reach);
   triangle_beads(placer);
   own_beads(placer);
