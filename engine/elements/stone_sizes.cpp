@@ -2,8 +2,7 @@
 
 #include "core/stopwatch.h"
 #include "elements/bare_spots.h"
-
-#include <glm/geometric.hpp>
+#include "map/lifting.h"
 
 #include <algorithm>
 #include <functional>
@@ -17,20 +16,6 @@ constexpr double kFitAim = 1e-9;
 // Each search fills every spot it finds; the next finds the few that the first's greedy choice
 // left between samples. Three have always been enough on the bundled surfaces.
 constexpr int kSearchesPerSize = 4;
-
-// The map's vertex normals at a point of face f, blended by its barycentric coordinates in 3D.
-glm::dvec3 normal_at(const SurfaceMap& map, int f, const glm::dvec3& p) {
-  const glm::ivec3 t = map.mesh.triangles[std::size_t(f)];
-  const glm::dvec3 a = map.mesh.positions[std::size_t(t.x)], b = map.mesh.positions[std::size_t(t.y)],
-                   c = map.mesh.positions[std::size_t(t.z)];
-  const glm::dvec3 n = glm::cross(b - a, c - a);
-  const double area = glm::dot(n, n);
-  if (!(area > 0)) return glm::normalize(map.normals[std::size_t(t.x)]);
-  const double wb = glm::dot(glm::cross(p - a, c - a), n) / area, wc = glm::dot(glm::cross(b - a, p - a), n) / area;
-  const glm::dvec3 blended = (1 - wb - wc) * map.normals[std::size_t(t.x)] + wb * map.normals[std::size_t(t.y)] +
-                             wc * map.normals[std::size_t(t.z)];
-  return glm::length(blended) > 0 ? glm::normalize(blended) : glm::normalize(n);
-}
 
 }  // namespace
 
@@ -60,9 +45,20 @@ SizeFill fill_with_smaller_sizes(const SurfaceMap& map, Elements& elements, cons
       if (stop && stop->load()) return fill;
       ++fill.rounds;
       const SpotSearch found = find_bare_spots(map, elements, basis, 0, SpotOrder::TightestFirst);
-      for (const BareSpot& spot : found.spots)
-        elements.push_back(ElementKind::Vertex, -1, 0, spot.uv, spot.position, normal_at(map, spot.triangle, spot.position),
-                           d, spec.vertex.shape);
+      // Each stone's normal as the map gives every element's; its centre stays the spot's own,
+      // where the room was measured.
+      std::vector<glm::dvec2> uv;
+      for (const BareSpot& spot : found.spots) uv.push_back(spot.uv);
+      LiftedPoints lifted;
+      lifted.resize(uv.size());
+      lift_points(map, uv, lifted);
+      for (std::size_t k = 0; k < found.spots.size(); ++k) {
+        const BareSpot& spot = found.spots[k];
+        // A spot's uv is on its own face, so it lifts; should rounding say otherwise, its face's first corner's.
+        const int corner = map.mesh.triangles[std::size_t(spot.triangle)].x;
+        const glm::dvec3 normal = lifted.triangle[k] >= 0 ? lifted.normal[k] : map.normals[std::size_t(corner)];
+        elements.push_back(ElementKind::Vertex, -1, 0, spot.uv, spot.position, normal, d, spec.vertex.shape);
+      }
       row.added += int(found.spots.size());
       if (found.spots.empty()) break;
     }
