@@ -156,6 +156,13 @@ void print_elements(const SurfaceMap& map, const Pavement& pavement, const Pavem
     std::printf(" mm)");
   }
   std::printf("\n");
+  if (pavement.design.elements.grade.by != GradeBy::None && !pavement.grade.ladder.empty()) {
+    const double mm = millimetres_per_unit(pavement.design.units);
+    std::printf("graded by %s: %d stones under the main %s mm, down to %s mm in %zu steps\n",
+                std::string(enum_name(pavement.design.elements.grade.by)).c_str(), pavement.grade.graded,
+                diameter_mm_text(pavement.grade.ladder.front() * mm).c_str(),
+                diameter_mm_text(pavement.grade.ladder.back() * mm).c_str(), pavement.grade.ladder.size() - 1);
+  }
   if (pavement.design.elements.rim_rows != RimRows::None)
     std::printf("rim rows %s: %d of %zu rims, %d elements along them; %d pattern elements made way\n",
                 std::string(enum_name(pavement.design.elements.rim_rows)).c_str(), pavement.rim_rows.loops,
@@ -237,8 +244,13 @@ void print_quality(const Pavement& pavement, const PavementCounts& counts) {
   std::printf("\n");
   const EdgeQuality& edges = final_quality.edges;
   if (edges.measured) {
-    std::printf("edges    %ld bare spots where a stone of %.3g %s still fits (the widest fits %.3g)", edges.bare_spots,
-                edges.spot_stone, unit.c_str(), edges.largest_fit);
+    // Graded stones' spots are judged against the stone graded there (elements/bare_spots.h).
+    if (pavement.grade.ladder.empty())
+      std::printf("edges    %ld bare spots where a stone of %.3g %s still fits (the widest fits %.3g)", edges.bare_spots,
+                  edges.spot_stone, unit.c_str(), edges.largest_fit);
+    else
+      std::printf("edges    %ld bare spots where %.2g of the stone graded there still fits (the widest fits %.3g %s)",
+                  edges.bare_spots, kSpotStoneShare, edges.largest_fit, unit.c_str());
     if (edges.rim_samples > 0)
       std::printf("; rim metal p95 %.2f d, max %.2f d", edges.rim_metal_p95, edges.rim_metal_max);
     std::printf("\n");

@@ -137,6 +137,26 @@ void check_fill_sizes(const std::string& source, const Design& design) {
   }
 }
 
+// A grade needs its smallest stone, under the main one (when the spacing gives its size now).
+void check_grade(const std::string& source, const Design& design) {
+  const GradeDesign& g = design.elements.grade;
+  if (g.by == GradeBy::None) return;
+  std::string key = "'";
+  key += key_path(Key::grade_smallest);
+  key += "'";
+  if (!(g.smallest > 0))
+    fail(source, key + " is 0, and " + key_path(Key::grade_by) + " \"" + std::string(enum_name(g.by)) +
+                     "\" grades towards it: give the smallest graded stone (surface units)");
+  if (!design.elements.vertex.enabled || !(design.pattern.spacing > 0)) return;
+  const double main = design.elements.vertex.scale * design.pattern.spacing;
+  if (!(g.smallest < main))
+    fail(source, key + " " + number_text(g.smallest) + " is not smaller than the main stone (" + number_text(main) +
+                     "): the grade falls off from the main size; give a smaller one");
+  if (g.smallest < kLeastFillShare * main)
+    fail(source, key + " " + number_text(g.smallest) + " is less than a quarter of the main stone (" +
+                     number_text(main) + "), too small to set beside it: give a larger one");
+}
+
 void validate_design(const Design& design, const std::string& source) {
   // Every pair of edge elements is checked for overlap on every cell edge: 10,000 of them took 35 s
   // to be refused. No cell has use for more than a few per edge.
@@ -153,6 +173,7 @@ void validate_design(const Design& design, const std::string& source) {
                      number_text(s.c) + ", m = " + number_text(s.m));
   check_edits(source, design.edits, design.elements);
   check_fill_sizes(source, design);
+  check_grade(source, design);
 }
 
 }  // namespace paver

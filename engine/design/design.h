@@ -71,6 +71,18 @@ struct BeadDesign {
   double over = 0.05;                     // how far a bead reaches over each girdle it holds, mm
 };
 
+// Graded stones (pattern/grade_field.h): the V-elements fall off from the main size towards
+// `smallest` where the surface bends most (curvature) or near its rims (rim: over `width` from the
+// margin inwards), in stocked steps.
+enum class GradeBy { None, Curvature, Rim };
+PAVER_ENUM_NAMES(GradeBy, {GradeBy::None, "none"}, {GradeBy::Curvature, "curvature"}, {GradeBy::Rim, "rim"});
+
+struct GradeDesign {
+  GradeBy by = GradeBy::None;
+  double smallest = 0;                    // the least graded stone, surface units (> 0 when graded)
+  double width = 0;                       // rim: how far in the stones reach the main size; 0 = 3 main stones
+};
+
 // Fill sizes (elements.fill_sizes): at most this many, none under this share of the main stone
 // (the search for room steps at an eighth of the size, so a tiny one would sweep the surface in
 // nanometres).
@@ -92,16 +104,18 @@ struct ElementsDesign {
   // Stocked sizes smaller than the main stone, surface units: what it leaves is filled with the
   // largest that fits (elements/stone_sizes.h).
   std::vector<double> fill_sizes;
+  GradeDesign grade;
   BeadDesign beads;
 };
 
 struct Design {
   // design.json's version, written by save_design. Version 1 (before 2026-11-27) differs only in a
   // default: solver.mu_stretched was 0.5 then; version 2 (before 2026-12-02) has no
-  // elements.close_spots; version 3 (before 2026-12-03) has no elements.fill_sizes, elements.beads.min_diameter or
-  // elements.beads.over. All are read, so that an earlier build says which versions it reads
-  // rather than that a new key is unknown.
-  static constexpr int kVersion = 4;
+  // elements.close_spots; version 3 (before 2026-12-03) has no elements.fill_sizes,
+  // elements.beads.min_diameter or elements.beads.over; version 4 (until graded stones, 2026-12-02)
+  // has no elements.grade. All are read, so that an earlier build says which versions it reads rather
+  // than that a new key is unknown.
+  static constexpr int kVersion = 5;
   static constexpr int kOldestVersion = 1;
   Units units = Units::Millimetre;
   PatternDesign pattern;

@@ -96,6 +96,15 @@ constexpr Row kRows[] = {
      "stocked stone sizes smaller than the main stone: after the pass, every place where one fits gets the largest "
      "that fits (docs/stones.md)",
      "fill-sizes", "Elements > Stones (jewellery) > fill with smaller sizes"},
+    {Key::grade_by, "elements.grade.by", {}, {}, {},
+     "graded stones: the main size falls off towards the smallest where the surface bends most or near the "
+     "rims, in stocked steps (docs/stones.md)",
+     "grade", "Elements > Stones (jewellery) > graded by"},
+    {Key::grade_smallest, "elements.grade.smallest", kNonNegative, "0 = none; with a grade, less than the main stone",
+     kSurfaceUnits, "the smallest graded stone", "grade-smallest", "Elements > Stones (jewellery) > smallest graded"},
+    {Key::grade_width, "elements.grade.width", kNonNegative, "0 = three main stones", kSurfaceUnits,
+     "rim: how far in from the margin the stones grow back to the main size", "grade-width",
+     "Elements > Stones (jewellery) > grade width"},
     {Key::beads_enabled, "elements.beads.enabled", {}, {}, {},
      "a bead (shared prong) in the gap of every three stones in contact (docs/stones.md)", "beads",
      "Elements > Stones (jewellery) > beads between stones"},

@@ -48,6 +48,9 @@ enum class Key {
   rim_rows,
   close_spots,
   fill_sizes,
+  grade_by,
+  grade_smallest,
+  grade_width,
   beads_enabled,
   beads_scale,
   beads_min_diameter,
@@ -140,6 +143,9 @@ void visit_keys(D& d, Visit&& visit) {
   visit(Key::rim_rows, d.elements.rim_rows);
   visit(Key::close_spots, d.elements.close_spots);
   visit(Key::fill_sizes, d.elements.fill_sizes);
+  visit(Key::grade_by, d.elements.grade.by);
+  visit(Key::grade_smallest, d.elements.grade.smallest);
+  visit(Key::grade_width, d.elements.grade.width);
   visit(Key::beads_enabled, d.elements.beads.enabled);
   visit(Key::beads_scale, d.elements.beads.scale);
   visit(Key::beads_min_diameter, d.elements.beads.min_diameter);

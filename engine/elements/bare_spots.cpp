@@ -25,20 +25,27 @@
 namespace paver {
 
 double SpotBasis::spot_stone_at(const SurfaceMap& map, int f, glm::dvec2 w, glm::dvec2 uv) const {
-  if (c == 0 && m == 0 && guidance.empty()) return spot_stone;
+  if (c == 0 && m == 0 && guidance.empty() && !grade) return spot_stone;
   const glm::ivec3 t = map.mesh.triangles[f];
   const double kappa =
       (1 - w.x - w.y) * map.curvature[t.x] + w.x * map.curvature[t.y] + w.y * map.curvature[t.z];
   const double growth = (1 + c + m * normalised_curvature(map, kappa)) * guidance_factor(guidance, uv);
   // The regular hole at the grown spacing: its centre farther from the elements by the growth.
   const double hole = 2 * (growth * hole_reach - 0.5 * stone - gap);
-  return std::max(kSpotStoneShare * stone, kSpotOverHole * hole);
+  if (!grade) return std::max(kSpotStoneShare * stone, kSpotOverHole * hole);
+  // Where the stones are graded smaller, so is the stone a spot must fit: a hole is judged against
+  // the stones around it.
+  const std::vector<glm::dvec3>& p = map.mesh.positions;
+  const glm::dvec3 at = (1 - w.x - w.y) * p[std::size_t(t.x)] + w.x * p[std::size_t(t.y)] + w.y * p[std::size_t(t.z)];
+  return std::max(kSpotStoneShare * stone, kSpotOverHole * hole) * grade->share(uv, at, kappa);
 }
 
 double SpotBasis::narrowest_spot_stone() const {
-  if (c == 0 && m == 0 && guidance.empty()) return spot_stone;
+  if (c == 0 && m == 0 && guidance.empty() && !grade) return spot_stone;
   const double least = std::max(0.0, 1 + c + std::min(m, 0.0)) * (guidance.empty() ? 1.0 : kGuidanceMin);
-  return std::max(kSpotStoneShare * stone, kSpotOverHole * 2 * (least * hole_reach - 0.5 * stone - gap));
+  const double narrowest =
+      std::max(kSpotStoneShare * stone, kSpotOverHole * 2 * (least * hole_reach - 0.5 * stone - gap));
+  return grade ? narrowest * grade->least_share() : narrowest;
 }
 
 FreeRoom::FreeRoom(const SurfaceMap& map, const Elements& elements, const SpotBasis& basis, double reach)

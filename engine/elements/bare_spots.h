@@ -6,6 +6,7 @@
 #include "design/design.h"
 #include "design/guidance.h"
 #include "elements/elements.h"
+#include "pattern/grade_field.h"
 #include "map/surface_map.h"
 
 #include <glm/vec2.hpp>
@@ -37,6 +38,8 @@ struct SpotBasis {
   // field), its holes grow with the spacing, and so does the stone a spot must fit.
   double c = 0, m = 0;
   std::vector<GuidanceDab> guidance;
+  // Graded stones (pattern/grade_field.h): the spot stone shrinks with the grade's share.
+  std::shared_ptr<const GradeField> grade;
 
   // The stone a spot must fit at a point of face `f` with barycentric (u, v) and map point uv.
   double spot_stone_at(const SurfaceMap& map, int f, glm::dvec2 w, glm::dvec2 uv) const;

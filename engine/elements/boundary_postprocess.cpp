@@ -1,5 +1,7 @@
 #include "elements/boundary_postprocess.h"
 
+#include "elements/stone_grade.h"
+
 #include "map/boundary_index.h"
 
 #include "map/lifting.h"
@@ -105,9 +107,10 @@ int eliminate_boundary_elements(const SurfaceMap& map, Elements& elements, doubl
 
 PlacedElements place_all_elements(const SurfaceMap& map, const Pattern& pattern, const std::vector<glm::dvec2>& points,
                                   const ElementsDesign& design, double spacing, EdgeAnchor anchor, bool postprocess,
-                                  const std::vector<std::uint8_t>* retired) {
+                                  const std::vector<std::uint8_t>* retired, const GradeField* grade) {
   PlacedElements placed;
   placed.elements = place_elements(map, pattern, points, design, spacing, retired, anchor);
+  if (grade) grade_stones(map, *grade, placed.elements);
   if (postprocess) {
     placed.filled = fill_boundary_edges(map, pattern, points, design, spacing, placed.elements, retired);
     placed.eliminated =

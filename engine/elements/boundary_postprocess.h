@@ -6,6 +6,7 @@
 #include "design/design.h"
 #include "elements/element_placement.h"
 #include "elements/elements.h"
+#include "pattern/grade_field.h"
 #include "pattern/pattern.h"
 #include "map/surface_map.h"
 
@@ -37,13 +38,15 @@ int eliminate_boundary_elements(const SurfaceMap& map, Elements& elements, doubl
 // Inputs: the map, the pattern and its particle positions `points` (#P), the design's elements at
 // spacing D; `anchor` as place_elements takes it; `retired` (optional, #P) the particles the
 // optimizer retired. Output: the elements placed, then (with `postprocess`, section 5.4) filled at
-// and eliminated near the boundary with its margin, and how many of each.
+// and eliminated near the boundary with its margin, and how many of each. Graded stones
+// (`grade`) take their sizes before the boundary judges them.
 struct PlacedElements {
   Elements elements;
   int filled = 0, eliminated = 0;
 };
 PlacedElements place_all_elements(const SurfaceMap& map, const Pattern& pattern, const std::vector<glm::dvec2>& points,
                                   const ElementsDesign& design, double spacing, EdgeAnchor anchor, bool postprocess,
-                                  const std::vector<std::uint8_t>* retired = nullptr);
+                                  const std::vector<std::uint8_t>* retired = nullptr,
+                                  const GradeField* grade = nullptr);
 
 }  // namespace paver

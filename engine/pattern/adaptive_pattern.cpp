@@ -137,23 +137,32 @@ std::string adaptive_pattern_unsupported(const Design& design) {
   return {};
 }
 
+double particle_boundary_margin(const SurfaceMap& map, const Design& design, const GradeField* grade, double slack) {
+  const double spacing = design.pattern.spacing;
+  double radius = design.elements.vertex.enabled ? 0.5 * design.elements.vertex.scale * spacing : 0;
+  for (const EdgeElementDesign& e : design.elements.edge) radius = std::max(radius, 0.5 * e.scale * spacing);
+  if (grade && design.elements.grade.by == GradeBy::Rim) radius *= grade->least_share();
+  // The edge margin too: the boundary's post-processing removes every element inside it. (A closed
+  // surface's charts meet at seams, not rims: their particles are kept apart across them as before.)
+  return radius + (is_atlas(map) ? 0 : design.elements.margin) + slack;
+}
+
 AdaptivePattern build_adaptive_pattern(const SurfaceMap& map, const UnitCell& cell, const Design& design,
-                                       const std::atomic<bool>* stop) {
+                                       const std::atomic<bool>* stop, const GradeField* grade) {
   const double spacing = design.pattern.spacing;
   const bool hex = design.pattern.tessellation == Tessellation::Hexagon;
   const double edge_length = real_edge_length(cell);
   // The particles are the pattern's vertices (tri) or its hexagons' centres (hex), a triangle
   // lattice sqrt(3) D apart; that lattice, laid out as usual, seeds them.
   const double primal = hex ? std::sqrt(3.0) * edge_length : edge_length;
-  double radius = design.elements.vertex.enabled ? 0.5 * design.elements.vertex.scale * spacing : 0;
-  for (const EdgeElementDesign& e : design.elements.edge) radius = std::max(radius, 0.5 * e.scale * spacing);
   // Honeycomb vertices sit half an edge inside the particles' outer row.
-  const double margin = std::max(0.0, radius - (hex ? 0.5 * edge_length : 0)) + kMarginSlack * spacing;
+  const double margin =
+      std::max(0.0, particle_boundary_margin(map, design, grade, 0) - (hex ? 0.5 * edge_length : 0)) + kMarginSlack * spacing;
   const Pattern seeds = build_pattern(map, make_unit_cell(Tessellation::Triangle, primal), design.placement);
   // Triangle particles are the elements' vertices: packed to contact before they are connected.
   // Honeycomb vertices are the triangles' centres, packed by the optimizer once they exist.
   const double contact = hex ? 0 : particle_contact_distance(design);
-  const RelaxationTarget target{primal, design.solver.c, design.solver.m, margin, contact};
+  const RelaxationTarget target{primal, design.solver.c, design.solver.m, margin, contact, grade};
   const RelaxedParticles relaxed = relax_particles(map, seeds.points, target, stop);
   AdaptivePattern out;
   out.relaxation = relaxed.report;

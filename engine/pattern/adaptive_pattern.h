@@ -8,6 +8,7 @@
 // vertices (tri), pentagons and heptagons (hex), like the twelve pentagons of a football.
 #include "design/design.h"
 #include "map/surface_map.h"
+#include "pattern/grade_field.h"
 #include "pattern/particle_relaxation.h"
 #include "pattern/pattern.h"
 #include "pattern/unit_cell.h"
@@ -28,8 +29,13 @@ struct AdaptivePattern {
 };
 
 // Grows the design's pattern over the map at spacing design.pattern.spacing (> 0), with eq. 5's
-// growth (solver.c, solver.m) in the density. `cell` is the design's cell at that spacing.
+// growth (solver.c, solver.m) in the density and, for graded stones, the grade's (`grade`, the
+// design's field on this map: make_grade_field). `cell` is the design's cell at that spacing.
 AdaptivePattern build_adaptive_pattern(const SurfaceMap& map, const UnitCell& cell, const Design& design,
-                                       const std::atomic<bool>* stop = nullptr);
+                                       const std::atomic<bool>* stop = nullptr, const GradeField* grade = nullptr);
+
+// How far the particles keep from the boundary: the largest element's radius (with a rim grade,
+// the smallest stone's: the rim row is of those), the edge margin (none on a closed surface) and `slack`.
+double particle_boundary_margin(const SurfaceMap& map, const Design& design, const GradeField* grade, double slack);
 
 }  // namespace paver

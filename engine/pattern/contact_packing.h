@@ -7,6 +7,7 @@
 // and its optimizer ends with it.
 #include "map/boundary_index.h"
 #include "map/surface_map.h"
+#include "pattern/grade_field.h"
 
 #include <glm/vec2.hpp>
 
@@ -27,6 +28,9 @@ struct ContactPackingOptions {
   // whose pairs sit just beyond the contact rule is packed with the rule itself here, so that only
   // real overlaps move stones.
   double settled = 0;
+  // Graded stones: each particle's contact is `contact` times the grade's contact factor where it
+  // is, a pair's the mean of its two (`contact` is the main stone's).
+  const GradeField* grade = nullptr;
   // After the descent, the particles pushed out to the margin until every one keeps it (the
   // descent's own push is one step a iteration).
   bool exact_margin = false;

@@ -150,6 +150,7 @@ public:
     const double margin = all_deep && options_.interior_depth - kMostMove * d_ >= options_.margin ? 0 : options_.margin;
     ContactPackingOptions packing;
     packing.contact = options_.contact;
+    packing.grade = options_.grade;
     packing.margin = margin;
     packing.iterations = kPackIterations;
     packing.movable = &movable;

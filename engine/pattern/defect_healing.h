@@ -8,6 +8,7 @@
 // than before; otherwise the patch is put back. A zero-temperature search with collective moves,
 // whose even trades let a dislocation wander until it cancels (docs/topology.md).
 #include "map/surface_map.h"
+#include "pattern/grade_field.h"
 
 #include <glm/vec2.hpp>
 
@@ -20,6 +21,7 @@ struct DefectHealingOptions {
   double spacing = 0;         // the largest wanted bar length; the reaches scale with it (or with contact, if larger)
   double contact = 0;         // 3D centre distance that no pair may come under (as packed)
   double margin = 0;          // 3D distance every particle keeps from the surface's boundary
+  const GradeField* grade = nullptr;  // graded stones: each pair's own contact (contact_packing.h)
   double interior_depth = 0;  // particles nearer the boundary are not healed or counted (a hull's valence)
   int sweeps = 3;             // passes over the defects, one try at each
 };

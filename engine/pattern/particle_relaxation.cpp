@@ -36,6 +36,9 @@ constexpr double kPopulationShare = 0.03;   // population control changes at mos
 constexpr double kLoose = 1.06;  // the count aims the mean bar 6% past the spacing: room for contact
 constexpr double kCountTolerance = 0.005;   // the count is left alone within 0.5% of the wanted one
 constexpr int kLocalPopulationIterations = 150;  // pile-ups and holes are fixed before this
+// A packing that removed more than this share of the particles is followed by a second relaxation
+// without population control, and packed again.
+constexpr double kRelaxAgainAfterJammed = 0.05;
 // The count above leaves the particles just short of jamming at contact; the packing rounds
 // remove the few that still find no room (measured on the bunny head: docs/topology.md).
 constexpr int kPackingIterations = 400;
@@ -59,7 +62,8 @@ struct Particles : SurfaceParticles {
   }
   void update_spacing(const SurfaceMap& map, const RelaxationTarget& target) {
     spacing.resize(uv.size());
-    for (int i = 0; i < size(); ++i) spacing[i] = relaxation_spacing(map, target, lifted.curvature[i]);
+    for (int i = 0; i < size(); ++i)
+      spacing[i] = relaxation_spacing(map, target, lifted.curvature[i], uv[i], lifted.position[i]);
   }
 };
 
@@ -172,32 +176,26 @@ void control_population(Particles& p, const std::vector<Bar>& bars, bool allow_l
 
 }  // namespace
 
-double relaxation_spacing(const SurfaceMap& map, const RelaxationTarget& target, double kappa) {
-  return target.spacing * (1 + target.c + target.m * normalised_curvature(map, kappa));
+double relaxation_spacing(const SurfaceMap& map, const RelaxationTarget& target, double kappa, glm::dvec2 uv,
+                          const glm::dvec3& position) {
+  const double grown = target.spacing * (1 + target.c + target.m * normalised_curvature(map, kappa));
+  return target.grade ? grown * target.grade->spacing_factor(target.grade->share(uv, position, kappa)) : grown;
 }
 
-RelaxedParticles relax_particles(const SurfaceMap& map, const std::vector<glm::dvec2>& seeds,
-                                 const RelaxationTarget& target, const std::atomic<bool>* stop) {
-  const Stopwatch watch;
-  RelaxedParticles out;
-  RelaxationReport& report = out.report;
-  const double largest = target.spacing * (1 + target.c + std::max(target.m, 0.0));
-  Particles p;
-  p.uv = seeds;
-  p.lift(map, target);
-  thin_seeds(p, largest);
-  p.lift(map, target);
-  report.seeds_kept = p.size();
+namespace {
 
-  const BoundaryIndex boundary(map.mesh, std::max(target.boundary_margin, 1e-9 * largest) * 2);
+// DistMesh iterations from `first` (kIterations at most), with population control before
+// kPopulationIterations; ends early once settled past them.
+void relax_bars(const SurfaceMap& map, const RelaxationTarget& target, const BoundaryIndex& boundary, double largest,
+                int first, Particles& p, RelaxationReport& report, const std::atomic<bool>* stop) {
   std::vector<glm::ivec3> triangles;
   std::vector<Bar> bars;
   std::vector<glm::dvec3> force;
   std::vector<glm::dvec3> moved_from;
-  for (int iteration = 0; iteration < kIterations; ++iteration) {
+  for (int iteration = first; iteration < kIterations; ++iteration) {
     if (stop && stop->load()) break;
     report.iterations = iteration + 1;
-    if (iteration % kRetriangulateEvery == 0) {
+    if ((iteration - first) % kRetriangulateEvery == 0) {
       triangles = triangulate_surface_points(p.uv, p.lifted.position, kLongestEdge * largest);
       bars = bars_of(triangles);
       if (iteration > 0 && iteration < kPopulationIterations) {
@@ -238,25 +236,67 @@ RelaxedParticles relax_particles(const SurfaceMap& map, const std::vector<glm::d
     p.update_spacing(map, target);
     if (iteration >= kPopulationIterations && largest_move < kSettled) break;
   }
+}
+
+}  // namespace
+
+RelaxedParticles relax_particles(const SurfaceMap& map, const std::vector<glm::dvec2>& seeds,
+                                 const RelaxationTarget& target, const std::atomic<bool>* stop) {
+  const Stopwatch watch;
+  RelaxedParticles out;
+  RelaxationReport& report = out.report;
+  const double largest = target.spacing * (1 + target.c + std::max(target.m, 0.0));
+  Particles p;
+  p.uv = seeds;
+  p.lift(map, target);
+  thin_seeds(p, largest);
+  p.lift(map, target);
+  report.seeds_kept = p.size();
+
+  const BoundaryIndex boundary(map.mesh, std::max(target.boundary_margin, 1e-9 * largest) * 2);
+  relax_bars(map, target, boundary, largest, 0, p, report, stop);
   if (target.contact > 0 && !(stop && stop->load())) {
     ContactPackingOptions packing;
     packing.contact = target.contact;
+    packing.grade = target.grade;
     packing.margin = target.boundary_margin;
     packing.iterations = kPackingIterations;
     packing.rounds = kPackingRounds;
-    const ContactPackingReport packed = pack_by_contact(map, p.uv, packing, stop);
+    ContactPackingReport packed = pack_by_contact(map, p.uv, packing, stop);
     report.packing_iterations = packed.iterations;
     report.jammed = packed.removed;
+    if (packed.removed > kRelaxAgainAfterJammed * p.size() && !(stop && stop->load())) {
+      // So many removed (a narrow band whose width the spacing does not divide) leave holes that
+      // packing, which only pushes apart, cannot close: the bars spread the rest evenly again.
+      p.lift(map, target);
+      relax_bars(map, target, boundary, largest, kPopulationIterations, p, report, stop);
+      packed = pack_by_contact(map, p.uv, packing, stop);
+      report.packing_iterations += packed.iterations;
+      report.jammed += packed.removed;
+    }
     // Packing freezes dislocations in; healing cancels some (docs/topology.md).
     DefectHealingOptions healing;
     healing.spacing = largest;
     healing.contact = target.contact;
+    healing.grade = target.grade;
     healing.margin = target.boundary_margin;
     healing.interior_depth = kInteriorDepth * target.spacing;
     report.healing = heal_defects(map, p.uv, healing, stop);
     p.lift(map, target);
   }
   out.triangles = triangulate_surface_points(p.uv, p.lifted.position, kLongestEdge * largest);
+  if (target.grade) {
+    // Graded stones lie closer where they are smaller: a triangle that the largest spacing lets
+    // through can span two or three small rim stones (a chord across a ring's inner rim). Such a
+    // bar is a hole's, as population control judges one.
+    std::erase_if(out.triangles, [&](const glm::ivec3& t) {
+      for (int k = 0; k < 3; ++k) {
+        const Bar bar{t[k], t[(k + 1) % 3]};
+        if (p.bar_length(bar) > kSplitAbove * p.bar_spacing(bar)) return true;
+      }
+      return false;
+    });
+  }
   out.uv = std::move(p.uv);
   report.milliseconds = watch.milliseconds();
   return out;

@@ -7,6 +7,7 @@
 // the map; forces, lengths and the boundary margin are measured on the surface.
 #include "map/surface_map.h"
 #include "pattern/defect_healing.h"
+#include "pattern/grade_field.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -21,6 +22,8 @@ struct RelaxationTarget {
   double c = 0, m = 0;        // eq. 5: the length grows by (c + m |H|normalised) spacing
   double boundary_margin = 0; // particles stay at least this far (3D) from the surface's boundary
   double contact = 0;         // > 0: relaxed particles are then packed no nearer than this (3D)
+  // Graded stones: the spacing shrinks with the grade's share, and the contact with each stone.
+  const GradeField* grade = nullptr;
 };
 
 struct RelaxationReport {
@@ -39,8 +42,10 @@ struct RelaxedParticles {
   RelaxationReport report;
 };
 
-// The wanted edge length at a point of curvature `kappa` (eq. 5's growth, as the solver's targets).
-double relaxation_spacing(const SurfaceMap& map, const RelaxationTarget& target, double kappa);
+// The wanted edge length at a point of curvature `kappa` (eq. 5's growth, as the solver's targets),
+// map point uv and position (a grade's share there).
+double relaxation_spacing(const SurfaceMap& map, const RelaxationTarget& target, double kappa,
+                          glm::dvec2 uv = {}, const glm::dvec3& position = {});
 
 // Relaxes `seeds` (map positions, e.g. a lattice's points) into particles at the target spacing.
 // Seeds outside the map are dropped; piled-up seeds are thinned first. `stop` ends it early

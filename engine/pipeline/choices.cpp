@@ -286,10 +286,15 @@ Pavement make_pavement(const SurfaceMap& map, Design design, const PavementOptio
   const Topology topology = design.pattern.topology;
   if (topology != Topology::Auto)
     return pave_lattice_or_adaptive(map_for_topology(map, topology), std::move(design), options);
-  if (!design.guidance.empty()) {  // only the lattice follows a painted field
-    design.pattern.topology = Topology::Lattice;
-    Pavement p = pave_lattice_or_adaptive(map_for_topology(map, Topology::Lattice), std::move(design), options);
-    p.topology_choice = "auto: lattice (a guidance field is painted, which only the lattice follows)";
+  // Graded stones grow their pattern (only the adaptive pattern has a spacing of its own at every
+  // particle); a painted field only the lattice follows.
+  const bool graded = design.elements.grade.by != GradeBy::None;
+  if (graded || !design.guidance.empty()) {
+    const Topology kept = graded ? Topology::Adaptive : Topology::Lattice;
+    design.pattern.topology = kept;
+    Pavement p = pave_lattice_or_adaptive(map_for_topology(map, kept), std::move(design), options);
+    p.topology_choice = graded ? "auto: adaptive (the stones are graded, which only a grown pattern follows)"
+                               : "auto: lattice (a guidance field is painted, which only the lattice follows)";
     return p;
   }
   return choose_topology(map, design, options);

@@ -7,6 +7,7 @@
 #include "elements/boundary_postprocess.h"
 #include "elements/element_deletion.h"
 #include "elements/element_ids.h"
+#include "elements/stone_grade.h"
 #include "pattern/adaptive_pattern.h"
 #include "pattern/band_closure.h"
 #include "pattern/default_spacing.h"
@@ -29,7 +30,8 @@ Elements PaveState::place(const PaveContext& context, const std::vector<glm::dve
   for (size_t i = 0; i < stray_count.size(); ++i) pavement.retired[i] = stray_count[i] == kRetired ? 1 : 0;
   PlacedElements placed =
       place_all_elements(context.map, pavement.pattern, points, design.elements, design.pattern.spacing,
-                         edge_anchor(design.pattern.topology), context.options.postprocess, &pavement.retired);
+                         edge_anchor(design.pattern.topology), context.options.postprocess, &pavement.retired,
+                         grade.get());
   pavement.filled = placed.filled;
   pavement.eliminated = placed.eliminated;
   return std::move(placed.elements);
@@ -61,10 +63,12 @@ void lay_out_pattern(const PaveContext& c, PaveState& s) {
   if (pavement.seamless)
     design.placement.offset =
         best_offset_across(c.map, pavement.cell, design.elements, design.placement, pavement.band_closure->step);
-  s.basis = quality_basis(c.map, pavement.cell, design.elements, design.solver, design.guidance);
+  s.grade = make_grade_field(c.map, design);
+  if (s.grade) pavement.grade.ladder = s.grade->ladder();
+  s.basis = quality_basis(c.map, pavement.cell, design.elements, design.solver, design.guidance, s.grade);
   // The adaptive pattern is grown instead of the lattice (docs/topology.md).
   if (s.adaptive()) {
-    AdaptivePattern grown = build_adaptive_pattern(c.map, pavement.cell, design, c.options.stop);
+    AdaptivePattern grown = build_adaptive_pattern(c.map, pavement.cell, design, c.options.stop, s.grade.get());
     pavement.pattern = std::move(grown.pattern);
     pavement.relaxation = grown.relaxation;
   } else {
@@ -82,7 +86,7 @@ void lay_out_pattern(const PaveContext& c, PaveState& s) {
 void measure_initial(const PaveContext& c, PaveState& s) {
   const PlacedElements initial =
       place_all_elements(c.map, s.pavement.pattern, s.pavement.points, s.design.elements, s.design.pattern.spacing,
-                         edge_anchor(s.design.pattern.topology), c.options.postprocess);
+                         edge_anchor(s.design.pattern.topology), c.options.postprocess, nullptr, s.grade.get());
   s.pavement.before = measure_pavement(c.map, s.pavement.pattern, s.pavement.points, initial.elements, s.basis, nullptr,
                                        Measure::Counts);
 }
@@ -95,7 +99,9 @@ void optimize(const PaveContext& c, PaveState& s) {
   if (s.adaptive()) {
     // The adaptive pattern's own optimizer, on the surface, with contact in it; removal is the
     // last resort for what still collides.
-    pavement.solve = relax_pattern_on_surface(c.map, pavement.pattern, pavement.points, s.design, {}, c.options.stop);
+    SurfaceSpringOptions relaxing;
+    relaxing.grade = s.grade.get();
+    pavement.solve = relax_pattern_on_surface(c.map, pavement.pattern, pavement.points, s.design, relaxing, c.options.stop);
     pavement.solve.backend = "cpu";  // the adaptive pattern's optimizer has no GPU path
     return;
   }
@@ -210,6 +216,21 @@ void close_spots(const PaveContext& c, PaveState& s) {
                        c.options.stop);
 }
 
+// The stones the rim rows, the refill and the spots added at the main size take their grade too;
+// then the room the grown pattern left between graded stones gets the largest of the ladder's
+// sizes that fits, as stocked sizes fill (a narrow band's packing removes a few jammed stones).
+// The fill sizes come after, so every V-element under the main size now is a graded one.
+void grade(const PaveContext& c, PaveState& s) {
+  Elements& elements = s.pavement.elements;
+  grade_stones(c.map, *s.grade, elements);
+  ElementsDesign ladder = s.design.elements;
+  ladder.fill_sizes.assign(s.grade->ladder().begin() + 1, s.grade->ladder().end());
+  s.pavement.grade.filled = fill_with_smaller_sizes(c.map, elements, ladder, s.grade->main(), c.options.stop).added();
+  s.pavement.grade.graded = 0;
+  for (std::size_t i = 0; i < elements.size(); ++i)
+    s.pavement.grade.graded += elements.kind[i] == ElementKind::Vertex && elements.diameter[i] < s.grade->main();
+}
+
 void fill_sizes(const PaveContext& c, PaveState& s) {
   const ElementsDesign& spec = s.design.elements;
   s.pavement.size_fill =
@@ -279,6 +300,7 @@ constexpr PaveStep kSteps[] = {
      lay_rim_rows},
     {"refill", [](const PaveState& s, const PavementOptions& o) { return o.refill && kWithoutOverlap(s, o); }, refill},
     {"close_spots", closes_spots, close_spots},
+    {"grade", [](const PaveState& s, const PavementOptions&) { return s.grade != nullptr; }, grade},
     {"fill_sizes",
      [](const PaveState& s, const PavementOptions& o) {
        return !s.design.elements.fill_sizes.empty() && s.design.elements.vertex.enabled && kWithoutOverlap(s, o);

@@ -12,6 +12,7 @@
 #include "solver/solver_surface.h"
 #include "solver/spring_system.h"
 
+#include <memory>
 #include <optional>
 #include <span>
 #include <string_view>
@@ -37,6 +38,8 @@ struct PaveState {
   std::optional<SpringSystem> system;
   SolverFactory factory;
   bool optimized = false;  // the optimizer ran (else the lifted pattern stays as laid)
+  // Graded stones: the field every placement grades by (null when the design has no grade).
+  std::shared_ptr<const GradeField> grade;
 
   bool adaptive() const { return design.pattern.topology == Topology::Adaptive; }
   bool lattice_solved() const { return optimized && !adaptive(); }

@@ -10,6 +10,7 @@
 #include "elements/bare_spots.h"
 #include "elements/boundary_postprocess.h"
 #include "elements/refill.h"
+#include "elements/stone_grade.h"
 #include "elements/stone_sizes.h"
 #include "elements/rim_rows.h"
 #include "design/design.h"
@@ -69,6 +70,7 @@ struct Pavement {
   RefillReport refill;
   SpotClosing spots_closed;          // stones put into bare spots (elements/bare_spots.h)
   SizeFill size_fill;                // smaller stocked sizes filled in (elements/stone_sizes.h)
+  GradeReport grade;                 // graded stones (elements/stone_grade.h)
   RimRowReport rim_rows;
   RelaxationReport relaxation;       // the adaptive pattern's particle relaxation
   // For pattern.topology "auto": which topology was kept and why (design.pattern.topology says

@@ -198,6 +198,14 @@ void add_after_the_solve(nlohmann::json& report, const Pavement& pavement) {
                           {"added", pavement.size_fill.added()},
                           {"searches", pavement.size_fill.rounds},
                           {"milliseconds", pavement.size_fill.milliseconds}};
+  if (pavement.design.elements.grade.by != GradeBy::None) {
+    const double mm = millimetres_per_unit(pavement.design.units);
+    nlohmann::json ladder = nlohmann::json::array();
+    for (const double d : pavement.grade.ladder) ladder.push_back(d * mm);
+    report["grade"] = {{"by", std::string(enum_name(pavement.design.elements.grade.by))},
+                       {"ladder_mm", ladder},
+                       {"graded", pavement.grade.graded}};
+  }
   report["rim_rows"] = {{"rims", std::string(enum_name(pavement.design.elements.rim_rows))},
                         {"loops", pavement.rim_rows.loops},
                         {"placed", pavement.rim_rows.placed},

@@ -89,7 +89,7 @@ Distribution distribution_of(std::vector<double> values) {
 
 std::vector<double> spring_length_ratios(const SurfaceMap& map, const Pattern& pattern,
                                          const std::vector<glm::dvec2>& points, const SolverParams& params,
-                                         const std::vector<std::uint8_t>* retired) {
+                                         const std::vector<std::uint8_t>* retired, const GradeField* grade) {
   const LiftedPoints lifted = lift_all(map, points);
   std::vector<double> ratios;
   for (int e = 0; e < pattern.edge_count(); ++e) {
@@ -100,7 +100,12 @@ std::vector<double> spring_length_ratios(const SurfaceMap& map, const Pattern& p
     const double kappa = std::max(lifted.curvature[a], lifted.curvature[b]);
     const double normalised = normalised_curvature(map, kappa);
     const double rest = pattern.edge_rest_length[e];
-    const double target = (params.c + params.m * normalised) * rest + rest;
+    double target = (params.c + params.m * normalised) * rest + rest;
+    if (grade) {
+      const glm::dvec3 middle = 0.5 * (lifted.position[a] + lifted.position[b]);
+      const glm::dvec2 uv = 0.5 * (points[a] + points[b]);
+      target *= grade->spacing_factor(grade->share(uv, middle, 0.5 * (lifted.curvature[a] + lifted.curvature[b])));
+    }
     ratios.push_back(glm::length(lifted.position[b] - lifted.position[a]) / target);
   }
   return ratios;
@@ -131,8 +136,9 @@ double spacing_curvature_correlation(const SurfaceMap& map, const std::vector<gl
 // Mean over the surface (vertex weights: a third of each triangle's area) of the squared spacing
 // factor of eq. 5, 1 + c + m * normalised |H|: a curvature-aware design asks for that much more
 // area per element. 1 for a uniform design.
-double mean_area_factor(const SurfaceMap& map, const SolverParams& params, const std::vector<GuidanceDab>& guidance) {
-  if (params.c == 0 && params.m == 0 && guidance.empty()) return 1;
+double mean_area_factor(const SurfaceMap& map, const SolverParams& params, const std::vector<GuidanceDab>& guidance,
+                        const GradeField* grade) {
+  if (params.c == 0 && params.m == 0 && guidance.empty() && !grade) return 1;
   const SurfaceMesh& mesh = map.mesh;
   std::vector<double> weight(mesh.positions.size(), 0.0);
   for (const glm::ivec3& t : mesh.triangles) {
@@ -145,7 +151,13 @@ double mean_area_factor(const SurfaceMap& map, const SolverParams& params, const
   for (size_t v = 0; v < weight.size() && v < map.curvature.size(); ++v) {
     // The painted field scales the spacing on top of the curvature's (solver/guidance_field.h).
     const double painted = guidance.empty() || v >= map.uv.size() ? 1.0 : field.factor(map.uv[v]);
-    const double factor = (1 + params.c + params.m * normalised_curvature(map, map.curvature[v])) * painted;
+    // Graded stones lie closer where they are smaller (pattern/grade_field.h).
+    const double graded =
+        grade && v < map.uv.size()
+            ? grade->spacing_factor(grade->share(map.uv[v], mesh.positions[v], map.curvature[v]))
+            : 1.0;
+    const double factor =
+        (1 + params.c + params.m * normalised_curvature(map, map.curvature[v])) * painted * graded;
     sum += weight[v] * factor * factor, total += weight[v];
   }
   return total > 0 ? sum / total : 1;
@@ -155,14 +167,16 @@ double ideal_element_count(const SurfaceMap& map, const QualityBasis& basis) {
   if (!(basis.area_per_element > 0)) return 0;
   // A closed surface has no boundary: its atlas's seams are not forgiven a strip.
   const double area = surface_area(map.mesh) - basis.boundary_strip * (is_atlas(map) ? 0.0 : boundary_length(map.mesh));
-  return std::max(area, 0.0) / (basis.area_per_element * mean_area_factor(map, basis.solver, basis.guidance));
+  return std::max(area, 0.0) / (basis.area_per_element * mean_area_factor(map, basis.solver, basis.guidance, basis.grade.get()));
 }
 
 QualityBasis quality_basis(const SurfaceMap& map, const UnitCell& cell, const ElementsDesign& elements,
-                           const SolverParams& solver, const std::vector<GuidanceDab>& guidance) {
+                           const SolverParams& solver, const std::vector<GuidanceDab>& guidance,
+                           std::shared_ptr<const GradeField> grade) {
   QualityBasis basis;
   basis.solver = solver;
   basis.guidance = guidance;
+  basis.grade = grade;
   basis.gap = elements.gap;
   basis.margin = boundary_margin(map, elements.margin, elements.gap);
   double per_cell = 0, largest = 0;
@@ -187,6 +201,7 @@ QualityBasis quality_basis(const SurfaceMap& map, const UnitCell& cell, const El
   basis.ideal_count = ideal_element_count(map, basis);
   basis.edges = edge_basis(map, cell, elements);
   basis.edges.spots.c = solver.c, basis.edges.spots.m = solver.m, basis.edges.spots.guidance = guidance;
+  basis.edges.spots.grade = std::move(grade);
   return basis;
 }
 
@@ -211,7 +226,7 @@ PavementQuality measure_pavement(const SurfaceMap& map, const Pattern& pattern,
   q.vertex_fill = ideal_vertices > 0 ? double(q.vertex_elements) / ideal_vertices : 0;
   q.edge_fill = ideal_edges > 0 && q.edge_elements > 0 ? double(q.edge_elements) / ideal_edges : 0;
   q.neighbor_ratio = distribution_of(proximity.neighbor_ratios);
-  std::vector<double> deviation = spring_length_ratios(map, pattern, points, basis.solver, retired);
+  std::vector<double> deviation = spring_length_ratios(map, pattern, points, basis.solver, retired, basis.grade.get());
   for (double& r : deviation) r = std::abs(r - 1);
   const Distribution dev = distribution_of(deviation);
   q.spring_deviation_median = dev.median;

@@ -5,6 +5,7 @@
 #include "design/guidance.h"
 #include "design/design.h"
 #include "elements/elements.h"
+#include "pattern/grade_field.h"
 #include "pattern/interior_depth.h"
 #include "pattern/pattern.h"
 #include "pattern/unit_cell.h"
@@ -16,6 +17,7 @@
 #include <array>
 #include <cstdint>
 
+#include <memory>
 #include <vector>
 
 namespace paver {
@@ -40,6 +42,7 @@ struct QualityBasis {
   int regular_valence = 0;          // V-neighbours of a lattice vertex: 6 tri, 4 grid, 3 hex; 0 = no V
   double spacing = 0;               // D: interior elements lie kInteriorDepth D from the boundary
   std::vector<GuidanceDab> guidance;  // the painted field: the ideal count follows it (design/guidance.h)
+  std::shared_ptr<const GradeField> grade;  // graded stones: the ideal count and the spots follow it
   EdgeBasis edges;                  // bare spots and rim metal (report/edge_quality.h)
 };
 
@@ -71,10 +74,12 @@ struct PavementQuality {
 enum class Measure { Full, Counts };
 
 // |P_a P_b| / L_ab for every non-virtual pattern edge whose ends are both in use (not retired),
-// lifted in double (eq. 5, 6).
+// lifted in double (eq. 5, 6); L_ab graded where the stones are (`grade`: the spacing's share at
+// the edge's middle).
 std::vector<double> spring_length_ratios(const SurfaceMap& map, const Pattern& pattern,
                                          const std::vector<glm::dvec2>& points, const SolverParams& params,
-                                         const std::vector<std::uint8_t>* retired = nullptr);
+                                         const std::vector<std::uint8_t>* retired = nullptr,
+                                         const GradeField* grade = nullptr);
 
 // Spearman correlation between the local spacing at each V-element (its nearest-neighbour
 // distance) and the surface's mean curvature there. 0 when either does not vary.
@@ -92,7 +97,8 @@ double ideal_element_count(const SurfaceMap& map, const QualityBasis& basis);
 // the cell's area over the elements one cell carries, the V-element's (else the largest) radius,
 // and the ideal count they give (computed once here, for every measure of the run).
 QualityBasis quality_basis(const SurfaceMap& map, const UnitCell& cell, const ElementsDesign& elements,
-                           const SolverParams& solver, const std::vector<GuidanceDab>& guidance = {});
+                           const SolverParams& solver, const std::vector<GuidanceDab>& guidance = {},
+                           std::shared_ptr<const GradeField> grade = nullptr);
 
 PavementQuality measure_pavement(const SurfaceMap& map, const Pattern& pattern,
                                  const std::vector<glm::dvec2>& points, const Elements& elements,

@@ -6,6 +6,7 @@
 #include "map/boundary_index.h"
 #include "map/surface_particles.h"
 #include "pattern/bar_length_floor.h"
+#include "pattern/adaptive_pattern.h"
 #include "pattern/contact_packing.h"
 
 #include <glm/common.hpp>
@@ -113,12 +114,9 @@ SolveReport relax_pattern_on_surface(const SurfaceMap& map, const Pattern& patte
   const int n = int(points.size());
   if (n == 0) return report;
   const double spacing = design.pattern.spacing;
-  const ElementsDesign& elements = design.elements;
   // Particles keep the contact rule of the elements on and around their bars (bar_length_floor.h).
   const double contact = particle_contact_distance(design);
-  double radius = elements.vertex.enabled ? 0.5 * elements.vertex.scale * spacing : 0;
-  for (const EdgeElementDesign& e : elements.edge) radius = std::max(radius, 0.5 * e.scale * spacing);
-  const double margin = radius * (1 + 2 * kContactAim);
+  const double margin = particle_boundary_margin(map, design, options.grade, 0) * (1 + 2 * kContactAim);
   const BoundaryIndex boundary(map.mesh, std::max(margin, 1e-9 * spacing) * 2);
 
   // A triangle pattern's particles are its vertex elements, packed to contact as they were
@@ -129,6 +127,7 @@ SolveReport relax_pattern_on_surface(const SurfaceMap& map, const Pattern& patte
   if (report.reason != StopReason::Observer) {
     ContactPackingOptions packing;
     packing.contact = contact;
+    packing.grade = options.grade;
     packing.margin = margin;
     packing.iterations = options.packing_iterations;
     const ContactPackingReport packed = pack_by_contact(map, points, packing, stop);

@@ -7,6 +7,7 @@
 // radius from the boundary. Contact is part of the relaxation, so no separate resolution runs.
 #include "design/design.h"
 #include "map/surface_map.h"
+#include "pattern/grade_field.h"
 #include "pattern/pattern.h"
 #include "solver/solver_backend.h"
 
@@ -23,6 +24,7 @@ struct SurfaceSpringOptions {
   double max_move = 0.1;      // x D per iteration
   double settled = 1e-4;      // x D: the largest move once converged
   int packing_iterations = 1500;  // the contact packing that ends it (contact_packing.h)
+  const GradeField* grade = nullptr;  // graded stones: the design's field (pattern/grade_field.h)
 };
 
 // Relaxes `points` (the pattern's particles, in the map) in place.

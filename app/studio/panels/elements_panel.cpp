@@ -9,6 +9,7 @@
 #include "core/input_error.h"
 #include "core/number_text.h"
 #include "design/design_keys.h"
+#include "pattern/grade_field.h"
 
 #include <imgui_stdlib.h>
 
@@ -85,6 +86,31 @@ void fill_sizes_field(Document& doc, Design& d, UiState& ui, const char* unit) {
   if (!ui.fill_sizes_problem.empty()) ImGui::TextColored(ImVec4(1, 0.45f, 0.4f, 1), "%s", ui.fill_sizes_problem.c_str());
 }
 
+// Graded stones (pattern/grade_field.h): picking a grade with no smallest size yet starts it a
+// quarter under the stone, in the ladder's 0.05 mm steps, so that the first run already grades.
+void grade_fields(Document& doc, Design& d, double stone, const char* unit) {
+  GradeDesign& grade = d.elements.grade;
+  if (enum_combo("graded by", grade.by, {"none (one size)", "curvature (smaller where it bends)",
+                                         "rim (smaller towards the edges)"})) {
+    if (grade.by != GradeBy::None && !(grade.smallest > 0) && stone > 0) {
+      const double step = kGradeStepMm / millimetres_per_unit(d.units);
+      grade.smallest = stone - step * std::round(0.25 * stone / step);
+    }
+    change_design(doc, d);
+  }
+  help_marker("Stones that fall off from the stone size towards a smaller one, as a setter grades them: where "
+              "the surface bends most, or towards every rim and hole. The pattern is grown (topology auto) so "
+              "that the smaller stones lie closer; each stone is a stocked size (the fill sizes between, else "
+              "0.05 mm steps).");
+  if (grade.by == GradeBy::None) return;
+  if (length_field("smallest graded", grade.smallest, unit)) change_design(doc, d);
+  help_marker("The smallest stone of the grade: under the stone size, and at least a quarter of it.");
+  if (grade.by == GradeBy::Rim) {
+    if (length_field("grade width", grade.width, unit)) change_design(doc, d);
+    help_marker("How far in from the edge margin the stones grow back to the stone size (0 = three stones).");
+  }
+}
+
 void jewellery_section(Document& doc, Design& d, UiState& ui) {
   section("Stones (jewellery)");
   const std::string unit(enum_name(d.units));
@@ -141,6 +167,7 @@ void jewellery_section(Document& doc, Design& d, UiState& ui) {
   fill_sizes_field(doc, d, ui, unit.c_str());
   help_marker("Stocked sizes smaller than the stone, as a supplier sells melee (1.3, 1.1, 0.9): after the "
               "pass, every place where one fits gets the largest that fits. Type the list and press Enter.");
+  grade_fields(doc, d, stone, unit.c_str());
 }
 
 }  // namespace

@@ -48,6 +48,7 @@ Design non_default_design() {
   d.elements.rim_rows = RimRows::Holes;
   d.elements.close_spots = true;
   d.elements.fill_sizes = {0.1 / 3, 0.025};
+  d.elements.grade = {GradeBy::Rim, 0.1 / 7, 0.55};
   d.elements.beads = {true, 1.25, 0.4, 0.125};
   d.placement.offset = {-1.5, 2.0 / 3.0};
   d.placement.rotation_deg = -37.5;
@@ -176,11 +177,13 @@ TEST(DesignIo, RoundTripKeepsEveryField) {
 TEST(DesignIo, WritesEveryKey) {
   const json j = design_to_json(Design{});
   EXPECT_EQ(j.at("version"), Design::kVersion);
-  EXPECT_EQ(Design::kVersion, 4);
+  EXPECT_EQ(Design::kVersion, 5);
   EXPECT_EQ(j.at("units"), "mm");
   EXPECT_EQ(j.at("pattern").size(), 5u);
   EXPECT_EQ(j.at("pattern").at("topology"), "auto");
-  EXPECT_EQ(j.at("elements").size(), 10u);
+  EXPECT_EQ(j.at("elements").size(), 11u);
+  EXPECT_EQ(j.at("elements").at("grade").size(), 3u);
+  EXPECT_EQ(j.at("elements").at("grade").at("by"), "none");
   EXPECT_EQ(j.at("elements").at("close_spots"), false);
   EXPECT_EQ(j.at("elements").at("fill_sizes"), json::array());
   EXPECT_EQ(j.at("elements").at("rim_rows"), "none");
@@ -321,9 +324,9 @@ TEST(DesignIo, NamesMustBeKnown) {
 
 TEST(DesignIo, VersionIsRequiredAndOneThisBuildReads) {
   EXPECT_TRUE(contains(json_error(R"({"pattern": {}})"), "d.json: missing key 'version'"));
-  const std::string newer = json_error(R"({"version": 5, "future_key": 1})");
-  EXPECT_TRUE(contains(newer, "'version' is 5"));
-  EXPECT_TRUE(contains(newer, "reads versions 1 to 4"));
+  const std::string newer = json_error(R"({"version": 6, "future_key": 1})");
+  EXPECT_TRUE(contains(newer, "'version' is 6"));
+  EXPECT_TRUE(contains(newer, "reads versions 1 to 5"));
   EXPECT_TRUE(contains(json_error(R"({"version": 0})"), "'version' is 0"));
   EXPECT_TRUE(contains(json_error(R"({"version": "1"})"), "'version' must be an integer, got string"));
 }
@@ -557,7 +560,7 @@ TEST_F(DesignIoFile, SaveThenLoadGivesTheSameDesign) {
 
   // Pretty-printed, 2-space indent, version first, trailing newline.
   const std::string text = read(path);
-  EXPECT_EQ(text.rfind("{\n  \"version\": 4,\n  \"units\": \"in\",\n  \"pattern\": {\n    \"tessellation\": \"grid\"", 0), 0u)
+  EXPECT_EQ(text.rfind("{\n  \"version\": 5,\n  \"units\": \"in\",\n  \"pattern\": {\n    \"tessellation\": \"grid\"", 0), 0u)
       << text;
   EXPECT_EQ(text.back(), '\n');
 

@@ -29,7 +29,8 @@ std::vector<std::string> step_names() {
 TEST(PaveOnce, TheStepsRunInThePapersOrderEachTimedOnce) {
   EXPECT_EQ(step_names(), (std::vector<std::string>{"pattern", "measure_initial", "optimize", "measure_paper",
                                                     "resolve_collisions", "edits", "rim_rows", "refill",
-                                                    "close_spots", "fill_sizes", "ids", "deletions", "measure", "beads"}));
+                                                    "close_spots", "grade", "fill_sizes", "ids", "deletions", "measure",
+                                                    "beads"}));
   Design design;
   design.pattern.tessellation = Tessellation::Triangle;
   design.pattern.spacing = 18;
