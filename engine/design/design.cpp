@@ -137,24 +137,40 @@ void check_fill_sizes(const std::string& source, const Design& design) {
   }
 }
 
-// A grade needs its smallest stone, under the main one (when the spacing gives its size now).
-void check_grade(const std::string& source, const Design& design) {
-  const GradeDesign& g = design.elements.grade;
-  if (g.by == GradeBy::None) return;
-  std::string key = "'";
-  key += key_path(Key::grade_smallest);
-  key += "'";
+std::optional<std::string> grade_problem(const Design& design) {
+  const ElementsDesign& e = design.elements;
+  const GradeDesign& g = e.grade;
+  if (g.by == GradeBy::None) return std::nullopt;
+  // The keys quoted, built by appending (as check_fill_sizes, for GCC 12).
+  std::string by = "'";
+  by += key_path(Key::grade_by);
+  by += "' \"";
+  by += enum_name(g.by);
+  by += "\"";
+  std::string smallest = "'";
+  smallest += key_path(Key::grade_smallest);
+  smallest += "'";
+  if (design.pattern.tessellation != Tessellation::Triangle)
+    return by + ": only a tri pattern's stones are graded yet (its particles are the stones); set " +
+           key_path(Key::pattern_tessellation) + " \"tri\"";
+  if (!e.vertex.enabled || !e.edge.empty())
+    return by + ": only vertex elements are graded, alone; " +
+           (e.vertex.enabled ? "remove " + key_path(Key::elements_edge) : "enable " + key_path(Key::vertex_enabled)) +
+           " or set " + key_path(Key::grade_by) + " \"none\"";
+  if (design.pattern.topology == Topology::Lattice)
+    return by + ": the lattice cannot grade its stones (it has one spacing); use " + key_path(Key::pattern_topology) +
+           " \"adaptive\" (or \"auto\", which grows the pattern when stones are graded)";
   if (!(g.smallest > 0))
-    fail(source, key + " is 0, and " + key_path(Key::grade_by) + " \"" + std::string(enum_name(g.by)) +
-                     "\" grades towards it: give the smallest graded stone (surface units)");
-  if (!design.elements.vertex.enabled || !(design.pattern.spacing > 0)) return;
-  const double main = design.elements.vertex.scale * design.pattern.spacing;
+    return smallest + " is 0, and " + by + " grades towards it: give the smallest graded stone (surface units)";
+  if (!(design.pattern.spacing > 0)) return std::nullopt;  // no main stone to compare with yet
+  const double main = e.vertex.scale * design.pattern.spacing;
   if (!(g.smallest < main))
-    fail(source, key + " " + number_text(g.smallest) + " is not smaller than the main stone (" + number_text(main) +
-                     "): the grade falls off from the main size; give a smaller one");
+    return smallest + " " + number_text(g.smallest) + " is not smaller than the main stone (" + number_text(main) +
+           "): the grade falls off from the main size; give a smaller one";
   if (g.smallest < kLeastFillShare * main)
-    fail(source, key + " " + number_text(g.smallest) + " is less than a quarter of the main stone (" +
-                     number_text(main) + "), too small to set beside it: give a larger one");
+    return smallest + " " + number_text(g.smallest) + " is less than a quarter of the main stone (" +
+           number_text(main) + "), too small to set beside it: give a larger one";
+  return std::nullopt;
 }
 
 void validate_design(const Design& design, const std::string& source) {
@@ -173,7 +189,7 @@ void validate_design(const Design& design, const std::string& source) {
                      number_text(s.c) + ", m = " + number_text(s.m));
   check_edits(source, design.edits, design.elements);
   check_fill_sizes(source, design);
-  check_grade(source, design);
+  if (const std::optional<std::string> problem = grade_problem(design)) fail(source, *problem);
 }
 
 }  // namespace paver

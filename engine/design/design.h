@@ -146,6 +146,12 @@ void keep_stone_sizes(ElementsDesign& elements, double spacing_before, double sp
 // Throws InputError naming the key when a value is out of range.
 void validate_design(const Design& design, const std::string& source);
 
+// Why the design's grade cannot apply, naming the key (nullopt when it can or there is none): not
+// a tri pattern of vertex elements alone, the lattice, no smallest stone, or (once the spacing is
+// known) a smallest not under the main stone or under a quarter of it. validate_design refuses it
+// and make_grade_field (pattern/grade_field.h) again at the spacing used.
+std::optional<std::string> grade_problem(const Design& design);
+
 // Whether an element that is placed uses ShapeKind::Custom (so elements.custom_shape is needed).
 bool uses_custom_shape(const ElementsDesign& elements);
 

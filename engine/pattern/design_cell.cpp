@@ -28,9 +28,6 @@ void check_edits_topology(const Design& design) {
   if (!design.guidance.empty() && topology == Topology::Adaptive)
     throw DesignError(key_path(Key::guidance) + ": the adaptive pattern cannot follow a guidance field yet; use " +
                       topology_key + " \"lattice\" (or \"auto\", which keeps the lattice when a field is painted)");
-  if (design.elements.grade.by != GradeBy::None && topology == Topology::Lattice)
-    throw DesignError(key_path(Key::grade_by) + ": the lattice cannot grade its stones (it has one spacing); use " +
-                      topology_key + " \"adaptive\" (or \"auto\", which grows the pattern when stones are graded)");
   const ElementEdits& edits = design.edits;
   if (edits.empty()) return;
   if (topology == Topology::Auto)

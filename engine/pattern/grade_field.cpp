@@ -1,14 +1,18 @@
 #include "pattern/grade_field.h"
 
 #include "core/input_error.h"
-#include "core/number_text.h"
 #include "design/design_keys.h"
+#include "core/point_hash.h"
 #include "map/boundary_index.h"
 #include "map/lifting.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 
 namespace paver {
 namespace {
@@ -16,6 +20,9 @@ namespace {
 // A ladder's size counts as `wanted` this close above it (relative): the share of a stone that
 // is exactly a step must get that step, whatever rounding did to the product.
 constexpr double kLadderSlack = 1e-9;
+// The curvature grade's base: this percentile of the smoothed curvature (eq. 5's range starts at
+// the 5th too).
+constexpr double kBasePercentile = 0.05;
 
 std::vector<double> size_ladder(const ElementsDesign& elements, double main, double mm_per_unit) {
   const double smallest = elements.grade.smallest;
@@ -32,6 +39,12 @@ std::vector<double> size_ladder(const ElementsDesign& elements, double main, dou
   return ladder;
 }
 
+double surface_diagonal(const SurfaceMesh& mesh) {
+  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
+  for (const glm::dvec3& p : mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  return mesh.positions.empty() ? 0 : glm::length(hi - lo);
+}
+
 double smooth_step(double t) {
   t = std::clamp(t, 0.0, 1.0);
   return t * t * (3 - 2 * t);
@@ -42,45 +55,70 @@ double smooth_step(double t) {
 GradeField::GradeField(const SurfaceMap& map, const ElementsDesign& elements, double main, double mm_per_unit)
     : map_(map), by_(elements.grade.by), main_(main), gap_(elements.gap), least_(elements.grade.smallest / main),
       margin_(is_atlas(map) ? 0 : elements.margin),
-      width_(elements.grade.width > 0 ? elements.grade.width : kDefaultGradeWidthStones * main),
+      // Wider than the surface grades it all the same, and keeps the boundary queries local.
+      width_(std::min(elements.grade.width > 0 ? elements.grade.width : kDefaultGradeWidthStones * main,
+                      surface_diagonal(map.mesh))),
       ladder_(size_ladder(elements, main, mm_per_unit)) {
   if (by_ == GradeBy::Rim && !is_atlas(map))
     rims_ = std::make_unique<BoundaryIndex>(map.mesh, margin_ + 0.5 * main + width_);
+  if (by_ == GradeBy::Curvature) smooth_curvature();
+}
+
+void GradeField::smooth_curvature() {
+  const std::vector<glm::dvec3>& positions = map_.mesh.positions;
+  if (positions.empty() || map_.curvature.size() != positions.size()) return;
+  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
+  for (const glm::dvec3& p : positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  vertices_ = std::make_unique<PointHash>(positions, CellGrid(lo, hi, main_));
+  smoothed_.resize(positions.size());
+  for (std::size_t v = 0; v < positions.size(); ++v) {
+    double sum = 0;
+    int count = 0;
+    vertices_->for_each_near(positions[v], [&](int w) {
+      if (glm::length(positions[std::size_t(w)] - positions[v]) <= main_) sum += std::abs(map_.curvature[std::size_t(w)]), ++count;
+    });
+    smoothed_[v] = sum / double(count);  // the vertex itself is always counted
+  }
+  std::vector<double> sorted = smoothed_;
+  const std::size_t at = std::size_t(kBasePercentile * double(sorted.size() - 1));
+  std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(at), sorted.end());
+  base_ = sorted[at];
+}
+
+double GradeField::smoothed_curvature(const glm::dvec3& position, double kappa) const {
+  if (!vertices_) return std::abs(kappa);
+  double nearest = std::numeric_limits<double>::infinity(), value = std::abs(kappa);
+  vertices_->for_each_near(position, [&](int w) {
+    const double d = glm::length(map_.mesh.positions[std::size_t(w)] - position);
+    if (d < nearest) nearest = d, value = smoothed_[std::size_t(w)];
+  });
+  return value;  // a vertex farther than a stone away (a coarse mesh): the point's own curvature
 }
 
 GradeField::~GradeField() = default;
 
+void refuse_rim_grade_without_rims(const Design& design, bool has_rims) {
+  if (design.elements.grade.by == GradeBy::Rim && !has_rims)
+    throw DesignError("'" + key_path(Key::grade_by) + "' \"rim\": the surface is closed, so it has no rim to grade "
+                      "towards; grade by \"curvature\"");
+}
+
 std::shared_ptr<const GradeField> make_grade_field(const SurfaceMap& map, const Design& design) {
-  const ElementsDesign& e = design.elements;
-  const std::string by = key_path(Key::grade_by) + " \"" + std::string(enum_name(e.grade.by)) + "\"";
-  if (e.grade.by == GradeBy::None) return nullptr;
-  if (design.pattern.tessellation != Tessellation::Triangle)
-    throw DesignError(by + ": only a tri pattern's stones are graded yet (its particles are the stones); set " +
-                      key_path(Key::pattern_tessellation) + " \"tri\"");
-  if (!e.vertex.enabled || !e.edge.empty())
-    throw DesignError(by + ": only vertex elements are graded, alone; " +
-                      (e.vertex.enabled ? "remove " + key_path(Key::elements_edge) : "enable " + key_path(Key::vertex_enabled)) +
-                      " or set " + key_path(Key::grade_by) + " \"none\"");
-  const double main = e.vertex.scale * design.pattern.spacing;
-  const double smallest = e.grade.smallest;
-  const std::string smallest_key = key_and_flag(Key::grade_smallest);
-  if (!(smallest > 0))
-    throw DesignError(by + " needs the smallest graded stone: set " + smallest_key + " (surface units, under the "
-                      "main stone, " + number_text(main) + ")");
-  if (!(smallest < main))
-    throw DesignError(smallest_key + " " + number_text(smallest) + " is not smaller than the main stone (" +
-                      number_text(main) + "): the grade falls off from the main size; give a smaller one");
-  if (smallest < kLeastFillShare * main)
-    throw DesignError(smallest_key + " " + number_text(smallest) + " is less than a quarter of the main stone (" +
-                      number_text(main) + "), too small to set beside it: give a larger one");
-  if (e.grade.by == GradeBy::Rim && is_atlas(map))
-    throw DesignError(by + ": the surface is closed, so it has no rim to grade towards; grade by \"curvature\"");
-  return std::make_shared<const GradeField>(map, e, main, millimetres_per_unit(design.units));
+  if (design.elements.grade.by == GradeBy::None) return nullptr;
+  if (const std::optional<std::string> problem = grade_problem(design)) throw DesignError(*problem);
+  const double main = design.elements.vertex.scale * design.pattern.spacing;
+  refuse_rim_grade_without_rims(design, !is_atlas(map));
+  return std::make_shared<const GradeField>(map, design.elements, main, millimetres_per_unit(design.units));
 }
 
 double GradeField::share(glm::dvec2, const glm::dvec3& position, double kappa) const {
   switch (by_) {
-    case GradeBy::Curvature: return 1 - (1 - least_) * normalised_curvature(map_, kappa);
+    case GradeBy::Curvature: {
+      // Above the surface's own base curvature: a pendant keeps the main size on its body and
+      // grades towards the tip.
+      const double beyond = std::max(0.0, smoothed_curvature(position, kappa) - base_);
+      return 1 - (1 - least_) * std::min(1.0, kTightCurvatureStones * main_ * beyond);
+    }
     case GradeBy::Rim: {
       if (!rims_) return 1;
       // The rim row's centres lie half a smallest stone inside the margin: the grade starts there.
@@ -93,10 +131,13 @@ double GradeField::share(glm::dvec2, const glm::dvec3& position, double kappa) c
 }
 
 double GradeField::stone_for(double share) const {
-  const double wanted = share * main_ * (1 + kLadderSlack);
+  // The nearest step, the larger on a tie: rounding down dropped the whole of a gently curved
+  // pendant's body a step for a grade of a few hundredths.
+  const double wanted = share * main_;
+  double best = ladder_.front();
   for (const double d : ladder_)
-    if (d <= wanted) return d;
-  return ladder_.back();
+    if (std::abs(d - wanted) < std::abs(best - wanted) * (1 - kLadderSlack)) best = d;
+  return best;
 }
 
 double GradeField::spacing_factor(double share) const {

@@ -2,12 +2,18 @@
 // Graded stones (issue 43): pavé whose stones fall off from the main size towards a smaller one,
 // as a setter grades them towards a pendant's tip, a ring's edges or where the surface bends
 // tightly. The grade is a share of the main stone at every point of the surface:
-//   curvature  1 - (1 - r) |H|, with |H| eq. 5's normalised curvature,
+//   curvature  1 - (1 - r) min(1, kTightCurvatureStones d (H - H0)), H the mean of |H| over the
+//              vertices within a main stone (a stone sits on that much of the surface, and a
+//              scan's noise averages out), H0 its low percentile (the surface's base curvature):
+//              none where the surface is as flat as it gets, the whole grade where it curves as
+//              much more as a ball of kTightCurvatureStones stones' radius (a large stone no longer
+//              sits on it); not eq. 5's normalised curvature, which spreads a flat scan's noise
+//              over the whole range,
 //   rim        r at the margin, rising smoothly to 1 over `width` inwards,
 // with r = smallest / main. The adaptive pattern follows it (pattern/adaptive_pattern.h): its
 // particles are relaxed to the graded spacing and packed to each pair's own contact, so the
-// smaller stones lie closer instead of leaving room. Every stone is the largest step of the size
-// ladder not above the share (stocked sizes: the design's fill sizes between the smallest and the
+// smaller stones lie closer instead of leaving room. Every stone is the step of the size ladder
+// nearest the share (stocked sizes: the design's fill sizes between the smallest and the
 // main, else 0.05 mm steps, melee's sieve steps); elements/stone_grade.h sizes the elements.
 #include "design/design.h"
 #include "map/surface_map.h"
@@ -21,11 +27,15 @@
 namespace paver {
 
 class BoundaryIndex;
+class PointHash;
 
 // Without fill sizes the ladder steps by this much, millimetres.
 inline constexpr double kGradeStepMm = 0.05;
 // A rim grade's width when the design gives none, in main stones.
 inline constexpr double kDefaultGradeWidthStones = 3;
+// Mean curvature |H| = 1 / (this many main stones) takes the curvature grade to its smallest
+// stone: on a ball of radius 4 d a stone's girdle stands d / 32 off the surface at its edge.
+inline constexpr double kTightCurvatureStones = 4;
 
 class GradeField {
 public:
@@ -38,8 +48,7 @@ public:
   // and its (not normalised) curvature. In [least_share(), 1].
   double share(glm::dvec2 uv, const glm::dvec3& position, double kappa) const;
   double least_share() const { return least_; }
-  // The ladder's stone for a share: the largest size not above share * main, the smallest when
-  // none is.
+  // The ladder's stone for a share: the size nearest share * main (the larger of two as near).
   double stone_for(double share) const;
   // How much the spacing shrinks where the share is `share`: the stones are share * d apart by
   // their gap, which is not scaled.
@@ -51,18 +60,28 @@ public:
   double main() const { return main_; }
 
 private:
+  void smooth_curvature();
+  double smoothed_curvature(const glm::dvec3& position, double kappa) const;
+
   const SurfaceMap& map_;
   GradeBy by_;
   double main_, gap_, least_, margin_, width_;
   std::vector<double> ladder_;
   std::unique_ptr<BoundaryIndex> rims_;
+  // Curvature: |H| averaged over a main stone at each vertex, its base, the vertices bucketed.
+  std::vector<double> smoothed_;
+  double base_ = 0;
+  std::unique_ptr<PointHash> vertices_;
 };
 
 // The design's grade field on `map` at the design's spacing (> 0); null when it has no grade.
-// DesignError naming the key for a grade that cannot apply: not a tri pattern of vertex elements
-// alone, a smallest stone not under the main one or under a quarter of it (kLeastFillShare), a
+// DesignError naming the key for a grade that cannot apply (grade_problem, design/design.h) or a
 // rim grade on a closed surface.
 std::shared_ptr<const GradeField> make_grade_field(const SurfaceMap& map, const Design& design);
+
+// The rim grade's refusal on a surface without rims, for a caller that knows it before the map
+// (run_pipeline, from the loaded mesh); make_grade_field makes the same check.
+void refuse_rim_grade_without_rims(const Design& design, bool has_rims);
 
 // The field's share at each point of `uv` (lifted on the map; 1 where a point lies off it).
 std::vector<double> grade_shares(const SurfaceMap& map, const GradeField& field, const std::vector<glm::dvec2>& uv);

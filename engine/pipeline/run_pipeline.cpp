@@ -1,5 +1,7 @@
 #include "pipeline/run_pipeline.h"
 
+#include "pattern/grade_field.h"
+
 #include "core/input_error.h"
 #include "core/interrupted.h"
 #include "core/number_text.h"
@@ -12,6 +14,7 @@
 #include "io/output_guard.h"
 #include "map/surface_charts.h"
 #include "io/output_set.h"
+#include "pattern/grade_field.h"
 #include "pattern/pattern.h"
 #include "pipeline/choices.h"
 #include "pipeline/map_surface.h"
@@ -213,8 +216,10 @@ std::shared_ptr<const SurfaceMesh> map_the_surface(PipelineRequest& request, Pip
     return nullptr;
   }
   const std::atomic<bool>* stop = request.pavement.stop;
+  // What the loaded mesh refuses, before the map is made (minutes on a large scan).
   const auto refuse_tiny_spacing = [&](const SurfaceMesh& mesh) {
     if (design.pattern.spacing > 0) refuse_too_many_points(surface_area(mesh), cell, design.placement, 2);
+    refuse_rim_grade_without_rims(design, !mesh.boundary_loops.empty());
   };
   MappedSurface mapped = map_surface_file(
       request.surface_path, request.progress, [&] { return stop && stop->load(); }, request.on_warning,

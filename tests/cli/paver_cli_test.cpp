@@ -1842,7 +1842,10 @@ TEST_F(PaverRun, GradedStonesFallOffTowardsTheRimsInStockedSizes) {
   EXPECT_EQ(report["quality_after"]["contact_violations"].get<long>(), 0);
   EXPECT_EQ(report["grade"]["by"], "rim");
   EXPECT_EQ(report["grade"]["ladder_mm"], json::array({1.5, 1.3, 1.1}));
-  EXPECT_EQ(read_json(out / "design.json")["elements"]["grade"]["smallest"], 1.1);
+  const json saved = read_json(out / "design.json")["elements"]["grade"];
+  EXPECT_EQ(saved["by"], "rim");
+  EXPECT_EQ(saved["smallest"], 1.1);
+  EXPECT_EQ(saved["width"], 0);
 
   const fs::path bad = dir() / "bad";
   const std::vector<std::string> run = {"run", "assets/surfaces/pendant_pierced.obj", "--stone", "1.5", "--out",
@@ -1859,6 +1862,11 @@ TEST_F(PaverRun, GradedStonesFallOffTowardsTheRimsInStockedSizes) {
   expect_input_error(with({"--grade", "tip", "--grade-smallest", "1.1"}), bad, {"--grade tip"});
   expect_input_error(with({"--grade", "rim", "--grade-smallest", "1.1", "--topology", "lattice"}), bad,
                      {"the lattice cannot grade its stones"});
+  // A closed surface has no rims: said from the loaded mesh, before its charts are mapped.
+  const CliResult closed = paver({"run", "assets/surfaces/bead.obj", "--stone", "1", "--grade", "rim", "--grade-smallest",
+                                  "0.8", "--out", bad.string()});
+  expect_input_error(closed, bad, {"'elements.grade.by' \"rim\": the surface is closed"});
+  EXPECT_EQ(closed.out.find("map "), std::string::npos) << describe(closed);
 }
 
 // Ctrl-C while the map is being made (loading, factorization, ARAP) ends `paver run` and `paver

@@ -11,6 +11,7 @@
 #include "report/verdict.h"
 #include "spot_probe.h"
 #include "surface_maps.h"
+#include "test_meshes.h"
 
 #include <gtest/gtest.h>
 
@@ -93,7 +94,10 @@ TEST(StoneGrade, TheLadderStepsInStockedSizesOrInMeleeSieveSteps) {
   EXPECT_EQ(stocked.ladder(), (std::vector<double>{1.5, 1.3, 1.2, 1.1}));
   EXPECT_EQ(stocked.stone_for(1.0), 1.5);
   EXPECT_EQ(stocked.stone_for(1.3 / 1.5), 1.3) << "a share exactly on a step gets that step";
-  EXPECT_EQ(stocked.stone_for(0.85), 1.2);
+  EXPECT_EQ(stocked.stone_for(0.85), 1.3) << "1.275 is nearer 1.3 than 1.2";
+  EXPECT_EQ(stocked.stone_for(0.83), 1.2) << "1.245 is nearer 1.2";
+  EXPECT_EQ(stocked.stone_for(0.9666), 1.5) << "1.45 is nearer 1.5 than 1.3";
+  EXPECT_EQ(stocked.stone_for(1.25 / 1.5), 1.3) << "halfway: the larger";
   EXPECT_EQ(stocked.stone_for(0.1), 1.1) << "never under the smallest";
 }
 
@@ -121,6 +125,30 @@ TEST(StoneGrade, ARimGradeIsSmallestAtTheMarginAndTheMainSizeAWidthIn) {
   }
   EXPECT_GT(near, 0);
   EXPECT_GT(far, 0);
+}
+
+// By the curvature averaged over a stone, above the surface's base: a flat plate whose scan is a
+// little rough keeps the main size everywhere (eq. 5's normalised curvature spread that noise over
+// the whole grade), and the pendant's body keeps it while its tip takes the smallest.
+TEST(StoneGrade, ACurvatureGradeIgnoresAFlatScansNoiseAndGradesATip) {
+  const SurfaceMap plate = build_surface_map(test::grid_surface(60, 60, [](double u, double v) {
+    return glm::dvec3(30 * u, 30 * v, 0.003 * std::sin(97 * u) * std::cos(89 * v));
+  }));
+  ElementsDesign elements;
+  elements.grade = {GradeBy::Curvature, kSmallest, 0};
+  const GradeField flat(plate, elements, kStone, 1.0);
+  for (std::size_t v = 0; v < plate.mesh.positions.size(); ++v)
+    EXPECT_GT(flat.share(plate.uv[v], plate.mesh.positions[v], plate.curvature[v]), 0.98) << "vertex " << v;
+
+  const SurfaceMap& pendant = *test::bundled_map("pendant");
+  const GradeField field(pendant, elements, kStone, 1.0);
+  double least = 1, most = 0;
+  for (std::size_t v = 0; v < pendant.mesh.positions.size(); ++v) {
+    const double share = field.share(pendant.uv[v], pendant.mesh.positions[v], pendant.curvature[v]);
+    least = std::min(least, share), most = std::max(most, share);
+  }
+  EXPECT_EQ(most, 1.0);
+  EXPECT_NEAR(least, kSmallest / kStone, 1e-12) << "the tip takes the whole grade";
 }
 
 TEST(StoneGrade, APiercedPendantGradedFromItsRimsAndHoles) {
@@ -197,7 +225,7 @@ TEST(StoneGrade, GradesThatCannotApplyAreRefusedNamingTheKey) {
   };
   Design lattice = graded_design(GradeBy::Rim);
   lattice.pattern.topology = Topology::Lattice;
-  EXPECT_NE(refusal(pendant, lattice).find("elements.grade.by: the lattice cannot grade its stones"), std::string::npos);
+  EXPECT_NE(refusal(pendant, lattice).find("'elements.grade.by' \"rim\": the lattice cannot grade its stones"), std::string::npos);
   Design hex = graded_design(GradeBy::Rim);
   hex.pattern.tessellation = Tessellation::Hexagon;
   EXPECT_NE(refusal(pendant, hex).find("only a tri pattern's stones are graded"), std::string::npos);
@@ -208,7 +236,7 @@ TEST(StoneGrade, GradesThatCannotApplyAreRefusedNamingTheKey) {
   tiny.elements.grade.smallest = 0.3;
   EXPECT_NE(refusal(pendant, tiny).find("less than a quarter of the main stone"), std::string::npos);
   const SurfaceMap& bead = *test::bundled_map("bead");
-  EXPECT_NE(refusal(bead, graded_design(GradeBy::Rim)).find("the surface is closed, so it has no rim"), std::string::npos);
+  EXPECT_NE(refusal(bead, graded_design(GradeBy::Rim)).find("'elements.grade.by' \"rim\": the surface is closed, so it has no rim"), std::string::npos);
   Design none = graded_design(GradeBy::Curvature);
   none.elements.grade.smallest = 0;
   EXPECT_THROW(validate_design(none, "d.json"), InputError);

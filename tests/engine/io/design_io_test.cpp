@@ -48,7 +48,7 @@ Design non_default_design() {
   d.elements.rim_rows = RimRows::Holes;
   d.elements.close_spots = true;
   d.elements.fill_sizes = {0.1 / 3, 0.025};
-  d.elements.grade = {GradeBy::Rim, 0.1 / 7, 0.55};
+  d.elements.grade = {GradeBy::None, 0.1 / 7, 0.55};  // a grade needs a tri pattern of vertex stones
   d.elements.beads = {true, 1.25, 0.4, 0.125};
   d.placement.offset = {-1.5, 2.0 / 3.0};
   d.placement.rotation_deg = -37.5;
