@@ -26,14 +26,14 @@ bool installed(const std::string& program) {
   return std::system(("command -v " + program + " >/dev/null 2>&1").c_str()) == 0;
 }
 
-// The number after `label :` in admesh's report, or -1.
+#ifdef PAVER_WITH_CGAL
+// The number after `label :` in admesh's report, or -1 (only the cut's test reads admesh).
 double admesh_figure(const std::string& report, const std::string& label) {
   std::smatch match;
   if (!std::regex_search(report, match, std::regex(label + R"(\s*:\s*([0-9.]+))"))) return -1;
   return std::stod(match[1].str());
 }
 
-#ifdef PAVER_WITH_CGAL
 TEST_F(ClientPrograms, PrusaSlicerAndAdmeshTakeTheFilesAsTheyAre) {
   if (!installed("prusa-slicer") || !installed("admesh"))
     GTEST_SKIP() << "*** PrusaSlicer or admesh is not installed (apt-get install prusa-slicer admesh, as "

@@ -270,7 +270,9 @@ TEST_F(OutputSetTest, AManifestThatIsNotARegularFileIsRefusedNotFollowed) {
     EXPECT_THROW(publish_run(out, "new", {"report.json"}), InputError);
     EXPECT_EQ(read(out / "a.csv"), "mine");
     EXPECT_TRUE(fs::exists(fs::symlink_status(out / kManifest)));
-    if (fs::is_directory(fs::symlink_status(out / kManifest))) EXPECT_TRUE(fs::exists(out / kManifest / "inside"));
+    if (fs::is_directory(fs::symlink_status(out / kManifest))) {
+      EXPECT_TRUE(fs::exists(out / kManifest / "inside"));
+    }
   }
   EXPECT_EQ(read(base_ / "elsewhere.txt"), "a.csv\nnotes.txt\n");
   EXPECT_EQ(names(base_), (std::set<std::string>{"elsewhere.txt", "out"})) << "no staging folder left";

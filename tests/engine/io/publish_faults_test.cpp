@@ -126,7 +126,9 @@ TEST_P(PublishFaultsTest, AKillAtAnyStepLeavesOneWholeSetAndTheNextRunWorks) {
     ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 3) << "the hook must have ended the run";
     OutputSet::set_test_hooks({.one_at_a_time = GetParam()});
     // Swapped: one whole set at every instant. One at a time: every file proven ours until the next run ends it.
-    if (!GetParam()) EXPECT_NE(whole_set(), "mixed");
+    if (!GetParam()) {
+      EXPECT_NE(whole_set(), "mixed");
+    }
     EXPECT_NO_THROW(OutputSet::refuse_replacing_users_files(out_, {out_ / "a.csv", out_ / "preview.png"}, kKnown));
     OutputSet::recover_interrupted(out_, kKnown);
     const std::string after = whole_set();
