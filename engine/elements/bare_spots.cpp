@@ -37,7 +37,7 @@ double SpotBasis::spot_stone_at(const SurfaceMap& map, int f, glm::dvec2 w, glm:
   // the stones around it.
   const std::vector<glm::dvec3>& p = map.mesh.positions;
   const glm::dvec3 at = (1 - w.x - w.y) * p[std::size_t(t.x)] + w.x * p[std::size_t(t.y)] + w.y * p[std::size_t(t.z)];
-  return std::max(kSpotStoneShare * stone, kSpotOverHole * hole) * grade->share(uv, at, kappa);
+  return std::max(kSpotStoneShare * stone, kSpotOverHole * hole) * grade->share(at, kappa);
 }
 
 double SpotBasis::narrowest_spot_stone() const {

@@ -137,14 +137,14 @@ std::string adaptive_pattern_unsupported(const Design& design) {
   return {};
 }
 
-double particle_boundary_margin(const SurfaceMap& map, const Design& design, const GradeField* grade, double slack) {
+double particle_boundary_margin(const SurfaceMap& map, const Design& design, const GradeField* grade) {
   const double spacing = design.pattern.spacing;
   double radius = design.elements.vertex.enabled ? 0.5 * design.elements.vertex.scale * spacing : 0;
   for (const EdgeElementDesign& e : design.elements.edge) radius = std::max(radius, 0.5 * e.scale * spacing);
   if (grade && design.elements.grade.by == GradeBy::Rim) radius *= grade->least_share();
   // The edge margin too: the boundary's post-processing removes every element inside it. (A closed
   // surface's charts meet at seams, not rims: their particles are kept apart across them as before.)
-  return radius + (is_atlas(map) ? 0 : design.elements.margin) + slack;
+  return radius + (is_atlas(map) ? 0 : design.elements.margin);
 }
 
 AdaptivePattern build_adaptive_pattern(const SurfaceMap& map, const UnitCell& cell, const Design& design,
@@ -157,7 +157,7 @@ AdaptivePattern build_adaptive_pattern(const SurfaceMap& map, const UnitCell& ce
   const double primal = hex ? std::sqrt(3.0) * edge_length : edge_length;
   // Honeycomb vertices sit half an edge inside the particles' outer row.
   const double margin =
-      std::max(0.0, particle_boundary_margin(map, design, grade, 0) - (hex ? 0.5 * edge_length : 0)) + kMarginSlack * spacing;
+      std::max(0.0, particle_boundary_margin(map, design, grade) - (hex ? 0.5 * edge_length : 0)) + kMarginSlack * spacing;
   const Pattern seeds = build_pattern(map, make_unit_cell(Tessellation::Triangle, primal), design.placement);
   // Triangle particles are the elements' vertices: packed to contact before they are connected.
   // Honeycomb vertices are the triangles' centres, packed by the optimizer once they exist.

@@ -35,7 +35,7 @@ AdaptivePattern build_adaptive_pattern(const SurfaceMap& map, const UnitCell& ce
                                        const std::atomic<bool>* stop = nullptr, const GradeField* grade = nullptr);
 
 // How far the particles keep from the boundary: the largest element's radius (with a rim grade,
-// the smallest stone's: the rim row is of those), the edge margin (none on a closed surface) and `slack`.
-double particle_boundary_margin(const SurfaceMap& map, const Design& design, const GradeField* grade, double slack);
+// the smallest stone's: the rim row is of those) and the edge margin (none on a closed surface).
+double particle_boundary_margin(const SurfaceMap& map, const Design& design, const GradeField* grade);
 
 }  // namespace paver

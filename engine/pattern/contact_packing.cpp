@@ -62,9 +62,11 @@ long fire_descent(const SurfaceMap& map, SurfaceParticles& p, const BoundaryInde
   const double settled = options.settled > 0 ? options.settled : contact * (1 - kSettledOverlap);
   std::vector<glm::dvec3> velocity(n, glm::dvec3(0)), force(n), listed_at, step(n);
   std::vector<Pair> pairs;
-  // Each particle's share of the contact (graded stones), as it was when the pairs were listed:
-  // it moves less than half the skin before the next listing.
-  std::vector<double> share(std::size_t(n), 1.0);
+  // Each particle's contact factor (graded stones), taken at a listing once the particle has moved
+  // kGradeRefresh contacts since it was last taken (grade_field.h).
+  std::vector<double> factor(std::size_t(n), 1.0);
+  std::vector<glm::dvec3> factored_at(options.grade ? std::size_t(n) : 0,
+                                      glm::dvec3(std::numeric_limits<double>::infinity()));
   double dt = kDtStart, alpha = kAlphaStart;
   int since_stop = 0;
   long overlapping = 0;
@@ -75,11 +77,12 @@ long fire_descent(const SurfaceMap& map, SurfaceParticles& p, const BoundaryInde
     if (listed_at.empty() || drift > 0.5 * kSkin * contact) {
       pairs = pairs_within(p, contact * (1 + kSkin));
       listed_at = p.lifted.position;
-      if (options.grade)
-        for (int i = 0; i < n; ++i)
-          if (p.lifted.triangle[i] >= 0)
-            share[i] = options.grade->contact_factor(
-                options.grade->share(p.uv[i], p.lifted.position[i], p.lifted.curvature[i]));
+      for (std::size_t i = 0; i < factored_at.size(); ++i) {
+        if (p.lifted.triangle[i] < 0 || glm::length(p.lifted.position[i] - factored_at[i]) < kGradeRefresh * contact)
+          continue;
+        factor[i] = options.grade->contact_factor(options.grade->share(p.lifted.position[i], p.lifted.curvature[i]));
+        factored_at[i] = p.lifted.position[i];
+      }
     }
     std::fill(force.begin(), force.end(), glm::dvec3(0));
     overlap.assign(n, 0);
@@ -87,10 +90,10 @@ long fire_descent(const SurfaceMap& map, SurfaceParticles& p, const BoundaryInde
     for (const Pair& pair : pairs) {
       const glm::dvec3 d = p.lifted.position[pair.b] - p.lifted.position[pair.a];
       const double length = glm::length(d);
-      const double pair_share = 0.5 * (share[pair.a] + share[pair.b]);
-      const double reach = contact * pair_share;
+      const double pair_factor = 0.5 * (factor[pair.a] + factor[pair.b]);
+      const double reach = contact * pair_factor;
       if (length >= reach || length <= 0) continue;
-      if (length < settled * pair_share) {
+      if (length < settled * pair_factor) {
         ++overlapping;
         overlap[pair.a] += reach - length, overlap[pair.b] += reach - length;
       }

@@ -17,8 +17,9 @@
 namespace paver {
 namespace {
 
-// A ladder's size counts as `wanted` this close above it (relative): the share of a stone that
-// is exactly a step must get that step, whatever rounding did to the product.
+// Two ladder steps this close (relative) to equally near the wanted size are a tie, which the
+// larger takes, whatever rounding did to the product; and the sieve steps stop this close above
+// the smallest, which ends the ladder itself.
 constexpr double kLadderSlack = 1e-9;
 // The curvature grade's base: this percentile of the smoothed curvature (eq. 5's range starts at
 // the 5th too).
@@ -39,12 +40,6 @@ std::vector<double> size_ladder(const ElementsDesign& elements, double main, dou
   return ladder;
 }
 
-double surface_diagonal(const SurfaceMesh& mesh) {
-  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
-  for (const glm::dvec3& p : mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
-  return mesh.positions.empty() ? 0 : glm::length(hi - lo);
-}
-
 double smooth_step(double t) {
   t = std::clamp(t, 0.0, 1.0);
   return t * t * (3 - 2 * t);
@@ -57,7 +52,7 @@ GradeField::GradeField(const SurfaceMap& map, const ElementsDesign& elements, do
       margin_(is_atlas(map) ? 0 : elements.margin),
       // Wider than the surface grades it all the same, and keeps the boundary queries local.
       width_(std::min(elements.grade.width > 0 ? elements.grade.width : kDefaultGradeWidthStones * main,
-                      surface_diagonal(map.mesh))),
+                      bounding_box_diagonal(map.mesh))),
       ladder_(size_ladder(elements, main, mm_per_unit)) {
   if (by_ == GradeBy::Rim && !is_atlas(map))
     rims_ = std::make_unique<BoundaryIndex>(map.mesh, margin_ + 0.5 * main + width_);
@@ -111,7 +106,7 @@ std::shared_ptr<const GradeField> make_grade_field(const SurfaceMap& map, const 
   return std::make_shared<const GradeField>(map, design.elements, main, millimetres_per_unit(design.units));
 }
 
-double GradeField::share(glm::dvec2, const glm::dvec3& position, double kappa) const {
+double GradeField::share(const glm::dvec3& position, double kappa) const {
   switch (by_) {
     case GradeBy::Curvature: {
       // Above the surface's own base curvature: a pendant keeps the main size on its body and
@@ -151,7 +146,7 @@ std::vector<double> grade_shares(const SurfaceMap& map, const GradeField& field,
   lift_points(map, uv, lifted);
   std::vector<double> shares(uv.size(), 1.0);
   for (std::size_t i = 0; i < uv.size(); ++i)
-    if (lifted.triangle[i] >= 0) shares[i] = field.share(uv[i], lifted.position[i], lifted.curvature[i]);
+    if (lifted.triangle[i] >= 0) shares[i] = field.share(lifted.position[i], lifted.curvature[i]);
   return shares;
 }
 

@@ -50,6 +50,10 @@ struct Bar {
 
 struct Particles : SurfaceParticles {
   std::vector<double> spacing;
+  // Graded stones: each particle's grade factor and where it was taken, again once the particle
+  // has moved kGradeRefresh spacings (grade_field.h).
+  std::vector<double> grade_factor;
+  std::vector<glm::dvec3> graded_at;
 
   double bar_length(Bar b) const { return glm::length(lifted.position[b.a] - lifted.position[b.b]); }
   double bar_spacing(Bar b) const { return 0.5 * (spacing[b.a] + spacing[b.b]); }
@@ -58,12 +62,25 @@ struct Particles : SurfaceParticles {
   // and updates each particle's wanted spacing.
   void lift(const SurfaceMap& map, const RelaxationTarget& target) {
     lift_dropping_outside(map);
+    graded_at.clear();  // the particles are renumbered
     update_spacing(map, target);
   }
   void update_spacing(const SurfaceMap& map, const RelaxationTarget& target) {
     spacing.resize(uv.size());
-    for (int i = 0; i < size(); ++i)
-      spacing[i] = relaxation_spacing(map, target, lifted.curvature[i], uv[i], lifted.position[i]);
+    const GradeField* grade = target.grade;
+    if (grade && graded_at.size() != uv.size()) {
+      graded_at.assign(uv.size(), glm::dvec3(std::numeric_limits<double>::infinity()));
+      grade_factor.assign(uv.size(), 1.0);
+    }
+    for (int i = 0; i < size(); ++i) {
+      spacing[i] = relaxation_spacing(map, target, lifted.curvature[i]);
+      if (!grade) continue;
+      if (!(glm::length(lifted.position[i] - graded_at[i]) < kGradeRefresh * target.spacing)) {
+        grade_factor[i] = grade->spacing_factor(grade->share(lifted.position[i], lifted.curvature[i]));
+        graded_at[i] = lifted.position[i];
+      }
+      spacing[i] *= grade_factor[i];
+    }
   }
 };
 
@@ -176,10 +193,8 @@ void control_population(Particles& p, const std::vector<Bar>& bars, bool allow_l
 
 }  // namespace
 
-double relaxation_spacing(const SurfaceMap& map, const RelaxationTarget& target, double kappa, glm::dvec2 uv,
-                          const glm::dvec3& position) {
-  const double grown = target.spacing * (1 + target.c + target.m * normalised_curvature(map, kappa));
-  return target.grade ? grown * target.grade->spacing_factor(target.grade->share(uv, position, kappa)) : grown;
+double relaxation_spacing(const SurfaceMap& map, const RelaxationTarget& target, double kappa) {
+  return target.spacing * (1 + target.c + target.m * normalised_curvature(map, kappa));
 }
 
 namespace {

@@ -43,9 +43,8 @@ struct RelaxedParticles {
 };
 
 // The wanted edge length at a point of curvature `kappa` (eq. 5's growth, as the solver's targets),
-// map point uv and position (a grade's share there).
-double relaxation_spacing(const SurfaceMap& map, const RelaxationTarget& target, double kappa,
-                          glm::dvec2 uv = {}, const glm::dvec3& position = {});
+// before a grade's factor.
+double relaxation_spacing(const SurfaceMap& map, const RelaxationTarget& target, double kappa);
 
 // Relaxes `seeds` (map positions, e.g. a lattice's points) into particles at the target spacing.
 // Seeds outside the map are dropped; piled-up seeds are thinned first. `stop` ends it early

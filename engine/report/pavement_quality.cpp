@@ -103,8 +103,7 @@ std::vector<double> spring_length_ratios(const SurfaceMap& map, const Pattern& p
     double target = (params.c + params.m * normalised) * rest + rest;
     if (grade) {
       const glm::dvec3 middle = 0.5 * (lifted.position[a] + lifted.position[b]);
-      const glm::dvec2 uv = 0.5 * (points[a] + points[b]);
-      target *= grade->spacing_factor(grade->share(uv, middle, 0.5 * (lifted.curvature[a] + lifted.curvature[b])));
+      target *= grade->spacing_factor(grade->share(middle, 0.5 * (lifted.curvature[a] + lifted.curvature[b])));
     }
     ratios.push_back(glm::length(lifted.position[b] - lifted.position[a]) / target);
   }
@@ -153,9 +152,7 @@ double mean_area_factor(const SurfaceMap& map, const SolverParams& params, const
     const double painted = guidance.empty() || v >= map.uv.size() ? 1.0 : field.factor(map.uv[v]);
     // Graded stones lie closer where they are smaller (pattern/grade_field.h).
     const double graded =
-        grade && v < map.uv.size()
-            ? grade->spacing_factor(grade->share(map.uv[v], mesh.positions[v], map.curvature[v]))
-            : 1.0;
+        grade ? grade->spacing_factor(grade->share(mesh.positions[v], map.curvature[v])) : 1.0;
     const double factor =
         (1 + params.c + params.m * normalised_curvature(map, map.curvature[v])) * painted * graded;
     sum += weight[v] * factor * factor, total += weight[v];

@@ -116,7 +116,7 @@ SolveReport relax_pattern_on_surface(const SurfaceMap& map, const Pattern& patte
   const double spacing = design.pattern.spacing;
   // Particles keep the contact rule of the elements on and around their bars (bar_length_floor.h).
   const double contact = particle_contact_distance(design);
-  const double margin = particle_boundary_margin(map, design, options.grade, 0) * (1 + 2 * kContactAim);
+  const double margin = particle_boundary_margin(map, design, options.grade) * (1 + 2 * kContactAim);
   const BoundaryIndex boundary(map.mesh, std::max(margin, 1e-9 * spacing) * 2);
 
   // A triangle pattern's particles are its vertex elements, packed to contact as they were

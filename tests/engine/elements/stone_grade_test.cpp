@@ -111,7 +111,7 @@ TEST(StoneGrade, ARimGradeIsSmallestAtTheMarginAndTheMainSizeAWidthIn) {
   int near = 0, far = 0;
   for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
     const double d = distance_to_rims(mesh, mesh.positions[v]);
-    const double share = field.share(map.uv[v], mesh.positions[v], map.curvature[v]);
+    const double share = field.share(mesh.positions[v], map.curvature[v]);
     EXPECT_GE(share, kSmallest / kStone - 1e-12);
     EXPECT_LE(share, 1.0);
     if (d <= kMargin + 0.5 * kSmallest) {
@@ -138,13 +138,13 @@ TEST(StoneGrade, ACurvatureGradeIgnoresAFlatScansNoiseAndGradesATip) {
   elements.grade = {GradeBy::Curvature, kSmallest, 0};
   const GradeField flat(plate, elements, kStone, 1.0);
   for (std::size_t v = 0; v < plate.mesh.positions.size(); ++v)
-    EXPECT_GT(flat.share(plate.uv[v], plate.mesh.positions[v], plate.curvature[v]), 0.98) << "vertex " << v;
+    EXPECT_GT(flat.share(plate.mesh.positions[v], plate.curvature[v]), 0.98) << "vertex " << v;
 
   const SurfaceMap& pendant = *test::bundled_map("pendant");
   const GradeField field(pendant, elements, kStone, 1.0);
   double least = 1, most = 0;
   for (std::size_t v = 0; v < pendant.mesh.positions.size(); ++v) {
-    const double share = field.share(pendant.uv[v], pendant.mesh.positions[v], pendant.curvature[v]);
+    const double share = field.share(pendant.mesh.positions[v], pendant.curvature[v]);
     least = std::min(least, share), most = std::max(most, share);
   }
   EXPECT_EQ(most, 1.0);
