@@ -144,8 +144,12 @@ void print_optimize(const Pavement& pavement, const SummaryContext& context) {
 }
 
 void print_elements(const SurfaceMap& map, const Pavement& pavement, const PavementCounts& counts) {
-  std::printf("elements %zu (%ld V, %ld E), %d of them added into bare regions, %d into bare spots",
-              pavement.elements.size(), counts.vertex_elements, counts.edge_elements, pavement.refill.added,
+  std::printf("elements %zu (%ld V, %ld E%s), %d of them added into bare regions, %d into bare spots",
+              pavement.elements.size(), counts.vertex_elements, counts.edge_elements,
+              counts.pattern_faces > 0 ? (", " + std::to_string(counts.face_elements) + " F in " +
+                                          std::to_string(counts.pattern_faces) + " faces").c_str()
+                                       : "",
+              pavement.refill.added,
               pavement.spots_closed.added);
   if (is_atlas(map)) std::printf(" (%d across the seams)", pavement.refill.on_seams);
   if (!pavement.size_fill.sizes.empty()) {
@@ -238,6 +242,7 @@ void print_quality(const Pavement& pavement, const PavementCounts& counts) {
   const PavementQuality& final_quality = pavement.after;
   std::printf("fill by kind: V %.3f", final_quality.vertex_fill);
   if (counts.edge_elements > 0) std::printf(", E %.3f", final_quality.edge_fill);
+  if (counts.face_elements > 0) std::printf(", F %.3f", final_quality.face_fill);
   if (final_quality.interior_vertex_elements > 0)
     std::printf("; regular valence: %.1f%% of %ld interior V-elements", 100 * final_quality.regular_valence_share,
                 final_quality.interior_vertex_elements);

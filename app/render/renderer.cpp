@@ -400,6 +400,7 @@ double ratio_legend_position(double ratio) {
 std::vector<TypeLegendEntry> element_type_legend() {
   return {{"vertex element (V)", kind_colour(ElementKind::Vertex)},
           {"edge element (E)", kind_colour(ElementKind::Edge)},
+          {"face element (F)", kind_colour(ElementKind::Face)},
           {"bead", kind_colour(ElementKind::Bead)}};
 }
 

@@ -6,6 +6,15 @@ namespace paver::studio {
 
 Design with_tessellation(Design design, Tessellation tessellation) {
   if (design.pattern.tessellation == tessellation) return design;
+  if (tessellation == Tessellation::Custom && design.pattern.cell.vertices.empty()) {
+    // A drawn cell starts as the one on screen, the operators made part of it.
+    const UnitCell shown = design_cell_shape(design.pattern);
+    CellDesign& drawn = design.pattern.cell;
+    drawn.a1 = shown.a1, drawn.a2 = shown.a2;
+    for (const glm::dvec2& v : shown.vertices) drawn.vertices.push_back({v});
+    for (const CellEdge& e : shown.edges)
+      if (!e.is_virtual) drawn.edges.push_back({e.from, e.to, e.offset, false});  // bracing is redone
+  }
   design.pattern.tessellation = tessellation;
   design.pattern.operators.clear();
   for (EdgeElementDesign& e : design.elements.edge) e.cell_edges.clear();

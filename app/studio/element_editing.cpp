@@ -57,6 +57,9 @@ std::vector<int> pattern_particles(const Pavement& pavement, std::size_t index) 
   if (e.kind[index] == ElementKind::Vertex && source >= 0 && source < pattern.designed_point_count()) return {source};
   if (e.kind[index] == ElementKind::Edge && source >= 0)
     return {pattern.edge_a[std::size_t(source)], pattern.edge_b[std::size_t(source)]};
+  if (e.kind[index] == ElementKind::Face && source >= 0 && source < pattern.face_count())
+    return {pattern.face_corner.begin() + pattern.face_start[std::size_t(source)],
+            pattern.face_corner.begin() + pattern.face_start[std::size_t(source) + 1]};
   return {};
 }
 
@@ -114,7 +117,10 @@ std::vector<int> elements_in_box(const Pavement& pavement, glm::dvec2 a, glm::dv
 std::string describe_element(const Design& design, const Pavement& pavement, int id) {
   const std::size_t i = require_element(pavement, id);
   const Elements& e = pavement.elements;
-  const char* kind = e.kind[i] == ElementKind::Vertex ? "vertex" : e.kind[i] == ElementKind::Edge ? "edge" : "bead";
+  const char* kind = e.kind[i] == ElementKind::Vertex ? "vertex"
+                     : e.kind[i] == ElementKind::Edge ? "edge"
+                     : e.kind[i] == ElementKind::Face ? "face"
+                                                      : "bead";
   std::string origin;
   if (id >= kFirstAddedId)
     origin = ", added by you";

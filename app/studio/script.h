@@ -1,6 +1,6 @@
 #pragma once
 // The studio's scripted session (--script FILE): one command per line, `#` starts a comment.
-//   open PATH | cut_axis auto|x|y|z | design PATH | pattern tri|grid|hex | spacing D | set KEY VALUE | optimize |
+//   open PATH | cut_axis auto|x|y|z | design PATH | pattern tri|grid|hex|cairo|prismatic|cell | spacing D | set KEY VALUE | optimize |
 //   undo | redo | save FILE.json | export DIR | cut THICKNESS DIR | screenshot FILE.png | view3d | view2d | panel NAME | wait N | quit |
 //   select ID | select_box U0 V0 U1 V1 | pin ID|selection | unpin ID|selection | drag ID DU DV |
 //   delete ID|selection | add U V | brush U V RADIUS STRENGTH |

@@ -41,6 +41,7 @@ struct PatternDesign {
   Tessellation tessellation = Tessellation::Hexagon;
   double spacing = 0;                     // D in surface units; 0 = derive from the surface
   std::vector<EdgeOperator> operators;    // applied in order to the unit cell; offsets within kMaxOperatorOffset
+  CellDesign cell;                        // tessellation "cell": the designer's unit cell, units of D
   bool bracing = true;                    // add virtual edges across non-triangular faces
   Topology topology = Topology::Auto;
 };
@@ -60,6 +61,14 @@ struct EdgeElementDesign {
   bool sits_on(int cell_edge) const {
     return cell_edges.empty() || std::find(cell_edges.begin(), cell_edges.end(), cell_edge) != cell_edges.end();
   }
+};
+
+// F-elements (the paper's section 7): one at the centre of every face of the pattern, its corners'
+// mean, carried by them as the pattern is optimized (elements/element_placement.h).
+struct FaceElementDesign {
+  bool enabled = false;
+  double scale = 0.5;                     // s in (0, 1]: diameter = s * D
+  ShapeKind shape = ShapeKind::Sphere;
 };
 
 // Beads (shared prongs): a small sphere in the gap between every three stones in contact
@@ -95,6 +104,7 @@ inline constexpr std::size_t kMaxEdgeElements = 64;
 struct ElementsDesign {
   VertexElementDesign vertex;
   std::vector<EdgeElementDesign> edge;
+  FaceElementDesign face;
   std::string custom_shape;               // OBJ/OFF/PLY/STL path for ShapeKind::Custom
   bool allow_overlap = false;             // allow elements that intersect by design (paper Fig. 15)
   double gap = 0;                         // required free space between footprints, surface units
@@ -113,9 +123,10 @@ struct Design {
   // default: solver.mu_stretched was 0.5 then; version 2 (before 2026-12-02) has no
   // elements.close_spots; version 3 (before 2026-12-03) has no elements.fill_sizes,
   // elements.beads.min_diameter or elements.beads.over; version 4 (until graded stones, 2026-12-02)
-  // has no elements.grade. All are read, so that an earlier build says which versions it reads rather
+  // has no elements.grade; version 5 (until 2026-12-02's pentagonal tessellations) has no pattern.cell
+  // or elements.face. All are read, so that an earlier build says which versions it reads rather
   // than that a new key is unknown.
-  static constexpr int kVersion = 5;
+  static constexpr int kVersion = 6;
   static constexpr int kOldestVersion = 1;
   Units units = Units::Millimetre;
   PatternDesign pattern;

@@ -32,6 +32,15 @@ enum class Key {
   operator_to,
   operator_offset,
   operator_virtual,
+  cell_a1,
+  cell_a2,
+  cell_vertices,
+  cell_vertex_at,
+  cell_edges,
+  cell_edge_from,
+  cell_edge_to,
+  cell_edge_offset,
+  cell_edge_virtual,
   pattern_topology,
   vertex_enabled,
   vertex_scale,
@@ -41,6 +50,9 @@ enum class Key {
   edge_scale,
   edge_shape,
   edge_cell_edges,
+  face_enabled,
+  face_scale,
+  face_shape,
   custom_shape,
   allow_overlap,
   gap,
@@ -131,11 +143,18 @@ void visit_keys(D& d, Visit&& visit) {
   visit(Key::pattern_spacing, d.pattern.spacing);
   visit(Key::pattern_bracing, d.pattern.bracing);
   visit(Key::pattern_operators, d.pattern.operators);
+  visit(Key::cell_a1, d.pattern.cell.a1);
+  visit(Key::cell_a2, d.pattern.cell.a2);
+  visit(Key::cell_vertices, d.pattern.cell.vertices);
+  visit(Key::cell_edges, d.pattern.cell.edges);
   visit(Key::pattern_topology, d.pattern.topology);
   visit(Key::vertex_enabled, d.elements.vertex.enabled);
   visit(Key::vertex_scale, d.elements.vertex.scale);
   visit(Key::vertex_shape, d.elements.vertex.shape);
   visit(Key::elements_edge, d.elements.edge);
+  visit(Key::face_enabled, d.elements.face.enabled);
+  visit(Key::face_scale, d.elements.face.scale);
+  visit(Key::face_shape, d.elements.face.shape);
   visit(Key::custom_shape, d.elements.custom_shape);
   visit(Key::allow_overlap, d.elements.allow_overlap);
   visit(Key::gap, d.elements.gap);
@@ -168,7 +187,8 @@ void visit_keys(D& d, Visit&& visit) {
 
 // The types of an array's items whose fields are keys of their own.
 template <class T>
-concept KeyedItem = std::is_same_v<T, EdgeOperator> || std::is_same_v<T, EdgeElementDesign> ||
+concept KeyedItem = std::is_same_v<T, EdgeOperator> || std::is_same_v<T, CellVertex> ||
+                    std::is_same_v<T, CellEdgeDesign> || std::is_same_v<T, EdgeElementDesign> ||
                     std::is_same_v<T, MovedParticle> || std::is_same_v<T, DeletedElement> ||
                     std::is_same_v<T, AddedElement> || std::is_same_v<T, GuidanceDab>;
 
@@ -180,6 +200,11 @@ void visit_item_keys(T& item, Visit&& visit) {
   if constexpr (std::is_same_v<Item, EdgeOperator>) {
     visit(Key::operator_op, item.kind); visit(Key::operator_from, item.from); visit(Key::operator_to, item.to);
     visit(Key::operator_offset, item.offset); visit(Key::operator_virtual, item.is_virtual);
+  } else if constexpr (std::is_same_v<Item, CellVertex>) {
+    visit(Key::cell_vertex_at, item.at);
+  } else if constexpr (std::is_same_v<Item, CellEdgeDesign>) {
+    visit(Key::cell_edge_from, item.from); visit(Key::cell_edge_to, item.to);
+    visit(Key::cell_edge_offset, item.offset); visit(Key::cell_edge_virtual, item.is_virtual);
   } else if constexpr (std::is_same_v<Item, EdgeElementDesign>) {
     visit(Key::edge_t, item.t); visit(Key::edge_scale, item.scale); visit(Key::edge_shape, item.shape);
     visit(Key::edge_cell_edges, item.cell_edges);

@@ -5,7 +5,8 @@
 namespace paver {
 
 int first_refill_id(const Pattern& pattern) {
-  return pattern.designed_point_count() + pattern.edge_count() + int(pattern.crossing_edges.size());
+  return pattern.designed_point_count() + pattern.edge_count() + int(pattern.crossing_edges.size()) +
+         pattern.face_count();
 }
 
 void number_elements(Elements& elements, const Pattern& pattern, const std::vector<AddedElement>& added) {
@@ -24,6 +25,9 @@ void number_elements(Elements& elements, const Pattern& pattern, const std::vect
         break;
       case ElementKind::Edge:
         id = source >= 0 ? designed + source : designed + edges + (-1 - source);
+        break;
+      case ElementKind::Face:
+        id = designed + edges + int(pattern.crossing_edges.size()) + source;
         break;
       case ElementKind::Bead:
         break;  // number_beads

@@ -1,6 +1,7 @@
 #pragma once
-// Elements on the pattern (section 4.1): a V-element on every point and the design's E-elements
-// on every non-virtual edge at their t, lifted to the surface (eq. 2) with their normals.
+// Elements on the pattern (section 4.1): a V-element on every point, the design's E-elements on
+// every non-virtual edge at their t, and an F-element in every face the pattern lists (section 7's
+// future work), lifted to the surface (eq. 2) with their normals.
 #include "design/design.h"
 #include "elements/elements.h"
 #include "pattern/pattern.h"

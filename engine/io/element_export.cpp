@@ -23,6 +23,21 @@
 namespace paver {
 namespace {
 
+// The CSV's kind column: V, E and F as the paper names them (F its future work), B for beads.
+const char* kind_column(ElementKind kind) {
+  switch (kind) {
+    case ElementKind::Vertex: return ",V";
+    case ElementKind::Edge: return ",E";
+    case ElementKind::Face: return ",F";
+    case ElementKind::Bead: return ",B";
+  }
+  return ",?";
+}
+
+}  // namespace
+
+namespace {
+
 using Colour = std::array<std::uint8_t, 3>;
 
 // Elements is a struct of arrays; a short array would be read past its end.
@@ -205,7 +220,7 @@ void write_placements_csv(const std::filesystem::path& path, const Elements& ele
     for (std::size_t i = 0; i < elements.size(); ++i) {
       // Unnumbered elements (a caller that placed them itself) are listed by their index.
       w.integer(static_cast<long long>(elements.id[i] == kNoElementId ? int(i) : elements.id[i]));
-      w.text(elements.kind[i] == ElementKind::Vertex ? ",V" : elements.kind[i] == ElementKind::Edge ? ",E" : ",B");
+      w.text(kind_column(elements.kind[i]));
       for (const double value :
            {elements.position[i].x, elements.position[i].y, elements.position[i].z,
             elements.normal[i].x, elements.normal[i].y, elements.normal[i].z, elements.diameter[i],

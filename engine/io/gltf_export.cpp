@@ -131,6 +131,7 @@ const char* kind_label(ElementKind kind) {
   switch (kind) {
     case ElementKind::Vertex: return "vertex stones";
     case ElementKind::Edge: return "edge stones";
+    case ElementKind::Face: return "face stones";
     case ElementKind::Bead: return "beads";
   }
   return "elements";

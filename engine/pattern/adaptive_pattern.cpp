@@ -119,6 +119,7 @@ std::string adaptive_pattern_unsupported(const Design& design) {
   if (t != Tessellation::Triangle && t != Tessellation::Hexagon)
     return std::string(enum_name(t)) + " has no adaptive pattern (tri and hex do)";
   if (!design.pattern.operators.empty()) return "edge operators need the lattice's directions";
+  if (design.elements.face.enabled) return "F-elements sit in the lattice's faces";
   if (design.placement.scale != 1) return key_path(Key::placement_scale) + " is not 1";
   int real_edges = 0;
   for (const CellEdge& e : make_unit_cell(t, 1).edges) real_edges += !e.is_virtual;

@@ -1,6 +1,7 @@
 #include "pattern/bar_length_floor.h"
 
 #include "core/contact_rule.h"
+#include "pattern/design_cell.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,7 +20,17 @@ double bar_length_floor(const Design& design) {
   const double vertex = design.elements.vertex.enabled ? design.elements.vertex.scale * spacing : 0;
   for (const EdgeElementDesign& e : design.elements.edge) along.push_back({e.t, e.scale * spacing});
   if (vertex > 0) along.push_back({1, vertex});
-  const double angle = (design.pattern.tessellation == Tessellation::Hexagon ? 2 : 1) * std::numbers::pi / 3;
+  // The narrowest turn between two bars at a vertex: the paper's three keep their 60 and 120
+  // degrees (a grid's too, as it always was); the others are measured on their cell.
+  const Tessellation t = design.pattern.tessellation;
+  const double angle = t == Tessellation::Hexagon ? 2 * std::numbers::pi / 3
+                       : t == Tessellation::Triangle || t == Tessellation::Grid
+                           ? std::numbers::pi / 3
+                           : [&] {
+                               PatternDesign unit = design.pattern;
+                               unit.spacing = 1;  // the angle is scale-free, and D may still be 0
+                               return smallest_edge_angle(make_base_cell(unit));
+                             }();
   double floor = 0;
   const auto need = [&](double apart, double da, double db) {
     if (apart > 1e-12) floor = std::max(floor, contact_distance(da, db, gap) / apart);

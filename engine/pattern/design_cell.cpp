@@ -9,8 +9,18 @@
 
 namespace paver {
 
+UnitCell make_base_cell(const PatternDesign& pattern) {
+  if (pattern.tessellation != Tessellation::Custom) return make_unit_cell(pattern.tessellation, pattern.spacing);
+  try {
+    return make_drawn_cell(pattern.cell, pattern.spacing);
+  } catch (const InputError& e) {
+    const std::string_view a1 = design_key(Key::cell_a1).path;  // "pattern.cell.a1"
+    throw DesignError(std::string(a1.substr(0, a1.rfind('.'))) + ": " + e.what());
+  }
+}
+
 UnitCell make_design_cell(const PatternDesign& pattern) {
-  UnitCell cell = make_unit_cell(pattern.tessellation, pattern.spacing);
+  UnitCell cell = make_base_cell(pattern);
   for (size_t i = 0; i < pattern.operators.size(); ++i) {
     try {
       apply_operator(cell, pattern.operators[i]);

@@ -7,6 +7,11 @@
 
 namespace paver {
 
+// The tessellation's own cell at D, or the designer's drawn one (tessellation "cell"), before any
+// operator. Throws DesignError naming pattern.cell's vertex or edge when the drawn one is not a
+// tessellation.
+UnitCell make_base_cell(const PatternDesign& pattern);
+
 // Inputs: the pattern's tessellation, spacing D, operators and bracing.
 // Output: the unit cell at D with the operators applied in order and the bracing edges if asked.
 // Throws DesignError naming the operator ("pattern.operators[1]: ...") when one fails.

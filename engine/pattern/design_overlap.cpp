@@ -55,6 +55,7 @@ void check_design_overlaps(const UnitCell& cell, const ElementsDesign& design, d
     if (!edge.is_virtual) range = std::max(range, 2 + std::max(std::abs(edge.offset.x), std::abs(edge.offset.y)));
   std::vector<LayoutElement> all;
   std::vector<size_t> own;  // indices of the origin cell's elements
+  const std::vector<CellFace> faces = design.face.enabled ? cell_faces(cell) : std::vector<CellFace>{};
   for (int cy = -range; cy <= range; ++cy)
     for (int cx = -range; cx <= range; ++cx) {
       const glm::ivec2 c(cx, cy);
@@ -77,6 +78,11 @@ void check_design_overlaps(const UnitCell& cell, const ElementsDesign& design, d
                          key_path(Key::elements_edge) + "[" + std::to_string(s) + "] on cell edge " + std::to_string(e) +
                              of_cell(c)});
         }
+      }
+      for (int f = 0; f < int(faces.size()); ++f) {
+        if (origin) own.push_back(all.size());
+        all.push_back({face_centre(cell, faces[std::size_t(f)], c), 0.5 * design.face.scale * spacing,
+                       "the F-element in cell face " + std::to_string(f) + of_cell(c)});
       }
     }
   // The pair that misses its distance by the most, not the first found: the figures and the

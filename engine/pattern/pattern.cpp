@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <cstdio>
 #include <limits>
 #include <stdexcept>
@@ -60,7 +61,56 @@ void refuse_spacing_larger_than_map(const SurfaceMap& map, double spacing, const
                      format_number(map_size));
 }
 
-Pattern build_pattern(const SurfaceMap& map, const UnitCell& cell, const Placement& placement) {
+namespace {
+
+// The faces of the lattice (cells c0..c1) whose corners all became points: `point_at(cell,
+// vertex, first)` is the point a lattice vertex became, or -1.
+void list_faces(const UnitCell& cell, glm::ivec2 c0, glm::ivec2 c1,
+                const std::function<int(glm::ivec2, int, bool)>& point_at, Pattern& pattern) {
+  const std::vector<CellFace> faces = cell_faces(cell);
+  pattern.face_start.assign(1, 0);
+  std::vector<int> corners;
+  for (int cy = c0.y; cy <= c1.y; ++cy)
+    for (int cx = c0.x; cx <= c1.x; ++cx)
+      for (const CellFace& face : faces) {
+        corners.clear();
+        for (const CellFaceCorner& corner : face) {
+          const int p = point_at(glm::ivec2(cx, cy) + corner.cell - face[0].cell, corner.vertex, corners.empty());
+          if (p < 0) break;
+          corners.push_back(p);
+        }
+        if (corners.size() != face.size()) continue;
+        pattern.face_corner.insert(pattern.face_corner.end(), corners.begin(), corners.end());
+        pattern.face_start.push_back(int(pattern.face_corner.size()));
+      }
+}
+
+// An offset (or a scale) that puts the map this many cells from the lattice's origin only
+// repeats the lattice, and its cell indices would overflow: refused.
+void refuse_far_offset(glm::dvec2 lo, glm::dvec2 hi, const Placement& placement, double map_size) {
+  constexpr double kMaxCellIndex = 1e8;
+  if (!(std::abs(lo.x) < kMaxCellIndex && std::abs(lo.y) < kMaxCellIndex && std::abs(hi.x) < kMaxCellIndex &&
+        std::abs(hi.y) < kMaxCellIndex))
+    throw DesignError("placement: the offset (" + format_number(placement.offset.x) + ", " +
+                     format_number(placement.offset.y) + ") puts the pattern about " +
+                     format_number(std::max({std::abs(lo.x), std::abs(lo.y), std::abs(hi.x), std::abs(hi.y)})) +
+                     " cells from the surface's map; the lattice repeats every cell, so use an offset within the "
+                     "map's size (about " + format_number(map_size) + ")");
+}
+
+// The lattice slots cover the map's bounding box, not its area: a long thin map turned against the
+// lattice can need far more of them than it has points. Bounded before allocating.
+void refuse_too_many_slots(double slots, double spacing) {
+  if (slots > kMaxLatticeSlots)
+    throw InputError("the map's bounding box spans " + format_number(slots) + " lattice positions at D = " +
+                     format_number(spacing) + " (the surface is long and thin, or turned against the lattice; "
+                     "the limit is " + format_number(kMaxLatticeSlots) +
+                     "): use a larger spacing, or a placement rotation that lines the lattice up with it");
+}
+
+}  // namespace
+
+Pattern build_pattern(const SurfaceMap& map, const UnitCell& cell, const Placement& placement, bool with_faces) {
   refuse_spacing_larger_than_map(map, cell.spacing, placement);
   const glm::dvec2 map_extent = map.uv_max - map.uv_min;
   const double map_size = std::max(map_extent.x, map_extent.y) * placement.scale;  // in pattern units
@@ -97,27 +147,11 @@ Pattern build_pattern(const SurfaceMap& map, const UnitCell& cell, const Placeme
   }
   const double window_end = map.period_origin + map.period;
   const auto in_window = [&](glm::dvec2 q) { return !wraps || (q.x >= map.period_origin && q.x < window_end); };
-  // An offset (or a scale) that puts the map this many cells from the lattice's origin only
-  // repeats the lattice, and its cell indices would overflow: refuse it.
-  constexpr double kMaxCellIndex = 1e8;
-  if (!(std::abs(lo.x) < kMaxCellIndex && std::abs(lo.y) < kMaxCellIndex && std::abs(hi.x) < kMaxCellIndex &&
-        std::abs(hi.y) < kMaxCellIndex))
-    throw DesignError("placement: the offset (" + format_number(placement.offset.x) + ", " +
-                     format_number(placement.offset.y) + ") puts the pattern about " +
-                     format_number(std::max({std::abs(lo.x), std::abs(lo.y), std::abs(hi.x), std::abs(hi.y)})) +
-                     " cells from the surface's map; the lattice repeats every cell, so use an offset within the "
-                     "map's size (about " + format_number(map_size) + ")");
+  refuse_far_offset(lo, hi, placement, map_size);
   // One extra ring of cells so edges leaving the map are seen from both ends.
   const glm::ivec2 c0 = glm::ivec2(glm::floor(lo)) - 2, c1 = glm::ivec2(glm::ceil(hi)) + 2;
   const int ncx = c1.x - c0.x + 1, ncy = c1.y - c0.y + 1, nv = int(cell.vertices.size());
-  // The lattice slots below cover the map's bounding box, not its area: a long thin map turned
-  // against the lattice can need far more of them than it has points. Bounded before allocating.
-  const double slots = double(ncx) * double(ncy) * double(nv);
-  if (slots > kMaxLatticeSlots)
-    throw InputError("the map's bounding box spans " + format_number(slots) + " lattice positions at D = " +
-                     format_number(cell.spacing) + " (the surface is long and thin, or turned against the lattice; "
-                     "the limit is " + format_number(kMaxLatticeSlots) +
-                     "): use a larger spacing, or a placement rotation that lines the lattice up with it");
+  refuse_too_many_slots(double(ncx) * double(ncy) * double(nv), cell.spacing);
 
   Pattern pattern;
   std::vector<int> index(size_t(ncx) * ncy * nv, -1);  // lattice vertex -> point index
@@ -173,6 +207,19 @@ Pattern build_pattern(const SurfaceMap& map, const UnitCell& cell, const Placeme
           pattern.crossing_edges.push_back({from_inside ? a : b, outside, e, from_inside});
         }
       }
+  if (with_faces) {
+    // Each face once, from its first corner's cell; on a map that wraps, from the period, and its
+    // other corners taken back into it as the edges' ends are.
+    const auto point_at = [&](glm::ivec2 at, int v, bool first) -> int {
+      const long s0 = slot(at, v);
+      if (s0 < 0 || !wraps) return s0 < 0 ? -1 : index[s0];
+      if (first) return in_window(map_position[s0]) ? index[s0] : -1;
+      const double u = map_position[s0].x;
+      const long s1 = slot(at - (u >= window_end ? 1 : u < map.period_origin ? -1 : 0) * period_cells, v);
+      return s1 < 0 ? -1 : index[s1];
+    };
+    list_faces(cell, c0, c1, point_at, pattern);
+  }
   if (pattern.point_count() == 0)
     throw InputError("no element of the pattern lands on the surface: spacing D = " + format_number(cell.spacing) +
                      " against a map about " + format_number(map_size) +

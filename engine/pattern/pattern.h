@@ -34,6 +34,12 @@ struct Pattern {
   };
   std::vector<CrossingEdge> crossing_edges;
 
+  // Faces of the lattice with every corner in M^, each corner a point, counter-clockwise: face f's
+  // are face_corner[face_start[f] .. face_start[f + 1]). Only laid out when F-elements ask for
+  // them (build_pattern's `with_faces`); an adaptive pattern has none.
+  std::vector<int> face_start;
+  std::vector<int> face_corner;
+
   // Point defects of an adaptive pattern (a lattice has none): a particle (tri) or a face (hex:
   // the points around a pentagon or heptagon) whose valence is not the regular lattice's.
   struct Defect {
@@ -49,6 +55,7 @@ struct Pattern {
   int point_count() const { return static_cast<int>(points.size()); }
   int designed_point_count() const { return point_count() - added_points; }
   int edge_count() const { return static_cast<int>(edge_a.size()); }
+  int face_count() const { return face_start.empty() ? 0 : static_cast<int>(face_start.size()) - 1; }
 };
 
 // Most points a pattern may have; a spacing that would create more is an input error.
@@ -64,9 +71,11 @@ double estimate_point_count(const SurfaceMap& map, const UnitCell& cell, const P
 // refuse a spacing before the map is made).
 void refuse_too_many_points(double area, const UnitCell& cell, const Placement& placement, double slack = 1);
 
-// Propagates the cell over the map and trims it. Throws InputError when the spacing would
-// create more than kMaxPatternPoints points, naming the smallest sensible spacing.
-Pattern build_pattern(const SurfaceMap& map, const UnitCell& cell, const Placement& placement);
+// Propagates the cell over the map and trims it, and `with_faces` lists the faces whose corners are
+// all kept. Throws InputError when the spacing would create more than kMaxPatternPoints points,
+// naming the smallest sensible spacing.
+Pattern build_pattern(const SurfaceMap& map, const UnitCell& cell, const Placement& placement,
+                      bool with_faces = false);
 
 // Throws InputError "spacing D = .. is larger than the surface" when no two elements fit across
 // the map; build_pattern checks it, and a band before its closure changes D (a D of 1e9 was said

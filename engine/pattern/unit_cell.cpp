@@ -6,9 +6,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <numbers>
+#include <numeric>
 #include <sstream>
+#include <stdexcept>
 #include <tuple>
 
 namespace paver {
@@ -102,9 +105,183 @@ UnitCell make_unit_cell(Tessellation tessellation, double spacing) {
       c.vertices = {{0, 0}, {0, d}};
       c.edges = {{0, 1, {0, 0}}, {0, 1, {0, -1}}, {0, 1, {1, -1}}};
       break;
+    case Tessellation::Cairo: {
+      // The 4-valent vertices make a square grid of side L; in each square a pair of 3-valent
+      // vertices D apart, each joined to the two corners on its side, the pairs lying across and
+      // along in a checkerboard. Every edge is D when (L - D)^2 + L^2 = 4 D^2: L = (1 + sqrt 7) D / 2.
+      const double l = (1 + std::sqrt(7.0)) / 2 * d;
+      c.a1 = {2 * l, 0}, c.a2 = {l, l};
+      c.vertices = {{0, 0}, {l, 0}, {l / 2 - d / 2, l / 2}, {l / 2 + d / 2, l / 2},
+                    {1.5 * l, l / 2 - d / 2}, {1.5 * l, l / 2 + d / 2}};
+      c.edges = {{2, 0, {0, 0}}, {2, 1, {-1, 1}}, {3, 1, {0, 0}}, {3, 0, {0, 1}}, {2, 3, {0, 0}},
+                 {4, 1, {0, 0}}, {4, 0, {1, 0}}, {5, 0, {0, 1}}, {5, 1, {0, 1}}, {4, 5, {0, 0}}};
+      break;
+    }
+    case Tessellation::Prismatic: {
+      // Houses: walls and roof edges D, the base kPrismaticBase D wide (so that eaves and ridges of
+      // neighbouring houses, joined by no edge, stay that far apart); the next row upside down, its
+      // roofs between them.
+      const double b = kPrismaticBase * d, roof = std::sqrt(d * d - b * b / 4);
+      c.a1 = {b, 0}, c.a2 = {b / 2, 2 * d + roof};
+      c.vertices = {{0, 0}, {0, d}, {b / 2, d + roof}};
+      c.edges = {{0, 0, {1, 0}}, {0, 1, {0, 0}}, {1, 2, {0, 0}}, {2, 1, {1, 0}}, {2, 0, {0, 1}}};
+      break;
+    }
+    case Tessellation::Custom:
+      throw std::logic_error("make_unit_cell: a drawn cell is made by make_drawn_cell");
   }
   for (auto& e : c.edges) e.rest_length = glm::length(c.edge_vector(e));
   return c;
+}
+
+namespace {
+
+// Whether segments p0-p1 and q0-q1 meet anywhere but at an end they share.
+bool segments_meet(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 q0, glm::dvec2 q1, double tolerance) {
+  const auto cross = [](glm::dvec2 a, glm::dvec2 b) { return a.x * b.y - a.y * b.x; };
+  const auto near = [&](glm::dvec2 a, glm::dvec2 b) { return glm::length(a - b) <= tolerance; };
+  // Distance from x to segment a-b.
+  const auto distance = [](glm::dvec2 x, glm::dvec2 a, glm::dvec2 b) {
+    const glm::dvec2 ab = b - a;
+    const double t = std::clamp(glm::dot(x - a, ab) / glm::dot(ab, ab), 0.0, 1.0);
+    return glm::length(x - (a + t * ab));
+  };
+  const int shared = (near(p0, q0) || near(p0, q1)) + (near(p1, q0) || near(p1, q1));
+  if (shared == 2) return true;  // the same edge twice
+  // An end of one on the other (other than at a shared end): through a vertex, or overlapping.
+  for (const auto& [x, a, b] : {std::tuple{p0, q0, q1}, {p1, q0, q1}, {q0, p0, p1}, {q1, p0, p1}})
+    if (!near(x, a) && !near(x, b) && distance(x, a, b) <= tolerance) return true;
+  if (shared == 1) return false;
+  const double d1 = cross(p1 - p0, q0 - p0), d2 = cross(p1 - p0, q1 - p0);
+  const double d3 = cross(q1 - q0, p0 - q0), d4 = cross(q1 - q0, p1 - q0);
+  return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0));
+}
+
+}  // namespace
+
+UnitCell make_drawn_cell(const CellDesign& design, double spacing) {
+  const auto fail = [](const std::string& what) { throw InputError(what); };
+  UnitCell c;
+  c.tessellation = Tessellation::Custom;
+  c.spacing = spacing;
+  c.a1 = design.a1 * spacing, c.a2 = design.a2 * spacing;
+  const double area = design.a1.x * design.a2.y - design.a1.y * design.a2.x;
+  if (!(std::abs(area) > 1e-6 * glm::length(design.a1) * glm::length(design.a2)))
+    fail("a1 and a2 must span the plane (they are parallel or zero)");
+  if (area < 0) fail("a1 and a2 must turn counter-clockwise (a2 to the left of a1): swap them");
+  const std::size_t nv = design.vertices.size(), ne = design.edges.size();
+  if (nv == 0) fail("the cell has no vertex: give vertices as [{\"at\": [x, y]}, ...] in units of D");
+  if (nv > kMaxDrawnCellVertices) fail("the cell has " + std::to_string(nv) + " vertices; the most is " +
+                                       std::to_string(kMaxDrawnCellVertices));
+  if (ne > kMaxDrawnCellEdges)
+    fail("the cell has " + std::to_string(ne) + " edges; the most is " + std::to_string(kMaxDrawnCellEdges));
+  const double tolerance = 1e-6 * std::sqrt(area);
+  for (std::size_t v = 0; v < nv; ++v) {
+    const glm::dvec2 at = design.vertices[v].at;
+    if (!std::isfinite(at.x) || !std::isfinite(at.y)) fail("vertices[" + std::to_string(v) + "] is not finite");
+    c.vertices.push_back(at * spacing);
+  }
+  // Two vertices at one place, in this cell or a neighbour's.
+  const UnitCell unit = [&] {
+    UnitCell u = c;
+    u.a1 = design.a1, u.a2 = design.a2, u.spacing = 1;
+    for (std::size_t v = 0; v < nv; ++v) u.vertices[v] = design.vertices[v].at;
+    return u;
+  }();
+  constexpr int kReach = kMaxDrawnCellOffset + 1;
+  for (std::size_t v = 0; v < nv; ++v)
+    for (std::size_t w = v; w < nv; ++w)
+      for (int i = -kReach; i <= kReach; ++i)
+        for (int j = -kReach; j <= kReach; ++j)
+          if ((v != w || i != 0 || j != 0) &&
+              glm::length(unit.position(int(w), {i, j}) - unit.vertices[v]) <= tolerance)
+            fail("vertices[" + std::to_string(v) + "] and vertices[" + std::to_string(w) + "]" +
+                 (i || j ? " of the cell (" + std::to_string(i) + "," + std::to_string(j) + ")" : "") +
+                 " are at one place");
+  std::vector<int> degree(nv, 0);
+  for (std::size_t k = 0; k < ne; ++k) {
+    const CellEdgeDesign& e = design.edges[k];
+    const std::string name = "edges[" + std::to_string(k) + "] " + describe(e.from, e.to, e.offset);
+    if (e.from < 0 || e.from >= int(nv) || e.to < 0 || e.to >= int(nv))
+      fail(name + ": the cell has vertices 0.." + std::to_string(nv - 1));
+    if (std::abs(e.offset.x) > kMaxDrawnCellOffset || std::abs(e.offset.y) > kMaxDrawnCellOffset)
+      fail(name + ": an edge reaches at most " + std::to_string(kMaxDrawnCellOffset) + " cells away");
+    if (find_edge(c, e.from, e.to, e.offset) >= 0) fail(name + ": the edge is given twice");
+    CellEdge edge{e.from, e.to, e.offset, 0, e.is_virtual};
+    edge.rest_length = glm::length(c.edge_vector(edge));
+    if (!(edge.rest_length > tolerance * spacing)) fail(name + ": joins a vertex to itself");
+    c.edges.push_back(edge);
+    if (!e.is_virtual) ++degree[std::size_t(e.from)], ++degree[std::size_t(e.to)];
+  }
+  for (std::size_t v = 0; v < nv; ++v)
+    if (degree[v] < 2)
+      fail("vertices[" + std::to_string(v) + "] is on " + std::to_string(degree[v]) +
+           " edge(s); every vertex of a tessellation is on two or more (add edges, or remove the vertex)");
+  // Planar: no two real edges (of any two cells) meet but at a shared end.
+  for (std::size_t k = 0; k < ne; ++k) {
+    const CellEdge& e = c.edges[k];
+    if (e.is_virtual) continue;
+    const glm::dvec2 p0 = unit.vertices[std::size_t(e.from)], p1 = unit.position(e.to, e.offset);
+    for (std::size_t m = k; m < ne; ++m) {
+      const CellEdge& f = c.edges[m];
+      if (f.is_virtual) continue;
+      for (int i = -2 * kReach; i <= 2 * kReach; ++i)
+        for (int j = -2 * kReach; j <= 2 * kReach; ++j) {
+          if (m == k && i == 0 && j == 0) continue;
+          const glm::dvec2 q0 = unit.position(f.from, {i, j}), q1 = unit.position(f.to, f.offset + glm::ivec2(i, j));
+          if (segments_meet(p0, p1, q0, q1, tolerance))
+            fail("edges[" + std::to_string(k) + "] " + describe_edge(e) + " and edges[" + std::to_string(m) + "] " +
+                 describe_edge(f) + (i || j ? " of the cell (" + std::to_string(i) + "," + std::to_string(j) + ")" : "") +
+                 " cross or overlap: a tessellation's edges meet only at their ends");
+        }
+    }
+  }
+  // Connected over the plane: every vertex reached from vertex 0, and the loops' lattice steps
+  // reach every cell (else the pattern is strips, or copies lying between each other).
+  std::vector<glm::ivec2> shift(nv);
+  std::vector<std::uint8_t> reached(nv, 0);
+  std::vector<int> stack{0};
+  reached[0] = 1;
+  while (!stack.empty()) {
+    const int v = stack.back();
+    stack.pop_back();
+    for (const CellEdge& e : c.edges) {
+      if (e.is_virtual) continue;
+      if (e.from == v && !reached[std::size_t(e.to)]) shift[std::size_t(e.to)] = shift[std::size_t(v)] + e.offset;
+      else if (e.to == v && !reached[std::size_t(e.from)]) shift[std::size_t(e.from)] = shift[std::size_t(v)] - e.offset;
+      else continue;
+      const int w = e.from == v ? e.to : e.from;
+      reached[std::size_t(w)] = 1;
+      stack.push_back(w);
+    }
+  }
+  for (std::size_t v = 0; v < nv; ++v)
+    if (!reached[v]) fail("vertices[" + std::to_string(v) + "] is not joined to vertices[0] by edges: the pattern falls apart");
+  std::vector<glm::ivec2> loops;
+  for (const CellEdge& e : c.edges)
+    if (!e.is_virtual) loops.push_back(shift[std::size_t(e.from)] + e.offset - shift[std::size_t(e.to)]);
+  long index = 0;
+  for (std::size_t a = 0; a < loops.size(); ++a)
+    for (std::size_t b = a + 1; b < loops.size(); ++b)
+      index = std::gcd(index, long(loops[a].x) * loops[b].y - long(loops[a].y) * loops[b].x);
+  if (index == 0) fail("the edges do not join the cells both ways: the pattern is strips (add an edge along the other lattice vector)");
+  if (index != 1)
+    fail("the edges join only one cell in " + std::to_string(index) +
+         ": the pattern is copies lying between each other (join them, or use a smaller cell)");
+  if (cell_faces(c).empty()) fail("the edges make no face");
+  return c;
+}
+
+double smallest_edge_angle(const UnitCell& cell) {
+  double smallest = std::numbers::pi;
+  for (const auto& list : outgoing(cell))
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      double turn = list[(i + 1) % list.size()].angle - list[i].angle;
+      if (list.size() == 1) turn = 2 * std::numbers::pi;
+      if (turn <= 0) turn += 2 * std::numbers::pi;
+      smallest = std::min(smallest, turn);
+    }
+  return smallest;
 }
 
 std::vector<CellFace> cell_faces(const UnitCell& cell) {
@@ -137,6 +314,12 @@ std::vector<CellFace> cell_faces(const UnitCell& cell) {
     }
   }
   return faces;
+}
+
+glm::dvec2 face_centre(const UnitCell& cell, const CellFace& face, glm::ivec2 offset) {
+  glm::dvec2 sum(0);
+  for (const CellFaceCorner& corner : face) sum += cell.position(corner.vertex, corner.cell + offset);
+  return sum / double(face.size());
 }
 
 void apply_operator(UnitCell& cell, const EdgeOperator& op) {
@@ -185,8 +368,10 @@ void add_bracing_edges(UnitCell& cell) {
   for (const CellFace& face : cell_faces(cell)) {
     const int n = static_cast<int>(face.size());
     if (n <= 3) continue;
-    // Join each corner to the opposite one (both diagonals of a quad, long diagonals of a hexagon).
-    for (int i = 0; i < (n + 1) / 2; ++i) {
+    // Join each corner to the opposite one (both diagonals of a quad, long diagonals of a hexagon);
+    // a pentagon gets all five, so that no two corners come nearer than the design has them (a
+    // prismatic house's eaves are D apart and joined by nothing else).
+    for (int i = 0; i < (n == 5 ? 5 : (n + 1) / 2); ++i) {
       const auto& a = face[i];
       const auto& b = face[(i + n / 2) % n];
       const glm::ivec2 offset = b.cell - a.cell;

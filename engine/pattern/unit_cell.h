@@ -6,6 +6,7 @@
 
 #include <glm/vec2.hpp>
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -36,9 +37,28 @@ struct UnitCell {
   double cell_area() const { return a1.x * a2.y - a1.y * a2.x; }
 };
 
-// The regular tessellation with edge length D: Triangle (1 vertex, 3 edges per cell),
-// Grid (1 vertex, 2 edges), Hexagon/honeycomb (2 vertices, 3 edges).
+// The tessellation with edge length D: Triangle (1 vertex, 3 edges per cell), Grid (1 vertex,
+// 2 edges), Hexagon/honeycomb (2 vertices, 3 edges), Cairo (6 vertices, 10 edges: two 4-valent, four
+// 3-valent; four pentagons), Prismatic (3 vertices, 5 edges: one 4-valent, two 3-valent; two
+// pentagons; its base edges kPrismaticBase D long). Custom has no cell of its own: make_drawn_cell.
 UnitCell make_unit_cell(Tessellation tessellation, double spacing);
+
+// The prismatic houses' base over D: wider than their walls and roofs, so that stones on neighbouring
+// eaves (joined by no edge) do not touch.
+inline constexpr double kPrismaticBase = 1.2;
+
+// The designer's cell (units of D) at spacing D. Throws InputError naming the vertex or edge when it
+// is not a tessellation: lattice vectors not turning counter-clockwise, no vertex, two vertices at
+// one place, an edge out of range, of zero length or given twice, two edges crossing or an edge
+// through a vertex, a vertex on fewer than two edges, a graph that does not connect the plane.
+UnitCell make_drawn_cell(const CellDesign& design, double spacing);
+
+// Most vertices and edges a drawn cell may have (the crossing check compares every pair).
+inline constexpr std::size_t kMaxDrawnCellVertices = 64;
+inline constexpr std::size_t kMaxDrawnCellEdges = 256;
+
+// The smallest angle between two real edges at a vertex of the cell, radians.
+double smallest_edge_angle(const UnitCell& cell);
 
 // Applies the operator in place. Throws InputError with a message naming the edge when it cannot
 // (no such edge, edge already there, zero-length edge, flip without a face on both sides).
@@ -57,8 +77,13 @@ using CellFace = std::vector<CellFaceCorner>;
 // edges. Empty when the graph has a vertex of degree < 2.
 std::vector<CellFace> cell_faces(const UnitCell& cell);
 
+// Where an F-element of `face` sits in the regular design, the face taken `cell` cells over: the
+// mean of its corners.
+glm::dvec2 face_centre(const UnitCell& cell, const CellFace& face, glm::ivec2 offset = {0, 0});
+
 // Adds virtual edges across every face with more than three sides (both diagonals of a square,
-// the three long diagonals of a hexagon) so springs keep the structure from shearing or folding.
+// the three long diagonals of a hexagon, all five of a pentagon) so springs keep the structure from
+// shearing or folding.
 void add_bracing_edges(UnitCell& cell);
 
 std::string describe_edge(const CellEdge& e);  // "0->1 @ (1,-1)"

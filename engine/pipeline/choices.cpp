@@ -186,7 +186,7 @@ Pavement choose_offset(const SurfaceMap& map, Design design, const PavementOptio
 
 // The pavement of a design whose topology is named: its band rows and offset chosen, if auto.
 Pavement pave_lattice_or_adaptive(const SurfaceMap& map, Design design, const PavementOptions& options) {
-  if (design.pattern.spacing <= 0) design.pattern.spacing = default_spacing(map.mesh, design.pattern.tessellation);
+  if (design.pattern.spacing <= 0) design.pattern.spacing = default_spacing(map.mesh, design.pattern);
   const bool lattice = design.pattern.topology != Topology::Adaptive;
   // Element edits name the elements of one lattice: under them auto takes across, as before auto
   // (the studio names the way at the first edit, element_editing.cpp).

@@ -55,7 +55,7 @@ void close_the_band(const PaveContext& c, PaveState& s) {
 void lay_out_pattern(const PaveContext& c, PaveState& s) {
   Design& design = s.design;
   Pavement& pavement = s.pavement;
-  if (design.pattern.spacing <= 0) design.pattern.spacing = default_spacing(c.map.mesh, design.pattern.tessellation);
+  if (design.pattern.spacing <= 0) design.pattern.spacing = default_spacing(c.map.mesh, design.pattern);
   if (map_wraps(c.map) && !s.adaptive()) close_the_band(c, s);
   pavement.cell = check_design_cell(design);
   if (design.placement.align != AlignAxis::None && !pavement.seamless)
@@ -72,7 +72,7 @@ void lay_out_pattern(const PaveContext& c, PaveState& s) {
     pavement.pattern = std::move(grown.pattern);
     pavement.relaxation = grown.relaxation;
   } else {
-    pavement.pattern = build_pattern(c.map, pavement.cell, design.placement);
+    pavement.pattern = build_pattern(c.map, pavement.cell, design.placement, design.elements.face.enabled);
   }
   s.edited = add_edited_points(c.map, pavement.pattern, design.edits,
                                design.elements.vertex.scale * design.pattern.spacing, design.elements.gap);

@@ -36,7 +36,9 @@ PavementCounts count_pavement(const Pavement& pavement) {
   c.pattern_edges = pattern.edge_count() - c.virtual_edges;
   c.boundary_crossing_edges = long(pattern.crossing_edges.size());
   c.vertex_elements = std::count(pavement.elements.kind.begin(), pavement.elements.kind.end(), ElementKind::Vertex);
-  c.edge_elements = long(pavement.elements.size()) - c.vertex_elements;
+  c.face_elements = std::count(pavement.elements.kind.begin(), pavement.elements.kind.end(), ElementKind::Face);
+  c.edge_elements = long(pavement.elements.size()) - c.vertex_elements - c.face_elements;
+  c.pattern_faces = pavement.pattern.face_count();
   c.retired_particles = std::count(pavement.retired.begin(), pavement.retired.end(), 1);
   return c;
 }
@@ -141,6 +143,7 @@ nlohmann::json pattern_json(const SurfaceMap& map, const Pavement& pavement, con
           {"edges", counts.pattern_edges},
           {"virtual_edges", counts.virtual_edges},
           {"boundary_crossing_edges", counts.boundary_crossing_edges},
+          {"faces", counts.pattern_faces},
           {"topology", enum_name(pavement.design.pattern.topology)},
           {"topology_choice", pavement.topology_choice},
           {"band", band_json(map, pavement)},
@@ -242,7 +245,8 @@ nlohmann::json make_run_report(const RunInfo& info, const SurfaceMap& map, const
       {"pattern", pattern_json(map, pavement, counts)},
       {"elements", {{"total", pavement.elements.size()},
                     {"vertex", counts.vertex_elements},
-                    {"edge", counts.edge_elements}}},
+                    {"edge", counts.edge_elements},
+                    {"face", counts.face_elements}}},
       {"optimization", optimization_json(pavement, counts)},
   };
   add_after_the_solve(report, pavement);

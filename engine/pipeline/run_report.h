@@ -22,7 +22,8 @@ struct PavementCounts {
   long pattern_edges = 0;            // real edges of the trimmed pattern
   long virtual_edges = 0;            // bracing edges
   long boundary_crossing_edges = 0;
-  long vertex_elements = 0, edge_elements = 0;
+  long vertex_elements = 0, edge_elements = 0, face_elements = 0;
+  long pattern_faces = 0;  // faces of the trimmed pattern that F-elements were placed in (0 without them)
   long retired_particles = 0;
 };
 PavementCounts count_pavement(const Pavement& pavement);

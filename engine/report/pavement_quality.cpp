@@ -184,14 +184,23 @@ QualityBasis quality_basis(const SurfaceMap& map, const UnitCell& cell, const El
         ++per_cell;
     largest = std::max(largest, spec.scale * cell.spacing);
   }
+  if (elements.face.enabled) {
+    basis.faces_per_cell = double(cell_faces(cell).size());
+    per_cell += basis.faces_per_cell;
+    largest = std::max(largest, elements.face.scale * cell.spacing);
+  }
   if (per_cell > 0) basis.area_per_element = std::abs(cell.cell_area()) / per_cell;
   if (elements.vertex.enabled && per_cell > 0) {
     const double vertices = double(cell.vertices.size());
     basis.vertex_share = vertices / per_cell;
-    int real_edges = 0;
-    for (const CellEdge& e : cell.edges) real_edges += !e.is_virtual;
-    basis.regular_valence = int(std::lround(2 * real_edges / vertices));
+    // One valence for every stone only where every cell vertex has it (not a Cairo tiling's 3 and 4).
+    std::vector<int> degree(cell.vertices.size(), 0);
+    for (const CellEdge& e : cell.edges)
+      if (!e.is_virtual) ++degree[std::size_t(e.from)], ++degree[std::size_t(e.to)];
+    if (std::all_of(degree.begin(), degree.end(), [&](int d) { return d == degree[0]; }))
+      basis.regular_valence = degree[0];
   }
+  if (per_cell > 0) basis.face_share = basis.faces_per_cell / per_cell;
   basis.spacing = cell.spacing;
   basis.boundary_strip =
       0.5 * (elements.vertex.enabled ? elements.vertex.scale * cell.spacing : largest) + basis.margin;
@@ -210,7 +219,8 @@ PavementQuality measure_pavement(const SurfaceMap& map, const Pattern& pattern,
   q.structure_measured = depth == Measure::Full;
   q.elements = long(elements.size());
   q.vertex_elements = std::count(elements.kind.begin(), elements.kind.end(), ElementKind::Vertex);
-  q.edge_elements = q.elements - q.vertex_elements;
+  q.face_elements = std::count(elements.kind.begin(), elements.kind.end(), ElementKind::Face);
+  q.edge_elements = q.elements - q.vertex_elements - q.face_elements;
   q.gap = basis.gap;
   q.margin = basis.margin;
   ProximityFigures proximity = measure_proximity(elements, basis.gap);
@@ -219,9 +229,11 @@ PavementQuality measure_pavement(const SurfaceMap& map, const Pattern& pattern,
   q.min_clearance = smallest_finite(proximity.clearances);
   q.fill = basis.ideal_count > 0 ? double(q.elements) / basis.ideal_count : 0;
   const double ideal_vertices = basis.ideal_count * basis.vertex_share;
-  const double ideal_edges = basis.ideal_count - ideal_vertices;
+  const double ideal_faces = basis.ideal_count * basis.face_share;
+  const double ideal_edges = basis.ideal_count - ideal_vertices - ideal_faces;
   q.vertex_fill = ideal_vertices > 0 ? double(q.vertex_elements) / ideal_vertices : 0;
-  q.edge_fill = ideal_edges > 0 && q.edge_elements > 0 ? double(q.edge_elements) / ideal_edges : 0;
+  q.edge_fill = ideal_edges > 0.5 && q.edge_elements > 0 ? double(q.edge_elements) / ideal_edges : 0;
+  q.face_fill = ideal_faces > 0 && q.face_elements > 0 ? double(q.face_elements) / ideal_faces : 0;
   q.neighbor_ratio = distribution_of(proximity.neighbor_ratios);
   std::vector<double> deviation = spring_length_ratios(map, pattern, points, basis.solver, retired, basis.grade.get());
   for (double& r : deviation) r = std::abs(r - 1);
@@ -265,6 +277,7 @@ nlohmann::json to_json(const PavementQuality& q) {
       {"elements", q.elements},
       {"vertex_elements", q.vertex_elements},
       {"edge_elements", q.edge_elements},
+      {"face_elements", q.face_elements},
       {"contact_violations", q.contact_violations},
       {"worst_overlap", q.worst_overlap},
       {"min_clearance", q.min_clearance},
@@ -273,6 +286,7 @@ nlohmann::json to_json(const PavementQuality& q) {
       {"fill", q.fill},
       {"vertex_fill", q.vertex_fill},
       {"edge_fill", q.edge_fill},
+      {"face_fill", q.face_fill},
       {"interior_vertex_elements", q.interior_vertex_elements},
       {"regular_valence_share", q.regular_valence_share},
       {"neighbor_ratio", dist(q.neighbor_ratio)},

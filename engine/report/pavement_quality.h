@@ -39,7 +39,10 @@ struct QualityBasis {
   double boundary_strip = 0;        // half an element diameter plus the margin: the strip along the boundary left bare
   double ideal_count = 0;           // ideal_element_count of the surface: what fill is measured against
   double vertex_share = 0;          // V-elements' share of the ideal count (1 per cell vertex)
-  int regular_valence = 0;          // V-neighbours of a lattice vertex: 6 tri, 4 grid, 3 hex; 0 = no V
+  double faces_per_cell = 0;        // F-elements of the regular pattern per cell (0 without them)
+  double face_share = 0;            // their share of the ideal count
+  int regular_valence = 0;          // V-neighbours of a lattice vertex: 6 tri, 4 grid, 3 hex; 0 = no V, or
+                                    // the cell's vertices have more than one (Cairo: 3 and 4)
   double spacing = 0;               // D: interior elements lie kInteriorDepth D from the boundary
   std::vector<GuidanceDab> guidance;  // the painted field: the ideal count follows it (design/guidance.h)
   std::shared_ptr<const GradeField> grade;  // graded stones: the ideal count and the spots follow it
@@ -48,14 +51,14 @@ struct QualityBasis {
 
 
 struct PavementQuality {
-  long elements = 0, vertex_elements = 0, edge_elements = 0;
+  long elements = 0, vertex_elements = 0, edge_elements = 0, face_elements = 0;
   long contact_violations = 0;      // pairs closer than r_i + r_j + gap (core/contact_rule.h), all pairs
   double worst_overlap = 0;         // max of 1 - d / (r_i + r_j + gap) over violating pairs
   double min_clearance = 0;         // smallest d - r_i - r_j over all pairs, surface units (negative = overlap)
   double gap = 0;                   // the gap it was measured with
   double margin = 0;                // and the boundary margin (boundary_crossings count footprints inside it)
   double fill = 0;                  // elements / the ideal count (QualityBasis), 0 when not measured
-  double vertex_fill = 0, edge_fill = 0;  // each kind over its own ideal count; 0 when not placed
+  double vertex_fill = 0, edge_fill = 0, face_fill = 0;  // each kind over its own ideal count; 0 when not placed
   long interior_vertex_elements = 0;  // V-elements kInteriorDepth D or more from the boundary
   double regular_valence_share = 0;   // of those, the share with the lattice's valence (lattice_valence.h)
   Distribution neighbor_ratio;      // nearest-neighbour distance / (r_i + r_j)

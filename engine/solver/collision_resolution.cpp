@@ -79,11 +79,15 @@ Removal remove_colliding(Elements& elements, double gap, std::vector<std::uint8_
     std::vector<std::uint8_t> settled(elements.size(), 0);
     for (const Collision& c : collisions) {
       if (settled[c.i] || settled[c.j]) continue;
-      // An edge element goes before the vertex element it touches; else the one in more pairs.
-      const bool i_edge = elements.kind[c.i] == ElementKind::Edge, j_edge = elements.kind[c.j] == ElementKind::Edge;
+      // A face element goes before an edge element, and that before the vertex element it touches
+      // (the pattern's own stones are its vertices'); else the one in more pairs.
+      const auto rank = [&](int i) {
+        const ElementKind k = elements.kind[std::size_t(i)];
+        return k == ElementKind::Face ? 2 : k == ElementKind::Edge ? 1 : 0;
+      };
       // A pinned element stays while the other of its pair can go.
       const int victim = is_kept(c.i) != is_kept(c.j) ? (is_kept(c.i) ? c.j : c.i)
-                         : i_edge != j_edge          ? (i_edge ? c.i : c.j)
+                         : rank(c.i) != rank(c.j)    ? (rank(c.i) > rank(c.j) ? c.i : c.j)
                          : count[c.j] > count[c.i]   ? c.j
                                                      : c.i;
       remove[victim] = 1;
@@ -105,6 +109,8 @@ ElementAnchor element_anchor(const Pattern& pattern, const Elements& elements, i
   const int source = elements.source[i];
   if (elements.kind[i] == ElementKind::Vertex) {
     anchor.a = source;
+  } else if (elements.kind[i] == ElementKind::Face) {
+    anchor.a = pattern.face_corner[std::size_t(pattern.face_start[std::size_t(source)])];  // a corner carries it
   } else if (source >= 0) {
     anchor.a = pattern.edge_a[source], anchor.b = pattern.edge_b[source];
     anchor.t = design.edge[elements.spec[i]].t;
@@ -152,6 +158,9 @@ Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface,
     for (const Collision& c : collisions) {
       // In a stalled round, pairs of two vertex elements were given vacancies above.
       if (stalled && elements.kind[c.i] == ElementKind::Vertex && elements.kind[c.j] == ElementKind::Vertex) continue;
+      // A face element is carried by its face's corners, which their own springs keep apart: its
+      // pairs are left to the removal below (a contact spring from a corner squeezed the next face).
+      if (elements.kind[c.i] == ElementKind::Face || elements.kind[c.j] == ElementKind::Face) continue;
       const ElementAnchor ai = element_anchor(pattern, elements, c.i, spec);
       const ElementAnchor aj = element_anchor(pattern, elements, c.j, spec);
       const int pj = carrier(aj, -1);

@@ -57,8 +57,8 @@ ElementAnchor element_anchor(const Pattern& pattern, const Elements& elements, i
 using ElementPlacer =
     std::function<Elements(const std::vector<glm::dvec2>& points, const std::vector<std::uint32_t>& stray_count)>;
 
-// The last resort: removes one element of every pair that still collides (an edge element before
-// the vertex element it touches, else the one in more pairs) until none does. Elements flagged in
+// The last resort: removes one element of every pair that still collides (a face element before an
+// edge element, and that before the vertex element it touches, else the one in more pairs) until none does. Elements flagged in
 // `kept` (#elements, the designer's pinned ones) go only when both of a pair are flagged; the flags
 // are erased along with their elements.
 struct Removal {

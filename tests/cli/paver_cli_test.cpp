@@ -18,6 +18,7 @@
 #include <fstream>
 #include <map>
 #include <optional>
+#include <random>
 #include <sstream>
 #include <set>
 #include <string>
@@ -87,7 +88,7 @@ std::vector<Placement> read_placements(const fs::path& path) {
     const auto id = parse_double(fields[0]);
     EXPECT_TRUE(id && *id == std::floor(*id)) << where;
     row.id = id ? long(*id) : -1;
-    EXPECT_TRUE(fields[1] == "V" || fields[1] == "E" || fields[1] == "B") << where;
+    EXPECT_TRUE(fields[1] == "V" || fields[1] == "E" || fields[1] == "F" || fields[1] == "B") << where;
     row.kind = fields[1].empty() ? '?' : fields[1][0];
     std::array<double, 9> numbers{};
     for (size_t k = 0; k < numbers.size(); ++k) {
@@ -1952,6 +1953,213 @@ TEST_F(PaverRun, PngPreviewsAreWritten) {
   EXPECT_NE(html.find("src=\"data:image/png;base64,iVBORw0KGgo"), std::string::npos);
   EXPECT_GT(html.size(), read_file_text(out / "preview.png").size());
   EXPECT_TRUE(leftover_temporaries(out).empty());
+}
+
+// --- pentagonal and drawn tessellations, F-elements (issue 46) ---
+
+// The boundary vertices of an OBJ (edges on one triangle only), read here, apart from the engine.
+std::vector<std::array<double, 3>> obj_boundary_points(const fs::path& path) {
+  std::vector<std::array<double, 3>> vertices;
+  std::map<std::pair<int, int>, int> uses;
+  std::istringstream in(read_file_text(path));
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream words(line);
+    std::string tag;
+    words >> tag;
+    if (tag == "v") {
+      std::array<double, 3> v{};
+      words >> v[0] >> v[1] >> v[2];
+      vertices.push_back(v);
+    } else if (tag == "f") {
+      std::vector<int> corners;
+      for (std::string c; words >> c;) corners.push_back(std::stoi(c.substr(0, c.find('/'))) - 1);
+      for (size_t k = 0; k < corners.size(); ++k) ++uses[std::minmax(corners[k], corners[(k + 1) % corners.size()])];
+    }
+  }
+  std::set<int> rim;
+  for (const auto& [edge, n] : uses)
+    if (n == 1) rim.insert(edge.first), rim.insert(edge.second);
+  std::vector<std::array<double, 3>> points;
+  for (int v : rim) points.push_back(vertices[std::size_t(v)]);
+  return points;
+}
+
+double distance3(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+// A scan as a scanner writes it, made here: a gently domed patch 60 x 40 mm sampled on a jittered
+// grid, each quad split along a random diagonal, every height with 20 um of noise.
+fs::path write_scanned_patch(const fs::path& folder) {
+  const fs::path path = folder / "scanned_patch.obj";
+  std::ofstream obj(path);
+  std::mt19937 random(46);
+  std::uniform_real_distribution<double> jitter(-0.3, 0.3), noise(-0.02, 0.02);
+  constexpr int nx = 90, ny = 60;
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i) {
+      const bool rim = i == 0 || j == 0 || i == nx || j == ny;
+      const double x = 60.0 * (i + (rim ? 0 : jitter(random))) / nx, y = 40.0 * (j + (rim ? 0 : jitter(random))) / ny;
+      const double z = 8 * std::exp(-((x - 30) * (x - 30) + (y - 20) * (y - 20)) / 900) + noise(random);
+      obj << "v " << x << ' ' << y << ' ' << z << '\n';
+    }
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const int a = j * (nx + 1) + i + 1, b = a + 1, c = a + nx + 2, d = a + nx + 1;
+      if (random() % 2)
+        obj << "f " << a << ' ' << b << ' ' << c << "\nf " << a << ' ' << c << ' ' << d << '\n';
+      else
+        obj << "f " << a << ' ' << b << ' ' << d << "\nf " << b << ' ' << c << ' ' << d << '\n';
+    }
+  return path;
+}
+
+// `paver run SURFACE --pattern cairo` on a scan and on a band: no contact violation, and judged as
+// the eye does, from placements.csv alone: each stone well inside the rims touches its neighbours
+// along the pattern's edges (nearer than 1.2 D; stones not joined are sqrt 2 D apart), and two
+// thirds of them have three such neighbours, one third four, within 10%.
+TEST_F(PaverRun, CairoPatternsAScanAndABandWithItsThreeAndFourValentVertices) {
+  const std::string scan = write_scanned_patch(dir()).string();
+  for (const std::string& surface : {scan, std::string("assets/surfaces/ring_band.obj")}) {
+    SCOPED_TRACE(surface);
+    const fs::path out = dir() / fs::path(surface).stem();
+    const CliResult r = paver({"run", surface, "--pattern", "cairo", "--quiet", "--formats", "ply", "--out", out.string()});
+    ASSERT_EQ(r.exit_code, 0) << describe(r);
+    const json report = read_json(out / "report.json");
+    EXPECT_EQ(report["quality_after"]["contact_violations"].get<long>(), 0);
+    EXPECT_EQ(report["design"]["tessellation"], "cairo");
+    std::vector<Placement> stones;
+    for (const Placement& row : read_placements(out / "placements.csv"))
+      if (row.kind == 'V') stones.push_back(row);
+    ASSERT_GT(stones.size(), 300u);
+    // D from the stones themselves: the median nearest-neighbour distance.
+    std::vector<double> nearest;
+    for (const Placement& a : stones) {
+      double best = 1e300;
+      for (const Placement& b : stones)
+        if (&a != &b) best = std::min(best, distance3(a.p, b.p));
+      nearest.push_back(best);
+    }
+    std::nth_element(nearest.begin(), nearest.begin() + long(nearest.size() / 2), nearest.end());
+    const double d = nearest[nearest.size() / 2];
+    const std::vector<std::array<double, 3>> rim = obj_boundary_points(kSource / surface);
+    ASSERT_GT(rim.size(), 50u) << "the rims read from the OBJ";
+    std::map<int, int> valences;
+    int interior = 0;
+    for (const Placement& a : stones) {
+      double to_rim = 1e300;
+      for (const auto& q : rim) to_rim = std::min(to_rim, distance3(a.p, q));
+      if (to_rim < 3 * d) continue;
+      ++interior;
+      int n = 0;
+      for (const Placement& b : stones) n += &a != &b && distance3(a.p, b.p) < 1.2 * d;
+      ++valences[n];
+    }
+    ASSERT_GT(interior, 100);
+    const double three = double(valences[3]) / interior, four = double(valences[4]) / interior;
+    std::string histogram;
+    for (const auto& [valence, n] : valences) histogram += " " + std::to_string(valence) + ":" + std::to_string(n);
+    SCOPED_TRACE("valences of " + std::to_string(interior) + " interior stones:" + histogram);
+    EXPECT_NEAR(three, 2.0 / 3, 0.1 * 2.0 / 3) << "3-valent share; 4-valent " << four;
+    EXPECT_NEAR(four, 1.0 / 3, 0.1 * 1.0 / 3) << "4-valent share; 3-valent " << three;
+  }
+  // The prismatic tiling paves the band with no contact either, and is judged ok.
+  const fs::path prismatic = dir() / "prismatic";
+  const CliResult r = paver({"run", "assets/surfaces/ring_band.obj", "--pattern", "prismatic", "--quiet", "--formats",
+                             "ply", "--out", prismatic.string()});
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  EXPECT_EQ(read_json(prismatic / "report.json")["quality_after"]["contact_violations"].get<long>(), 0);
+}
+
+// An irregular cell from a design file paves with no contact; one whose edges cross is refused
+// before anything is written, naming the edges.
+TEST_F(PaverRun, ADrawnCellFromADesignFilePavesAndACrossedOneIsRefused) {
+  json design = {{"version", 6},
+                 {"pattern",
+                  {{"tessellation", "cell"},
+                   {"spacing", 6},
+                   {"cell",
+                    {{"a1", {1.1, 0}},
+                     {"a2", {0.2, 1.0}},
+                     {"vertices", json::array({{{"at", {0, 0}}}, {{"at", {0.55, 0.45}}}})},
+                     {"edges", json::array({{{"from", 0}, {"to", 0}, {"offset", {1, 0}}},
+                                            {{"from", 0}, {"to", 0}, {"offset", {0, 1}}},
+                                            {{"from", 1}, {"to", 0}, {"offset", {0, 0}}},
+                                            {{"from", 1}, {"to", 0}, {"offset", {1, 0}}},
+                                            {{"from", 1}, {"to", 0}, {"offset", {0, 1}}},
+                                            {{"from", 1}, {"to", 0}, {"offset", {1, 1}}}})}}}}},
+                 {"elements", {{"vertex", {{"scale", 0.6}}}}}};
+  const fs::path file = dir() / "drawn.json";
+  write_file_text(file, design.dump(2));
+  const fs::path out = dir() / "out";
+  const CliResult r = paver({"run", "assets/surfaces/dome.obj", "--design", file.string(), "--quiet", "--formats", "ply",
+                             "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const json report = read_json(out / "report.json");
+  EXPECT_EQ(report["quality_after"]["contact_violations"].get<long>(), 0);
+  EXPECT_EQ(report["design"]["tessellation"], "cell");
+  EXPECT_GT(report["elements"]["vertex"].get<long>(), 300);
+  EXPECT_EQ(read_json(out / "design.json")["pattern"]["cell"]["vertices"][1]["at"], json::array({0.55, 0.45}));
+
+  design["pattern"]["cell"]["edges"].push_back({{"from", 0}, {"to", 0}, {"offset", {1, 1}}});
+  write_file_text(file, design.dump(2));
+  const fs::path bad = dir() / "bad";
+  expect_input_error(paver({"run", "assets/surfaces/dome.obj", "--design", file.string(), "--out", bad.string()}), bad,
+                     {"pattern.cell: edges[", "cross or overlap"});
+}
+
+// F-elements: kind F rows, one per face of the trimmed pattern, on a flat square and on the dome
+// (whose map squeezes its faces by up to 8%: a Cairo face has room for 0.39 D), 0 contact violations
+// among all kinds, counted in the report, the summary and the bill.
+TEST_F(PaverRun, FaceElementsSitInEveryFaceOfThePattern) {
+  const fs::path square = dir() / "square.obj";
+  {
+    std::ofstream obj(square);
+    constexpr int n = 40;
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) obj << "v " << 100.0 * i / n << ' ' << 100.0 * j / n << " 0\n";
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const int a = j * (n + 1) + i + 1, b = a + 1, c = a + n + 2, d = a + n + 1;
+        obj << "f " << a << ' ' << b << ' ' << c << "\nf " << a << ' ' << c << ' ' << d << '\n';
+      }
+  }
+  for (const std::string& surface : {square.string(), std::string("assets/surfaces/dome.obj")}) {
+    SCOPED_TRACE(surface);
+    const fs::path out = dir() / fs::path(surface).stem();
+    const CliResult r = paver({"run", surface, "--pattern", "cairo", "--face-elements", "--face-scale", "0.25",
+                               "--formats", "ply", "--out", out.string()});
+    ASSERT_EQ(r.exit_code, 0) << describe(r);
+    const json report = read_json(out / "report.json");
+    const long faces = report["pattern"]["faces"].get<long>();
+    ASSERT_GT(faces, 300);
+    long f_rows = 0;
+    std::set<long> ids;
+    double face_diameter = 0;
+    for (const Placement& row : read_placements(out / "placements.csv")) {
+      EXPECT_TRUE(ids.insert(row.id).second) << "id " << row.id << " twice";
+      if (row.kind == 'F') ++f_rows, face_diameter = row.diameter;
+    }
+    EXPECT_EQ(f_rows, report["elements"]["face"].get<long>());
+    EXPECT_EQ(f_rows, faces) << "every face keeps its F-element";
+    EXPECT_EQ(report["quality_after"]["contact_violations"].get<long>(), 0);
+    EXPECT_NE(r.out.find(" F in " + std::to_string(faces) + " faces"), std::string::npos) << describe(r);
+    const double spacing = report["design"]["spacing"].get<double>();
+    EXPECT_NEAR(face_diameter, 0.25 * spacing, 1e-9 * spacing);
+    char bill_row[64];
+    std::snprintf(bill_row, sizeof bill_row, "\nsphere,%g,%ld,", std::round(face_diameter * 1000) / 1000, f_rows);
+    EXPECT_NE(read_file_text(out / "stones.csv").find(bill_row), std::string::npos)
+        << bill_row << "\n" << read_file_text(out / "stones.csv");
+  }
+  // Too large for its faces: refused before anything is written, naming both elements.
+  const fs::path bad = dir() / "bad";
+  expect_input_error(paver({"run", square.string(), "--pattern", "cairo", "--face-elements", "--face-scale", "0.45",
+                            "--out", bad.string()}),
+                     bad, {"the F-element in cell face", "overlap"});
+  // The grown pattern has no faces: refused by name, and auto keeps the lattice.
+  expect_input_error(paver({"run", square.string(), "--pattern", "tri", "--face-elements", "--face-scale", "0.1",
+                            "--topology", "adaptive", "--out", bad.string()}),
+                     bad, {"F-elements sit in the lattice's faces"});
 }
 
 }  // namespace

@@ -33,6 +33,25 @@ TEST(DesignEdits, ANewTessellationDropsWhatNamedTheOldCellsEdges) {
   EXPECT_TRUE(grid.elements.edge[0].cell_edges.empty());
 }
 
+// A drawn cell starts as the cell on screen, its operators made part of it, and is a valid cell.
+TEST(DesignEdits, ADrawnCellStartsAsTheCellShownWithItsOperators) {
+  Design d;
+  d.pattern.tessellation = Tessellation::Grid;
+  d.pattern.operators.push_back(op(EdgeOperator::Kind::Add, 0, 0, {1, 1}));  // a grid with diagonals
+  const Design drawn = with_tessellation(d, Tessellation::Custom);
+  EXPECT_EQ(drawn.pattern.tessellation, Tessellation::Custom);
+  EXPECT_TRUE(drawn.pattern.operators.empty());
+  ASSERT_EQ(drawn.pattern.cell.vertices.size(), 1u);
+  EXPECT_EQ(drawn.pattern.cell.edges.size(), 3u) << "the grid's two edges and the added diagonal";
+  const UnitCell cell = design_cell_shape(drawn.pattern);
+  EXPECT_EQ(cell_faces(cell).size(), 2u) << "two triangles, as the grid with its diagonal had";
+  // Back to the grid and to the drawn cell again: the drawing is kept, not redrawn.
+  Design edited = drawn;
+  edited.pattern.cell.vertices[0].at = {0.25, 0.5};
+  const Design again = with_tessellation(with_tessellation(edited, Tessellation::Grid), Tessellation::Custom);
+  EXPECT_EQ(again.pattern.cell.vertices[0].at, glm::dvec2(0.25, 0.5));
+}
+
 TEST(DesignEdits, OperatorsAreAddedOnlyWhenTheCellTakesThem) {
   Design d;
   d.pattern.tessellation = Tessellation::Triangle;

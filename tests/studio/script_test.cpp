@@ -79,7 +79,7 @@ TEST(Script, SetKeepsTheWholeValue) {
 TEST(Script, ErrorsNameTheLineAndTheFix) {
   EXPECT_EQ(error_of("undo\nfrobnicate\n").rfind("s.txt:2: unknown command 'frobnicate'", 0), 0u)
       << error_of("undo\nfrobnicate\n");
-  EXPECT_NE(error_of("pattern penrose").find("use tri, grid or hex"), std::string::npos);
+  EXPECT_NE(error_of("pattern penrose").find("use tri, grid, hex, cairo, prismatic or cell"), std::string::npos);
   EXPECT_NE(error_of("spacing -1").find("finite number >= 0"), std::string::npos);
   EXPECT_NE(error_of("spacing 6mm").find("finite number >= 0"), std::string::npos);
   EXPECT_NE(error_of("set solver.dt").find("needs a value"), std::string::npos);

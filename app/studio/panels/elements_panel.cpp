@@ -226,6 +226,15 @@ void elements_panel(Document& doc, UiState& ui) {
     change_design(doc, d);
   }
 
+  section("F-elements (in the pattern's faces)");
+  if (ImGui::Checkbox("enabled##face", &d.elements.face.enabled)) change_design(doc, d);
+  help_marker("One element at the centre of every face of the pattern (the mean of its corners), carried by "
+              "them as the pattern is optimized; a face the map squeezes too much for it loses it.");
+  fraction_slider(doc, d, "s##face", d.elements.face.scale, 0.05, 1.0);
+  help_marker("Diameter = s * D; s in (0, 1]. A triangle's centre is 0.577 D from its corners, a Cairo "
+              "pentagon's 0.694 D: with V-elements of s = 1, s here is at most 0.15 and 0.39.");
+  if (shape_combo("shape##face", d.elements.face.shape)) change_design(doc, d);
+
   section("Custom shape");
   if (ui.custom_shape_path.empty()) ui.custom_shape_path = d.elements.custom_shape;
   ImGui::InputText("shape file", &ui.custom_shape_path);

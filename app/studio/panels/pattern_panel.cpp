@@ -8,10 +8,12 @@
 #include "../studio.h"
 
 #include "core/input_error.h"
+#include "elements/elements.h"
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -120,6 +122,18 @@ void unit_cell_editor(Document& doc, UiState& ui) {
                               : central ? IM_COL32(250, 250, 250, 255) : IM_COL32(170, 170, 170, 160));
         if (central) draw->AddText(im(p + glm::vec2(5, 2)), IM_COL32(200, 200, 220, 255), std::to_string(v).c_str());
       }
+  // F-elements: a dot at each face's centre, where the pattern's will sit, in their colour.
+  if (doc.design.elements.face.enabled) {
+    const std::array<std::uint8_t, 3> c = kind_colour(ElementKind::Face);
+    const std::vector<CellFace> faces = cell_faces(cell);
+    for (int i = -kRange; i <= kRange; ++i)
+      for (int j = -kRange; j <= kRange; ++j)
+        for (const CellFace& face : faces) {
+          const bool central = i == 0 && j == 0;
+          draw->AddCircleFilled(im(to_screen(face_centre(cell, face, {i, j}))), central ? 4.0f : 2.5f,
+                                IM_COL32(c[0], c[1], c[2], central ? 255 : 140));
+        }
+  }
   draw->PopClipRect();
 
   if (!clicked) return;
@@ -192,12 +206,16 @@ void placement_section(Document& doc, Design& d) {
 void pattern_panel(Document& doc, UiState& ui) {
   Design d = doc.design;
   Tessellation tessellation = d.pattern.tessellation;
-  if (enum_combo("tessellation", tessellation, {"triangles (tri)", "squares (grid)", "hexagons (hex)"})) {
+  if (enum_combo("tessellation", tessellation,
+                 {"triangles (tri)", "squares (grid)", "hexagons (hex)", "Cairo pentagons (cairo)",
+                  "prismatic pentagons (prismatic)", "drawn cell (cell)"})) {
     change_design(doc, with_tessellation(d, tessellation));
     ui.add_from_vertex = -1;
   }
-  help_marker("The regular tessellation of section 4.1. Changing it clears the edge operators and the "
-              "E-elements' cell edges, which name the old cell's edges.");
+  help_marker("The tessellation: the paper's three (section 4.1), two pentagonal ones, or a drawn cell, which "
+              "starts as the cell shown before (operators applied) and is then edited by adding and removing "
+              "edges. Changing it clears the edge operators and the E-elements' cell edges, which name the old "
+              "cell's edges.");
 
   // Typing 0.5 must not pave at 0 first (nor ask about it): the value applies when the field lets go.
   if (typed_number("D (spacing)", d.pattern.spacing)) change_design(doc, d);

@@ -122,7 +122,8 @@ void report_panel(const Studio& s) {
   ImGui::Text("contact: %s", count_text(p.after.contact_violations, "violation", "violations").c_str());
   const std::string unit(enum_name(p.design.units));
   ImGui::Text("closest pair: %.3g %s free (gap %.3g)", p.after.min_clearance, unit.c_str(), p.design.elements.gap);
-  ImGui::Text("%zu elements: %ld V, %ld E", p.elements.size(), p.after.vertex_elements, p.after.edge_elements);
+  ImGui::Text("%zu elements: %ld V, %ld E, %ld F", p.elements.size(), p.after.vertex_elements, p.after.edge_elements,
+              p.after.face_elements);
   ImGui::Text("%d filled, %d eliminated at the boundary", p.filled, p.eliminated);
   ImGui::Text("pattern: %d points, %d edges; D = %.4g", p.pattern.point_count(), p.pattern.edge_count(),
               p.design.pattern.spacing);

@@ -41,6 +41,11 @@ Design non_default_design() {
   d.elements.edge.push_back({0.25, 0.4, ShapeKind::HexPrism, {0, 2}});
   d.elements.edge.push_back({1.0 / 7.0, 1, ShapeKind::Custom, {}});
   d.elements.edge.push_back({0, 0.125, ShapeKind::Disc, {1}});
+  d.elements.face = {true, 0.3 / 7, ShapeKind::Disc};
+  // A drawn cell is kept while another tessellation is chosen (the studio keeps it to go back to).
+  d.pattern.cell.a1 = {1.0 / 3, 0.1}, d.pattern.cell.a2 = {-0.2, 2.0 / 3};
+  d.pattern.cell.vertices = {{{0, 0}}, {{0.1 / 3, 0.25}}};
+  d.pattern.cell.edges = {{0, 1, {0, 0}, false}, {1, 0, {1, -2}, true}};
   d.elements.custom_shape = "/shapes/star.obj";
   d.elements.allow_overlap = true;
   d.elements.gap = 0.1 / 3;
@@ -104,6 +109,19 @@ void expect_same(const Design& a, const Design& b) {
     EXPECT_EQ(x.scale, y.scale);
     EXPECT_EQ(x.shape, y.shape);
     EXPECT_EQ(x.cell_edges, y.cell_edges);
+  }
+  EXPECT_EQ(a.elements.face.enabled, b.elements.face.enabled);
+  EXPECT_EQ(a.elements.face.scale, b.elements.face.scale);
+  EXPECT_EQ(a.elements.face.shape, b.elements.face.shape);
+  EXPECT_EQ(a.pattern.cell.a1, b.pattern.cell.a1);
+  EXPECT_EQ(a.pattern.cell.a2, b.pattern.cell.a2);
+  ASSERT_EQ(a.pattern.cell.vertices.size(), b.pattern.cell.vertices.size());
+  for (size_t i = 0; i < a.pattern.cell.vertices.size(); ++i)
+    EXPECT_EQ(a.pattern.cell.vertices[i].at, b.pattern.cell.vertices[i].at) << "cell vertex " << i;
+  ASSERT_EQ(a.pattern.cell.edges.size(), b.pattern.cell.edges.size());
+  for (size_t i = 0; i < a.pattern.cell.edges.size(); ++i) {
+    const CellEdgeDesign &x = a.pattern.cell.edges[i], &y = b.pattern.cell.edges[i];
+    EXPECT_TRUE(x.from == y.from && x.to == y.to && x.offset == y.offset && x.is_virtual == y.is_virtual) << "cell edge " << i;
   }
   EXPECT_EQ(a.elements.custom_shape, b.elements.custom_shape);
   EXPECT_EQ(a.elements.allow_overlap, b.elements.allow_overlap);
@@ -177,11 +195,15 @@ TEST(DesignIo, RoundTripKeepsEveryField) {
 TEST(DesignIo, WritesEveryKey) {
   const json j = design_to_json(Design{});
   EXPECT_EQ(j.at("version"), Design::kVersion);
-  EXPECT_EQ(Design::kVersion, 5);
+  EXPECT_EQ(Design::kVersion, 6);
   EXPECT_EQ(j.at("units"), "mm");
-  EXPECT_EQ(j.at("pattern").size(), 5u);
+  EXPECT_EQ(j.at("pattern").size(), 6u);
+  EXPECT_EQ(j.at("pattern").at("cell").at("a1"), json::array({1.0, 0.0}));
+  EXPECT_EQ(j.at("pattern").at("cell").at("vertices"), json::array());
   EXPECT_EQ(j.at("pattern").at("topology"), "auto");
-  EXPECT_EQ(j.at("elements").size(), 11u);
+  EXPECT_EQ(j.at("elements").size(), 12u);
+  EXPECT_EQ(j.at("elements").at("face").at("enabled"), false);
+  EXPECT_EQ(j.at("elements").at("face").at("scale"), 0.5);
   EXPECT_EQ(j.at("elements").at("grade").size(), 3u);
   EXPECT_EQ(j.at("elements").at("grade").at("by"), "none");
   EXPECT_EQ(j.at("elements").at("close_spots"), false);
@@ -308,7 +330,8 @@ TEST(DesignIo, PairsNeedTwoEntries) {
 
 TEST(DesignIo, NamesMustBeKnown) {
   const std::string message = json_error(R"({"version": 1, "pattern": {"tessellation": "pentagon"}})");
-  EXPECT_TRUE(contains(message, "'pattern.tessellation' must be one of \"tri\", \"grid\", \"hex\", got \"pentagon\""));
+  EXPECT_TRUE(contains(message, "'pattern.tessellation' must be one of \"tri\", \"grid\", \"hex\", \"cairo\", \"prismatic\", \"cell\", got "
+                       "\"pentagon\""));
   // The command line's long names are read as well (written back short).
   EXPECT_EQ(design_from_json(json::parse(R"({"version": 2, "pattern": {"tessellation": "hexagon"}})"), "d.json")
                 .pattern.tessellation,
@@ -324,9 +347,9 @@ TEST(DesignIo, NamesMustBeKnown) {
 
 TEST(DesignIo, VersionIsRequiredAndOneThisBuildReads) {
   EXPECT_TRUE(contains(json_error(R"({"pattern": {}})"), "d.json: missing key 'version'"));
-  const std::string newer = json_error(R"({"version": 6, "future_key": 1})");
-  EXPECT_TRUE(contains(newer, "'version' is 6"));
-  EXPECT_TRUE(contains(newer, "reads versions 1 to 5"));
+  const std::string newer = json_error(R"({"version": 7, "future_key": 1})");
+  EXPECT_TRUE(contains(newer, "'version' is 7"));
+  EXPECT_TRUE(contains(newer, "reads versions 1 to 6"));
   EXPECT_TRUE(contains(json_error(R"({"version": 0})"), "'version' is 0"));
   EXPECT_TRUE(contains(json_error(R"({"version": "1"})"), "'version' must be an integer, got string"));
 }
@@ -560,7 +583,7 @@ TEST_F(DesignIoFile, SaveThenLoadGivesTheSameDesign) {
 
   // Pretty-printed, 2-space indent, version first, trailing newline.
   const std::string text = read(path);
-  EXPECT_EQ(text.rfind("{\n  \"version\": 5,\n  \"units\": \"in\",\n  \"pattern\": {\n    \"tessellation\": \"grid\"", 0), 0u)
+  EXPECT_EQ(text.rfind("{\n  \"version\": 6,\n  \"units\": \"in\",\n  \"pattern\": {\n    \"tessellation\": \"grid\"", 0), 0u)
       << text;
   EXPECT_EQ(text.back(), '\n');
 

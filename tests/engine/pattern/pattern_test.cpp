@@ -409,5 +409,55 @@ TEST(PatternDome, AbsurdSpacingIsRefusedWithASpacingThatWorks) {
   }
 }
 
+// F-elements' faces: every face listed has its corners joined by the pattern's edges, none twice,
+// and every point away from the rim lies in as many faces as it has edges (a vertex of degree d
+// meets d faces), so no face inside the map is missing.
+TEST(PatternFaces, EveryFaceInsideTheMapIsListedOnceWithItsCornersJoined) {
+  const SurfaceMap& map = test::flat_unit_square();
+  const std::vector<glm::dvec2> polygon = boundary_polygon(map);
+  for (const Tessellation t : {Tessellation::Cairo, Tessellation::Prismatic, Tessellation::Triangle, Tessellation::Hexagon}) {
+    SCOPED_TRACE(std::string(enum_name(t)));
+    const UnitCell cell = make_unit_cell(t, 0.05);
+    const Pattern without = build_pattern(map, cell, {});
+    EXPECT_EQ(without.face_count(), 0) << "faces only when asked";
+    const Pattern p = build_pattern(map, cell, {}, true);
+    ASSERT_GT(p.face_count(), 100);
+    std::set<std::pair<int, int>> joined;
+    std::vector<int> degree(std::size_t(p.point_count()), 0);
+    for (int e = 0; e < p.edge_count(); ++e)
+      if (!p.edge_virtual[e]) {
+        joined.insert(std::minmax(p.edge_a[e], p.edge_b[e]));
+        ++degree[std::size_t(p.edge_a[e])], ++degree[std::size_t(p.edge_b[e])];
+      }
+    std::set<std::vector<int>> seen;
+    std::vector<int> faces_at(std::size_t(p.point_count()), 0);
+    for (int f = 0; f < p.face_count(); ++f) {
+      std::vector<int> corners(p.face_corner.begin() + p.face_start[f], p.face_corner.begin() + p.face_start[f + 1]);
+      ASSERT_EQ(corners.size(), cell_faces(cell).front().size());
+      for (size_t k = 0; k < corners.size(); ++k) {
+        EXPECT_TRUE(joined.count(std::minmax(corners[k], corners[(k + 1) % corners.size()])))
+            << "face " << f << " side " << k;
+        ++faces_at[std::size_t(corners[k])];
+      }
+      std::sort(corners.begin(), corners.end());
+      EXPECT_TRUE(seen.insert(corners).second) << "face " << f << " listed twice";
+    }
+    int interior = 0;
+    for (int i = 0; i < p.point_count(); ++i) {
+      const glm::dvec2 q = p.points[std::size_t(i)];
+      double rim = 1e300;  // distance to the boundary polygon
+      for (size_t a = 0, b = polygon.size() - 1; a < polygon.size(); b = a++) {
+        const glm::dvec2 ab = polygon[a] - polygon[b];
+        const double t = std::clamp(glm::dot(q - polygon[b], ab) / glm::dot(ab, ab), 0.0, 1.0);
+        rim = std::min(rim, glm::length(q - (polygon[b] + t * ab)));
+      }
+      if (rim < 0.3) continue;  // two Cairo cells' reach
+      ++interior;
+      EXPECT_EQ(faces_at[std::size_t(i)], degree[std::size_t(i)]) << "point " << i;
+    }
+    EXPECT_GE(interior, 40);
+  }
+}
+
 }  // namespace
 }  // namespace paver

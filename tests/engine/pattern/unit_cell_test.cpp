@@ -10,6 +10,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <numbers>
@@ -398,6 +399,122 @@ TEST(UnitCellBracing, TrianglesNeedNone) {
   apply_operator(split, op(EdgeOperator::Kind::Add, 0, 0, {1, 1}));
   add_bracing_edges(split);
   EXPECT_EQ(split.edges.size(), 3u);
+}
+
+}  // namespace
+}  // namespace paver
+
+// --- pentagonal tessellations and drawn cells (the paper's section 7) ---
+
+namespace paver {
+namespace {
+
+struct PentagonalCase {
+  Tessellation tessellation;
+  int vertices, edges, four_valent, faces;
+  double nearest_not_joined;  // the nearest two vertices not joined by an edge, over D
+  double first_edge;          // edge 0 over D (a prismatic house's base); every other edge is D
+};
+
+class PentagonalCell : public ::testing::TestWithParam<PentagonalCase> {};
+
+TEST_P(PentagonalCell, EdgesAreDAndEveryFaceAConvexPentagonWithOneThirdOfTheVerticesFourValent) {
+  const PentagonalCase c = GetParam();
+  const UnitCell cell = make_unit_cell(c.tessellation, kD);
+  ASSERT_EQ(int(cell.vertices.size()), c.vertices);
+  ASSERT_EQ(int(cell.edges.size()), c.edges);
+  for (size_t e = 0; e < cell.edges.size(); ++e)
+    EXPECT_NEAR(cell.edges[e].rest_length, (e == 0 ? c.first_edge : 1.0) * kD, 1e-12 * kD) << describe_edge(cell.edges[e]);
+  int four = 0, three = 0;
+  for (int d : degrees(cell)) four += d == 4, three += d == 3;
+  EXPECT_EQ(four, c.four_valent);
+  EXPECT_EQ(three, c.vertices - c.four_valent) << "every other vertex is 3-valent";
+  EXPECT_EQ(3 * four, c.vertices) << "one third 4-valent";
+  const std::vector<CellFace> faces = cell_faces(cell);
+  ASSERT_EQ(int(faces.size()), c.faces);
+  for (const CellFace& face : faces) {
+    EXPECT_EQ(face.size(), 5u);
+    // Convex: every corner turns left.
+    for (size_t i = 0; i < face.size(); ++i) {
+      const glm::dvec2 a = cell.position(face[i].vertex, face[i].cell);
+      const glm::dvec2 b = cell.position(face[(i + 1) % 5].vertex, face[(i + 1) % 5].cell);
+      const glm::dvec2 d = cell.position(face[(i + 2) % 5].vertex, face[(i + 2) % 5].cell);
+      EXPECT_GT((b - a).x * (d - b).y - (b - a).y * (d - b).x, 0) << "corner " << i + 1;
+    }
+  }
+  expect_faces_tile_the_plane(cell, faces);
+  // No two vertices nearer than D; those not joined no nearer than the tiling's own distance.
+  double nearest = 1e300;
+  for (int v = 0; v < c.vertices; ++v)
+    for (int w = 0; w < c.vertices; ++w)
+      for (int i = -2; i <= 2; ++i)
+        for (int j = -2; j <= 2; ++j) {
+          if (v == w && i == 0 && j == 0) continue;
+          if (has_edge(cell, v, w, {i, j})) continue;
+          nearest = std::min(nearest, glm::length(cell.position(w, {i, j}) - cell.vertices[v]));
+        }
+  EXPECT_NEAR(nearest / kD, c.nearest_not_joined, 1e-9);
+}
+
+INSTANTIATE_TEST_SUITE_P(UnitCell, PentagonalCell,
+                         ::testing::Values(PentagonalCase{Tessellation::Cairo, 6, 10, 2, 4, std::sqrt(2.0), 1.0},
+                                           PentagonalCase{Tessellation::Prismatic, 3, 5, 1, 2, kPrismaticBase,
+                                                          kPrismaticBase}),
+                         [](const auto& info) { return std::string(enum_name(info.param.tessellation)); });
+
+TEST(UnitCell, PentagonalNamesAreRead) {
+  EXPECT_EQ(enum_from_name<Tessellation>("cairo"), Tessellation::Cairo);
+  EXPECT_EQ(enum_from_name<Tessellation>("prismatic"), Tessellation::Prismatic);
+  EXPECT_EQ(enum_from_name<Tessellation>("cell"), Tessellation::Custom);
+  EXPECT_EQ(enum_name(Tessellation::Custom), "cell");
+}
+
+// An irregular triangulated cell: a slanted parallelogram with a vertex inside joined to its corners.
+CellDesign slanted_cell() {
+  CellDesign c;
+  c.a1 = {1.1, 0}, c.a2 = {0.2, 1.0};
+  c.vertices = {{{0, 0}}, {{0.55, 0.45}}};
+  c.edges = {{0, 0, {1, 0}}, {0, 0, {0, 1}}, {1, 0, {0, 0}}, {1, 0, {1, 0}}, {1, 0, {0, 1}}, {1, 0, {1, 1}}};
+  return c;
+}
+
+TEST(DrawnCell, AnIrregularCellKeepsItsGeometryAtDAndTilesThePlane) {
+  const UnitCell cell = make_drawn_cell(slanted_cell(), kD);
+  EXPECT_EQ(cell.tessellation, Tessellation::Custom);
+  EXPECT_NEAR(cell.a1.x, 1.1 * kD, 1e-12);
+  EXPECT_NEAR(cell.vertices[1].y, 0.45 * kD, 1e-12);
+  EXPECT_NEAR(cell.edges[3].rest_length, std::hypot(0.55, 0.45) * kD, 1e-12);
+  EXPECT_NEAR(cell.edges[5].rest_length, std::hypot(0.75, 0.55) * kD, 1e-12);
+  const std::vector<CellFace> faces = cell_faces(cell);
+  ASSERT_EQ(faces.size(), 4u);
+  for (const CellFace& face : faces) EXPECT_EQ(face.size(), 3u);
+  expect_faces_tile_the_plane(cell, faces);
+  EXPECT_NEAR(face_centre(cell, faces[0]).x, face_centre(cell, faces[0], {1, 0}).x - cell.a1.x, 1e-12);
+}
+
+TEST(DrawnCell, WhatIsNotATessellationIsRefusedNamingTheVertexOrEdge) {
+  const auto refusal = [](const std::function<void(CellDesign&)>& change) {
+    CellDesign c = slanted_cell();
+    change(c);
+    return error_of([&] { make_drawn_cell(c, kD); });
+  };
+  EXPECT_TRUE(Contains(refusal([](CellDesign& c) { std::swap(c.a1, c.a2); }), "counter-clockwise"));
+  EXPECT_TRUE(Contains(refusal([](CellDesign& c) { c.a2 = {2.2, 0}; }), "span the plane"));
+  EXPECT_TRUE(Contains(refusal([](CellDesign& c) { c.vertices.clear(); }), "no vertex"));
+  EXPECT_TRUE(Contains(refusal([](CellDesign& c) { c.vertices[1].at = {1.1, 0}; }), "vertices[0] and vertices[1] of the cell (-1,0) are at one place"));
+  EXPECT_TRUE(Contains(refusal([](CellDesign& c) { c.edges.push_back({0, 1, {0, 0}}); }), "given twice"));
+  EXPECT_TRUE(Contains(refusal([](CellDesign& c) { c.edges[2].to = 5; }), "edges[2] 1->5 @ (0,0): the cell has vertices 0..1"));
+  EXPECT_TRUE(Contains(refusal([](CellDesign& c) { c.edges.push_back({0, 0, {1, 1}}); }), "cross or overlap"));
+  EXPECT_TRUE(Contains(refusal([](CellDesign& c) { c.edges.resize(2); }), "vertices[1] is on 0 edge(s)"));
+  // Strips: only the edges along a1 and the vertex hanging between two of them.
+  EXPECT_TRUE(Contains(refusal([](CellDesign& c) { c.edges = {{0, 0, {1, 0}}, {1, 0, {0, 0}}, {1, 0, {1, 0}}}; }), "the pattern is strips"));
+}
+
+TEST(DrawnCell, TheSmallestAngleBetweenEdgesIsMeasured) {
+  EXPECT_NEAR(smallest_edge_angle(make_unit_cell(Tessellation::Triangle, kD)), std::numbers::pi / 3, 1e-12);
+  EXPECT_NEAR(smallest_edge_angle(make_unit_cell(Tessellation::Hexagon, kD)), 2 * std::numbers::pi / 3, 1e-12);
+  const double cairo = smallest_edge_angle(make_unit_cell(Tessellation::Cairo, kD));
+  EXPECT_NEAR(cairo, std::numbers::pi / 2, 1e-9) << "the square corners at the 4-valent vertices";
 }
 
 }  // namespace
