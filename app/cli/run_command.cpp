@@ -164,6 +164,10 @@ void warn_about_flags(const RunArgs& args, const Design& design, const std::func
       warn(relaid + " lays the pattern out anew under this design's element edits, which name the elements of the "
            "layout they were made on: they may land on other elements (edit again after the change)");
   }
+  // A size for elements that are not there: said, not dropped.
+  if (args.flag(Key::face_scale) && !design.elements.face.enabled)
+    warn(flag_name(Key::face_scale) + " sizes the F-elements, but this design places none: add " +
+         flag_name(Key::face_enabled) + " (or set " + key_path(Key::face_enabled) + ")");
   // A design.json written by a run with --align holds the turn in rotation_deg already.
   if (const KeyFlag* align = args.flag(Key::align);
       align && design.placement.align != AlignAxis::None && design.placement.rotation_deg != 0 && !args.design.empty()) {

@@ -7,13 +7,15 @@ namespace paver::studio {
 Design with_tessellation(Design design, Tessellation tessellation) {
   if (design.pattern.tessellation == tessellation) return design;
   if (tessellation == Tessellation::Custom && design.pattern.cell.vertices.empty()) {
-    // A drawn cell starts as the one on screen, the operators made part of it.
-    const UnitCell shown = design_cell_shape(design.pattern);
+    // A drawn cell starts as the one on screen, the operators made part of it (their virtual
+    // edges too; the bracing is added anew).
+    PatternDesign unbraced = design.pattern;
+    unbraced.bracing = false;
+    const UnitCell shown = design_cell_shape(unbraced);
     CellDesign& drawn = design.pattern.cell;
     drawn.a1 = shown.a1, drawn.a2 = shown.a2;
     for (const glm::dvec2& v : shown.vertices) drawn.vertices.push_back({v});
-    for (const CellEdge& e : shown.edges)
-      if (!e.is_virtual) drawn.edges.push_back({e.from, e.to, e.offset, false});  // bracing is redone
+    for (const CellEdge& e : shown.edges) drawn.edges.push_back({e.from, e.to, e.offset, e.is_virtual});
   }
   design.pattern.tessellation = tessellation;
   design.pattern.operators.clear();

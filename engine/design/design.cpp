@@ -153,9 +153,11 @@ std::optional<std::string> grade_problem(const Design& design) {
   if (design.pattern.tessellation != Tessellation::Triangle)
     return by + ": only a tri pattern's stones are graded yet (its particles are the stones); set " +
            key_path(Key::pattern_tessellation) + " \"tri\"";
-  if (!e.vertex.enabled || !e.edge.empty())
+  if (!e.vertex.enabled || !e.edge.empty() || e.face.enabled)
     return by + ": only vertex elements are graded, alone; " +
-           (e.vertex.enabled ? "remove " + key_path(Key::elements_edge) : "enable " + key_path(Key::vertex_enabled)) +
+           (!e.vertex.enabled  ? "enable " + key_path(Key::vertex_enabled)
+            : e.face.enabled ? "set " + key_path(Key::face_enabled) + " false"
+                             : "remove " + key_path(Key::elements_edge)) +
            " or set " + key_path(Key::grade_by) + " \"none\"";
   if (design.pattern.topology == Topology::Lattice)
     return by + ": the lattice cannot grade its stones (it has one spacing); use " + key_path(Key::pattern_topology) +

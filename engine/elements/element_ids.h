@@ -6,7 +6,8 @@
 //   vertex element of pattern point p ............ p                     (0 <= p < P, the design's points)
 //   edge element on pattern edge e ............... P + e
 //   boundary filling on crossing edge c .......... P + E + c
-//   refill and rim-row elements, in order ........ P + E + C + k         (placed anew by every run)
+//   face element in pattern face f ............... P + E + C + f         (F = 0 faces without F-elements)
+//   refill and rim-row elements, in order ........ P + E + C + F + k     (placed anew by every run)
 //   the designer's added elements ................ their own, from kFirstAddedId (design/element_edits.h)
 //   beads ........................................ after the largest of the above below kFirstAddedId
 // A retired or deleted element's id is not given to another.
@@ -16,7 +17,7 @@
 
 namespace paver {
 
-// The first id of the elements the refill and the rim rows add (P + E + C above).
+// The first id of the elements the refill and the rim rows add (P + E + C + F above).
 int first_refill_id(const Pattern& pattern);
 
 // Names every element of `elements` (placed on `pattern`, whose last points are `added`, in order).

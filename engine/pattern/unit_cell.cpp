@@ -1,6 +1,7 @@
 #include "pattern/unit_cell.h"
 
 #include "core/input_error.h"
+#include "core/number_text.h"
 
 #include <glm/geometric.hpp>
 
@@ -157,6 +158,68 @@ bool segments_meet(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 q0, glm::dvec2 q1, d
   return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0));
 }
 
+// Planar: no two real edges of the cell (of any two cells within `reach`) meet but at a shared end;
+// `unit` is the cell at D = 1, `c` the one named in messages.
+void refuse_crossing_edges(const UnitCell& unit, const UnitCell& c, int reach, double tolerance) {
+  const auto fail = [](const std::string& what) { throw InputError(what); };
+  const std::size_t ne = c.edges.size();
+  for (std::size_t k = 0; k < ne; ++k) {
+    const CellEdge& e = c.edges[k];
+    if (e.is_virtual) continue;
+    const glm::dvec2 p0 = unit.vertices[std::size_t(e.from)], p1 = unit.position(e.to, e.offset);
+    for (std::size_t m = k; m < ne; ++m) {
+      const CellEdge& f = c.edges[m];
+      if (f.is_virtual) continue;
+      for (int i = -reach; i <= reach; ++i)
+        for (int j = -reach; j <= reach; ++j) {
+          if (m == k && i == 0 && j == 0) continue;
+          const glm::dvec2 q0 = unit.position(f.from, {i, j}), q1 = unit.position(f.to, f.offset + glm::ivec2(i, j));
+          if (segments_meet(p0, p1, q0, q1, tolerance))
+            fail("edges[" + std::to_string(k) + "] " + describe_edge(e) + " and edges[" + std::to_string(m) + "] " +
+                 describe_edge(f) + (i || j ? " of the cell (" + std::to_string(i) + "," + std::to_string(j) + ")" : "") +
+                 " cross or overlap: a tessellation's edges meet only at their ends");
+        }
+    }
+  }
+}
+
+// Connected over the plane: every vertex reached from vertex 0, and the loops' lattice steps reach
+// every cell (else the pattern is strips, or copies lying between each other).
+void refuse_disconnected(const UnitCell& c) {
+  const auto fail = [](const std::string& what) { throw InputError(what); };
+  const std::size_t nv = c.vertices.size();
+  std::vector<glm::ivec2> step(nv);
+  std::vector<std::uint8_t> reached(nv, 0);
+  std::vector<int> stack{0};
+  reached[0] = 1;
+  while (!stack.empty()) {
+    const int v = stack.back();
+    stack.pop_back();
+    for (const CellEdge& e : c.edges) {
+      if (e.is_virtual) continue;
+      if (e.from == v && !reached[std::size_t(e.to)]) step[std::size_t(e.to)] = step[std::size_t(v)] + e.offset;
+      else if (e.to == v && !reached[std::size_t(e.from)]) step[std::size_t(e.from)] = step[std::size_t(v)] - e.offset;
+      else continue;
+      const int w = e.from == v ? e.to : e.from;
+      reached[std::size_t(w)] = 1;
+      stack.push_back(w);
+    }
+  }
+  for (std::size_t v = 0; v < nv; ++v)
+    if (!reached[v]) fail("vertices[" + std::to_string(v) + "] is not joined to vertices[0] by edges: the pattern falls apart");
+  std::vector<glm::ivec2> loops;
+  for (const CellEdge& e : c.edges)
+    if (!e.is_virtual) loops.push_back(step[std::size_t(e.from)] + e.offset - step[std::size_t(e.to)]);
+  long index = 0;
+  for (std::size_t a = 0; a < loops.size(); ++a)
+    for (std::size_t b = a + 1; b < loops.size(); ++b)
+      index = std::gcd(index, long(loops[a].x) * loops[b].y - long(loops[a].y) * loops[b].x);
+  if (index == 0) fail("the edges do not join the cells both ways: the pattern is strips (add an edge along the other lattice vector)");
+  if (index != 1)
+    fail("the edges join only one cell in " + std::to_string(index) +
+         ": the pattern is copies lying between each other (join them, or use a smaller cell)");
+}
+
 }  // namespace
 
 UnitCell make_drawn_cell(const CellDesign& design, double spacing) {
@@ -176,19 +239,30 @@ UnitCell make_drawn_cell(const CellDesign& design, double spacing) {
   if (ne > kMaxDrawnCellEdges)
     fail("the cell has " + std::to_string(ne) + " edges; the most is " + std::to_string(kMaxDrawnCellEdges));
   const double tolerance = 1e-6 * std::sqrt(area);
+  // Each vertex is taken into the cell the lattice vectors span (its edges' offsets follow), so that
+  // the lattice laid over a map covers it wherever the designer drew it.
+  std::vector<glm::ivec2> shift(nv);
+  std::vector<glm::dvec2> inside(nv);
   for (std::size_t v = 0; v < nv; ++v) {
     const glm::dvec2 at = design.vertices[v].at;
-    if (!std::isfinite(at.x) || !std::isfinite(at.y)) fail("vertices[" + std::to_string(v) + "] is not finite");
-    c.vertices.push_back(at * spacing);
+    const std::string name = "vertices[" + std::to_string(v) + "]";
+    if (!std::isfinite(at.x) || !std::isfinite(at.y)) fail(name + " is not finite");
+    const glm::dvec2 l((at.x * design.a2.y - at.y * design.a2.x) / area, (design.a1.x * at.y - design.a1.y * at.x) / area);
+    if (!(std::abs(l.x) < kMaxDrawnCellReach && std::abs(l.y) < kMaxDrawnCellReach))
+      fail(name + " is about " + significant_text(std::max(std::abs(l.x), std::abs(l.y))) +
+           " cells from the cell's origin: place it within a cell or two of it (the lattice repeats every cell)");
+    shift[v] = glm::ivec2(int(std::floor(l.x + 1e-9)), int(std::floor(l.y + 1e-9)));
+    inside[v] = at - double(shift[v].x) * design.a1 - double(shift[v].y) * design.a2;
+    c.vertices.push_back(inside[v] * spacing);
   }
   // Two vertices at one place, in this cell or a neighbour's.
   const UnitCell unit = [&] {
     UnitCell u = c;
     u.a1 = design.a1, u.a2 = design.a2, u.spacing = 1;
-    for (std::size_t v = 0; v < nv; ++v) u.vertices[v] = design.vertices[v].at;
+    for (std::size_t v = 0; v < nv; ++v) u.vertices[v] = inside[v];
     return u;
   }();
-  constexpr int kReach = kMaxDrawnCellOffset + 1;
+  constexpr int kReach = kMaxDrawnCellOffset + 3;
   for (std::size_t v = 0; v < nv; ++v)
     for (std::size_t w = v; w < nv; ++w)
       for (int i = -kReach; i <= kReach; ++i)
@@ -206,8 +280,12 @@ UnitCell make_drawn_cell(const CellDesign& design, double spacing) {
       fail(name + ": the cell has vertices 0.." + std::to_string(nv - 1));
     if (std::abs(e.offset.x) > kMaxDrawnCellOffset || std::abs(e.offset.y) > kMaxDrawnCellOffset)
       fail(name + ": an edge reaches at most " + std::to_string(kMaxDrawnCellOffset) + " cells away");
-    if (find_edge(c, e.from, e.to, e.offset) >= 0) fail(name + ": the edge is given twice");
-    CellEdge edge{e.from, e.to, e.offset, 0, e.is_virtual};
+    const glm::ivec2 offset = e.offset + shift[std::size_t(e.to)] - shift[std::size_t(e.from)];
+    if (std::abs(offset.x) > kReach - 1 || std::abs(offset.y) > kReach - 1)
+      fail(name + ": its ends lie " + std::to_string(std::max(std::abs(offset.x), std::abs(offset.y))) +
+           " cells apart; an edge joins vertices at most " + std::to_string(kReach - 1) + " cells apart");
+    if (find_edge(c, e.from, e.to, offset) >= 0) fail(name + ": the edge is given twice");
+    CellEdge edge{e.from, e.to, offset, 0, e.is_virtual};
     edge.rest_length = glm::length(c.edge_vector(edge));
     if (!(edge.rest_length > tolerance * spacing)) fail(name + ": joins a vertex to itself");
     c.edges.push_back(edge);
@@ -217,58 +295,18 @@ UnitCell make_drawn_cell(const CellDesign& design, double spacing) {
     if (degree[v] < 2)
       fail("vertices[" + std::to_string(v) + "] is on " + std::to_string(degree[v]) +
            " edge(s); every vertex of a tessellation is on two or more (add edges, or remove the vertex)");
-  // Planar: no two real edges (of any two cells) meet but at a shared end.
-  for (std::size_t k = 0; k < ne; ++k) {
-    const CellEdge& e = c.edges[k];
-    if (e.is_virtual) continue;
-    const glm::dvec2 p0 = unit.vertices[std::size_t(e.from)], p1 = unit.position(e.to, e.offset);
-    for (std::size_t m = k; m < ne; ++m) {
-      const CellEdge& f = c.edges[m];
-      if (f.is_virtual) continue;
-      for (int i = -2 * kReach; i <= 2 * kReach; ++i)
-        for (int j = -2 * kReach; j <= 2 * kReach; ++j) {
-          if (m == k && i == 0 && j == 0) continue;
-          const glm::dvec2 q0 = unit.position(f.from, {i, j}), q1 = unit.position(f.to, f.offset + glm::ivec2(i, j));
-          if (segments_meet(p0, p1, q0, q1, tolerance))
-            fail("edges[" + std::to_string(k) + "] " + describe_edge(e) + " and edges[" + std::to_string(m) + "] " +
-                 describe_edge(f) + (i || j ? " of the cell (" + std::to_string(i) + "," + std::to_string(j) + ")" : "") +
-                 " cross or overlap: a tessellation's edges meet only at their ends");
-        }
+  refuse_crossing_edges(unit, c, 2 * kReach, tolerance);
+  refuse_disconnected(c);
+  double faces_area = 0;
+  for (const CellFace& face : cell_faces(c))
+    for (std::size_t i = 0; i < face.size(); ++i) {
+      const glm::dvec2 a = c.position(face[i].vertex, face[i].cell);
+      const glm::dvec2 b = c.position(face[(i + 1) % face.size()].vertex, face[(i + 1) % face.size()].cell);
+      faces_area += 0.5 * (a.x * b.y - a.y * b.x);
     }
-  }
-  // Connected over the plane: every vertex reached from vertex 0, and the loops' lattice steps
-  // reach every cell (else the pattern is strips, or copies lying between each other).
-  std::vector<glm::ivec2> shift(nv);
-  std::vector<std::uint8_t> reached(nv, 0);
-  std::vector<int> stack{0};
-  reached[0] = 1;
-  while (!stack.empty()) {
-    const int v = stack.back();
-    stack.pop_back();
-    for (const CellEdge& e : c.edges) {
-      if (e.is_virtual) continue;
-      if (e.from == v && !reached[std::size_t(e.to)]) shift[std::size_t(e.to)] = shift[std::size_t(v)] + e.offset;
-      else if (e.to == v && !reached[std::size_t(e.from)]) shift[std::size_t(e.from)] = shift[std::size_t(v)] - e.offset;
-      else continue;
-      const int w = e.from == v ? e.to : e.from;
-      reached[std::size_t(w)] = 1;
-      stack.push_back(w);
-    }
-  }
-  for (std::size_t v = 0; v < nv; ++v)
-    if (!reached[v]) fail("vertices[" + std::to_string(v) + "] is not joined to vertices[0] by edges: the pattern falls apart");
-  std::vector<glm::ivec2> loops;
-  for (const CellEdge& e : c.edges)
-    if (!e.is_virtual) loops.push_back(shift[std::size_t(e.from)] + e.offset - shift[std::size_t(e.to)]);
-  long index = 0;
-  for (std::size_t a = 0; a < loops.size(); ++a)
-    for (std::size_t b = a + 1; b < loops.size(); ++b)
-      index = std::gcd(index, long(loops[a].x) * loops[b].y - long(loops[a].y) * loops[b].x);
-  if (index == 0) fail("the edges do not join the cells both ways: the pattern is strips (add an edge along the other lattice vector)");
-  if (index != 1)
-    fail("the edges join only one cell in " + std::to_string(index) +
-         ": the pattern is copies lying between each other (join them, or use a smaller cell)");
-  if (cell_faces(c).empty()) fail("the edges make no face");
+  if (!(std::abs(faces_area - c.cell_area()) <= 1e-6 * c.cell_area()))
+    fail("the edges do not close into faces that tile the cell (a face of more than 64 corners, or edges "
+         "that leave a face open): add edges");
   return c;
 }
 
@@ -370,7 +408,7 @@ void add_bracing_edges(UnitCell& cell) {
     if (n <= 3) continue;
     // Join each corner to the opposite one (both diagonals of a quad, long diagonals of a hexagon);
     // a pentagon gets all five, so that no two corners come nearer than the design has them (a
-    // prismatic house's eaves are D apart and joined by nothing else).
+    // prismatic house's eaves are joined by nothing else).
     for (int i = 0; i < (n == 5 ? 5 : (n + 1) / 2); ++i) {
       const auto& a = face[i];
       const auto& b = face[(i + n / 2) % n];

@@ -47,7 +47,8 @@ UnitCell make_unit_cell(Tessellation tessellation, double spacing);
 // eaves (joined by no edge) do not touch.
 inline constexpr double kPrismaticBase = 1.2;
 
-// The designer's cell (units of D) at spacing D. Throws InputError naming the vertex or edge when it
+// The designer's cell (units of D) at spacing D, each vertex taken into the cell a1, a2 span (its
+// edges' offsets changed to match, so the same lattice results). Throws InputError naming the vertex or edge when it
 // is not a tessellation: lattice vectors not turning counter-clockwise, no vertex, two vertices at
 // one place, an edge out of range, of zero length or given twice, two edges crossing or an edge
 // through a vertex, a vertex on fewer than two edges, a graph that does not connect the plane.
@@ -56,6 +57,8 @@ UnitCell make_drawn_cell(const CellDesign& design, double spacing);
 // Most vertices and edges a drawn cell may have (the crossing check compares every pair).
 inline constexpr std::size_t kMaxDrawnCellVertices = 64;
 inline constexpr std::size_t kMaxDrawnCellEdges = 256;
+// How many cells from the origin a drawn vertex may lie (it is taken into the cell).
+inline constexpr double kMaxDrawnCellReach = 1e6;
 
 // The smallest angle between two real edges at a vertex of the cell, radians.
 double smallest_edge_angle(const UnitCell& cell);

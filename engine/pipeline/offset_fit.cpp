@@ -118,7 +118,7 @@ glm::dvec2 best_offset_across(const SurfaceMap& map, const UnitCell& cell, const
 std::size_t laid_out_count(const SurfaceMap& map, const UnitCell& cell, const ElementsDesign& elements,
                            const Placement& placement) {
   try {
-    const Pattern pattern = build_pattern(map, cell, placement);
+    const Pattern pattern = build_pattern(map, cell, placement, elements.face.enabled);
     return place_all_elements(map, pattern, pattern.points, elements, cell.spacing, EdgeAnchor::MapLine, true)
         .elements.size();
   } catch (const InputError&) {

@@ -135,7 +135,12 @@ Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface,
   const bool wide = system.particle_count() >= kWidePatternParticles;
   const bool large = system.particle_count() >= options.large_pattern_particles;
   for (int round = 0; round < options.max_rounds; ++round) {
-    const std::vector<Collision> collisions = find_collisions(elements, spec.gap);
+    // A face element's pairs are left to the removal below: its face's corners carry it, and a
+    // contact spring from a corner squeezed the next face. They neither stall a round nor keep one going.
+    std::vector<Collision> collisions = find_collisions(elements, spec.gap);
+    std::erase_if(collisions, [&](const Collision& c) {
+      return elements.kind[std::size_t(c.i)] == ElementKind::Face || elements.kind[std::size_t(c.j)] == ElementKind::Face;
+    });
     if (collisions.empty() || (stop && stop->load())) break;
     // Every pattern gets one round; a large one may leave its last few pairs to the last resort.
     if (large && round > 0 &&
@@ -158,9 +163,6 @@ Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface,
     for (const Collision& c : collisions) {
       // In a stalled round, pairs of two vertex elements were given vacancies above.
       if (stalled && elements.kind[c.i] == ElementKind::Vertex && elements.kind[c.j] == ElementKind::Vertex) continue;
-      // A face element is carried by its face's corners, which their own springs keep apart: its
-      // pairs are left to the removal below (a contact spring from a corner squeezed the next face).
-      if (elements.kind[c.i] == ElementKind::Face || elements.kind[c.j] == ElementKind::Face) continue;
       const ElementAnchor ai = element_anchor(pattern, elements, c.i, spec);
       const ElementAnchor aj = element_anchor(pattern, elements, c.j, spec);
       const int pj = carrier(aj, -1);

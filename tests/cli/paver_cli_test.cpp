@@ -1861,6 +1861,8 @@ TEST_F(PaverRun, GradedStonesFallOffTowardsTheRimsInStockedSizes) {
                      {"'elements.grade.smallest' 1.5 is not smaller than the main stone (1.5)"});
   expect_input_error(with({"--grade", "rim", "--grade-smallest", "0.3"}), bad, {"less than a quarter of the main stone"});
   expect_input_error(with({"--grade", "tip", "--grade-smallest", "1.1"}), bad, {"--grade tip"});
+  expect_input_error(with({"--grade", "rim", "--grade-smallest", "1.1", "--face-elements", "--face-scale", "0.1"}), bad,
+                     {"only vertex elements are graded, alone; set elements.face.enabled false"});
   expect_input_error(with({"--grade", "rim", "--grade-smallest", "1.1", "--topology", "lattice"}), bad,
                      {"the lattice cannot grade its stones"});
   // A closed surface has no rims: said from the loaded mesh, before its charts are mapped.
@@ -2109,7 +2111,7 @@ TEST_F(PaverRun, ADrawnCellFromADesignFilePavesAndACrossedOneIsRefused) {
 }
 
 // F-elements: kind F rows, one per face of the trimmed pattern, on a flat square and on the dome
-// (whose map squeezes its faces by up to 8%: a Cairo face has room for 0.39 D), 0 contact violations
+// (whose map squeezes its faces by up to 8%: a Cairo face has room for 0.38 D), 0 contact violations
 // among all kinds, counted in the report, the summary and the bill.
 TEST_F(PaverRun, FaceElementsSitInEveryFaceOfThePattern) {
   const fs::path square = dir() / "square.obj";
@@ -2151,6 +2153,14 @@ TEST_F(PaverRun, FaceElementsSitInEveryFaceOfThePattern) {
     EXPECT_NE(read_file_text(out / "stones.csv").find(bill_row), std::string::npos)
         << bill_row << "\n" << read_file_text(out / "stones.csv");
   }
+  // A size for F-elements without them is said, not dropped.
+  const fs::path plain = dir() / "plain";
+  const CliResult unsized = paver({"run", square.string(), "--pattern", "cairo", "--face-scale", "0.25", "--quiet",
+                                   "--formats", "ply", "--out", plain.string()});
+  ASSERT_EQ(unsized.exit_code, 0) << describe(unsized);
+  EXPECT_NE(unsized.err.find("--face-scale sizes the F-elements, but this design places none: add --face-elements"),
+            std::string::npos)
+      << describe(unsized);
   // Too large for its faces: refused before anything is written, naming both elements.
   const fs::path bad = dir() / "bad";
   expect_input_error(paver({"run", square.string(), "--pattern", "cairo", "--face-elements", "--face-scale", "0.45",

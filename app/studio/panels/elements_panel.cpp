@@ -232,7 +232,7 @@ void elements_panel(Document& doc, UiState& ui) {
               "them as the pattern is optimized; a face the map squeezes too much for it loses it.");
   fraction_slider(doc, d, "s##face", d.elements.face.scale, 0.05, 1.0);
   help_marker("Diameter = s * D; s in (0, 1]. A triangle's centre is 0.577 D from its corners, a Cairo "
-              "pentagon's 0.694 D: with V-elements of s = 1, s here is at most 0.15 and 0.39.");
+              "pentagon's 0.694 D: with V-elements of s = 1, s here is at most 0.15 and 0.38.");
   if (shape_combo("shape##face", d.elements.face.shape)) change_design(doc, d);
 
   section("Custom shape");

@@ -492,6 +492,22 @@ TEST(DrawnCell, AnIrregularCellKeepsItsGeometryAtDAndTilesThePlane) {
   EXPECT_NEAR(face_centre(cell, faces[0]).x, face_centre(cell, faces[0], {1, 0}).x - cell.a1.x, 1e-12);
 }
 
+// A vertex drawn two cells over, its edges' offsets two less, is the same tessellation: it is taken
+// into the cell, so the lattice laid over a map covers it where the rest of the pattern is.
+TEST(DrawnCell, AVertexDrawnOutsideTheCellIsTakenIntoIt) {
+  CellDesign moved = slanted_cell();
+  moved.vertices[1].at += glm::dvec2(1.1, 0) * 2.0;
+  for (CellEdgeDesign& e : moved.edges)
+    if (e.from == 1) e.offset.x += 2;
+  const UnitCell a = make_drawn_cell(slanted_cell(), kD), b = make_drawn_cell(moved, kD);
+  ASSERT_EQ(a.edges.size(), b.edges.size());
+  for (std::size_t e = 0; e < a.edges.size(); ++e) {
+    EXPECT_NEAR(a.edges[e].rest_length, b.edges[e].rest_length, 1e-9) << describe_edge(b.edges[e]);
+    EXPECT_EQ(a.edges[e].offset, b.edges[e].offset) << "edge " << e;
+  }
+  EXPECT_NEAR(glm::length(a.vertices[1] - b.vertices[1]), 0, 1e-9);
+}
+
 TEST(DrawnCell, WhatIsNotATessellationIsRefusedNamingTheVertexOrEdge) {
   const auto refusal = [](const std::function<void(CellDesign&)>& change) {
     CellDesign c = slanted_cell();
@@ -501,7 +517,9 @@ TEST(DrawnCell, WhatIsNotATessellationIsRefusedNamingTheVertexOrEdge) {
   EXPECT_TRUE(Contains(refusal([](CellDesign& c) { std::swap(c.a1, c.a2); }), "counter-clockwise"));
   EXPECT_TRUE(Contains(refusal([](CellDesign& c) { c.a2 = {2.2, 0}; }), "span the plane"));
   EXPECT_TRUE(Contains(refusal([](CellDesign& c) { c.vertices.clear(); }), "no vertex"));
-  EXPECT_TRUE(Contains(refusal([](CellDesign& c) { c.vertices[1].at = {1.1, 0}; }), "vertices[0] and vertices[1] of the cell (-1,0) are at one place"));
+  EXPECT_TRUE(Contains(refusal([](CellDesign& c) { c.vertices[1].at = {1.1, 0}; }), "vertices[0] and vertices[1] are at one place"));
+  EXPECT_TRUE(Contains(refusal([](CellDesign& c) { c.vertices[1].at = {1e300, 0}; }),
+                       "cells from the cell's origin"));
   EXPECT_TRUE(Contains(refusal([](CellDesign& c) { c.edges.push_back({0, 1, {0, 0}}); }), "given twice"));
   EXPECT_TRUE(Contains(refusal([](CellDesign& c) { c.edges[2].to = 5; }), "edges[2] 1->5 @ (0,0): the cell has vertices 0..1"));
   EXPECT_TRUE(Contains(refusal([](CellDesign& c) { c.edges.push_back({0, 0, {1, 1}}); }), "cross or overlap"));
