@@ -56,7 +56,7 @@ UnitCell make_drawn_cell(const CellDesign& design, double spacing);
 
 // Most vertices and edges a drawn cell may have (the crossing check compares every pair).
 inline constexpr std::size_t kMaxDrawnCellVertices = 64;
-inline constexpr std::size_t kMaxDrawnCellEdges = 256;
+inline constexpr std::size_t kMaxDrawnCellEdges = 96;
 // How many cells from the origin a drawn vertex may lie (it is taken into the cell).
 inline constexpr double kMaxDrawnCellReach = 1e6;
 

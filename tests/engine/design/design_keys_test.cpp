@@ -30,6 +30,8 @@ TEST(DesignKeys, EveryKeyIsVisitedOnceInTheTablesOrder) {
   std::vector<Key> visited;
   Design design;
   design.pattern.operators.resize(1);
+  design.pattern.cell.vertices.resize(1);
+  design.pattern.cell.edges.resize(1);
   design.elements.edge.resize(1);
   design.edits.moved.resize(1);
   design.edits.deleted.resize(1);
