@@ -147,6 +147,8 @@ Pattern build_pattern(const SurfaceMap& map, const UnitCell& cell, const Placeme
   }
   const double window_end = map.period_origin + map.period;
   const auto in_window = [&](glm::dvec2 q) { return !wraps || (q.x >= map.period_origin && q.x < window_end); };
+  // Periods a point at u lies past the window (-1, 0 or 1): an edge's or face's far end is taken back by it.
+  const auto turns_past = [&](double u) { return u >= window_end ? 1 : u < map.period_origin ? -1 : 0; };
   refuse_far_offset(lo, hi, placement, map_size);
   // One extra ring of cells so edges leaving the map are seen from both ends.
   const glm::ivec2 c0 = glm::ivec2(glm::floor(lo)) - 2, c1 = glm::ivec2(glm::ceil(hi)) + 2;
@@ -187,7 +189,7 @@ Pattern build_pattern(const SurfaceMap& map, const UnitCell& cell, const Placeme
         if (wraps) {
           if (!in_window(map_position[sa])) continue;
           const double to_u = placement.pattern_to_map(cell.position(edge.to, to_cell)).x;
-          const int turns = to_u >= window_end ? 1 : to_u < map.period_origin ? -1 : 0;
+          const int turns = turns_past(to_u);
           to_cell -= turns * period_cells;
           back = glm::dvec2(turns * map.period, 0);
         }
@@ -214,8 +216,7 @@ Pattern build_pattern(const SurfaceMap& map, const UnitCell& cell, const Placeme
       const long s0 = slot(at, v);
       if (s0 < 0 || !wraps) return s0 < 0 ? -1 : index[s0];
       if (first) return in_window(map_position[s0]) ? index[s0] : -1;
-      const double u = map_position[s0].x;
-      const long s1 = slot(at - (u >= window_end ? 1 : u < map.period_origin ? -1 : 0) * period_cells, v);
+      const long s1 = slot(at - turns_past(map_position[s0].x) * period_cells, v);
       return s1 < 0 ? -1 : index[s1];
     };
     list_faces(cell, c0, c1, point_at, pattern);

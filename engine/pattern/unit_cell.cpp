@@ -64,6 +64,17 @@ CellFace face_left_of(const std::vector<std::vector<HalfEdge>>& out, int v, glm:
   return {};
 }
 
+// Twice the signed area of a face (positive counter-clockwise).
+double twice_face_area(const UnitCell& cell, const CellFace& face) {
+  double twice = 0;
+  for (size_t i = 0; i < face.size(); ++i) {
+    const glm::dvec2 a = cell.position(face[i].vertex, face[i].cell);
+    const glm::dvec2 b = cell.position(face[(i + 1) % face.size()].vertex, face[(i + 1) % face.size()].cell);
+    twice += a.x * b.y - a.y * b.x;
+  }
+  return twice;
+}
+
 int find_edge(const UnitCell& cell, int from, int to, glm::ivec2 offset) {
   for (size_t i = 0; i < cell.edges.size(); ++i) {
     const auto& e = cell.edges[i];
@@ -298,12 +309,7 @@ UnitCell make_drawn_cell(const CellDesign& design, double spacing) {
   refuse_crossing_edges(unit, c, 2 * kReach, tolerance);
   refuse_disconnected(c);
   double faces_area = 0;
-  for (const CellFace& face : cell_faces(c))
-    for (std::size_t i = 0; i < face.size(); ++i) {
-      const glm::dvec2 a = c.position(face[i].vertex, face[i].cell);
-      const glm::dvec2 b = c.position(face[(i + 1) % face.size()].vertex, face[(i + 1) % face.size()].cell);
-      faces_area += 0.5 * (a.x * b.y - a.y * b.x);
-    }
+  for (const CellFace& face : cell_faces(c)) faces_area += 0.5 * twice_face_area(c, face);
   if (!(std::abs(faces_area - c.cell_area()) <= 1e-6 * c.cell_area()))
     fail("the edges do not close into faces that tile the cell (a face of more than 64 corners, or edges "
          "that leave a face open): add edges");
@@ -335,13 +341,7 @@ std::vector<CellFace> cell_faces(const UnitCell& cell) {
       CellFace face = face_left_of(out, v, {0, 0}, h);
       if (face.size() < 3) continue;
       // Skip the unbounded orientation: a real face has positive area.
-      double area = 0;
-      for (size_t i = 0; i < face.size(); ++i) {
-        const glm::dvec2 a = cell.position(face[i].vertex, face[i].cell);
-        const glm::dvec2 b = cell.position(face[(i + 1) % face.size()].vertex, face[(i + 1) % face.size()].cell);
-        area += a.x * b.y - a.y * b.x;
-      }
-      if (area <= 0) continue;
+      if (twice_face_area(cell, face) <= 0) continue;
       auto min_corner = *std::min_element(face.begin(), face.end(), [](const auto& a, const auto& b) {
         return std::tie(a.cell.x, a.cell.y, a.vertex) < std::tie(b.cell.x, b.cell.y, b.vertex);
       });
