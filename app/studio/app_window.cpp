@@ -261,6 +261,7 @@ bool AppWindow::begin_frame(const InputFrame* input) {
     io.KeyShift = input->shift;
     io.KeyCtrl = input->ctrl;
     if (input->key >= 0) io.KeysDown[injected_key_ = input->key] = true;
+    if (!input->text.empty()) io.AddInputCharactersUTF8(input->text.c_str());
   }
   ImGui::NewFrame();
   return true;

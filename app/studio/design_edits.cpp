@@ -2,6 +2,8 @@
 
 #include "pipeline/pavement.h"
 
+#include <algorithm>
+
 namespace paver::studio {
 
 Design with_tessellation(Design design, Tessellation tessellation) {
@@ -39,6 +41,13 @@ UnitCell design_cell_shape(const PatternDesign& pattern) {
   PatternDesign unit = pattern;
   unit.spacing = 1;
   return make_design_cell(unit);
+}
+
+glm::dvec2 cell_view_centre(const UnitCell& cell) {
+  glm::dvec2 vertices_mean(0);
+  for (const glm::dvec2& v : cell.vertices) vertices_mean += v;
+  vertices_mean /= double(std::max<std::size_t>(cell.vertices.size(), 1));
+  return 0.5 * (vertices_mean + 0.5 * (cell.a1 + cell.a2));
 }
 
 }  // namespace paver::studio

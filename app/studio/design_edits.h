@@ -22,4 +22,9 @@ Design without_operator(Design design, int index);
 // the edges E-elements can sit on.
 UnitCell design_cell_shape(const PatternDesign& pattern);
 
+// Where the unit-cell editor centres its view: between the cell's vertices and its parallelogram,
+// which no edge operator moves, so the view holds still under the cursor as edges are edited (it
+// was centred on the edges, and re-centred after every flip, add or remove: the next click missed).
+glm::dvec2 cell_view_centre(const UnitCell& cell);
+
 }  // namespace paver::studio

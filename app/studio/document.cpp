@@ -8,15 +8,37 @@
 #include "io/design_io.h"
 #include "elements/element_proximity.h"
 #include "core/input_error.h"
+#include "core/number_text.h"
 
+#include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <utility>
 
 namespace paver::studio {
 namespace {
+
+// The stones collision resolution removed whose place no stone took since (a refill, an edit):
+// within half its diameter of a stone standing now, a removal is no hole.
+std::vector<RemovedElement> uncovered_removals(const Pavement& p) {
+  const std::vector<RemovedElement>& removed = p.resolution.removed_places;
+  // All pairs: a handful of removals as a rule; past this many the ghosts are shown unfiltered.
+  constexpr double kMostPairs = 5e7;
+  if (double(removed.size()) * double(p.elements.size()) > kMostPairs) return removed;
+  std::vector<RemovedElement> ghosts;
+  for (const RemovedElement& gone : removed) {
+    const double reach = 0.5 * gone.diameter;
+    bool covered = false;
+    for (std::size_t i = 0; i < p.elements.size() && !covered; ++i)
+      covered = glm::length(p.elements.position[i] - gone.position) < reach;
+    if (!covered) ghosts.push_back(gone);
+  }
+  return ghosts;
+}
 
 void new_revision(Document& doc, bool dragging) {
   ++doc.revision;
@@ -105,7 +127,42 @@ void set_result(Document& doc, std::shared_ptr<const Pavement> pavement, std::ui
   }
   r.bill = bill_of_stones(pavement->elements, pavement->design.units);
   r.verdict = judge_pavement(pavement->after);
+  r.ghosts = uncovered_removals(*pavement);
   r.pavement = std::move(pavement);
+}
+
+double largest_spacing(const Document& doc) {
+  if (!doc.surface.map) return std::numeric_limits<double>::infinity();
+  const SurfaceMap& map = map_for_topology(*doc.surface.map, doc.design.pattern.topology);
+  const glm::dvec2 extent = map.uv_max - map.uv_min;
+  return std::max(extent.x, extent.y) * doc.design.placement.scale;
+}
+
+std::string run_status_text(const PavementResult& r) {
+  if (!r.pavement) return {};
+  const Pavement& p = *r.pavement;
+  std::string text = r.verdict.ok ? "ok: " : "NOT OK: ";
+  for (const std::string& problem : r.verdict.problems) text += problem + "; ";
+  text += count_text(long(p.elements.size()), "element", "elements") + ", " +
+          count_text(p.after.contact_violations, "contact violation", "contact violations");
+  const EdgeQuality& edges = p.after.edges;
+  const std::string unit(enum_name(p.design.units));
+  char size[32];
+  std::snprintf(size, sizeof size, "%.3g", edges.spot_stone);
+  if (edges.measured && edges.bare_spots > 0)
+    text += "; " + count_text(edges.bare_spots, "bare spot", "bare spots") + " where a " +
+            (p.grade.ladder.empty() ? std::string(size) + " " + unit + " stone" : std::string("graded stone")) +
+            " still fits";
+  if (!r.ghosts.empty())
+    text += "; " + count_text(long(r.ghosts.size()), "stone", "stones") + " removed where they still collided";
+  if ((edges.measured && edges.bare_spots > 0) || !r.ghosts.empty()) text += " (marked in the views)";
+  text += "; " + count_text(p.solve.iterations, "iteration", "iterations") + " (" +
+          std::string(enum_name(p.solve.reason)) + ")";
+  // Said where a script's log and the eye see it, not only in the Elements panel.
+  if (p.deletions_missed > 0)
+    text += "; " + count_text(p.deletions_missed, "deletion", "deletions") +
+            " found no element (refilled stones an edit moved away): re-delete them";
+  return text;
 }
 
 bool open_design_file(Document& doc, const std::filesystem::path& path) {

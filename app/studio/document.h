@@ -41,11 +41,17 @@ struct PavementResult {
   std::vector<float> ratio_histogram;     // element counts per bin over [kHistogramMin, kHistogramMax]
   BillOfStones bill;                      // the report panel's bill of stones, made once per result
   Verdict verdict;                        // fit to use, or the problems with their figures (report.json's)
+  // Where collision resolution took a stone away and none stands now: a ghost in both views.
+  std::vector<RemovedElement> ghosts;
   double run_ms = 0;                      // the background run, wall time
   double latency_ms = -1;                 // design change to this result on screen; -1 until shown
 };
 inline constexpr double kHistogramMin = 0.8, kHistogramMax = 1.6;
 inline constexpr int kHistogramBins = 32;
+
+// The status line a finished run leaves: the verdict with its problems, then what the eye should
+// find in the views (the bare spots and the stones removed, both marked there).
+std::string run_status_text(const PavementResult& result);
 
 struct Messages {
   std::string status;                     // the status line
@@ -111,6 +117,10 @@ void prepare_output(const Document& doc, const std::filesystem::path& path, bool
 
 void report_status(Document& doc, std::string text);
 // A run's outcome: its verdict, or why it failed. Made stale by the next run (mark_run_started).
+// The largest spacing D the surface takes (the engine refuses one as large as its map is across,
+// pattern/pattern.h): infinite with no surface open.
+double largest_spacing(const Document& doc);
+
 void report_run_status(Document& doc, std::string text);
 void report_run_error(Document& doc, std::string text, bool input);
 // A new run began: a previous run's status gives way to "solving", its error dialog closes.

@@ -34,7 +34,7 @@ constexpr std::pair<std::string_view, Kind> kCommands[] = {
     {"delete", Kind::Delete},   {"add", Kind::Add},       {"brush", Kind::Brush},
     {"colour", Kind::Colour}, {"save", Kind::Save}, {"select_box", Kind::SelectBox}, {"browse", Kind::Browse},
     {"click", Kind::Click}, {"mouse_drag", Kind::MouseDrag}, {"key", Kind::Key}, {"mouse_drag3d", Kind::MouseDrag3d},
-    {"orbit", Kind::Orbit}};
+    {"orbit", Kind::Orbit}, {"type", Kind::Type}};
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
 
@@ -153,7 +153,7 @@ void parse_choice(const LineParser& p) {
       // "Shift+P": the key with Shift held, as a hand presses it.
       const bool shift = p.rest.rfind("Shift+", 0) == 0;
       const std::string_view name = std::string_view(p.rest).substr(shift ? 6 : 0);
-      p.need_choice(key_from_name(name).has_value(), "E, P, I, V, L, C, R, N, Delete, Escape or Space, each also as Shift+P");
+      p.need_choice(key_from_name(name).has_value(), "E, P, B, I, V, L, C, R, N, Delete, Escape or Space, each also as Shift+P");
       p.out.key = *key_from_name(name);
       p.out.shift = shift;
       break;
@@ -260,6 +260,32 @@ void parse_map_points(const LineParser& p) {
   }
 }
 
+// type FIELD TEXT [enter|tab|away]: FIELD and TEXT each a word or "quoted" (blanks, an empty text).
+void parse_typing(const LineParser& p) {
+  p.need_argument("a field and the text to type, e.g. type \"stone diameter\" 1.5");
+  std::string_view left = p.rest;
+  const auto take = [&](const char* what) {
+    if (left.empty()) p.refuse("type '" + std::string(p.rest) + "': give " + what);
+    if (left.front() != '"') {
+      const auto [word, after] = first_word(left);
+      left = after;
+      return std::string(word);
+    }
+    const std::size_t close = left.find('"', 1);
+    if (close == std::string_view::npos) p.refuse("type '" + std::string(p.rest) + "': a quote is not closed");
+    const std::string quoted(left.substr(1, close - 1));
+    left = trim(left.substr(close + 1));
+    return quoted;
+  };
+  p.out.text = take("the field's label (quoted when it has blanks)");
+  p.out.value = take("the text to type after the field");
+  if (left.empty() || left == "enter") p.out.type_end = TypeEnd::Enter;
+  else if (left == "tab") p.out.type_end = TypeEnd::Tab;
+  else if (left == "away") p.out.type_end = TypeEnd::Away;
+  else p.refuse("type '" + std::string(p.rest) + "': end with enter, tab or away, got '" + std::string(left) + "'");
+  if (p.out.text.empty()) p.refuse("type needs a field's label");
+}
+
 }  // namespace
 
 bool parse_script_line(std::string_view line, int line_number, const std::string& source, ScriptCommand& out) {
@@ -290,6 +316,7 @@ bool parse_script_line(std::string_view line, int line_number, const std::string
     case Kind::Spacing: case Kind::Set: case Kind::Cut: case Kind::Orbit: case Kind::Wait: parse_values(parser); break;
     case Kind::Select: case Kind::Pin: case Kind::Unpin: case Kind::Delete: case Kind::Drag: parse_element(parser); break;
     case Kind::SelectBox: case Kind::Add: case Kind::Brush: parse_map_points(parser); break;
+    case Kind::Type: parse_typing(parser); break;
     default:
       if (!rest.empty()) parser.refuse(std::string(word) + " takes no argument, got '" + std::string(rest) + "'");
   }

@@ -3,6 +3,7 @@
 #include "design_edits.h"
 #include "design_keys.h"
 #include "element_editing.h"
+#include "panels/panels.h"
 
 #include "core/input_error.h"
 #include "core/printable.h"
@@ -58,6 +59,9 @@ std::string describe(const ScriptCommand& c) {
       text.append(1, ' ').append(std::to_string(c.id));  // (no " " + string: GCC 12 -Wrestrict)
       return text + numbers_text({c.u, c.v});
     case Kind::Cut: return text + numbers_text({c.number}) + " " + c.text;
+    case Kind::Type:
+      return text + " \"" + c.text + "\" \"" + c.value + "\" " +
+             (c.type_end == TypeEnd::Enter ? "enter" : c.type_end == TypeEnd::Tab ? "tab" : "away");
     default: break;
   }
   if (c.id == ScriptCommand::kSelection) return text + " selection";
@@ -196,6 +200,16 @@ void ScriptRunner::act(Studio& s, const ScriptCommand& c) {
       frames_left_ = 3;
       break;
     }
+    case Kind::Type: {
+      const std::optional<glm::vec2> at = field_centre(c.text);
+      if (!at) throw InputError("type: no field '" + c.text + "' on screen: show its panel first (e.g. panel elements)");
+      // Away: the status bar's right end, where a click takes nothing.
+      const ImVec2 size = ImGui::GetMainViewport()->WorkSize;
+      const std::vector<InputFrame> frames = typing_frames(*at, c.value, c.type_end, glm::vec2(size.x - 8, size.y - 6));
+      s.input_queue.insert(s.input_queue.end(), frames.begin(), frames.end());
+      frames_left_ = 3;
+      break;
+    }
     case Kind::Key: {
       const std::vector<InputFrame> frames = key_frames(c.key, map_to_window(s, glm::dvec2(0), false), c.shift);
       s.input_queue.insert(s.input_queue.end(), frames.begin(), frames.end());
@@ -227,6 +241,7 @@ bool ScriptRunner::settled(Studio& s, const ScriptCommand& c) {
     case Kind::Click:
     case Kind::MouseDrag:
     case Kind::MouseDrag3d:
+    case Kind::Type:
     case Kind::Key: return s.input_queue.empty() && frames_left_-- <= 0;
     case Kind::Cut: return !s.cutter.busy() && !s.cutter.has_outcome();  // and its outcome reported
     default: return true;

@@ -25,6 +25,7 @@ const std::vector<Shortcut>& shortcut_list() {
       {"V", "swap the large and the small view"},
       {"I", "show / hide the small view (the inset)"},
       {"L", "show / hide the lattice"},
+      {"B", "show / hide the marks of bare spots (dashed red) and removed stones (grey ghosts)"},
       {"C", "colour by nearest-neighbour ratio / element type"},
       {"Left drag (3D)", "orbit"},
       {"Right or middle drag", "pan"},
@@ -82,6 +83,7 @@ void handle_shortcuts(Studio& s) {
   if (pressed(GLFW_KEY_P) && s.ui.selected_element >= 0 && s.doc.result.pavement)
     pin_selected(s, !ImGui::GetIO().KeyShift);
   if (pressed(GLFW_KEY_L)) s.views.style.show_lattice = !s.views.style.show_lattice;
+  if (pressed(GLFW_KEY_B)) s.views.show_flaws = !s.views.show_flaws;
   if (pressed(GLFW_KEY_C))
     s.views.colour_mode = s.views.colour_mode == render::ColourMode::NeighbourRatio ? render::ColourMode::ElementType
                                                                                    : render::ColourMode::NeighbourRatio;

@@ -1,5 +1,6 @@
 #include "pipeline/pavement.h"
 #include "studio.h"
+#include "number_rules.h"
 
 #include "element_editing.h"
 #include "map_frame.h"
@@ -83,17 +84,7 @@ void take_run_outcome(Studio& s) {
       s.ui.box_selected.erase(s.ui.box_selected.begin());
     }
   }
-  const Verdict& verdict = s.doc.result.verdict;
-  report_run_status(s.doc, std::string(verdict.ok ? "ok: " : "NOT OK (Report panel says why): ") +
-                           std::to_string(p.elements.size()) + " elements, " +
-                           std::to_string(p.after.contact_violations) + " contact violations; " +
-                           std::to_string(p.solve.iterations) + " iterations (" +
-                           std::string(enum_name(p.solve.reason)) + ")" +
-                           // Said where a script's log and the eye see it, not only in the Elements panel.
-                           (p.deletions_missed > 0
-                                ? "; " + count_text(p.deletions_missed, "deletion", "deletions") +
-                                      " found no element (refilled stones an edit moved away): re-delete them"
-                                : std::string()));
+  report_run_status(s.doc, run_status_text(s.doc.result));
 }
 
 }  // namespace
@@ -529,6 +520,8 @@ void update_studio(Studio& s) {
   follow_cut_axis(s);
   take_run_outcome(s);
   take_cut_outcome(s);
+  // A number field refused what was typed (its reason is under it too): said on the status line.
+  for (const std::string& refusal : take_refusals()) report_status(s.doc, "refused: " + refusal);
   // The edit's clock stops while the run sits paused, whatever paused it (Space, a Step's end).
   if (s.live.state() == RunState::Paused)
     s.doc.edit_clock.pause(Clock::now());

@@ -27,8 +27,28 @@ std::vector<InputFrame> key_frames(int key, glm::vec2 at, bool shift) {
   return {down, up};
 }
 
+std::vector<InputFrame> typing_frames(glm::vec2 field, std::string_view text, TypeEnd end, glm::vec2 away) {
+  std::vector<InputFrame> frames = click_frames(field, false, false);
+  for (std::size_t i = 0; i < text.size();) {
+    // One character a frame, whole: a UTF-8 sequence is its lead byte and the continuation bytes.
+    std::size_t length = 1;
+    while (i + length < text.size() && (static_cast<unsigned char>(text[i + length]) & 0xC0) == 0x80) ++length;
+    InputFrame typed{field};
+    typed.text = std::string(text.substr(i, length));
+    frames.push_back(std::move(typed));
+    i += length;
+  }
+  switch (end) {
+    case TypeEnd::Enter: for (InputFrame& f : key_frames(GLFW_KEY_ENTER, field)) frames.push_back(std::move(f)); break;
+    case TypeEnd::Tab: for (InputFrame& f : key_frames(GLFW_KEY_TAB, field)) frames.push_back(std::move(f)); break;
+    case TypeEnd::Away: for (InputFrame& f : click_frames(away, false, false)) frames.push_back(std::move(f)); break;
+  }
+  return frames;
+}
+
 std::optional<int> key_from_name(std::string_view name) {
-  constexpr std::array<std::pair<std::string_view, int>, 11> kKeys = {{{"E", GLFW_KEY_E},
+  constexpr std::array<std::pair<std::string_view, int>, 12> kKeys = {{{"E", GLFW_KEY_E},
+                                                                        {"B", GLFW_KEY_B},
                                                                         {"P", GLFW_KEY_P},
                                                                         {"I", GLFW_KEY_I},
                                                                         {"V", GLFW_KEY_V},

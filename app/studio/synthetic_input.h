@@ -5,6 +5,7 @@
 #include <glm/vec2.hpp>
 
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -15,7 +16,11 @@ struct InputFrame {
   bool left_down = false;
   bool shift = false, ctrl = false;
   int key = -1;            // a GLFW key held down this frame, or none
+  std::string text{};      // characters typed this frame (UTF-8)
 };
+
+// How a typed value is let go, as a designer does: Enter, Tab to the next field, or a click elsewhere.
+enum class TypeEnd { Enter, Tab, Away };
 
 // Move to `at`, press, release: a click (held modifiers throughout).
 std::vector<InputFrame> click_frames(glm::vec2 at, bool shift, bool ctrl);
@@ -24,7 +29,11 @@ std::vector<InputFrame> drag_frames(glm::vec2 from, glm::vec2 to, bool shift, bo
 // One key pressed for a frame and released, the mouse at `at` (where it was), Shift held or not.
 std::vector<InputFrame> key_frames(int key, glm::vec2 at, bool shift = false);
 
-// The GLFW key a script names (E, P, I, V, L, C, R, N, Delete, Escape, Space), or none.
+// A click into the field at `field` (which selects its text), `text` typed a character a frame,
+// then the field let go by `end` (Away: a click at `away`).
+std::vector<InputFrame> typing_frames(glm::vec2 field, std::string_view text, TypeEnd end, glm::vec2 away);
+
+// The GLFW key a script names (E, P, B, I, V, L, C, R, N, Delete, Escape, Space), or none.
 std::optional<int> key_from_name(std::string_view name);
 
 }  // namespace paver::studio

@@ -15,6 +15,7 @@ struct ViewSettings {
   bool large_3d = true;      // the 3D view fills the main area, the 2D view is the inset (or the reverse)
   bool show_legend = true;   // the legend of the colouring, over the large view
   bool show_inset = true;    // the other view in the large view's bottom-right corner
+  bool show_flaws = true;    // the final pavement's bare spots and removed stones, marked in both views
   double map_aspect = 1.6;   // width / height of the views' area, last drawn: the 2D view frames the whole map in it
   // Where the large view was last drawn, window pixels: a script's clicks at map points land there.
   glm::vec2 large_origin{0}, large_size{0};

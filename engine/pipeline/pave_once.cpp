@@ -153,6 +153,7 @@ void resolve(const PaveContext& c, PaveState& s) {
     const Removal removal = remove_colliding(pavement.elements, s.design.elements.gap);
     pavement.resolution.pairs_left = removal.pairs;
     pavement.resolution.removed = removal.removed;
+    pavement.resolution.removed_places = removal.places;
     return;
   }
   pavement.elements = resolve_collisions(c.map, *s.surface, *s.system, pavement.pattern, s.design.elements,
@@ -180,6 +181,7 @@ void apply_edits(const PaveContext& c, PaveState& s) {
     pavement.resolution.solver_iterations += around.solver_iterations;
     pavement.resolution.retired += around.retired;
     pavement.resolution.removed = around.removed;  // the final elements are this resolution's
+    pavement.resolution.removed_places = std::move(around.removed_places);
   } else {
     pavement.elements = s.place(c, pavement.points, system.stray_count);
   }

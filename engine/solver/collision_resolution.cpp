@@ -93,6 +93,8 @@ Removal remove_colliding(Elements& elements, double gap, std::vector<std::uint8_
       remove[victim] = 1;
       settled[c.i] = settled[c.j] = 1;
       ++removal.removed;
+      const auto v = std::size_t(victim);
+      removal.places.push_back({elements.uv[v], elements.position[v], elements.diameter[v]});
     }
     elements.erase_flagged(remove);
     if (kept) {
@@ -206,6 +208,7 @@ Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface,
   const Removal removal = remove_colliding(elements, spec.gap, &pinned);
   report.pairs_left = removal.pairs;
   report.removed = removal.removed;
+  report.removed_places = removal.places;
   report.milliseconds = watch.milliseconds();
   return elements;
 }

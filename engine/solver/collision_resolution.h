@@ -35,6 +35,13 @@ struct CollisionResolutionOptions {
   double large_pattern_pairs_share = 0.01;
 };
 
+// Where an element was taken away: the studio draws a ghost there (a hole the eye can find).
+struct RemovedElement {
+  glm::dvec2 uv{0};
+  glm::dvec3 position{0};
+  double diameter = 0;
+};
+
 struct CollisionResolutionReport {
   int rounds = 0;
   int contact_springs = 0;
@@ -42,6 +49,7 @@ struct CollisionResolutionReport {
   int retired = 0;                 // particles retired where contact springs stalled (vacancies)
   int pairs_left = 0;              // pairs that still collided after the last round
   int removed = 0;                 // elements removed because they still collided (one per pair at most)
+  std::vector<RemovedElement> removed_places;  // where those were, #removed
   double milliseconds = 0;
 };
 
@@ -64,6 +72,7 @@ using ElementPlacer =
 struct Removal {
   int pairs = 0;    // pairs that collided before any removal
   int removed = 0;  // elements removed: at most one per pair
+  std::vector<RemovedElement> places;  // where each was
 };
 Removal remove_colliding(Elements& elements, double gap, std::vector<std::uint8_t>* kept = nullptr);
 

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 
 namespace paver::studio {
@@ -50,6 +52,30 @@ TEST(DesignEdits, ADrawnCellStartsAsTheCellShownWithItsOperators) {
   edited.pattern.cell.vertices[0].at = {0.25, 0.5};
   const Design again = with_tessellation(with_tessellation(edited, Tessellation::Grid), Tessellation::Custom);
   EXPECT_EQ(again.pattern.cell.vertices[0].at, glm::dvec2(0.25, 0.5));
+}
+
+// A designer's trial: the unit-cell editor re-centred after each change, so the next click missed.
+// Its centre is one no edge operator moves; the edges' own centre (what it used) moves.
+TEST(DesignEdits, TheCellEditorsCentreHoldsAsEdgesAreEdited) {
+  for (const Tessellation t : {Tessellation::Hexagon, Tessellation::Grid, Tessellation::Cairo}) {
+    Design d;
+    d.pattern.tessellation = t;
+    const UnitCell cell = design_cell_shape(d.pattern);
+    const auto edges_centre = [](const UnitCell& c) {
+      glm::dvec2 sum(0);
+      int n = 0;
+      for (const CellEdge& e : c.edges)
+        if (!e.is_virtual) sum += 0.5 * (c.vertices[e.from] + c.position(e.to, e.offset)), ++n;
+      return sum / double(n);
+    };
+    const CellEdge& e = cell.edges[0];
+    const Design removed = with_operator(d, op(EdgeOperator::Kind::Remove, e.from, e.to, e.offset));
+    const UnitCell after = design_cell_shape(removed.pattern);
+    EXPECT_GT(glm::length(edges_centre(after) - edges_centre(cell)), 1e-3) << enum_name(t) << ": the old centre moved";
+    EXPECT_EQ(cell_view_centre(after), cell_view_centre(cell)) << enum_name(t);
+    const Design added = with_operator(d, op(EdgeOperator::Kind::Add, 0, 0, {1, 1}));
+    EXPECT_EQ(cell_view_centre(design_cell_shape(added.pattern)), cell_view_centre(cell)) << enum_name(t);
+  }
 }
 
 TEST(DesignEdits, OperatorsAreAddedOnlyWhenTheCellTakesThem) {

@@ -9,6 +9,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <iterator>
 #include <fstream>
@@ -176,6 +177,50 @@ TEST(Document, ANewRunMakesTheLastRunsStatusAndErrorStale) {
   report_error(doc, "cannot read design.json", true);
   mark_run_started(doc);
   EXPECT_EQ(doc.messages.error, "cannot read design.json") << "an error of the user's action, not a run's, stays";
+}
+
+// A designer's trial: "ok: 481 elements" over a dome with visible holes. The status line says the
+// verdict with its problems, then the bare spots and the stones removed that the views mark; a
+// removed stone whose place another took since is no hole and gets no ghost.
+TEST(Document, TheRunsStatusCountsTheBareSpotsAndTheRemovedStonesItMarks) {
+  auto p = std::make_shared<Pavement>();
+  p->design.units = Units::Millimetre;
+  for (int i = 0; i < 3; ++i)
+    p->elements.push_back(ElementKind::Vertex, i, 0, {2.0 * i, 0}, {2.0 * i, 0, 0}, {0, 0, 1}, 1.8, ShapeKind::Gem);
+  p->resolution.removed_places = {{{2, 0.2}, {2, 0.2, 0}, 1.8}, {{9, 9}, {9, 9, 0}, 1.8}};
+  p->after.elements = 3;
+  p->after.fill = 0.95;
+  p->after.edges.measured = true;
+  p->after.edges.spot_stone = 1.44;
+  p->after.edges.bare_spots = 2;
+  p->after.edges.spots = {BareSpot{{5, 5, 0}, {5, 5}}, BareSpot{{7, 5, 0}, {7, 5}}};
+  Document doc;
+  set_result(doc, p, doc.revision, 10);
+  ASSERT_EQ(doc.result.ghosts.size(), 1u) << "the removal at (2, 0.2) lies under a stone standing there now";
+  EXPECT_EQ(doc.result.ghosts[0].position, glm::dvec3(9, 9, 0));
+  const std::string ok = run_status_text(doc.result);
+  EXPECT_EQ(ok.rfind("ok: 3 elements, 0 contact violations; 2 bare spots where a 1.44 mm stone still fits; 1 stone "
+                     "removed where they still collided (marked in the views)", 0), 0u) << ok;
+
+  p->after.fill = 0.5;  // now the verdict's own problem comes first
+  set_result(doc, p, doc.revision, 10);
+  const std::string bare = run_status_text(doc.result);
+  EXPECT_EQ(bare.rfind("NOT OK: bare patches: 50%", 0), 0u) << bare;
+  EXPECT_NE(bare.find("2 bare spots"), std::string::npos) << bare;
+
+  p->after.fill = 0.95;
+  p->after.edges.bare_spots = 0;
+  p->after.edges.spots.clear();
+  p->resolution.removed_places.clear();
+  set_result(doc, p, doc.revision, 10);
+  const std::string clean = run_status_text(doc.result);
+  EXPECT_EQ(clean.find("marked"), std::string::npos) << "nothing to look for: " << clean;
+}
+
+// With no surface open, no spacing is too large to type (the engine's bound is the map across).
+TEST(Document, NoSurfaceNoLargestSpacing) {
+  Document doc;
+  EXPECT_TRUE(std::isinf(largest_spacing(doc)));
 }
 
 }  // namespace paver::studio

@@ -156,6 +156,24 @@ TEST(Script, ABoxSelectsAndTheSelectionIsPinnedOrDeleted) {
   EXPECT_NE(error_of("select selection").find("whole number >= 0"), std::string::npos);
 }
 
+TEST(Script, TypeNamesAFieldTheTextAndHowItIsLetGo) {
+  const auto typed = parse_script("type \"stone diameter\" 0\ntype \"D (spacing)\" 0-5 away\ntype gap \"\" tab\n", "s.txt");
+  ASSERT_EQ(typed.size(), 3u);
+  EXPECT_EQ(typed[0].kind, Kind::Type);
+  EXPECT_EQ(typed[0].text, "stone diameter");
+  EXPECT_EQ(typed[0].value, "0");
+  EXPECT_EQ(typed[0].type_end, TypeEnd::Enter) << "Enter unless told";
+  EXPECT_EQ(typed[1].text, "D (spacing)");
+  EXPECT_EQ(typed[1].value, "0-5");
+  EXPECT_EQ(typed[1].type_end, TypeEnd::Away);
+  EXPECT_EQ(typed[2].text, "gap");
+  EXPECT_EQ(typed[2].value, "") << "a quoted empty text clears the field";
+  EXPECT_EQ(typed[2].type_end, TypeEnd::Tab);
+  EXPECT_NE(error_of("type \"stone diameter 0").find("a quote is not closed"), std::string::npos);
+  EXPECT_NE(error_of("type gap").find("the text to type"), std::string::npos);
+  EXPECT_NE(error_of("type gap 1 escape").find("end with enter, tab or away"), std::string::npos);
+}
+
 TEST(Script, OrbitTakesDegreesAndFrames) {
   const auto orbit = parse_script("orbit -45.5 30\n", "s.txt");
   ASSERT_EQ(orbit.size(), 1u);

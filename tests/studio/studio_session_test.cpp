@@ -844,4 +844,88 @@ TEST(StudioScript, ATypoFailsBeforeAnyWindowOpens) {
   EXPECT_NE(output.find(":2: unknown command 'optimise'"), std::string::npos) << output;
 }
 
+// Pixels of the bare-spot marks' red (255, 40, 90) in a screenshot's views: not the ratio scale's
+// reds (no blue in them) nor the greys.
+long spot_red_pixels(const fs::path& shot) {
+  int width = 0, height = 0, channels = 0;
+  unsigned char* pixels = stbi_load(shot.string().c_str(), &width, &height, &channels, 3);
+  if (!pixels) return -1;
+  long red = 0;
+  for (int y = 60; y < height - 40; ++y)
+    for (int x = 440; x < width; ++x) {
+      const unsigned char* p = pixels + 3 * (long(y) * width + x);
+      if (p[0] > 220 && p[1] < 90 && p[2] > 60 && p[2] < 140) ++red;
+    }
+  stbi_image_free(pixels);
+  return red;
+}
+
+// A designer's trial: a dome at tri D 8 showed single-stone holes while the status said "ok: 481
+// elements" and the views stayed green. The status line now counts the bare spots report.json
+// counts for the same design, and the stones removed, and both views mark them (B hides them).
+TEST_F(StudioSession, TheStatusAndBothViewsShowTheBareSpotsTheReportCounts) {
+  const fs::path marked = dir_ / "marked.png", plain = dir_ / "plain.png", map = dir_ / "map.png";
+  const fs::path script = dir_ / "session.txt", saved = dir_ / "design.json";
+  std::ofstream(script) << "open assets/surfaces/dome.obj\npattern tri\nspacing 8\noptimize\nwait 3\n"
+                        << "screenshot " << marked.string() << "\nview2d\nwait 3\nscreenshot " << map.string()
+                        << "\nkey B\nwait 3\nscreenshot " << plain.string() << "\nsave " << saved.string() << "\nquit\n";
+  const Outcome r = run_script(script);
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const std::size_t at = r.out.rfind("status: ok: ");
+  ASSERT_NE(at, std::string::npos) << describe(r);
+  const std::string status = r.out.substr(at, r.out.find('\n', at) - at);
+  const std::size_t spots_at = status.find(" bare spot");
+  ASSERT_NE(spots_at, std::string::npos) << "the holes are said: " << status;
+  const long said = std::stol(status.substr(status.rfind("; ", spots_at) + 2));
+  EXPECT_NE(status.find("removed where they still collided (marked in the views)"), std::string::npos) << status;
+
+  // The same design on the CLI: report.json's count.
+  const fs::path cli_out = dir_ / "cli";
+  const Outcome cli = run_in_source(quote(PAVER_CLI) + " run assets/surfaces/dome.obj --design " +
+                                        quote(saved.string()) + " --backend cpu --formats ply --out " +
+                                        quote(cli_out.string()),
+                                    dir_);
+  ASSERT_EQ(cli.exit_code, 0) << describe(cli);
+  const nlohmann::json report = nlohmann::json::parse(read_text(cli_out / "report.json"));
+  const long counted = report["quality_after"]["edges"]["bare_spots"].get<long>();
+  EXPECT_GT(counted, 0) << "the issue's dome has holes to show";
+  EXPECT_EQ(said, counted) << status;
+
+  // Marked in the 3D view and in the 2D map; B takes the marks away.
+  const long in_3d = spot_red_pixels(marked), in_2d = spot_red_pixels(map), hidden = spot_red_pixels(plain);
+  ASSERT_GE(hidden, 0) << "cannot read " << plain;
+  EXPECT_GT(in_3d, hidden + 40) << in_3d << " red mark pixels in 3D, " << hidden << " hidden";
+  EXPECT_GT(in_2d, hidden + 40) << in_2d << " red mark pixels in 2D, " << hidden << " hidden";
+}
+
+// A designer's trial: stone diameter 0 + Enter reverted silently, "0-5" in D reverted on a click
+// elsewhere, gap 99 mm on the pendant became D 99.8 and was refused as a spacing larger than the
+// surface while the panel kept 99. Typed as a hand types them, each is refused at its field with
+// its range, said on the status line, and the design does not change; a good value is taken.
+TEST_F(StudioSession, ValuesTypedIntoFieldsAreRefusedAtTheFieldWithTheirRange) {
+  const fs::path script = dir_ / "session.txt", before = dir_ / "before.json", after = dir_ / "after.json";
+  const fs::path shot = dir_ / "refused.png";
+  std::ofstream(script) << "open assets/surfaces/pendant.obj\ndesign assets/designs/pendant_tri_gems.json\noptimize\n"
+                        << "save " << before.string() << "\npanel elements\n"
+                        << "type \"stone diameter\" 0\ntype gap 99 tab\npanel pattern\n"
+                        << "type \"D (spacing)\" 0-5 away\nwait 2\nscreenshot " << shot.string() << "\n"
+                        << "save " << after.string() << "\ntype \"D (spacing)\" 2.5\nwait 2\nsave "
+                        << (dir_ / "taken.json").string() << "\nquit\n";
+  const Outcome r = run_script(script);
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  EXPECT_NE(r.out.find("status: refused: stone diameter '0': too small; give a value above 0 mm and below "),
+            std::string::npos) << describe(r);
+  EXPECT_NE(r.out.find("status: refused: gap '99': too large; give a value of at least 0 mm and below "),
+            std::string::npos) << describe(r);
+  EXPECT_NE(r.out.find("(D = stone + gap would be larger than the surface: the surface is about "), std::string::npos)
+      << describe(r);
+  EXPECT_NE(r.out.find("status: refused: D (spacing) '0-5': is not a number; give a value of at least 0 mm"),
+            std::string::npos) << describe(r);
+  EXPECT_EQ(r.out.find("error:"), std::string::npos) << "refused at the field, never a run's error: " << describe(r);
+  EXPECT_EQ(read_text(before), read_text(after)) << "a refused value changes nothing";
+  const nlohmann::json taken = nlohmann::json::parse(read_text(dir_ / "taken.json"));
+  EXPECT_EQ(taken["pattern"]["spacing"].get<double>(), 2.5) << "a good value is taken";
+  EXPECT_TRUE(fs::exists(shot));
+}
+
 }  // namespace

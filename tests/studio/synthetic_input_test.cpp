@@ -41,5 +41,22 @@ TEST(SyntheticInput, KeysByName) {
   EXPECT_EQ(frames[1].key, -1) << "released the next frame";
 }
 
+TEST(SyntheticInput, TypingClicksIntoTheFieldTypesACharacterAFrameAndLetsGo) {
+  const auto entered = typing_frames({50, 60}, "0-5", TypeEnd::Enter, {900, 790});
+  ASSERT_EQ(entered.size(), 3u + 3u + 2u) << "click, one frame a character, Enter down and up";
+  EXPECT_TRUE(entered[1].left_down) << "the click that focuses (and selects) the field";
+  EXPECT_EQ(entered[3].text, "0");
+  EXPECT_EQ(entered[4].text, "-");
+  EXPECT_EQ(entered[5].text, "5");
+  EXPECT_EQ(entered[6].key, GLFW_KEY_ENTER);
+  const auto tabbed = typing_frames({50, 60}, "1", TypeEnd::Tab, {900, 790});
+  EXPECT_EQ(tabbed[4].key, GLFW_KEY_TAB);
+  const auto away = typing_frames({50, 60}, "\xc2\xb5m", TypeEnd::Away, {900, 790});
+  ASSERT_EQ(away.size(), 3u + 2u + 3u) << "a UTF-8 character is one frame";
+  EXPECT_EQ(away[3].text, "\xc2\xb5");
+  EXPECT_EQ(away.back().mouse, glm::vec2(900, 790)) << "let go by a click elsewhere";
+  EXPECT_TRUE(away[6].left_down);
+}
+
 }  // namespace
 }  // namespace paver::studio

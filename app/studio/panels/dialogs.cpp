@@ -29,10 +29,14 @@ void status_bar(Studio& s, ImVec2 pos, ImVec2 size) {
     ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "unsaved");
     ImGui::SameLine();
   }
-  const bool error = s.doc.messages.status.starts_with("error:");
+  const std::string& status = s.doc.messages.status;
+  const bool error = status.starts_with("error:") || status.starts_with("refused:") || status.starts_with("NOT OK");
+  // A pavement that is ok but leaves bare spots or removed stones: amber, as a thing to look at.
+  const bool notice = status.starts_with("ok:") && status.find("(marked in the views)") != std::string::npos;
+  if (notice) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.78f, 0.3f, 1));
   if (error) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.45f, 0.4f, 1));
   ImGui::TextUnformatted(s.doc.messages.status.c_str());
-  if (error) ImGui::PopStyleColor();
+  if (error || notice) ImGui::PopStyleColor();
   ImGui::End();
 }
 

@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 namespace paver::studio {
@@ -41,12 +42,17 @@ bool fraction_slider(Document& doc, Design& d, const char* label, double& value,
 
 // A length typed in the surface's unit that applies on Enter or when the field loses focus
 // (never on every keystroke: typing 1.5 must not pave at 1 first).
-bool length_field(const char* label, double& value, const char* unit) {
+bool length_field(const char* label, double& value, const char* unit, const NumberRule& rule) {
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8);
-  const bool changed = typed_number(label, value);
+  const bool changed = typed_number(label, value, "%.4g", rule);
   ImGui::SameLine();
   ImGui::TextUnformatted(unit);
   return changed;
+}
+
+// The same, for a design key: its range from the key table, in the surface's unit.
+bool length_field(const char* label, double& value, const char* unit, Key key) {
+  return length_field(label, value, unit, NumberRule::of(key, unit));
 }
 
 std::string sizes_text(const std::vector<double>& sizes) {
@@ -103,10 +109,10 @@ void grade_fields(Document& doc, Design& d, double stone, const char* unit) {
               "that the smaller stones lie closer; each stone is a stocked size (the fill sizes between, else "
               "0.05 mm steps).");
   if (grade.by == GradeBy::None) return;
-  if (length_field("smallest graded", grade.smallest, unit)) change_design(doc, d);
+  if (length_field("smallest graded", grade.smallest, unit, Key::grade_smallest)) change_design(doc, d);
   help_marker("The smallest stone of the grade: under the stone size, and at least a quarter of it.");
   if (grade.by == GradeBy::Rim) {
-    if (length_field("grade width", grade.width, unit)) change_design(doc, d);
+    if (length_field("grade width", grade.width, unit, Key::grade_width)) change_design(doc, d);
     help_marker("How far in from the edge margin the stones grow back to the stone size (0 = three stones).");
   }
 }
@@ -129,14 +135,22 @@ void jewellery_section(Document& doc, Design& d, UiState& ui) {
                          : doc.result.pavement ? doc.result.pavement->design.pattern.spacing
                                                : 0;
   double stone = d.elements.vertex.enabled ? d.elements.vertex.scale * spacing : 0;
-  if (length_field("stone diameter", stone, unit.c_str()) && stone > 0) {
+  // D = stone + gap: both fields refuse what would make D larger than the surface, each in its words.
+  const double widest = largest_spacing(doc);
+  char across[96];
+  std::snprintf(across, sizeof across, "the surface is about %.4g %s across", widest, unit.c_str());
+  NumberRule stone_rule{ValueRange::above(0), unit};
+  stone_rule.below(widest - d.elements.gap, "D = stone + gap would be larger than the surface: " + std::string(across));
+  if (length_field("stone diameter", stone, unit.c_str(), stone_rule)) {
     set_stone_size(d, stone);
     change_design(doc, d);
   }
   help_marker("Round brilliants (gems) of this girdle diameter on the vertices: D becomes stone + gap. "
               "Type a size and press Enter.");
   double gap = d.elements.gap;
-  if (length_field("gap##stones", gap, unit.c_str())) {
+  NumberRule gap_rule = NumberRule::of(Key::gap, unit);
+  if (stone > 0) gap_rule.below(widest - stone, "D = stone + gap would be larger than the surface: " + std::string(across));
+  if (length_field("gap##stones", gap, unit.c_str(), gap_rule)) {
     set_gap_keeping_stone_size(d, gap, stone);
     change_design(doc, d);
   }
@@ -144,7 +158,7 @@ void jewellery_section(Document& doc, Design& d, UiState& ui) {
               "centres are closer than the sum of their radii plus the gap. JewelCraft's default is 0.2 mm. "
               "With a stone size, D grows with it so the stones keep their size; with stones on the edges too, "
               "D and the proportions stay.");
-  if (length_field("edge margin", d.elements.margin, unit.c_str())) change_design(doc, d);
+  if (length_field("edge margin", d.elements.margin, unit.c_str(), Key::margin)) change_design(doc, d);
   help_marker("No stone comes nearer the surface's edge than this (0 = its edge may touch the rim).");
   if (enum_combo("rim rows", d.elements.rim_rows, {"none (trimmed)", "around the holes", "along every rim"}))
     change_design(doc, d);
@@ -156,11 +170,9 @@ void jewellery_section(Document& doc, Design& d, UiState& ui) {
               "gap between every three stones in contact, more around the stones that need them (rim stones, "
               "grids).");
   if (d.elements.beads.enabled) {
-    if (length_field("least bead", d.elements.beads.min_diameter, unit.c_str()) && d.elements.beads.min_diameter > 0)
-      change_design(doc, d);
+    if (length_field("least bead", d.elements.beads.min_diameter, "mm", Key::beads_min_diameter)) change_design(doc, d);
     help_marker("No bead is smaller: a cast bead is about 0.5-0.6 mm.");
-    if (length_field("bead over girdle", d.elements.beads.over, unit.c_str()) && d.elements.beads.over >= 0)
-      change_design(doc, d);
+    if (length_field("bead over girdle", d.elements.beads.over, "mm", Key::beads_over)) change_design(doc, d);
     help_marker("How far each bead reaches over the girdle of every stone it holds.");
     fraction_slider(doc, d, "bead size", d.elements.beads.scale, 0.5, 2.0);
   }

@@ -1,12 +1,17 @@
 #pragma once
 // The studio's panels: free functions that draw the parts they are given, every frame, and
 // change the design only through change_design (so each change is undoable and re-runs).
+#include "../number_rules.h"
 #include "core/enum_names.h"
+
+#include <glm/vec2.hpp>
 
 #include <imgui.h>
 
 #include <algorithm>
 #include <initializer_list>
+#include <optional>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -33,8 +38,14 @@ void file_dialog(Studio& s);                           // the file browser, and 
 // A "(?)" after the last item, with `text` as its tooltip.
 void help_marker(const char* text);
 // A number field that applies when it lets go (Enter, Tab, a click elsewhere), never on every
-// keystroke (typing 0.5 must not pave at 0 first); true when the value changed.
-bool typed_number(const char* label, double& value, const char* format = "%.4g");
+// keystroke (typing 0.5 must not pave at 0 first); true when the value changed. Text that is no
+// number or out of `rule`'s range is refused at the field: outlined, its reason under it, kept as
+// typed, and posted to the status line (number_rules.h).
+bool typed_number(const char* label, double& value, const char* format = "%.4g", const NumberRule& rule = {});
+// Where the field of this label (before any "##") was drawn, if it was this frame or the last:
+// a script's `type` clicks there, as a designer does.
+void remember_field_place(const char* label);
+std::optional<glm::vec2> field_centre(std::string_view label);
 // A separator with a title under it.
 void section(const char* title);
 

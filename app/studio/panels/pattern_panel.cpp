@@ -8,6 +8,7 @@
 #include "../studio.h"
 
 #include "core/input_error.h"
+#include "design/design_keys.h"
 #include "elements/elements.h"
 
 #include <glm/geometric.hpp>
@@ -15,6 +16,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <string>
 
@@ -54,10 +56,7 @@ void unit_cell_editor(Document& doc, UiState& ui) {
   ImDrawList* draw = ImGui::GetWindowDrawList();
   draw->AddRectFilled(origin, ImVec2(origin.x + side, origin.y + side), IM_COL32(24, 26, 30, 255));
 
-  // Centre the unit cell's vertices and edges, with a margin of about one cell around them.
-  glm::dvec2 centre(0);
-  for (const CellEdge& e : cell.edges) centre += 0.5 * (cell.vertices[e.from] + cell.position(e.to, e.offset));
-  centre /= double(std::max<std::size_t>(cell.edges.size(), 1));
+  const glm::dvec2 centre = cell_view_centre(cell);  // still under the cursor as edges change
   const double extent = std::max({glm::length(cell.a1 + cell.a2), glm::length(cell.a1 - cell.a2), 1.0});
   const float scale = float(side / (2.2 * extent));
   const auto to_screen = [&](glm::dvec2 p) {
@@ -169,8 +168,10 @@ constexpr double kBrushRadiusMin = 1, kBrushRadiusMax = 15, kBrushStrengthMin = 
 void placement_section(Document& doc, Design& d) {
   section("Placement (the pattern over the map)");
   Placement& p = d.placement;
-  bool changed = typed_number("offset u", p.offset.x);
-  changed |= typed_number("offset v", p.offset.y);
+  // A finite number, as design.json takes them.
+  const NumberRule any = NumberRule{ValueRange::any()};
+  bool changed = typed_number("offset u", p.offset.x, "%.4g", any);
+  changed |= typed_number("offset v", p.offset.y, "%.4g", any);
   help_marker("Moves the pattern over the map, in surface units (the left drag in the 2D view).");
   changed |= enum_combo("rows along axis", p.align, {"x", "y", "z", "none (the map's)"});
   help_marker("Turns the pattern so that its rows follow a world axis (x, y or z) as it lies on the surface, "
@@ -192,10 +193,10 @@ void placement_section(Document& doc, Design& d) {
       ImGui::TextDisabled("laid at (%.4g, %.4g): %zu elements laid out, %zu at the offset above", f.chosen.offset.x,
                           f.chosen.offset.y, f.chosen.laid_out, f.at_design.laid_out);
   }
-  changed |= typed_number("rotation (degrees)", p.rotation_deg);
+  changed |= typed_number("rotation (degrees)", p.rotation_deg, "%.4g", NumberRule::of(Key::rotation_deg, "degrees"));
   help_marker("Turns the pattern counter-clockwise over the map (the round handle in the 2D view); with rows "
               "along an axis, on top of that. On a band the band sets the rows' direction instead.");
-  changed |= typed_number("scale", p.scale);
+  changed |= typed_number("scale", p.scale, "%.4g", NumberRule::of(Key::placement_scale));
   help_marker("Scales the map under the pattern, no unit: above 1 the map grows and more elements fit at the same "
               "D (the square handle). It must stay above 0.");
   if (changed) change_design(doc, d);  // validates: a scale <= 0 is refused with the field named
@@ -218,7 +219,13 @@ void pattern_panel(Document& doc, UiState& ui) {
               "cell's edges.");
 
   // Typing 0.5 must not pave at 0 first (nor ask about it): the value applies when the field lets go.
-  if (typed_number("D (spacing)", d.pattern.spacing)) change_design(doc, d);
+  const std::string unit(enum_name(d.units));
+  NumberRule spacing_rule = NumberRule::of(Key::pattern_spacing, unit);
+  char across[96];
+  std::snprintf(across, sizeof across, "no two elements fit: the surface is about %.4g %s across", largest_spacing(doc),
+                unit.c_str());
+  spacing_rule.below(largest_spacing(doc), across);
+  if (typed_number("D (spacing)", d.pattern.spacing, "%.4g", spacing_rule)) change_design(doc, d);
   help_marker("Edge length of the tessellation in surface units; type it and press Enter (or Tab). 0 = derived from the "
               "surface (about 1000 points). A spacing that would place more elements than the studio's budget "
               "asks before it runs.");

@@ -1,6 +1,9 @@
 #include "panels.h"
 
 #include "../studio.h"
+#include "../number_rules.h"
+
+#include <imgui_stdlib.h>
 
 #include <cctype>
 #include <cstdio>
@@ -22,34 +25,85 @@ void help_marker(const char* text) {
   }
 }
 
-bool typed_number(const char* label, double& value, const char* format) {
-  // What is being typed, per field, while it has the focus: ImGui writes it on every keystroke,
-  // and the design only takes it when the field lets go (Enter, Tab or a click elsewhere). What the
-  // field showed when it took the focus is kept too: Escape restores that text, rounded by
-  // `format`, and that is no change.
-  struct Typing {
-    double shown, typed;
+bool typed_number(const char* label, double& value, const char* format, const NumberRule& rule) {
+  // Per field: the text while it is typed (the design takes it only when the field lets go: Enter,
+  // Tab or a click elsewhere), and a refused text with its reason, kept on screen until the field
+  // takes a value or the value changes under it (an undo). Escape restores what was shown.
+  struct Field {
+    std::string text, shown, problem;
+    double value_when_refused = 0;
+    bool active = false;  // being typed into
   };
-  static std::map<ImGuiID, Typing> typing;
+  static std::map<ImGuiID, Field> fields;
   const ImGuiID id = ImGui::GetID(label);
-  const auto it = typing.find(id);
-  double typed = it != typing.end() ? it->second.typed : value;
-  ImGui::InputDouble(label, &typed, 0, 0, format);
-  if (ImGui::IsItemActive()) {
-    if (it == typing.end()) {
-      char text[64];
-      std::snprintf(text, sizeof text, format, value);
-      typing[id] = {std::strtod(text, nullptr), typed};
-    } else {
-      it->second.typed = typed;
-    }
-    return false;
+  char shown_text[64];
+  std::snprintf(shown_text, sizeof shown_text, format, value);
+  Field& field = fields[id];
+  if (!field.problem.empty() && value != field.value_when_refused) field = {};
+  if (field.problem.empty() && !field.active) field.text = field.shown = shown_text;
+  const bool refused = !field.problem.empty();
+  if (refused) {
+    ImGui::PushStyleColor(ImGuiCol_Border, ImVec4(1, 0.35f, 0.3f, 1));
+    ImGui::PushStyleVar(ImGuiStyleVar_FrameBorderSize, 2);
   }
-  const double shown = it != typing.end() ? it->second.shown : value;
-  if (it != typing.end()) typing.erase(it);
-  if (!ImGui::IsItemDeactivatedAfterEdit() || typed == shown || typed == value) return false;
-  value = typed;
-  return true;
+  ImGui::InputText(label, &field.text, ImGuiInputTextFlags_AutoSelectAll);
+  if (refused) {
+    ImGui::PopStyleVar();
+    ImGui::PopStyleColor();
+  }
+  remember_field_place(label);
+  field.active = ImGui::IsItemActive();
+  bool changed = false;
+  if (ImGui::IsItemDeactivated()) {
+    if (field.text == field.shown) {
+      field = {};  // nothing typed, or Escape
+    } else {
+      // The label as the designer reads it: what precedes "##".
+      const std::string_view name = std::string_view(label).substr(0, std::string_view(label).find("##"));
+      const TypedNumber typed = read_typed_number(name, field.text, rule);
+      if (!typed.value) {
+        field.problem = typed.problem;
+        field.value_when_refused = value;
+        post_refusal(typed.problem);
+      } else {
+        changed = *typed.value != value;
+        value = *typed.value;
+        field = {};
+      }
+    }
+  }
+  if (!field.problem.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.45f, 0.4f, 1));
+    ImGui::PushTextWrapPos(0);
+    ImGui::TextUnformatted(field.problem.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::PopStyleColor();
+  }
+  return changed;
+}
+
+namespace {
+struct FieldPlace {
+  ImVec2 min, max;
+  int frame = -1;
+};
+std::map<std::string, FieldPlace, std::less<>>& field_places() {
+  static std::map<std::string, FieldPlace, std::less<>> places;
+  return places;
+}
+}  // namespace
+
+void remember_field_place(const char* label) {
+  const std::string_view full(label);
+  field_places()[std::string(full.substr(0, full.find("##")))] = {ImGui::GetItemRectMin(), ImGui::GetItemRectMax(),
+                                                                  ImGui::GetFrameCount()};
+}
+
+std::optional<glm::vec2> field_centre(std::string_view label) {
+  const auto it = field_places().find(label);
+  // Drawn this frame or the last: a field of a panel not shown is not there to click.
+  if (it == field_places().end() || it->second.frame < ImGui::GetFrameCount() - 1) return std::nullopt;
+  return glm::vec2(0.5f * (it->second.min.x + it->second.max.x), 0.5f * (it->second.min.y + it->second.max.y));
 }
 
 void section(const char* title) {

@@ -340,6 +340,58 @@ void draw_held(ImDrawList* draw, ImVec2 centre, float radius) {
   draw->AddCircleFilled(centre, r, IM_COL32(250, 160, 40, 255), 20);
 }
 
+// What the verdict's figures count, where the eye can find it: a bare spot (a stone of the size the
+// spot measure asks would still fit there) as a dashed red ring of that size, and a stone that
+// collision resolution took away as a grey ghost with a cross.
+constexpr ImU32 kSpotColour = IM_COL32(255, 40, 90, 255), kGhostColour = IM_COL32(215, 215, 225, 230);
+
+void draw_bare_spot(ImDrawList* draw, ImVec2 centre, float radius) {
+  radius = std::max(radius, 4.0f);
+  constexpr int kDashes = 12;
+  for (int k = 0; k < kDashes; ++k) {
+    const float a0 = glm::two_pi<float>() * float(k) / kDashes, a1 = a0 + glm::pi<float>() / kDashes;
+    draw->PathArcTo(centre, radius, a0, a1, 6);
+    draw->PathStroke(IM_COL32(0, 0, 0, 200), 0, 4.0f);
+    draw->PathArcTo(centre, radius, a0, a1, 6);
+    draw->PathStroke(kSpotColour, 0, 2.0f);
+  }
+}
+
+void draw_ghost(ImDrawList* draw, ImVec2 centre, float radius) {
+  radius = std::max(radius, 4.0f);
+  draw->AddCircle(centre, radius, IM_COL32(0, 0, 0, 180), 32, 3.0f);
+  draw->AddCircle(centre, radius, kGhostColour, 32, 1.5f);
+  const float d = 0.5f * radius;
+  draw->AddLine(ImVec2(centre.x - d, centre.y - d), ImVec2(centre.x + d, centre.y + d), kGhostColour, 1.5f);
+  draw->AddLine(ImVec2(centre.x - d, centre.y + d), ImVec2(centre.x + d, centre.y - d), kGhostColour, 1.5f);
+}
+
+void draw_flaws_2d(const Studio& s, ImDrawList* draw, const MapFrame& f) {
+  if (!s.views.show_flaws || !s.doc.result.pavement) return;
+  const Pavement& p = *s.doc.result.pavement;
+  const float pixels_per_unit = float(f.size.y / (2 * f.view.half_height));
+  // As the stones are drawn there: the map keeps lengths (ARAP), so surface units are map units.
+  const auto map_radius = [&](double diameter) { return float(0.5 * diameter) * pixels_per_unit; };
+  for (const BareSpot& spot : p.after.edges.spots) draw_bare_spot(draw, f.to_screen(spot.uv), map_radius(spot.wanted));
+  for (const RemovedElement& gone : s.doc.result.ghosts) draw_ghost(draw, f.to_screen(gone.uv), map_radius(gone.diameter));
+}
+
+void draw_flaws_3d(const Studio& s, ImDrawList* draw, const View3dFrame& f) {
+  if (!s.views.show_flaws || !s.doc.result.pavement) return;
+  const Pavement& p = *s.doc.result.pavement;
+  // Drawn facing the camera: a spot has no normal of its own.
+  const auto facing = [&](glm::dvec3 at) {
+    const glm::dvec3 view = f.eye - at;
+    return glm::normalize(glm::cross(view, std::abs(view.z) < 0.9 * glm::length(view) ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0)));
+  };
+  for (const BareSpot& spot : p.after.edges.spots)
+    if (const std::optional<ImVec2> c = f.to_screen(spot.position))
+      draw_bare_spot(draw, *c, f.footprint_radius(spot.position, facing(spot.position), spot.wanted, *c));
+  for (const RemovedElement& gone : s.doc.result.ghosts)
+    if (const std::optional<ImVec2> c = f.to_screen(gone.position))
+      draw_ghost(draw, *c, f.footprint_radius(gone.position, facing(gone.position), gone.diameter, *c));
+}
+
 // The selected elements (each as draw_selected shows it) and the box being drawn.
 void draw_selection_2d(Studio& s, ImDrawList* draw, const MapFrame& f) {
   if (s.ui.box_from) {
@@ -508,6 +560,7 @@ void view(Studio& s, int which, ImVec2 size, bool large) {
       pick_3d(s, frame);
     }
     draw->PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
+    draw_flaws_3d(s, draw, frame);
     draw_selection_3d(s, draw, frame);
     draw->PopClipRect();
   } else {
@@ -529,6 +582,7 @@ void view(Studio& s, int which, ImVec2 size, bool large) {
       if (s.ui.brush != Brush::Off) draw_brush_2d(s, draw, frame);
       if (!s.ui.edit_elements && s.ui.brush == Brush::Off)
         draw_handles(draw, placement_handles(frame, *s.doc.surface.map, shown_placement(s.doc)), s.ui.map_drag);
+      draw_flaws_2d(s, draw, frame);
       draw_selection_2d(s, draw, frame);
       draw->PopClipRect();
     }
@@ -567,6 +621,11 @@ void toolbar(Studio& s) {
   if (ImGui::Combo("##colour", &mode, modes, 2)) s.views.colour_mode = render::ColourMode(mode);
   next_item("legend");
   ImGui::Checkbox("legend", &s.views.show_legend);
+  next_item("bare spots (B) (?)");
+  ImGui::Checkbox("bare spots (B)", &s.views.show_flaws);
+  help_marker("Marks, in both views, each bare spot of the final pavement (a dashed red ring: a stone of that size "
+              "would still fit there, keeping the gap) and each stone removed because it still collided (a grey "
+              "ghost). The status line counts both.");
   next_item("edit stones (E) (?)");
   ImGui::Checkbox("edit stones (E)", &s.ui.edit_elements);
   help_marker("Click a stone to select it (either view); drag it to move it, in 3D along the surface (it stays where you "
