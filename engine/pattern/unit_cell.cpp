@@ -11,6 +11,7 @@
 #include <map>
 #include <numbers>
 #include <numeric>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <tuple>
@@ -83,6 +84,29 @@ int find_edge(const UnitCell& cell, int from, int to, glm::ivec2 offset) {
       return int(i);
   }
   return -1;
+}
+
+// The two vertices of the periodic graph nearest each other that no edge joins (virtual edges
+// join too: their springs hold): the pair and its distance, within two cells.
+struct UnjoinedPair {
+  int from = -1, to = -1;
+  glm::ivec2 offset{0};
+  double distance = std::numeric_limits<double>::infinity();
+};
+
+UnjoinedPair nearest_unjoined(const UnitCell& cell) {
+  UnjoinedPair nearest;
+  const int n = int(cell.vertices.size());
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      for (int dx = -2; dx <= 2; ++dx)
+        for (int dy = -2; dy <= 2; ++dy) {
+          const glm::ivec2 offset(dx, dy);
+          if (i == j && offset == glm::ivec2(0)) continue;
+          const double d = glm::length(cell.position(j, offset) - cell.position(i, {0, 0}));
+          if (d < nearest.distance && find_edge(cell, i, j, offset) < 0) nearest = {i, j, offset, d};
+        }
+  return nearest;
 }
 
 std::string describe(int from, int to, glm::ivec2 offset) {
@@ -396,6 +420,24 @@ void apply_operator(UnitCell& cell, const EdgeOperator& op) {
       // Normalise so the edge leaves cell (0,0).
       if (find_edge(cell, flipped.from, flipped.to, flipped.offset) >= 0)
         throw InputError(name + ": the flipped edge " + describe_edge(flipped) + " already exists");
+      // A flip turns every translate of the edge at once. Where that leaves two vertices nearer
+      // than the new edge and joined by nothing, the lattice is sheared, not re-connected: its
+      // springs press those stones together (a flipped square grid lost 154 stones of 500 on the
+      // dome). Said here, with the way that works, instead of a degenerate pattern.
+      UnitCell flipped_cell = cell;
+      flipped_cell.edges[existing] = flipped;
+      const UnjoinedPair near = nearest_unjoined(flipped_cell);
+      if (near.distance < flipped.rest_length * (1 - 1e-9)) {
+        std::ostringstream why;
+        why.precision(3);
+        why << name << ": a flip here shears the whole lattice: the new edge " << describe_edge(flipped) << " is "
+            << flipped.rest_length / cell.spacing << " D long, while vertices " << describe(near.from, near.to, near.offset)
+            << " are " << near.distance / cell.spacing
+            << " D apart with no edge between them, so the springs would press their stones together. A flip turns "
+               "the shared edge of two triangles into the other diagonal (add a square's diagonal, then flip it); "
+               "to change the pattern otherwise, remove and add edges";
+        throw InputError(why.str());
+      }
       cell.edges[existing] = flipped;
       return;
     }
