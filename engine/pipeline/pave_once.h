@@ -33,6 +33,8 @@ struct PaveState {
   Pavement pavement;                   // being built; pavement.design is set when the pass ends
   QualityBasis basis;                  // what fill and the violations are measured against
   std::vector<EditedParticle> edited;  // the designer's moved and added particles
+  // Deleted pattern stones that sat the edits' resolution out (apply_edits in pave_once.cpp).
+  std::vector<int> deleted_before_edits;
   // The lattice's solve, kept for the resolution and the edits that re-solve it.
   std::optional<SolverSurface> surface;
   std::optional<SpringSystem> system;

@@ -55,7 +55,8 @@ void set_aside_added(SpringSystem& system, const std::vector<EditedParticle>& ed
     if (e.added) system.stray_count[std::size_t(e.particle)] = kRetired;
 }
 
-HeldParticles place_edits(SpringSystem& system, const std::vector<EditedParticle>& edited, double spacing) {
+HeldParticles place_edits(SpringSystem& system, const std::vector<EditedParticle>& edited, double spacing,
+                          bool carry) {
   HeldParticles held;
   if (edited.empty()) return held;
   // Each edit's reach, around where the particle was and where it goes.
@@ -82,7 +83,8 @@ HeldParticles place_edits(SpringSystem& system, const std::vector<EditedParticle
     glm::dvec2 moved(system.position[p]);
     const glm::dvec2 at = moved;
     sources.for_each_covering(at, [&](int d, double distance) {
-      if (!edited[std::size_t(d)].added) moved += drag[std::size_t(d)] * falloff(distance / reach[std::size_t(d)]);
+      if (carry && !edited[std::size_t(d)].added)
+        moved += drag[std::size_t(d)] * falloff(distance / reach[std::size_t(d)]);
     });
     system.position[p] = glm::vec2(moved);
     bool near = false;

@@ -33,7 +33,10 @@ using HeldParticles = std::vector<std::pair<int, std::uint32_t>>;
 // After it: moves the edited particles and their neighbourhoods, holds the designer's pinned and
 // added ones (kPinned, for good) and every other particle beyond reach of an edit (until
 // release_held: for the resolution around the edits only).
-HeldParticles place_edits(SpringSystem& system, const std::vector<EditedParticle>& edited, double spacing);
+// `carry` false: the neighbourhood stays where it is (only the edited particles move), the way
+// tried beside the soft selection on tight pavé (pipeline/pave_once.cpp, apply_edits).
+HeldParticles place_edits(SpringSystem& system, const std::vector<EditedParticle>& edited, double spacing,
+                          bool carry = true);
 
 // Gives the particles held by place_edits their stray counts back.
 void release_held(SpringSystem& system, const HeldParticles& held);
