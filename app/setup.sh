@@ -19,7 +19,7 @@ packages=(
   libeigen3-dev libtbb-dev libglm-dev nlohmann-json3-dev libcli11-dev libstb-dev
   libgtest-dev libbenchmark-dev libtinygltf-dev lib3mf-dev libcgal-dev
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools glslang-tools spirv-tools
-  libglfw3-dev libimgui-dev xvfb xauth
+  libglfw3-dev libimgui-dev xvfb xauth fonts-dejavu-core
 )
 # libFuzzer and the sanitizer runtimes come with clang's compiler-rt.
 [ "$mode" = sanitize ] && packages+=(clang libclang-rt-dev)

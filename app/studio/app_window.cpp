@@ -1,4 +1,5 @@
 #include "app_window.h"
+#include "studio_look.h"
 
 #include "view_images.h"
 
@@ -144,7 +145,7 @@ void AppWindow::open(const WindowOptions& options) {
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // the layout is computed every frame; nothing to remember
-  ImGui::StyleColorsDark();
+  apply_studio_look();  // the font and theme (ImGui's own font where DejaVu Sans is not installed)
   ImGui_ImplGlfw_InitForVulkan(window_, true);
   ImGui_ImplVulkan_InitInfo info{};
   info.Instance = static_cast<VkInstance>(**ctx.instance);

@@ -534,14 +534,26 @@ void update_studio(Studio& s) {
   s.result_shown = sync_scene(s.scene, s.renderer, s.doc, s.live, s.views);
 }
 
+// What the status bar shows before its text ("[final, 257 ms from the edit] unsaved "), pixels.
+constexpr float kStatusPrefixWidth = 300;
+
 void draw_studio(Studio& s) {
   handle_shortcuts(s);
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
-  const float status_height = ImGui::GetFrameHeightWithSpacing() + 4;
-  const float side_width = std::min(430.0f, viewport->WorkSize.x * 0.4f);
+  // The status line wraps onto up to three lines rather than run off the window (a verdict with its
+  // problems and the bare spots is long); the views give up the height.
+  const float line = ImGui::GetTextLineHeightWithSpacing();
+  const float text_height =
+      ImGui::CalcTextSize(s.doc.messages.status.c_str(), nullptr, false, viewport->WorkSize.x - kStatusPrefixWidth).y;
+  const float status_height = ImGui::GetFrameHeightWithSpacing() + 4 + std::min(std::max(text_height - line, 0.0f), 2 * line);
   const ImVec2 origin = viewport->WorkPos, size = viewport->WorkSize;
+  // The splitter keeps both sides usable: the panels at least 300 pixels, the views 40% of the window.
+  const float side_width = s.views.side_width > 0
+                               ? std::clamp(s.views.side_width, std::min(300.0f, size.x * 0.4f), std::max(300.0f, size.x * 0.6f))
+                               : std::min(430.0f, size.x * 0.4f);
   side_panels(s, origin, ImVec2(side_width, size.y - status_height));
   views_area(s, ImVec2(origin.x + side_width, origin.y), ImVec2(size.x - side_width, size.y - status_height));
+  panel_splitter(s, ImVec2(origin.x + side_width - 3, origin.y), size.y - status_height);
   status_bar(s, ImVec2(origin.x, origin.y + size.y - status_height), ImVec2(size.x, status_height));
   dialogs(s);
   file_dialog(s);

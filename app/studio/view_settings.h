@@ -16,6 +16,7 @@ struct ViewSettings {
   bool show_legend = true;   // the legend of the colouring, over the large view
   bool show_inset = true;    // the other view in the large view's bottom-right corner
   bool show_flaws = true;    // the final pavement's bare spots and removed stones, marked in both views
+  float side_width = 0;      // the side panels' width in pixels once the splitter dragged it; 0: 430 (40% at most)
   double map_aspect = 1.6;   // width / height of the views' area, last drawn: the 2D view frames the whole map in it
   // Where the large view was last drawn, window pixels: a script's clicks at map points land there.
   glm::vec2 large_origin{0}, large_size{0};

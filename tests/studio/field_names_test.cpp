@@ -12,8 +12,8 @@ namespace {
 
 TEST(FieldNames, KeysNameThePanelAndTheFieldADesignerSees) {
   EXPECT_EQ(studio_field("pattern.spacing"), "Pattern > D (spacing)");
-  EXPECT_EQ(studio_field("elements.vertex.scale"), "Elements > V-elements > s");
-  EXPECT_EQ(studio_field("elements.edge[3].t"), "Elements > E-element 3 > t");
+  EXPECT_EQ(studio_field("elements.vertex.scale"), "Elements > V-elements > size (x D)");
+  EXPECT_EQ(studio_field("elements.edge[3].t"), "Elements > E-element 3 > along the edge");
   EXPECT_EQ(studio_field("elements.gap"), "Elements > Stones (jewellery) > gap");
   EXPECT_EQ(studio_field("placement.offset[1]"), "Pattern > Placement > offset");
   EXPECT_EQ(studio_field("solver.lambda_r"), "Optimize > keep the spacing (lambda_r)");
@@ -44,7 +44,7 @@ TEST(FieldNames, ARefusedDesignNamesTheFieldThenTheKey) {
   Design edge;
   edge.elements.edge.push_back({});
   edge.elements.edge[0].t = 2;
-  EXPECT_NE(message_for(edge).find("Elements > E-element 0 > t (elements.edge[0].t)"), std::string::npos)
+  EXPECT_NE(message_for(edge).find("Elements > E-element 0 > along the edge (elements.edge[0].t)"), std::string::npos)
       << message_for(edge);
   EXPECT_EQ(in_studio_words("a 'quoted word' and 'elements.gap'"),
             "a 'quoted word' and Elements > Stones (jewellery) > gap (elements.gap)")

@@ -35,7 +35,9 @@ void status_bar(Studio& s, ImVec2 pos, ImVec2 size) {
   const bool notice = status.starts_with("ok:") && status.find("(marked in the views)") != std::string::npos;
   if (notice) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.78f, 0.3f, 1));
   if (error) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.45f, 0.4f, 1));
+  ImGui::PushTextWrapPos(0);
   ImGui::TextUnformatted(s.doc.messages.status.c_str());
+  ImGui::PopTextWrapPos();
   if (error || notice) ImGui::PopStyleColor();
   ImGui::End();
 }

@@ -189,8 +189,8 @@ void elements_panel(Document& doc, UiState& ui) {
   jewellery_section(doc, d, ui);
   section("V-elements (on the pattern's vertices)");
   if (ImGui::Checkbox("enabled", &d.elements.vertex.enabled)) change_design(doc, d);
-  fraction_slider(doc, d, "s##vertex", d.elements.vertex.scale, 0.05, 1.0);
-  help_marker("Diameter = s * D; s in (0, 1].");
+  fraction_slider(doc, d, "size (x D)##vertex", d.elements.vertex.scale, 0.05, 1.0);
+  help_marker("The stone's diameter over D, in (0, 1]: 1 = stones that touch along every edge.");
   if (shape_combo("shape##vertex", d.elements.vertex.shape)) change_design(doc, d);
 
   section("E-elements (on the pattern's edges)");
@@ -205,16 +205,17 @@ void elements_panel(Document& doc, UiState& ui) {
     EdgeElementDesign& e = d.elements.edge[i];
     ImGui::PushID(i);
     if (ImGui::TreeNodeEx("##edge", ImGuiTreeNodeFlags_DefaultOpen, "E-element %d", i)) {
-      fraction_slider(doc, d, "t", e.t, 0.0, 1.0);
+      fraction_slider(doc, d, "along the edge", e.t, 0.0, 1.0);
       help_marker("Position along the edge, 0 = its first vertex, 1 = its second.");
-      fraction_slider(doc, d, "s", e.scale, 0.05, 1.0);
+      fraction_slider(doc, d, "size (x D)", e.scale, 0.05, 1.0);
+      help_marker("The stone's diameter over D, in (0, 1].");
       if (shape_combo("shape", e.shape)) change_design(doc, d);
-      ImGui::TextUnformatted(e.cell_edges.empty() ? "on every cell edge; only on:" : "only on cell edges:");
+      ImGui::TextUnformatted(e.cell_edges.empty() ? "on every cell edge; tick to keep to:" : "only on cell edges:");
       for (int c = 0; c < int(cell.edges.size()); ++c) {
         if (cell.edges[c].is_virtual) continue;
         bool on = std::find(e.cell_edges.begin(), e.cell_edges.end(), c) != e.cell_edges.end();
         ImGui::SameLine();
-        if (ImGui::Checkbox(("##c" + std::to_string(c)).c_str(), &on)) {
+        if (ImGui::Checkbox((std::to_string(c) + "##cell_edge").c_str(), &on)) {
           if (on)
             e.cell_edges.push_back(c);
           else
@@ -242,9 +243,9 @@ void elements_panel(Document& doc, UiState& ui) {
   if (ImGui::Checkbox("enabled##face", &d.elements.face.enabled)) change_design(doc, d);
   help_marker("One element at the centre of every face of the pattern (the mean of its corners), carried by "
               "them as the pattern is optimized; a face the map squeezes too much for it loses it.");
-  fraction_slider(doc, d, "s##face", d.elements.face.scale, 0.05, 1.0);
-  help_marker("Diameter = s * D; s in (0, 1]. A triangle's centre is 0.577 D from its corners, a Cairo "
-              "pentagon's 0.694 D: with V-elements of s = 1, s here is at most 0.15 and 0.38.");
+  fraction_slider(doc, d, "size (x D)##face", d.elements.face.scale, 0.05, 1.0);
+  help_marker("The diameter over D, in (0, 1]. A triangle's centre is 0.577 D from its corners, a Cairo "
+              "pentagon's 0.694 D: with V-elements of size 1, the size here is at most 0.15 and 0.38.");
   if (shape_combo("shape##face", d.elements.face.shape)) change_design(doc, d);
 
   section("Custom shape");

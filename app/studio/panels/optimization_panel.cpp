@@ -86,9 +86,17 @@ void optimization_panel(Studio& s) {
   Document& doc = s.doc;
   Design d = doc.design;
   ImGui::PushItemWidth(ImGui::GetFontSize() * 7);  // room for the labels in words
-  for (const SolverParameter& p : solver_parameters()) {
-    if (parameter_widget(p, d.solver)) change_design(doc, d, ImGui::IsItemActive());
-    help_marker(tooltip(p).c_str());
+  // What a designer reaches for first; the paper's forces and filter fold away under Advanced.
+  const auto basic = [](const SolverParameter& p) {
+    return p.name == "c" || p.name == "m" || p.name == "iterations" || p.name == "dt" || p.name == "threshold";
+  };
+  for (const bool advanced : {false, true}) {
+    if (advanced && !ImGui::CollapsingHeader("Advanced: the paper's forces, filter and strays")) break;
+    for (const SolverParameter& p : solver_parameters()) {
+      if (basic(p) == advanced) continue;
+      if (parameter_widget(p, d.solver)) change_design(doc, d, ImGui::IsItemActive());
+      help_marker(tooltip(p).c_str());
+    }
   }
   ImGui::PopItemWidth();
   if (ImGui::Button("defaults")) {

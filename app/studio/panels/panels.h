@@ -32,6 +32,7 @@ void help_panel();                                     // shortcuts
 
 void views_area(Studio& s, ImVec2 pos, ImVec2 size);   // the 3D and 2D views with their controls
 void status_bar(Studio& s, ImVec2 pos, ImVec2 size);
+void panel_splitter(Studio& s, ImVec2 pos, float height);  // drag it to resize the side panels
 void dialogs(Studio& s);                               // the error dialog, quit with unsaved changes
 void file_dialog(Studio& s);                           // the file browser, and Save as's replace question
 

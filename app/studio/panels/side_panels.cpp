@@ -112,12 +112,33 @@ void section(const char* title) {
   ImGui::TextUnformatted(title);
 }
 
+void panel_splitter(Studio& s, ImVec2 pos, float height) {
+  // ImGui 1.86 has no docking: a thin window over the panels' edge that a drag moves.
+  ImGui::SetNextWindowPos(pos);
+  ImGui::SetNextWindowSize(ImVec2(6, height));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+  ImGui::Begin("##splitter", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoBackground |
+                   ImGuiWindowFlags_NoSavedSettings);
+  ImGui::PopStyleVar();
+  ImGui::InvisibleButton("split", ImVec2(6, height));
+  const bool hot = ImGui::IsItemHovered() || ImGui::IsItemActive();
+  if (hot) ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
+  if (ImGui::IsItemActive()) s.views.side_width = pos.x + 3 + ImGui::GetIO().MouseDelta.x;
+  if (hot)
+    ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(pos.x + 2, pos.y), ImVec2(pos.x + 4, pos.y + height),
+                                              ImGui::GetColorU32(ImGuiCol_SeparatorHovered));
+  ImGui::End();
+}
+
 void side_panels(Studio& s, ImVec2 pos, ImVec2 size) {
   ImGui::SetNextWindowPos(pos);
   ImGui::SetNextWindowSize(size);
   ImGui::Begin("Paver Studio", nullptr,
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                    ImGuiWindowFlags_NoBringToFrontOnFocus);
+  // Fields leave room for their labels in words ("rotation (degrees)", "rows along axis"): none clipped.
+  ImGui::PushItemWidth(-ImGui::GetFontSize() * 10.5f);
   if (ImGui::BeginTabBar("panels")) {
     // Tab labels are the panel names capitalised ("optimize" -> "Optimize").
     const auto tab = [&](const char* name, auto&& draw) {
@@ -141,6 +162,7 @@ void side_panels(Studio& s, ImVec2 pos, ImVec2 size) {
     s.ui.select_panel.clear();
     ImGui::EndTabBar();
   }
+  ImGui::PopItemWidth();
   ImGui::End();
 }
 

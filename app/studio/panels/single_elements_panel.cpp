@@ -8,7 +8,9 @@
 
 #include "core/input_error.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <string>
 
 namespace paver::studio {
 
@@ -33,7 +35,13 @@ void single_elements_panel(Studio& s) {
     if (ImGui::Button("deselect (Esc)")) clear_selection(s.ui);
   } else if (s.ui.selected_element >= 0 && pavement && find_element(*pavement, s.ui.selected_element)) {
     const int id = s.ui.selected_element;
-    ImGui::TextWrapped("%s", describe_element(s.doc.design, *pavement, id).c_str());
+    // One fact a line: wrapping broke a number after its point ("u 5." / "695").
+    const std::string text = describe_element(s.doc.design, *pavement, id);
+    for (std::size_t from = 0; from < text.size();) {
+      const std::size_t to = std::min(text.find(", ", from), text.size());
+      ImGui::TextUnformatted(text.c_str() + from, text.c_str() + to);
+      from = to + 2;
+    }
     const bool pinned = is_pinned(s.doc.design, *pavement, id);
     if (ImGui::Button(pinned ? "unpin (Shift+P)" : "pin (P)")) pin_selected(s, !pinned);
     ImGui::SameLine();

@@ -392,6 +392,58 @@ void draw_flaws_3d(const Studio& s, ImDrawList* draw, const View3dFrame& f) {
       draw_ghost(draw, *c, f.footprint_radius(gone.position, facing(gone.position), gone.diameter, *c));
 }
 
+// A length of 1, 2 or 5 times a power of ten that spans about `pixels_wanted` at `pixels_per_unit`.
+double round_length(double pixels_per_unit, double pixels_wanted) {
+  const double want = pixels_wanted / pixels_per_unit;
+  const double decade = std::pow(10.0, std::floor(std::log10(want)));
+  for (const double step : {5.0, 2.0, 1.0})
+    if (step * decade <= want) return step * decade;
+  return decade;
+}
+
+// A scale bar at `at` (its left end), `pixels_per_unit` long per surface unit, labelled in the
+// design's unit and with what it measures.
+void draw_scale_bar(ImDrawList* draw, ImVec2 at, double pixels_per_unit, const std::string& unit, const char* where) {
+  if (!(pixels_per_unit > 0) || !std::isfinite(pixels_per_unit)) return;
+  const double length = round_length(pixels_per_unit, 110);
+  const float w = float(length * pixels_per_unit);
+  const ImU32 ink = IM_COL32(235, 235, 240, 230), shadow = IM_COL32(0, 0, 0, 170);
+  for (const auto& [colour, thick] : {std::pair{shadow, 4.0f}, std::pair{ink, 2.0f}}) {
+    draw->AddLine(at, ImVec2(at.x + w, at.y), colour, thick);
+    draw->AddLine(ImVec2(at.x, at.y - 5), ImVec2(at.x, at.y + 5), colour, thick);
+    draw->AddLine(ImVec2(at.x + w, at.y - 5), ImVec2(at.x + w, at.y + 5), colour, thick);
+  }
+  char text[64];
+  std::snprintf(text, sizeof text, "%g %s %s", length, unit.c_str(), where);
+  draw->AddText(ImVec2(at.x + 1, at.y - 22 + 1), shadow, text);
+  draw->AddText(ImVec2(at.x, at.y - 22), ink, text);
+}
+
+// The world axes as the camera sees them (x red, y green, z blue), the nearer drawn last.
+void draw_axis_gizmo(ImDrawList* draw, ImVec2 centre, const render::OrbitCamera& camera) {
+  const glm::vec3 forward = glm::normalize(camera.target - camera.eye());
+  glm::vec3 right = glm::cross(forward, glm::vec3(0, 0, 1));
+  right = glm::length(right) > 1e-6f ? glm::normalize(right) : glm::vec3(1, 0, 0);
+  const glm::vec3 up = glm::cross(right, forward);
+  struct Axis {
+    glm::vec3 direction;
+    const char* name;
+    ImU32 colour;
+  };
+  Axis axes[] = {{{1, 0, 0}, "x", IM_COL32(230, 80, 70, 255)},
+                 {{0, 1, 0}, "y", IM_COL32(110, 200, 90, 255)},
+                 {{0, 0, 1}, "z", IM_COL32(90, 140, 240, 255)}};
+  std::sort(std::begin(axes), std::end(axes),
+            [&](const Axis& a, const Axis& b) { return glm::dot(a.direction, forward) > glm::dot(b.direction, forward); });
+  constexpr float kLength = 30;
+  draw->AddCircleFilled(centre, kLength + 10, IM_COL32(20, 22, 26, 150), 32);
+  for (const Axis& a : axes) {
+    const ImVec2 tip(centre.x + kLength * glm::dot(a.direction, right), centre.y - kLength * glm::dot(a.direction, up));
+    draw->AddLine(centre, tip, a.colour, 2.5f);
+    draw->AddText(ImVec2(tip.x - 3, tip.y - 8), a.colour, a.name);
+  }
+}
+
 // The selected elements (each as draw_selected shows it) and the box being drawn.
 void draw_selection_2d(Studio& s, ImDrawList* draw, const MapFrame& f) {
   if (s.ui.box_from) {
@@ -562,6 +614,19 @@ void view(Studio& s, int which, ImVec2 size, bool large) {
     draw->PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
     draw_flaws_3d(s, draw, frame);
     draw_selection_3d(s, draw, frame);
+    if (large) {
+      // Where the camera looks: the target's depth is what the bar measures.
+      const render::OrbitCamera& camera = s.views.camera;
+      glm::vec3 side = glm::cross(camera.target - camera.eye(), glm::vec3(0, 0, 1));
+      side = glm::length(side) > 1e-6f ? glm::normalize(side) : glm::vec3(1, 0, 0);
+      const std::optional<ImVec2> a = frame.to_screen(glm::dvec3(camera.target)),
+                                  b = frame.to_screen(glm::dvec3(camera.target + side));
+      const ImVec2 corner(origin.x + size.x - 60, origin.y + 60);
+      draw_axis_gizmo(draw, corner, camera);
+      if (a && b)
+        draw_scale_bar(draw, ImVec2(origin.x + 12, origin.y + 48), std::hypot(b->x - a->x, b->y - a->y),
+                       std::string(enum_name(s.doc.design.units)), "at the view's centre");
+    }
     draw->PopClipRect();
   } else {
     const MapFrame frame{origin, size, s.views.map_view};
@@ -584,6 +649,9 @@ void view(Studio& s, int which, ImVec2 size, bool large) {
         draw_handles(draw, placement_handles(frame, *s.doc.surface.map, shown_placement(s.doc)), s.ui.map_drag);
       draw_flaws_2d(s, draw, frame);
       draw_selection_2d(s, draw, frame);
+      if (large)
+        draw_scale_bar(draw, ImVec2(origin.x + 12, origin.y + 48), frame.size.y / (2 * frame.view.half_height),
+                       std::string(enum_name(s.doc.design.units)), "in the map");
       draw->PopClipRect();
     }
   }
