@@ -21,6 +21,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -348,6 +349,20 @@ long contact_violations(const std::map<long, Row>& rows) {
   return violations;
 }
 
+// The vertex element nearest the map's middle, and one two spacings D from it.
+std::pair<long, long> centre_and_two_away(const std::map<long, Row>& rows, double D) {
+  long centre_id = -1, other = -1;
+  double nearest = 1e300, off = 1e300;
+  for (const auto& [id, row] : rows)
+    if (row.kind == 'V' && std::hypot(row.u, row.v) < nearest) nearest = std::hypot(row.u, row.v), centre_id = id;
+  const Row& centre = rows.at(centre_id);
+  for (const auto& [id, row] : rows) {
+    const double o = std::abs(std::hypot(row.u - centre.u, row.v - centre.v) - 2 * D);
+    if (row.kind == 'V' && o < off) off = o, other = id;
+  }
+  return {centre_id, other};
+}
+
 // The session: open the pendant, pin one element, drag it by 0.4 D, delete another,
 // re-optimize and export: the pinned one moved, the deleted one is gone, nothing else is lost,
 // no pair violates the contact rule, and `paver run` on the saved design writes the same file.
@@ -358,16 +373,8 @@ TEST_F(StudioSession, PinDragAndDeleteSingleElementsAndTheCliReproducesThem) {
   const std::map<long, Row> before = placements_by_id(base / "placements.csv");
   ASSERT_GT(before.size(), 500u);
   const double D = nlohmann::json::parse(read_text(base / "design.json"))["pattern"]["spacing"].get<double>();
-  // The vertex element nearest the middle, and one two spacings from it.
-  long pinned = -1, deleted = -1;
-  double nearest = 1e300, off = 1e300;
-  for (const auto& [id, row] : before)
-    if (row.kind == 'V' && std::hypot(row.u, row.v) < nearest) nearest = std::hypot(row.u, row.v), pinned = id;
+  const auto [pinned, deleted] = centre_and_two_away(before, D);
   const Row centre = before.at(pinned);
-  for (const auto& [id, row] : before) {
-    const double o = std::abs(std::hypot(row.u - centre.u, row.v - centre.v) - 2 * D);
-    if (row.kind == 'V' && o < off) off = o, deleted = id;
-  }
 
   const fs::path edited = dir_ / "edited", script = dir_ / "edit.txt";
   std::ofstream(script) << "open assets/surfaces/pendant.obj\n"
@@ -423,15 +430,8 @@ TEST_F(StudioSession, EditingTightPaveLosesAtMostThreeStones) {
   ASSERT_EQ(first.exit_code, 0) << describe(first);
   const std::map<long, Row> before = placements_by_id(base / "placements.csv");
   const double D = nlohmann::json::parse(read_text(base / "design.json"))["pattern"]["spacing"].get<double>();
-  long pinned = -1, deleted = -1;
-  double nearest = 1e300, off = 1e300;
-  for (const auto& [id, row] : before)
-    if (row.kind == 'V' && std::hypot(row.u, row.v) < nearest) nearest = std::hypot(row.u, row.v), pinned = id;
+  const auto [pinned, deleted] = centre_and_two_away(before, D);
   const Row centre = before.at(pinned);
-  for (const auto& [id, row] : before) {
-    const double o = std::abs(std::hypot(row.u - centre.u, row.v - centre.v) - 2 * D);
-    if (row.kind == 'V' && o < off) off = o, deleted = id;
-  }
   const fs::path edited = dir_ / "edited", script = dir_ / "edit.txt";
   std::ofstream(script) << "open assets/surfaces/pendant.obj\ndesign assets/designs/pendant_tri_gems.json\noptimize\n"
                         << "select " << pinned << "\npin " << pinned << "\ndrag " << pinned << " 0.25 0\n"
