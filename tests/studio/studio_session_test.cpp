@@ -11,6 +11,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -963,6 +964,29 @@ TEST_F(StudioSession, ValuesTypedIntoFieldsAreRefusedAtTheFieldWithTheirRange) {
   const nlohmann::json taken = nlohmann::json::parse(read_text(dir_ / "taken.json"));
   EXPECT_EQ(taken["pattern"]["spacing"].get<double>(), 2.5) << "a good value is taken";
   EXPECT_TRUE(fs::exists(shot));
+}
+
+// A designer's trial: a band's 2D view drew the placement's rotation ring larger than the band's
+// strip, centred off it, though a band sets its rows' direction itself. No ring on a band: the
+// view above the strip (framed in the middle) stays empty.
+TEST_F(StudioSession, ABandsMapHasNoRotationRing) {
+  const fs::path shot = dir_ / "band.png", script = dir_ / "session.txt";
+  std::ofstream(script) << "open assets/surfaces/ring_band.obj\noptimize\nview2d\nwait 3\nscreenshot " << shot.string()
+                        << "\nquit\n";
+  const Outcome r = run_script(script);
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  int width = 0, height = 0, channels = 0;
+  unsigned char* pixels = stbi_load(shot.string().c_str(), &width, &height, &channels, 3);
+  ASSERT_TRUE(pixels) << "cannot read " << shot;
+  long white = 0;  // the handles' white lines and square (the ring drew 224 such pixels here)
+  for (int y = 120; y < 340; ++y)
+    for (int x = 440; x < 980; ++x) {
+      const unsigned char* p = pixels + 3 * (long(y) * width + x);
+      const int lo = std::min({p[0], p[1], p[2]}), hi = std::max({p[0], p[1], p[2]});
+      white += lo >= 195 && hi - lo < 20;
+    }
+  stbi_image_free(pixels);
+  EXPECT_LT(white, 20) << white << " white pixels above the band's strip";
 }
 
 }  // namespace

@@ -212,6 +212,9 @@ void type_legend(ImDrawList* draw, ImVec2 origin, ImVec2 size) {
 struct Handles {
   ImVec2 centre, rotation, scale;
   float radius;
+  // Not on a band: its rows close around it, so the band sets their direction and scale (the ring
+  // was larger than the band's strip and turned nothing).
+  bool shown = true;
 };
 
 // The placement the last pavement used: with placement.align, the document's rotation plus the
@@ -238,6 +241,7 @@ Placement shown_placement(const Document& doc) {
 // distance from the centre is proportional to the scale.
 Handles placement_handles(const MapFrame& f, const SurfaceMap& map, const Placement& placement) {
   Handles h;
+  h.shown = !map_wraps(map);
   h.centre = f.to_screen(0.5 * (map.uv_min + map.uv_max));
   h.radius = 0.3f * std::min(f.size.x, f.size.y);
   const double angle = -glm::radians(placement.rotation_deg);
@@ -524,7 +528,9 @@ void interact_2d(Studio& s, const MapFrame& f, const Handles& h, bool with_handl
   } else if (s.ui.edit_elements && with_handles) {
     interact_elements_2d(s, f);
   } else if (ImGui::IsItemActivated() && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
-    const auto near = [&](ImVec2 handle) { return with_handles && distance(io.MousePos, handle) < kHandleRadius + 3; };
+    const auto near = [&](ImVec2 handle) {
+      return with_handles && h.shown && distance(io.MousePos, handle) < kHandleRadius + 3;
+    };
     s.ui.map_drag = near(h.rotation) ? MapDrag::Rotation : near(h.scale) ? MapDrag::Scale : MapDrag::Offset;
   }
   if (!ImGui::IsItemActive()) s.ui.map_drag = MapDrag::None;
@@ -630,7 +636,9 @@ void view(Studio& s, int which, ImVec2 size, bool large) {
     draw->PopClipRect();
   } else {
     const MapFrame frame{origin, size, s.views.map_view};
-    const Handles handles = placement_handles(frame, *s.doc.surface.map, shown_placement(s.doc));
+    // The handles on the map the view shows (a band's seamless one).
+    const SurfaceMap& shown_map = map_for_topology(*s.doc.surface.map, s.doc.design.pattern.topology);
+    const Handles handles = placement_handles(frame, shown_map, shown_placement(s.doc));
     interact_2d(s, frame, handles, large);
     if (large) {
       draw->PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
@@ -646,7 +654,7 @@ void view(Studio& s, int which, ImVec2 size, bool large) {
       }
       if (s.ui.brush != Brush::Off) draw_brush_2d(s, draw, frame);
       if (!s.ui.edit_elements && s.ui.brush == Brush::Off)
-        draw_handles(draw, placement_handles(frame, *s.doc.surface.map, shown_placement(s.doc)), s.ui.map_drag);
+        if (handles.shown) draw_handles(draw, handles, s.ui.map_drag);
       draw_flaws_2d(s, draw, frame);
       draw_selection_2d(s, draw, frame);
       if (large)
