@@ -146,16 +146,18 @@ std::string run_status_text(const PavementResult& r) {
   text += count_text(long(p.elements.size()), "element", "elements") + ", " +
           count_text(p.after.contact_violations, "contact violation", "contact violations");
   const EdgeQuality& edges = p.after.edges;
-  const std::string unit(enum_name(p.design.units));
-  char size[32];
-  std::snprintf(size, sizeof size, "%.3g", edges.spot_stone);
-  if (edges.measured && edges.bare_spots > 0)
+  const bool spots = edges.measured && edges.bare_spots > 0;
+  if (spots) {
+    char size[32];
+    std::snprintf(size, sizeof size, "%.3g", edges.spot_stone);
     text += "; " + count_text(edges.bare_spots, "bare spot", "bare spots") + " where a " +
-            (p.grade.ladder.empty() ? std::string(size) + " " + unit + " stone" : std::string("graded stone")) +
+            (p.grade.ladder.empty() ? std::string(size) + " " + std::string(enum_name(p.design.units)) + " stone"
+                                    : std::string("graded stone")) +
             " still fits";
+  }
   if (!r.ghosts.empty())
     text += "; " + count_text(long(r.ghosts.size()), "stone", "stones") + " removed where they still collided";
-  if ((edges.measured && edges.bare_spots > 0) || !r.ghosts.empty()) text += " (marked in the views)";
+  if (spots || !r.ghosts.empty()) text += " (marked in the views)";
   text += "; " + count_text(p.solve.iterations, "iteration", "iterations") + " (" +
           std::string(enum_name(p.solve.reason)) + ")";
   // Said where a script's log and the eye see it, not only in the Elements panel.

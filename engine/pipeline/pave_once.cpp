@@ -171,17 +171,20 @@ struct EditsInPlace {
   HeldParticles held;
   Elements elements;
   Removal removal;
+  // What this placement set on the pavement (PaveState::place), given back if this way is kept.
+  std::vector<std::uint8_t> retired;
+  int filled = 0, eliminated = 0;
 };
 
 EditsInPlace edits_in_place(const PaveContext& c, PaveState& s) {
-  EditsInPlace way{*s.system, s.pavement.points, {}, {}, {}};
+  EditsInPlace way{*s.system, s.pavement.points, {}, {}, {}, {}, 0, 0};
   way.held = place_edits(way.system, s.edited, s.design.pattern.spacing, false);
   for (int i = 0; i < way.system.particle_count(); ++i) way.points[std::size_t(i)] = glm::dvec2(way.system.position[std::size_t(i)]);
   way.elements = s.place(c, way.points, way.system.stray_count);
-  std::vector<std::uint8_t> pinned(way.elements.size(), 0);
-  for (std::size_t i = 0; i < way.elements.size(); ++i)
-    pinned[i] = way.elements.kind[i] == ElementKind::Vertex && way.elements.source[i] >= 0 &&
-                way.system.stray_count[std::size_t(way.elements.source[i])] == kPinned;
+  way.retired = s.pavement.retired;
+  way.filled = s.pavement.filled;
+  way.eliminated = s.pavement.eliminated;
+  std::vector<std::uint8_t> pinned = pinned_vertex_elements(way.elements, way.system);
   way.removal = remove_colliding(way.elements, s.design.elements.gap, &pinned);
   return way;
 }
@@ -199,19 +202,24 @@ void apply_edits(const PaveContext& c, PaveState& s) {
   // at its place, it was removed as colliding with the added one and its deletion said it found
   // none. It comes back as it was afterwards, so that the refill sees no hole there, and the
   // deletions step takes it as before.
-  std::vector<std::uint8_t> sitting_out(pavement.elements.size(), 1);
   std::vector<std::uint32_t> own_count;
+  std::vector<std::uint8_t> point_deleted(std::size_t(pavement.pattern.point_count()), 0);
   for (const DeletedElement& deleted : s.design.edits.deleted)
     if (deleted.id >= 0 && deleted.id < pavement.pattern.point_count() &&
         system.stray_count[std::size_t(deleted.id)] != kRetired) {
       own_count.push_back(system.stray_count[std::size_t(deleted.id)]);
       system.stray_count[std::size_t(deleted.id)] = kRetired;
       s.deleted_before_edits.push_back(deleted.id);
-      for (std::size_t i = 0; i < pavement.elements.size(); ++i)
-        if (pavement.elements.kind[i] == ElementKind::Vertex && pavement.elements.source[i] == deleted.id) sitting_out[i] = 0;
+      point_deleted[std::size_t(deleted.id)] = 1;
     }
+  // The deleted stones as they stand, kept aside (erase_flagged drops the others from the copy).
+  std::vector<std::uint8_t> not_deleted(pavement.elements.size(), 1);
+  for (std::size_t i = 0; i < pavement.elements.size(); ++i)
+    if (pavement.elements.kind[i] == ElementKind::Vertex && pavement.elements.source[i] >= 0 &&
+        point_deleted[std::size_t(pavement.elements.source[i])])
+      not_deleted[i] = 0;
   Elements deleted_stones = pavement.elements;
-  deleted_stones.erase_flagged(sitting_out);
+  deleted_stones.erase_flagged(not_deleted);
   const auto bring_back = [&] {
     for (std::size_t k = 0; k < s.deleted_before_edits.size(); ++k)
       system.stray_count[std::size_t(s.deleted_before_edits[k])] = own_count[k];
@@ -249,6 +257,9 @@ void apply_edits(const PaveContext& c, PaveState& s) {
     release_held(system, in_place->held);
     pavement.points = std::move(in_place->points);
     pavement.elements = std::move(in_place->elements);
+    pavement.retired = std::move(in_place->retired);
+    pavement.filled = in_place->filled;
+    pavement.eliminated = in_place->eliminated;
     pavement.resolution.removed = in_place->removal.removed;
     pavement.resolution.removed_places = std::move(in_place->removal.places);
   }

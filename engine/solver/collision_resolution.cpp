@@ -106,6 +106,14 @@ Removal remove_colliding(Elements& elements, double gap, std::vector<std::uint8_
   }
 }
 
+std::vector<std::uint8_t> pinned_vertex_elements(const Elements& elements, const SpringSystem& system) {
+  std::vector<std::uint8_t> pinned(elements.size(), 0);
+  for (std::size_t i = 0; i < elements.size(); ++i)
+    pinned[i] = elements.kind[i] == ElementKind::Vertex && elements.source[i] >= 0 &&
+                system.stray_count[std::size_t(elements.source[i])] == kPinned;
+  return pinned;
+}
+
 ElementAnchor element_anchor(const Pattern& pattern, const Elements& elements, int i, const ElementsDesign& design) {
   ElementAnchor anchor;
   const int source = elements.source[i];
@@ -201,10 +209,7 @@ Elements resolve_collisions(const SurfaceMap& map, const SolverSurface& surface,
     elements = place(points, system.stray_count);
   }
   // Vertex elements of pinned particles (the designer's) are the last to go.
-  std::vector<std::uint8_t> pinned(elements.size(), 0);
-  for (std::size_t i = 0; i < elements.size(); ++i)
-    pinned[i] = elements.kind[i] == ElementKind::Vertex && elements.source[i] >= 0 &&
-                system.stray_count[std::size_t(elements.source[i])] == kPinned;
+  std::vector<std::uint8_t> pinned = pinned_vertex_elements(elements, system);
   const Removal removal = remove_colliding(elements, spec.gap, &pinned);
   report.pairs_left = removal.pairs;
   report.removed = removal.removed;

@@ -76,6 +76,10 @@ struct Removal {
 };
 Removal remove_colliding(Elements& elements, double gap, std::vector<std::uint8_t>* kept = nullptr);
 
+// #elements: 1 for the vertex elements of pinned particles (the designer's), which remove_colliding
+// takes last.
+std::vector<std::uint8_t> pinned_vertex_elements(const Elements& elements, const SpringSystem& system);
+
 // Inputs: the map and its solver form, the solved spring system and pattern with their particle
 // positions `points` (#P), the design's elements (gap, E-element positions), solver parameters and
 // spacing D, how elements are placed on particles. Output: the final elements, no pair colliding
