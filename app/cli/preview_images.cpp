@@ -56,7 +56,9 @@ void PreviewImages::write(const std::filesystem::path& folder, const SurfaceMap&
   r.set_elements(drawn, colours, custom);
   r.set_pattern(points_map, pavement.pattern, pavement.points);
   render::SceneStyle style;
-  r.render_3d(size.width, size.height, render::frame_surface(map.mesh), style);
+  const double aspect = double(size.width) / double(size.height);
+  const render::OrbitCamera camera = render::frame_surface(map.mesh);
+  r.render_3d(size.width, size.height, camera, style);
   render::Image preview = r.read_back(0);
   render::draw_ratio_legend(preview);
   render::write_png(folder / "preview.png", preview);
@@ -65,10 +67,11 @@ void PreviewImages::write(const std::filesystem::path& folder, const SurfaceMap&
   const bool marks_defects = !pavement.pattern.defects.empty();
   if (marks_defects)
     r.set_elements(pavement.elements, defect_marked_colours(pavement, stone_colours), custom);
-  // The map beside the legends, not under them.
+  // The map beside the legends, not under them, turned as preview.png shows the surface.
   const double legend_share = double(render::legend_column_width(size.height)) / double(size.width);
   r.render_2d(size.width, size.height,
-              render::frame_map(points_map, double(size.width) / double(size.height), 0, legend_share), style);
+              render::frame_map(points_map, aspect, 0, legend_share, render::map_turn_to_match(points_map, camera, aspect)),
+              style);
   render::Image param = r.read_back(1);
   render::draw_ratio_legend(param);  // the stones are coloured by their ratio here too
   if (marks_defects) render::draw_defect_legend(param, kFewer, kMore);

@@ -14,6 +14,7 @@
 #include "scene_data.h"
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -371,22 +372,82 @@ OrbitCamera frame_surface(const SurfaceMesh& mesh, double aspect, double right_s
 }
 
 glm::mat4 MapView::projection(float aspect) const {
-  return glm::ortho(centre.x - half_height * aspect, centre.x + half_height * aspect, centre.y - half_height,
-                    centre.y + half_height, -1.0f, 1.0f);
+  const glm::mat4 framed = glm::ortho(-half_height * aspect, half_height * aspect, -half_height, half_height, -1.0f, 1.0f);
+  return glm::translate(glm::rotate(framed, turn, glm::vec3(0, 0, 1)), glm::vec3(-centre, 0));
 }
 
-MapView frame_map(const SurfaceMap& map, double aspect, double right_share, double left_share) {
+namespace {
+glm::dvec2 turned(glm::dvec2 q, double turn) {
+  const double c = std::cos(turn), s = std::sin(turn);
+  return {c * q.x - s * q.y, s * q.x + c * q.y};
+}
+}  // namespace
+
+glm::dvec2 MapView::screen_offset(glm::dvec2 q) const { return turned(q - glm::dvec2(centre), turn); }
+glm::dvec2 MapView::map_point(glm::dvec2 offset) const { return glm::dvec2(centre) + turned(offset, -turn); }
+
+MapView frame_map(const SurfaceMap& map, double aspect, double right_share, double left_share, double turn) {
   MapView v;
-  v.centre = glm::vec2(0.5 * (map.uv_min + map.uv_max));
-  const glm::dvec2 extent = map.uv_max - map.uv_min;
+  v.turn = float(turn);
+  // The map's box as the screen sees it (turned); a wrapping map frames its one period.
+  glm::dvec2 lo = turned(map.uv_min, turn), hi = lo;
+  if (turn != 0 && map.period <= 0) {
+    for (const glm::dvec2& q : map.uv) lo = glm::min(lo, turned(q, turn)), hi = glm::max(hi, turned(q, turn));
+  } else {
+    for (const glm::dvec2 corner : {glm::dvec2(map.uv_max.x, map.uv_min.y), map.uv_max, glm::dvec2(map.uv_min.x, map.uv_max.y)})
+      lo = glm::min(lo, turned(corner, turn)), hi = glm::max(hi, turned(corner, turn));
+  }
+  const glm::dvec2 extent = hi - lo;
   right_share = std::clamp(right_share, 0.0, 0.9);
   left_share = std::clamp(left_share, 0.0, 0.9 - right_share);
   // Fit both sides with a margin in the free part of the width; render_2d widens by the aspect.
   const double free_aspect = std::max(aspect * (1 - right_share - left_share), 1e-3);
   v.half_height = float(0.55 * std::max(extent.y, extent.x / free_aspect));
   // The free part's middle lies (right_share - left_share) of the half width off the view's centre.
-  v.centre.x += float((right_share - left_share) * v.half_height * aspect);
+  glm::dvec2 centre = 0.5 * (lo + hi);
+  centre.x += (right_share - left_share) * v.half_height * aspect;
+  v.centre = glm::vec2(turned(centre, -turn));
   return v;
+}
+
+double map_turn_to_match(const SurfaceMap& map, const OrbitCamera& camera, double aspect) {
+  if (!map.chart_of_face.empty() || map.uv.size() != map.mesh.positions.size()) return 0;
+  const glm::dmat4 vp = glm::dmat4(camera.view_projection(float(aspect)));
+  // Screen points with x widened by the aspect, so that directions on screen keep their angles.
+  std::vector<glm::dvec2> screen(map.uv.size());
+  std::vector<bool> in_front(map.uv.size());
+  for (std::size_t i = 0; i < screen.size(); ++i) {
+    const glm::dvec4 clip = vp * glm::dvec4(map.mesh.positions[i], 1);
+    in_front[i] = clip.w > 1e-9;
+    if (in_front[i]) screen[i] = glm::dvec2(clip.x / clip.w * aspect, clip.y / clip.w);
+  }
+  // sum |e_uv| |e_screen| (sin, cos) of the angle between the two images of each edge: the angle
+  // of that sum is the turn that takes the map's edges best onto the screen's.
+  double front_sin = 0, front_cos = 0, all_sin = 0, all_cos = 0, front_weight = 0, all_weight = 0;
+  const std::size_t stride = std::max<std::size_t>(1, map.mesh.triangles.size() / 20000);
+  for (std::size_t t = 0; t < map.mesh.triangles.size(); t += stride) {
+    const glm::ivec3 tri = map.mesh.triangles[t];
+    if (!in_front[tri.x] || !in_front[tri.y] || !in_front[tri.z]) continue;
+    double sin_sum = 0, cos_sum = 0;
+    for (const auto& [a, b] : {std::pair{tri.x, tri.y}, std::pair{tri.x, tri.z}}) {
+      glm::dvec2 along_map = map.uv[b] - map.uv[a];
+      if (map.period > 0) along_map.x -= map.period * std::round(along_map.x / map.period);
+      const glm::dvec2 along_screen = screen[b] - screen[a];
+      sin_sum += along_map.x * along_screen.y - along_map.y * along_screen.x;
+      cos_sum += glm::dot(along_map, along_screen);
+    }
+    const glm::dvec2 e1 = screen[tri.y] - screen[tri.x], e2 = screen[tri.z] - screen[tri.x];
+    const double facing = e1.x * e2.y - e1.y * e2.x;  // counter-clockwise on screen: facing the camera
+    const double weight = std::hypot(sin_sum, cos_sum);
+    all_sin += sin_sum, all_cos += cos_sum, all_weight += weight;
+    if (facing > 0) front_sin += sin_sum, front_cos += cos_sum, front_weight += weight;
+  }
+  // Seen mostly from behind (few triangles face the camera), every triangle counts.
+  const bool front = front_weight > 0.2 * all_weight;
+  const double s = front ? front_sin : all_sin, c = front ? front_cos : all_cos;
+  if (std::hypot(s, c) <= 1e-12 * std::max(all_weight, 1e-300)) return 0;
+  if (map.period > 0) return c >= 0 ? 0 : glm::pi<double>();
+  return std::atan2(s, c);
 }
 
 std::vector<double> ratio_legend_ticks() { return {0.9, 1.0, 1.1, 1.2, 1.3}; }

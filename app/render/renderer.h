@@ -46,16 +46,28 @@ struct OrbitCamera {
 // image `aspect` (width / height) wide whose right `right_share` of the width is kept free.
 OrbitCamera frame_surface(const SurfaceMesh& mesh, double aspect = 1.6, double right_share = 0);
 
-// 2D view: the map point at the image centre and the half height of the visible region.
+// 2D view: the map point at the image centre, the half height of the visible region, and how far
+// the map is turned on screen (radians, counter-clockwise): a screen offset from the centre is
+// R(turn) (q - centre), so that the map can be shown the way the 3D view shows the surface.
 struct MapView {
   glm::vec2 centre{0};
   float half_height = 1;
+  float turn = 0;
   glm::mat4 projection(float aspect) const;
+  // A map point's offset from the centre as the screen shows it (map units, y up), and back.
+  glm::dvec2 screen_offset(glm::dvec2 q) const;
+  glm::dvec2 map_point(glm::dvec2 screen_offset) const;
 };
-// The whole map with a margin, in a view `aspect` (width / height) wide, leaving the right
-// `right_share` of the width free (where the studio's inset sits) and the left `left_share` (where
-// a PNG's legends sit).
-MapView frame_map(const SurfaceMap& map, double aspect = 1.6, double right_share = 0, double left_share = 0);
+// The whole map with a margin, turned by `turn`, in a view `aspect` (width / height) wide, leaving
+// the right `right_share` of the width free (where the studio's inset sits) and the left
+// `left_share` (where a PNG's legends sit).
+MapView frame_map(const SurfaceMap& map, double aspect = 1.6, double right_share = 0, double left_share = 0,
+                  double turn = 0);
+// The turn that shows the map as `camera` shows the surface in an image `aspect` wide: the
+// rotation that best takes the map's edges onto their images on screen, over the triangles that
+// face the camera. A band's seamless map turns by 0 or a half turn only (its length stays across
+// the view) and a closed surface's atlas (charts side by side) not at all.
+double map_turn_to_match(const SurfaceMap& map, const OrbitCamera& camera, double aspect);
 
 enum class ColourMode { NeighbourRatio, ElementType };
 

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <unordered_set>
 #include <cstdio>
 #include <limits>
@@ -105,12 +106,16 @@ std::optional<int> element_at(const Pavement& pavement, glm::dvec2 uv) {
   return best;
 }
 
-std::vector<int> elements_in_box(const Pavement& pavement, glm::dvec2 a, glm::dvec2 b) {
-  const glm::dvec2 lo = glm::min(a, b), hi = glm::max(a, b);
+std::vector<int> elements_in_box(const Pavement& pavement, glm::dvec2 a, glm::dvec2 b, double turn) {
+  const double c = std::cos(turn), s = std::sin(turn);
+  const auto on_screen = [&](glm::dvec2 q) { return glm::dvec2(c * q.x - s * q.y, s * q.x + c * q.y); };
+  const glm::dvec2 lo = glm::min(on_screen(a), on_screen(b)), hi = glm::max(on_screen(a), on_screen(b));
   const Elements& e = pavement.elements;
   std::vector<int> ids;
-  for (std::size_t i = 0; i < e.size(); ++i)
-    if (e.uv[i].x >= lo.x && e.uv[i].x <= hi.x && e.uv[i].y >= lo.y && e.uv[i].y <= hi.y) ids.push_back(e.id[i]);
+  for (std::size_t i = 0; i < e.size(); ++i) {
+    const glm::dvec2 q = on_screen(e.uv[i]);
+    if (q.x >= lo.x && q.x <= hi.x && q.y >= lo.y && q.y <= hi.y) ids.push_back(e.id[i]);
+  }
   return ids;
 }
 

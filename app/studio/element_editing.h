@@ -23,8 +23,9 @@ std::optional<std::size_t> find_element(const Pavement& pavement, int id);
 std::optional<int> element_at(const Pavement& pavement, glm::dvec2 uv);
 
 // The ids of the elements whose centres lie in the box with corners `a` and `b` (map units, any
-// order), in the pavement's order: a box selection.
-std::vector<int> elements_in_box(const Pavement& pavement, glm::dvec2 a, glm::dvec2 b);
+// order), in the pavement's order: a box selection. The box's sides run along the screen of a 2D
+// view turned by `turn` (render::MapView::turn), as the designer drew it.
+std::vector<int> elements_in_box(const Pavement& pavement, glm::dvec2 a, glm::dvec2 b, double turn = 0);
 
 // One line about element `id`: kind, where it is, whether it is pinned or the designer's.
 std::string describe_element(const Design& design, const Pavement& pavement, int id);

@@ -153,7 +153,7 @@ void parse_choice(const LineParser& p) {
       // "Shift+P": the key with Shift held, as a hand presses it.
       const bool shift = p.rest.rfind("Shift+", 0) == 0;
       const std::string_view name = std::string_view(p.rest).substr(shift ? 6 : 0);
-      p.need_choice(key_from_name(name).has_value(), "E, P, B, I, V, L, C, R, N, Delete, Escape or Space, each also as Shift+P");
+      p.need_choice(key_from_name(name).has_value(), "E, P, B, I, M, V, L, C, R, N, Delete, Escape or Space, each also as Shift+P");
       p.out.key = *key_from_name(name);
       p.out.shift = shift;
       break;

@@ -5,7 +5,7 @@
 //   select ID | select_box U0 V0 U1 V1 | pin ID|selection | unpin ID|selection | drag ID DU DV |
 //   delete ID|selection | add U V | brush U V RADIUS STRENGTH |
 //   colour ratio|type | browse surface|design|save|export|shape |
-//   click U V [shift|ctrl] | mouse_drag U0 V0 U1 V1 [shift|ctrl] | key E|P|B|I|V|L|C|R|N|Delete|Escape|Space |
+//   click U V [shift|ctrl] | mouse_drag U0 V0 U1 V1 [shift|ctrl] | key E|P|B|I|M|V|L|C|R|N|Delete|Escape|Space |
 //   mouse_drag3d ID U V | orbit DEGREES FRAMES | type FIELD TEXT [enter|tab|away]
 // (element commands name elements by the ids placements.csv lists; drag moves by DU, DV spacings D
 // in the map, add puts a vertex element at map coordinates U, V, placements.csv's u and v; brush

@@ -24,6 +24,7 @@ const std::vector<Shortcut>& shortcut_list() {
       {"R", "reset both views' cameras"},
       {"V", "swap the large and the small view"},
       {"I", "show / hide the small view (the inset)"},
+      {"M", "turn the 2D map like the 3D view / keep the map's u across the screen"},
       {"L", "show / hide the lattice"},
       {"B", "show / hide the marks of bare spots (dashed red) and removed stones (grey ghosts)"},
       {"C", "colour by nearest-neighbour ratio / element type"},
@@ -75,6 +76,7 @@ void handle_shortcuts(Studio& s) {
     s.views.show_inset = !s.views.show_inset;
     fit_views_to_inset(s);
   }
+  if (pressed(GLFW_KEY_M)) set_map_follows_3d(s, !s.views.map_follows_3d);
   if (pressed(GLFW_KEY_E)) s.ui.edit_elements = !s.ui.edit_elements;
   if (pressed(GLFW_KEY_ESCAPE)) clear_selection(s.ui);
   if (pressed(GLFW_KEY_DELETE) && s.ui.selected_element >= 0) delete_selected(s);

@@ -20,6 +20,7 @@
 #include "core/input_error.h"
 #include "core/number_text.h"
 
+#include <glm/geometric.hpp>
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 
@@ -94,11 +95,53 @@ namespace {
 double inset_share(const Studio& s) { return s.views.show_inset ? kInsetFraction : 0; }
 }  // namespace
 
+namespace {
+// The turn the 2D map takes for the camera now: none when the designer switched it off.
+double map_turn_for_camera(const Studio& s, const SurfaceMap& map) {
+  return s.views.map_follows_3d ? render::map_turn_to_match(map, s.views.camera, s.views.map_aspect) : 0;
+}
+
+render::MapView framed_map(const Studio& s, const SurfaceMap& map, double turn) {
+  return render::frame_map(map, s.views.map_aspect, s.views.large_3d ? 0 : inset_share(s), 0, turn);
+}
+}  // namespace
+
 void fit_views_to_inset(Studio& s) {
   s.views.camera.screen_shift_x = s.views.large_3d ? float(-inset_share(s)) : 0;
   if (!s.doc.surface.map) return;
-  s.views.map_view = render::frame_map(map_for_topology(*s.doc.surface.map, s.doc.design.pattern.topology),
-                                       s.views.map_aspect, s.views.large_3d ? 0 : inset_share(s));
+  const SurfaceMap& map = map_for_topology(*s.doc.surface.map, s.doc.design.pattern.topology);
+  s.views.map_view = framed_map(s, map, map_turn_for_camera(s, map));
+  s.views.map_turned_for = s.views.last_look = glm::vec2(s.views.camera.yaw, s.views.camera.pitch);
+}
+
+namespace {
+void turn_map_now(Studio& s) {
+  if (!s.doc.surface.map) return;
+  s.views.map_turned_for = glm::vec2(s.views.camera.yaw, s.views.camera.pitch);
+  const SurfaceMap& map = map_for_topology(*s.doc.surface.map, s.doc.design.pattern.topology);
+  const double turn = map_turn_for_camera(s, map);
+  const render::MapView before = framed_map(s, map, s.views.map_view.turn);
+  render::MapView& view = s.views.map_view;
+  const bool was_framed = glm::length(view.centre - before.centre) <= 1e-4f * before.half_height &&
+                          std::abs(view.half_height - before.half_height) <= 1e-4f * before.half_height;
+  if (was_framed) {
+    view = framed_map(s, map, turn);
+  } else {
+    view.turn = float(turn);  // about the centre the designer chose, at their zoom
+  }
+}
+}  // namespace
+
+void turn_map_like_3d(Studio& s) {
+  const glm::vec2 look(s.views.camera.yaw, s.views.camera.pitch);
+  const bool resting = look == s.views.last_look;
+  s.views.last_look = look;
+  if (resting && look != s.views.map_turned_for) turn_map_now(s);
+}
+
+void set_map_follows_3d(Studio& s, bool follows) {
+  s.views.map_follows_3d = follows;
+  turn_map_now(s);
 }
 
 bool save_design_as(Studio& s, const fs::path& path) {
@@ -231,9 +274,9 @@ void select_element(Studio& s, int id) {
   report_status(s.doc, line);
 }
 
-void select_box(Studio& s, glm::dvec2 a, glm::dvec2 b) {
+void select_box(Studio& s, glm::dvec2 a, glm::dvec2 b, double turn) {
   if (!s.doc.result.pavement) throw InputError("select: there is no pavement on screen yet");
-  std::vector<int> ids = elements_in_box(*s.doc.result.pavement, a, b);
+  std::vector<int> ids = elements_in_box(*s.doc.result.pavement, a, b, turn);
   clear_selection(s.ui);
   if (ids.empty()) return report_status(s.doc, "no element in the box");
   s.ui.selected_element = ids.front();
@@ -359,8 +402,9 @@ render::Image view_image(Studio& s, int view) {
     centred.screen_shift_x = 0;
     s.renderer.render_3d(width, height, centred, s.views.style);
   } else {
-    const render::MapView whole = render::frame_map(
-        map_for_topology(*s.doc.surface.map, s.doc.design.pattern.topology), double(width) / double(height));
+    const render::MapView whole =
+        render::frame_map(map_for_topology(*s.doc.surface.map, s.doc.design.pattern.topology),
+                          double(width) / double(height), 0, 0, s.views.map_view.turn);  // turned as on screen
     s.renderer.render_2d(width, height, whole, s.views.style);
   }
   s.scene.rendered[std::size_t(view)].clear();  // the screen's view is drawn again next frame, whole

@@ -120,6 +120,10 @@ void frame_views(Studio& s);
 // The views made room for the inset (or not) after a swap or a toggle: the 2D view framed again,
 // the 3D view's target moved left of it (the camera stays where the designer put it).
 void fit_views_to_inset(Studio& s);
+// Once the 3D camera rests after it moved (a drag, a script's orbit, a reset), the 2D map turns
+// to show the surface the same way round: framed again if it was framed, else turned in place.
+void turn_map_like_3d(Studio& s);
+void set_map_follows_3d(Studio& s, bool follows);  // M: the map turned like the 3D view, or u across
 void swap_views(Studio& s);      // the large view and the inset trade places; the map is framed again
 // Starts loading a surface in the background; the design stays.
 void open_surface(Studio& s, const std::filesystem::path& path);
@@ -176,8 +180,10 @@ std::pair<glm::vec2, glm::vec2> element_drag_3d(const Studio& s, int id, glm::dv
 // Selects element `id` of the pavement on screen and says what it is in the status line. Throws
 // InputError when there is no such element.
 void select_element(Studio& s, int id);
-// Selects every element in the box with map corners `a` and `b` (none: the selection is cleared).
-void select_box(Studio& s, glm::dvec2 a, glm::dvec2 b);
+// Selects every element in the box with map corners `a` and `b` (none: the selection is cleared),
+// its sides along the map's axes turned by `turn`: a Shift+drag gives the 2D view's turn, so the
+// box is the one drawn on screen; the script's select_box the map's own axes (0).
+void select_box(Studio& s, glm::dvec2 a, glm::dvec2 b, double turn = 0);
 // The selected elements: the one clicked, then the box's.
 std::vector<int> selection(const UiState& ui);
 void clear_selection(UiState& ui);

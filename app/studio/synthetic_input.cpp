@@ -47,10 +47,11 @@ std::vector<InputFrame> typing_frames(glm::vec2 field, std::string_view text, Ty
 }
 
 std::optional<int> key_from_name(std::string_view name) {
-  constexpr std::array<std::pair<std::string_view, int>, 12> kKeys = {{{"E", GLFW_KEY_E},
+  constexpr std::array<std::pair<std::string_view, int>, 13> kKeys = {{{"E", GLFW_KEY_E},
                                                                         {"B", GLFW_KEY_B},
                                                                         {"P", GLFW_KEY_P},
                                                                         {"I", GLFW_KEY_I},
+                                                                        {"M", GLFW_KEY_M},
                                                                         {"V", GLFW_KEY_V},
                                                                         {"L", GLFW_KEY_L},
                                                                         {"C", GLFW_KEY_C},

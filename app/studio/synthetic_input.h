@@ -33,7 +33,7 @@ std::vector<InputFrame> key_frames(int key, glm::vec2 at, bool shift = false);
 // then the field let go by `end` (Away: a click at `away`).
 std::vector<InputFrame> typing_frames(glm::vec2 field, std::string_view text, TypeEnd end, glm::vec2 away);
 
-// The GLFW key a script names (E, P, B, I, V, L, C, R, N, Delete, Escape, Space), or none.
+// The GLFW key a script names (E, P, B, I, M, V, L, C, R, N, Delete, Escape, Space), or none.
 std::optional<int> key_from_name(std::string_view name);
 
 }  // namespace paver::studio

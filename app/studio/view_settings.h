@@ -16,6 +16,11 @@ struct ViewSettings {
   bool show_legend = true;   // the legend of the colouring, over the large view
   bool show_inset = true;    // the other view in the large view's bottom-right corner
   bool show_flaws = true;    // the final pavement's bare spots and removed stones, marked in both views
+  // The 2D map turned as the 3D view shows the surface (render::map_turn_to_match), again each
+  // time the camera comes to rest; off, the map's u runs across the screen.
+  bool map_follows_3d = true;
+  glm::vec2 map_turned_for{0};  // the camera's yaw and pitch the map's turn was found for
+  glm::vec2 last_look{0};       // the camera's yaw and pitch in the frame before
   float side_width = 0;      // the side panels' width in pixels once the splitter dragged it; 0: 430 (40% at most)
   double map_aspect = 1.6;   // width / height of the views' area, last drawn: the 2D view frames the whole map in it
   // Where the large view was last drawn, window pixels: a script's clicks at map points land there.

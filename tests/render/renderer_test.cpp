@@ -10,6 +10,10 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/gtc/constants.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -267,6 +271,108 @@ TEST(Renderer, TheMapIsFramedWholeAndLeftOfTheInset) {
     EXPECT_LE(map.uv_max.x, v.centre.x + half_width * (1 - 2 * share)) << "under the inset";
     EXPECT_GE(map.uv_min.y, v.centre.y - v.half_height);
     EXPECT_LE(map.uv_max.y, v.centre.y + v.half_height);
+  }
+}
+
+// --- the 2D map turned like the 3D view ---------------------------------------------------------
+
+// The median angle, in degrees, between each front-facing edge's image in the 3D view and its
+// image in the 2D view `v`: measured edge by edge, apart from the fit that chose the turn.
+double median_edge_angle_deg(const SurfaceMap& map, const render::OrbitCamera& camera, const render::MapView& v,
+                             double aspect) {
+  const glm::dmat4 vp = glm::dmat4(camera.view_projection(float(aspect)));
+  const auto screen = [&](glm::dvec3 p) {
+    const glm::dvec4 c = vp * glm::dvec4(p, 1);
+    return glm::dvec2(c.x / c.w * aspect, c.y / c.w);
+  };
+  std::vector<double> angles;
+  for (const glm::ivec3& t : map.mesh.triangles) {
+    const glm::dvec2 a = screen(map.mesh.positions[t.x]), b = screen(map.mesh.positions[t.y]),
+                     c = screen(map.mesh.positions[t.z]);
+    if ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x) <= 0) continue;  // faces away
+    glm::dvec2 along_map = map.uv[t.y] - map.uv[t.x];
+    if (map.period > 0) along_map.x -= map.period * std::round(along_map.x / map.period);
+    const glm::dvec2 in_2d = v.screen_offset(glm::dvec2(v.centre) + along_map), in_3d = b - a;
+    const double angle = std::atan2(in_2d.x * in_3d.y - in_2d.y * in_3d.x, glm::dot(in_2d, in_3d));
+    angles.push_back(std::abs(glm::degrees(angle)));
+  }
+  if (angles.empty()) return 180;
+  std::nth_element(angles.begin(), angles.begin() + angles.size() / 2, angles.end());
+  return angles[angles.size() / 2];
+}
+
+SurfaceMap with_map_turned(SurfaceMap map, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  map.uv_min = glm::dvec2(1e300), map.uv_max = glm::dvec2(-1e300);
+  for (glm::dvec2& q : map.uv) {
+    q = glm::dvec2(c * q.x - s * q.y, s * q.x + c * q.y);
+    map.uv_min = glm::min(map.uv_min, q), map.uv_max = glm::max(map.uv_max, q);
+  }
+  return map;
+}
+
+// A sheet whose map was turned a quarter turn is shown the way the camera shows the sheet: each
+// edge points the same way in both views, from any side; without the turn they are 90 degrees off.
+TEST(Renderer, TheMapIsTurnedAsTheCameraShowsTheSurface) {
+  const SurfaceMap map = with_map_turned(test::flat_unit_square(), glm::radians(90.0));
+  const double aspect = 1.6;
+  for (const float yaw : {-1.3f, 0.0f, 2.0f, -2.8f}) {
+    render::OrbitCamera camera = render::frame_surface(map.mesh, aspect);
+    camera.yaw = yaw, camera.pitch = 1.35f;  // nearly from above: the sheet is barely foreshortened
+    SCOPED_TRACE(yaw);
+    const double turn = render::map_turn_to_match(map, camera, aspect);
+    EXPECT_LT(median_edge_angle_deg(map, camera, render::frame_map(map, aspect, 0, 0, turn), aspect), 3.0);
+    const double unturned = median_edge_angle_deg(map, camera, render::frame_map(map, aspect), aspect);
+    EXPECT_GT(unturned, 10.0) << "the case does not need a turn";
+  }
+  // The bundled pendant from its framing camera, as the studio and preview.png first show it.
+  const SurfaceMap& pendant = *test::bundled_map("pendant");
+  const render::OrbitCamera camera = render::frame_surface(pendant.mesh, aspect);
+  const double turn = render::map_turn_to_match(pendant, camera, aspect);
+  EXPECT_LT(median_edge_angle_deg(pendant, camera, render::frame_map(pendant, aspect, 0, 0, turn), aspect), 20.0);
+}
+
+// The projection the renderer draws with and the screen offsets the studio's overlays use agree,
+// and the turned frame holds the whole map with its margin, beside the inset.
+TEST(Renderer, ATurnedMapIsFramedWholeAndDrawnWhereTheOverlaysAre) {
+  const SurfaceMap& map = dome_map();
+  const double aspect = 1.6, share = 0.32;
+  for (const double turn : {0.0, 0.7, -2.0, 3.0}) {
+    SCOPED_TRACE(turn);
+    const render::MapView v = render::frame_map(map, aspect, share, 0, turn);
+    const glm::mat4 projection = v.projection(float(aspect));
+    double widest = 0, tallest = 0;
+    for (const glm::dvec2& q : map.uv) {
+      const glm::dvec2 offset = v.screen_offset(q);
+      const glm::vec4 clip = projection * glm::vec4(glm::vec2(q), 0, 1);
+      EXPECT_NEAR(clip.x, offset.x / (v.half_height * aspect), 1e-4);
+      EXPECT_NEAR(clip.y, offset.y / v.half_height, 1e-4);
+      EXPECT_NEAR(glm::length(v.map_point(offset) - q), 0, 1e-5);
+      // Inside the view, left of the inset's share.
+      EXPECT_GE(clip.x, -1.0f);
+      EXPECT_LE(clip.x, 1.0f - 2 * float(share));
+      EXPECT_LE(std::abs(clip.y), 1.0f);
+      widest = std::max(widest, double(clip.x)), tallest = std::max(tallest, std::abs(double(clip.y)));
+    }
+    EXPECT_GT(std::max(widest / (1 - 2 * share), tallest), 0.8) << "framed loosely";
+  }
+}
+
+// A band's seamless map only ever turns by a half turn: its length stays across the view.
+TEST(Renderer, ABandsMapTurnsByHalfTurnsOnly) {
+  const std::shared_ptr<const SurfaceMap> ring = test::bundled_map("ring_band");
+  ASSERT_TRUE(ring->seamless) << ring->seamless_unavailable;
+  const SurfaceMap& band = *ring->seamless;
+  for (const float yaw : {0.0f, 1.0f, 2.5f, -2.0f}) {
+    render::OrbitCamera camera = render::frame_surface(band.mesh, 1.6);
+    camera.yaw = yaw;
+    const double turn = render::map_turn_to_match(band, camera, 1.6);
+    EXPECT_TRUE(turn == 0 || std::abs(turn - glm::pi<double>()) < 1e-12) << yaw << ": " << turn;
+    // And the half turn that shows it the better way round.
+    const double other = turn == 0 ? glm::pi<double>() : 0;
+    EXPECT_LE(median_edge_angle_deg(band, camera, render::frame_map(band, 1.6, 0, 0, turn), 1.6),
+              median_edge_angle_deg(band, camera, render::frame_map(band, 1.6, 0, 0, other), 1.6))
+        << yaw;
   }
 }
 

@@ -3,6 +3,7 @@
 // otherwise name other elements.
 #include "element_editing.h"
 #include "document.h"
+#include "map_frame.h"
 
 #include "core/input_error.h"
 #include "elements/element_ids.h"
@@ -147,6 +148,35 @@ TEST(ElementEditing, ABoxSelectsTheElementsWhoseCentresItHolds) {
   EXPECT_EQ(ids.size(), inside);
   EXPECT_EQ(elements_in_box(p, b, a), ids) << "corners in any order";
   EXPECT_TRUE(elements_in_box(p, {100, 100}, {101, 101}).empty());
+}
+
+// In a 2D view turned like the 3D view, a Shift+drag box takes the elements drawn inside the
+// rectangle on screen, not those of the map's axis-aligned box through its corners.
+TEST(ElementEditing, ABoxInATurnedViewSelectsWhatTheScreenShowsInIt) {
+  const Pavement& p = gems();
+  render::MapView view;
+  view.centre = glm::vec2(0.3f, -0.2f), view.half_height = 8, view.turn = 0.6f;
+  const MapFrame frame{ImVec2(20, 30), ImVec2(800, 500), view};
+  const ImVec2 from(300, 180), to(560, 400);
+  // The frame maps pixels to map points and back.
+  for (const ImVec2 pixel : {from, to, ImVec2(20, 30), ImVec2(700, 100)}) {
+    const ImVec2 back = frame.to_screen(frame.to_map(pixel));
+    EXPECT_NEAR(back.x, pixel.x, 1e-3);
+    EXPECT_NEAR(back.y, pixel.y, 1e-3);
+  }
+  const std::vector<int> ids = elements_in_box(p, frame.to_map(from), frame.to_map(to), view.turn);
+  std::size_t inside = 0, only_in_the_axis_box = 0;
+  const std::vector<int> axis_box = elements_in_box(p, frame.to_map(from), frame.to_map(to));
+  for (std::size_t i = 0; i < p.elements.size(); ++i) {
+    const ImVec2 at = frame.to_screen(p.elements.uv[i]);
+    const bool in = at.x >= from.x && at.x <= to.x && at.y >= from.y && at.y <= to.y;
+    inside += in;
+    const bool taken = std::find(ids.begin(), ids.end(), p.elements.id[i]) != ids.end();
+    EXPECT_EQ(taken, in) << "element " << p.elements.id[i] << " at " << at.x << ", " << at.y;
+    only_in_the_axis_box += !in && std::find(axis_box.begin(), axis_box.end(), p.elements.id[i]) != axis_box.end();
+  }
+  EXPECT_GT(inside, 10u) << "a box that holds a few";
+  EXPECT_GT(only_in_the_axis_box, 0u) << "the case does not tell a turned box from an axis-aligned one";
 }
 
 TEST(ElementEditing, RefusalsSayWhatToDoInstead) {

@@ -717,6 +717,7 @@ TEST_F(StudioSession, TheMouseAndKeysEditStones) {
                             << "set pattern.topology lattice\n"
                             << "optimize\n"
                             << "view2d\n"
+                            << "key M\n"  // the map's u across the screen: the box on screen is the map's
                             << "key E\n"
                             << "mouse_drag -1.5 -1.5 1.5 1.5 shift\n"
                             << "key Delete\n"
@@ -987,6 +988,74 @@ TEST_F(StudioSession, ABandsMapHasNoRotationRing) {
     }
   stbi_image_free(pixels);
   EXPECT_LT(white, 20) << white << " white pixels above the band's strip";
+}
+
+// The direction, in degrees (0 to 180, counter-clockwise from across), in which the bright part of
+// a 1280x800 screenshot's large view (the surface and its stones, or the map and its disks) is
+// longest: its pixels' principal axis. The toolbar, the scale bar, the legend, the gizmo and the
+// status line are left out; the inset must be hidden (key I). -1 when the file cannot be read.
+double long_axis_deg(const fs::path& shot) {
+  int width = 0, height = 0, channels = 0;
+  unsigned char* pixels = stbi_load(shot.string().c_str(), &width, &height, &channels, 3);
+  if (!pixels) return -1;
+  double n = 0, sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
+  for (int y = 120; y < height - 45; ++y)
+    for (int x = 440; x < width; ++x) {
+      if ((x < 770 && y > 685) || (x > 1160 && y < 175)) continue;  // the legend, the gizmo
+      const unsigned char* p = pixels + 3 * (long(y) * width + x);
+      if (std::max({p[0], p[1], p[2]}) < 90) continue;  // the background
+      n += 1, sx += x, sy += y, sxx += double(x) * x, syy += double(y) * y, sxy += double(x) * y;
+    }
+  stbi_image_free(pixels);
+  if (n < 1000) return -1;
+  const double cxx = sxx / n - (sx / n) * (sx / n), cyy = syy / n - (sy / n) * (sy / n),
+               cxy = sxy / n - (sx / n) * (sy / n);
+  // y runs down the image: the angle is measured with y up.
+  double angle = 0.5 * std::atan2(-2 * cxy, cxx - cyy) * 180 / M_PI;
+  return angle < 0 ? angle + 180 : angle;
+}
+
+// The difference of two such directions, 0 to 90 degrees.
+double axis_difference_deg(double a, double b) {
+  const double d = std::fmod(std::abs(a - b), 180.0);
+  return std::min(d, 180 - d);
+}
+
+// A designer's trial: the 2D map lay turned 90 degrees from the 3D view. The map now lies as the
+// 3D view shows the surface, follows it once an orbit comes to rest, and M keeps its u across.
+TEST_F(StudioSession, TheMapLiesAsThe3dViewShowsTheSurface) {
+  const fs::path script = dir_ / "turn.txt";
+  std::ofstream out(script);
+  out << "open assets/surfaces/pendant.obj\ndesign assets/designs/pendant_tri_gems.json\noptimize\nkey I\nkey E\n";
+  const auto shots = [&](const std::string& name) {
+    out << "view3d\nwait 3\nscreenshot " << (dir_ / (name + "_3d.png")).string() << "\nview2d\nwait 3\nscreenshot "
+        << (dir_ / (name + "_2d.png")).string() << "\n";
+  };
+  shots("framed");
+  out << "orbit 70 10\nwait 3\n";
+  shots("orbited");
+  out << "key M\nwait 3\n";
+  shots("unturned");
+  out << "orbit 70 10\nwait 3\n";
+  shots("still");
+  out << "quit\n";
+  out.close();
+  const Outcome r = run_script(script);
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  std::map<std::string, std::pair<double, double>> axes;  // 3D, 2D
+  for (const char* name : {"framed", "orbited", "unturned", "still"}) {
+    axes[name] = {long_axis_deg(dir_ / (std::string(name) + "_3d.png")), long_axis_deg(dir_ / (std::string(name) + "_2d.png"))};
+    ASSERT_GE(axes[name].first, 0) << name;
+    ASSERT_GE(axes[name].second, 0) << name;
+  }
+  // The pendant's long axis points the same way in both views, before and after the orbit.
+  EXPECT_LT(axis_difference_deg(axes["framed"].first, axes["framed"].second), 12) << axes["framed"].first << " vs " << axes["framed"].second;
+  EXPECT_LT(axis_difference_deg(axes["orbited"].first, axes["orbited"].second), 12)
+      << axes["orbited"].first << " vs " << axes["orbited"].second;
+  EXPECT_GT(axis_difference_deg(axes["framed"].second, axes["orbited"].second), 45) << "the map did not turn with the orbit";
+  // M: the map as it was laid (u across), still while the 3D view turns.
+  EXPECT_LT(axis_difference_deg(axes["unturned"].second, axes["still"].second), 2);
+  EXPECT_GT(axis_difference_deg(axes["still"].first, axes["still"].second), 20) << "the case does not tell the two apart";
 }
 
 }  // namespace

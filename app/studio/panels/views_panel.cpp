@@ -73,7 +73,7 @@ void render_if_changed(Studio& s, int view, int width, int height) {
                   {c.target.x, c.target.y, c.target.z, c.distance, c.yaw, c.pitch, c.fov_deg, c.screen_shift_x});
   } else {
     const render::MapView& m = s.views.map_view;
-    inputs.insert(inputs.end(), {m.centre.x, m.centre.y, m.half_height});
+    inputs.insert(inputs.end(), {m.centre.x, m.centre.y, m.half_height, m.turn});
   }
   const std::vector<double> style = style_inputs(s.views.style);
   inputs.insert(inputs.end(), style.begin(), style.end());
@@ -237,14 +237,14 @@ Placement shown_placement(const Document& doc) {
 }
 
 // The pattern as seen in the map turns by -rotation (q = R(-rotation) (p - offset) / scale), so
-// the round handle sits at angle -rotation: the lattice turns with it. The square handle's
-// distance from the centre is proportional to the scale.
+// the round handle sits at angle -rotation in the map (on screen, turned with the map): the
+// lattice turns with it. The square handle's distance from the centre is proportional to the scale.
 Handles placement_handles(const MapFrame& f, const SurfaceMap& map, const Placement& placement) {
   Handles h;
   h.shown = !map_wraps(map);
   h.centre = f.to_screen(0.5 * (map.uv_min + map.uv_max));
   h.radius = 0.3f * std::min(f.size.x, f.size.y);
-  const double angle = -glm::radians(placement.rotation_deg);
+  const double angle = f.screen_angle(-glm::radians(placement.rotation_deg));
   h.rotation = ImVec2(h.centre.x + h.radius * float(std::cos(angle)), h.centre.y - h.radius * float(std::sin(angle)));
   const float d = h.radius * float(std::min(placement.scale, 3.0)) * 0.7071f;
   h.scale = ImVec2(h.centre.x + d, h.centre.y - d);  // up and right: the inset covers down-right
@@ -314,7 +314,7 @@ void interact_elements_2d(Studio& s, const MapFrame& f) {
     const glm::dvec2 from = *s.ui.box_from;
     s.ui.box_from.reset();
     try {
-      select_box(s, from, f.to_map(io.MousePos));
+      select_box(s, from, f.to_map(io.MousePos), f.view.turn);
     } catch (const InputError& e) {
       report_error(s.doc, e);
     }
@@ -546,7 +546,7 @@ void interact_2d(Studio& s, const MapFrame& f, const Handles& h, bool with_handl
       p.offset -= p.map_to_pattern(delta) - p.map_to_pattern(glm::dvec2(0));
     } else if (s.ui.map_drag == MapDrag::Rotation) {
       const double angle = std::atan2(-(io.MousePos.y - h.centre.y), io.MousePos.x - h.centre.x);
-      p.rotation_deg = -glm::degrees(angle) - aligned_rotation_deg(s.doc);
+      p.rotation_deg = -glm::degrees(angle - f.view.turn) - aligned_rotation_deg(s.doc);
     } else {
       const float along = ((io.MousePos.x - h.centre.x) - (io.MousePos.y - h.centre.y)) * 0.7071f;
       p.scale = std::clamp(double(along / (h.radius * 0.7071f)), 0.05, 3.0);
@@ -555,8 +555,9 @@ void interact_2d(Studio& s, const MapFrame& f, const Handles& h, bool with_handl
   }
   if (ImGui::IsItemActive() &&
       (ImGui::IsMouseDragging(ImGuiMouseButton_Right) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle))) {
-    view.centre.x -= float(2 * io.MouseDelta.x / f.size.x * view.half_height * f.size.x / f.size.y);
-    view.centre.y += float(2 * io.MouseDelta.y / f.size.y * view.half_height);
+    // The map point under the cursor follows it, whichever way the map is turned.
+    const ImVec2 before(io.MousePos.x - io.MouseDelta.x, io.MousePos.y - io.MouseDelta.y);
+    view.centre -= glm::vec2(f.to_map(io.MousePos) - f.to_map(before));
   }
   if (ImGui::IsItemHovered() && io.MouseWheel != 0) {
     // Zoom about the point under the cursor.
@@ -711,6 +712,11 @@ void toolbar(Studio& s) {
   if (ImGui::Button("swap views (V)")) swap_views(s);
   next_item("inset (I)");
   if (ImGui::Checkbox("inset (I)", &s.views.show_inset)) fit_views_to_inset(s);
+  next_item("map as 3D (M) (?)");
+  bool follows = s.views.map_follows_3d;
+  if (ImGui::Checkbox("map as 3D (M)", &follows)) set_map_follows_3d(s, follows);
+  help_marker("Turns the 2D map to show the surface the way the 3D view does, each time the 3D view comes to rest. "
+              "Off, the map's u axis runs across the screen.");
   next_item("reset view (R)");
   if (ImGui::Button("reset view (R)") && s.doc.surface.map) frame_views(s);
 }
@@ -740,6 +746,7 @@ void views_area(Studio& s, ImVec2 pos, ImVec2 size) {
     ImGui::End();
     return;
   }
+  turn_map_like_3d(s);
   const int large = s.views.large_3d ? 0 : 1;
   if (!s.ui.edit_elements || s.views.large_3d) s.ui.box_from.reset();  // a box is drawn in the large 2D view only
   if (!s.ui.edit_elements || !s.views.large_3d) s.ui.dragging_element_3d = false;
