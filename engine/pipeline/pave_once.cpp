@@ -19,11 +19,15 @@
 #include "solver/guidance_field.h"
 #include "solver/surface_spring_relaxation.h"
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <limits>
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace paver {
 
@@ -176,16 +180,54 @@ struct EditsInPlace {
   int filled = 0, eliminated = 0;
 };
 
+// The stones on the edges of a stone the edits moved (one end moved, the other not), put back
+// where they were laid (placed from the moved points, they slide half the drag along their edges),
+// matched by their pattern edge.
+void keep_edge_stones_of_moved(Elements& elements, const Elements& as_laid, const Pattern& pattern,
+                               const std::vector<std::uint8_t>& moved) {
+  std::map<std::pair<int, int>, std::size_t> laid;  // (edge, spec) -> index in as_laid
+  for (std::size_t i = 0; i < as_laid.size(); ++i)
+    if (as_laid.kind[i] == ElementKind::Edge && as_laid.source[i] >= 0) laid.emplace(std::pair{as_laid.source[i], as_laid.spec[i]}, i);
+  for (std::size_t i = 0; i < elements.size(); ++i) {
+    const int edge = elements.source[i];
+    if (elements.kind[i] != ElementKind::Edge || edge < 0) continue;
+    if (moved[std::size_t(pattern.edge_a[std::size_t(edge)])] == moved[std::size_t(pattern.edge_b[std::size_t(edge)])]) continue;
+    const auto was = laid.find({edge, elements.spec[i]});
+    if (was == laid.end()) continue;
+    const std::size_t j = was->second;
+    elements.uv[i] = as_laid.uv[j], elements.position[i] = as_laid.position[j], elements.normal[i] = as_laid.normal[j];
+    elements.diameter[i] = as_laid.diameter[j];
+  }
+}
+
 EditsInPlace edits_in_place(const PaveContext& c, PaveState& s) {
   EditsInPlace way{*s.system, s.pavement.points, {}, {}, {}, {}, 0, 0};
+  // Before the edits' own placement: PaveState::place leaves its figures on the pavement.
+  const Elements as_laid = s.place(c, s.pavement.points, s.system->stray_count);
   way.held = place_edits(way.system, s.edited, s.design.pattern.spacing, false);
+  std::vector<std::uint8_t> moved(std::size_t(way.system.particle_count()), 0);
+  for (const EditedParticle& e : s.edited)
+    if (!e.added && std::size_t(e.particle) < s.pavement.points.size() &&
+        glm::length(e.to - s.pavement.points[std::size_t(e.particle)]) > 1e-9 * s.design.pattern.spacing)
+      moved[std::size_t(e.particle)] = 1;
   for (int i = 0; i < way.system.particle_count(); ++i) way.points[std::size_t(i)] = glm::dvec2(way.system.position[std::size_t(i)]);
   way.elements = s.place(c, way.points, way.system.stray_count);
   way.retired = s.pavement.retired;
   way.filled = s.pavement.filled;
   way.eliminated = s.pavement.eliminated;
-  std::vector<std::uint8_t> pinned = pinned_vertex_elements(way.elements, way.system);
+  // The moved stone's edge stones either ride along (placed from the moved points: a small drag
+  // along an edge pushes one of them out of the way) or stay where they were laid (a larger one
+  // lands on them instead of sliding them into the stones beyond): whichever keeps more stones,
+  // left in place on a tie.
+  Elements stayed = way.elements;
+  keep_edge_stones_of_moved(stayed, as_laid, s.pavement.pattern, moved);
+  std::vector<std::uint8_t> pinned = pinned_vertex_elements(way.elements, way.system), pinned_stayed = pinned;
   way.removal = remove_colliding(way.elements, s.design.elements.gap, &pinned);
+  Removal removal_stayed = remove_colliding(stayed, s.design.elements.gap, &pinned_stayed);
+  if (stayed.size() >= way.elements.size()) {
+    way.elements = std::move(stayed);
+    way.removal = std::move(removal_stayed);
+  }
   return way;
 }
 

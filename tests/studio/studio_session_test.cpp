@@ -447,6 +447,22 @@ TEST_F(StudioSession, EditingTightPaveLosesAtMostThreeStones) {
   for (const auto& [id, row] : before) lost += id != deleted && !after.count(id);
   EXPECT_LE(lost, 3) << lost << " stones lost besides the deleted one";
   EXPECT_EQ(contact_violations(after), 0);
+
+  // Half a spacing: the stone it lands on and the one in front go, no more (the bound: at
+  // most 2; its own edges' stones slid into their neighbours and lost 4).
+  const fs::path half = dir_ / "half", half_script = dir_ / "half.txt";
+  std::ofstream(half_script) << "open assets/surfaces/pendant.obj\ndesign assets/designs/pendant_tri_gems.json\noptimize\n"
+                             << "select " << pinned << "\ndrag " << pinned << " 0.5 0\noptimize\nexport " << half.string()
+                             << "\nquit\n";
+  const Outcome h = run_script(half_script);
+  ASSERT_EQ(h.exit_code, 0) << describe(h);
+  const std::map<long, Row> dropped = placements_by_id(half / "placements.csv");
+  ASSERT_TRUE(dropped.count(pinned));
+  EXPECT_NEAR(dropped.at(pinned).u, centre.u + 0.5 * D, 1e-5 * D) << "the stone is not where it was dropped";
+  long lost_half = 0;
+  for (const auto& [id, row] : before) lost_half += !dropped.count(id);
+  EXPECT_LE(lost_half, 2) << lost_half << " stones lost to a drag of half a spacing";
+  EXPECT_EQ(contact_violations(dropped), 0);
 }
 
 // An element command on an element that is not there stops the script with a clear error.
