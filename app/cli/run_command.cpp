@@ -34,6 +34,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -74,7 +75,8 @@ struct RunArgs {
   std::optional<double> thickness;
   std::optional<double> inside_diameter;  // mm
   std::vector<std::string> ring_size;     // system and size
-  std::optional<double> culet_clearance, seat_wall;  // production rules of the cut (surface units)
+  std::optional<double> culet_clearance, seat_wall, table_height;  // production rules of the cut (surface units)
+  std::optional<double> seat_depth;  // the stones set this far below the surface in the cut (surface units)
   std::string cutter = "seat";
   bool quiet = false;
 
@@ -234,13 +236,19 @@ ExtraWriter set_up_cut(const RunArgs& args, [[maybe_unused]] PipelineRequest& re
     throw InputError("--cutter " + printable(args.cutter) + ": use seat (girdle, seat cone, hole through) or element");
   if (!args.subtract && args.thickness) throw InputError("--thickness is the metal's for --subtract: add --subtract");
   [[maybe_unused]] const std::optional<RingFinger> finger = ring_finger(args);
-  if (!args.subtract && (args.culet_clearance || args.seat_wall))
-    throw InputError(std::string(args.culet_clearance ? "--culet-clearance" : "--seat-wall") +
-                     " is a rule of the metal that --subtract cuts: add --subtract");
-  if (args.culet_clearance && !(std::isfinite(*args.culet_clearance)))
-    throw InputError("--culet-clearance " + number_text(*args.culet_clearance) + ": must be a finite number (surface units)");
-  if (args.seat_wall && !(std::isfinite(*args.seat_wall)))
-    throw InputError("--seat-wall " + number_text(*args.seat_wall) + ": must be a finite number (surface units)");
+  const std::pair<const char*, const std::optional<double>*> cut_settings[] = {{"--culet-clearance", &args.culet_clearance},
+                                                                              {"--seat-wall", &args.seat_wall},
+                                                                              {"--table-height", &args.table_height},
+                                                                              {"--seat-depth", &args.seat_depth}};
+  for (const auto& [flag, value] : cut_settings) {
+    if (!value->has_value()) continue;
+    if (!args.subtract) throw InputError(std::string(flag) + " is a setting of the metal that --subtract cuts: add --subtract");
+    if (!std::isfinite(**value))
+      throw InputError(std::string(flag) + " " + number_text(**value) + ": must be a finite number (surface units)");
+  }
+  if (args.seat_depth && *args.seat_depth < 0)
+    throw InputError("--seat-depth " + number_text(*args.seat_depth) +
+                     ": how far below the surface the stones' girdles are set, 0 or more (surface units)");
   if (!args.subtract) return {};
   if (!args.thickness) throw InputError("--subtract needs --thickness T: how thick the metal is, surface units");
   // Checked in every build, so that a bad value says so before "this build has no CGAL".
@@ -259,12 +267,13 @@ ExtraWriter set_up_cut(const RunArgs& args, [[maybe_unused]] PipelineRequest& re
   if (args.png) request.extra_outputs.push_back(out / "cut.png");
   const CutterKind cutter = *enum_from_name<CutterKind>(args.cutter);
   const auto warn = request.on_warning;
-  const SeatRules rules{args.culet_clearance, args.seat_wall};
-  return [&progress, &previews, &cut_summary, warn, thickness, cutter, side, rules](const PipelineResult& r, const fs::path& folder,
-                                                                      StageTimings& timings, nlohmann::json& sections) {
+  const SeatRules rules{args.culet_clearance, args.seat_wall, args.table_height};
+  const double seat_depth = args.seat_depth.value_or(0);
+  return [&progress, &previews, &cut_summary, warn, thickness, cutter, side, rules, seat_depth](
+             const PipelineResult& r, const fs::path& folder, StageTimings& timings, nlohmann::json& sections) {
     const CutOptions cut_options{.cutter = cutter, .thickness = thickness, .custom = r.custom_shape.get(),
                                  .stop = &interrupt_requested(), .beads = &r.pavement.beads,
-                                 .finger_side = *side ? &**side : nullptr};
+                                 .finger_side = *side ? &**side : nullptr, .seat_depth = seat_depth};
     // Before the cut, which cannot report its progress: refused when it would not fit in memory,
     // and its size said (docs/benchmarks.md: it grows faster than the count).
     refuse_cut_beyond_memory(r.pavement.elements, cut_options, app::available_memory_bytes());
@@ -280,7 +289,8 @@ ExtraWriter set_up_cut(const RunArgs& args, [[maybe_unused]] PipelineRequest& re
     cut_summary = cut_json(cut, cutter, thickness, r.pavement.design.units);
     // The production rules: a broken one makes the verdict NOT OK, in report.json as in the summary.
     const ShapeTable shapes(r.pavement.elements, r.custom_shape.get(), "cut");
-    const SeatCheck seats = check_seats(r.pavement.elements, shapes, cutter, thickness, cut_options.finger_side, rules);
+    const SeatCheck seats =
+        check_seats(r.pavement.elements, shapes, cutter, thickness, cut_options.finger_side, rules, seat_depth);
     cut_summary["seats"] = seat_check_json(seats);
     const std::vector<std::string> problems = seat_rule_problems(seats);
     cut_summary["seats"]["problems"] = problems;
@@ -461,12 +471,19 @@ std::function<int()> add_run_command(CLI::App& app) {
   cmd->add_option("--ring-size", args->ring_size, "The same as a ring size: US 7, EU 54 or UK N1/2")
       ->expected(2)
       ->type_name("SYSTEM SIZE");
-  cmd->add_option("--culet-clearance", args->culet_clearance,
-                  "A rule for --subtract: at least this much metal under every stone's culet (surface units); a "
-                  "stone that breaks it makes the run NOT OK");
-  cmd->add_option("--seat-wall", args->seat_wall,
-                  "A rule for --subtract: at least this much metal between two seats at their girdles (surface "
-                  "units); a stone that breaks it makes the run NOT OK");
+  // The cut's production rules: a stone that breaks one makes the run NOT OK.
+  for (const auto& [flag, value, rule] : {std::tuple{"--culet-clearance", &args->culet_clearance,
+                                                     "at least this much metal under every stone's culet"},
+                                          std::tuple{"--seat-wall", &args->seat_wall,
+                                                     "at least this much metal between two seats at their girdles"},
+                                          std::tuple{"--table-height", &args->table_height,
+                                                     "no stone's table more than this above the metal's surface"}})
+    cmd->add_option(flag, *value,
+                    std::string("A rule for --subtract: ") + rule +
+                        " (surface units); a stone that breaks it makes the run NOT OK");
+  cmd->add_option("--seat-depth", args->seat_depth,
+                  "For --subtract: set the stones this far below the surface (their girdles; surface units, default 0): "
+                  "the seats are cut that deep and stones.3mf holds them there");
   cmd->add_option("--cutter", args->cutter, "What --subtract cuts: seat (girdle, seat cone, hole through) or element")
       ->capture_default_str();
   cmd->add_flag("--png", args->png, "Also render preview.png (3D) and param.png (2D) offscreen with Vulkan");

@@ -20,7 +20,8 @@ namespace {
 bool print_verdict(const PipelineResult& result, const nlohmann::json& cut) {
   const Pavement& pavement = result.pavement;
   Verdict verdict = judge_pavement(pavement.after);
-  // The cut metal's production rules (--culet-clearance, --seat-wall), when one is broken.
+  // The cut metal's production rules (--culet-clearance, --seat-wall, --table-height, a table sunk
+  // by --seat-depth), when one is broken.
   if (cut.is_object() && cut.contains("seats"))
     for (const nlohmann::json& problem : cut["seats"]["problems"]) {
       verdict.ok = false;
@@ -217,9 +218,11 @@ void print_cut(const nlohmann::json& cut, Units units) {
   if (cut.contains("seats")) {
     const nlohmann::json& seats = cut["seats"];
     const auto figure = [](const nlohmann::json& v) { return v.is_number() ? significant_text(v.get<double>(), 3) : std::string("-"); };
-    std::printf("seats    least metal under a culet %s, between two seats %s; tables up to %s above the surface "
+    const double depth = seats.value("seat_depth", 0.0);
+    const std::string set = depth > 0 ? "set " + significant_text(depth, 3) + " deep; " : "";
+    std::printf("seats    %sleast metal under a culet %s, between two seats %s; tables up to %s above the surface "
                 "(%s)\n",
-                figure(seats["least_culet_metal"]).c_str(), figure(seats["least_seat_wall"]).c_str(),
+                set.c_str(), figure(seats["least_culet_metal"]).c_str(), figure(seats["least_seat_wall"]).c_str(),
                 figure(seats["highest_table"]).c_str(), unit.c_str());
   }
   std::printf("metal   ");

@@ -20,8 +20,9 @@ void write_cut_files(const std::filesystem::path& folder, const CutSolid& cut, c
   // that stopped PrusaSlicer ("no extrusions in the first layer: gem"); they are in paved.3mf.
   write_pavement_3mf(folder / "cut.3mf", &cut.mesh, Elements{}, units, {.stop = stop}, "metal");
   // The stones alone, in the same frame: what the setter sets into the metal (paved.3mf has the
-  // beads too, which the metal holds now).
-  write_pavement_3mf(folder / "stones.3mf", nullptr, stones, units, {.custom = custom, .stop = stop});
+  // beads too, which the metal holds now), set as deep as their seats were cut.
+  write_pavement_3mf(folder / "stones.3mf", nullptr, seated_stones(stones, cut.seat_depth), units,
+                     {.custom = custom, .stop = stop});
 }
 
 nlohmann::json cut_json(const CutSolid& cut, CutterKind cutter, double thickness, Units units) {
@@ -39,6 +40,7 @@ nlohmann::json cut_json(const CutSolid& cut, CutterKind cutter, double thickness
           {"closed_manifold_oriented", true},
           // Deeper than the metal is thick, the culets stand out of its back (the finger's side of a ring).
           {"deepest_stone", cut.deepest_stone},
+          {"seat_depth", cut.seat_depth},
           {"thinnest_metal", metal},
           {"thickest_metal", cut.thickest_metal > 0 ? cut.thickest_metal : thickness},
           {"stones_stand_out_behind", std::max(0.0, cut.deepest_stone - metal)},

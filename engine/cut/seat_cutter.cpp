@@ -69,4 +69,10 @@ SurfaceMesh unit_cutter(CutterKind kind, const ShapeMesh& shape, double above, d
   return m;
 }
 
+Elements seated_stones(const Elements& stones, double depth) {
+  Elements seated = stones;
+  for (std::size_t i = 0; i < seated.size(); ++i) seated.position[i] -= depth * seated.normal[i];
+  return seated;
+}
+
 }  // namespace paver

@@ -12,6 +12,7 @@
 //     cleaning.
 // Reaching past both faces keeps the boolean free of coplanar faces.
 #include "elements/element_shape.h"
+#include "elements/elements.h"
 #include "mesh/surface_mesh.h"
 
 #include <glm/vec2.hpp>
@@ -26,6 +27,10 @@ PAVER_ENUM_NAMES(CutterKind, {CutterKind::Seat, "seat"}, {CutterKind::Element, "
 inline constexpr double kSeatClearance = 0.01;   // of d, around the girdle and the pavilion
 inline constexpr double kSeatHoleRadius = 0.2;   // of d
 inline constexpr int kSeatSegments = 32;         // around the axis
+
+// The stones set `depth` deeper than the surface (their girdles that far below it, along their
+// normals): what the seats are cut for, the cut files hold and the rules measure. 0: as paved.
+Elements seated_stones(const Elements& stones, double depth);
 
 // The seat's profile from top to bottom as (radius, height) in units of d, with the girdle's
 // middle at height 0; `above` and `below` (units of d, > 0) are how far the handle and the hole

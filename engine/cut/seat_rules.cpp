@@ -27,20 +27,23 @@ ShapeReach reach_of(const ShapeMesh& shape) {
   return r;
 }
 
-// Every stone that breaks a rule, the least value found.
-void note_break(std::vector<SeatRuleBreak>& breaks, const char* rule, double limit, double value, int id) {
+// Every stone that breaks a rule, the worst value found: the least, or for a ceiling the greatest.
+void note_break(std::vector<SeatRuleBreak>& breaks, const char* rule, double limit, double value, int id,
+                bool ceiling = false) {
   auto it = std::find_if(breaks.begin(), breaks.end(), [&](const SeatRuleBreak& b) { return b.rule == rule; });
   if (it == breaks.end()) it = breaks.insert(breaks.end(), SeatRuleBreak{rule, limit, value, {}});
-  it->worst = std::min(it->worst, value);
+  it->worst = ceiling ? std::max(it->worst, value) : std::min(it->worst, value);
   it->stone_ids.push_back(id);  // made unique once, at the end
 }
 
 }  // namespace
 
-SeatCheck check_seats(const Elements& stones, const ShapeTable& shapes, CutterKind cutter, double thickness,
-                      const FingerSide* ring, const SeatRules& rules) {
+SeatCheck check_seats(const Elements& paved, const ShapeTable& shapes, CutterKind cutter, double thickness,
+                      const FingerSide* ring, const SeatRules& rules, double seat_depth) {
+  const Elements stones = seated_stones(paved, seat_depth);
   SeatCheck check;
-  check.least_culet_metal = check.least_seat_wall = std::numeric_limits<double>::infinity();
+  check.seat_depth = seat_depth;
+  check.least_culet_metal = check.least_seat_wall = check.lowest_table = std::numeric_limits<double>::infinity();
   if (stones.size() == 0) return check;
   const double widening = cutter == CutterKind::Seat ? 2 * kSeatClearance : 0;  // of d, across the girdle
   double largest = 0;
@@ -55,9 +58,15 @@ SeatCheck check_seats(const Elements& stones, const ShapeTable& shapes, CutterKi
   for (std::size_t i = 0; i < stones.size(); ++i) {
     const double d = stones.diameter[i];
     const ShapeReach shape = reach_of(shapes[stones.shape[i]]);
-    check.highest_table = std::max(check.highest_table, shape.above * d);
+    const double table = shape.above * d - seat_depth;
+    check.highest_table = std::max(check.highest_table, table);
+    check.lowest_table = std::min(check.lowest_table, table);
+    if (table < 0) note_break(check.breaks, "table below the metal", 0, table, stones.id[i]);
+    if (rules.table_height && table > *rules.table_height)
+      note_break(check.breaks, "table height", *rules.table_height, table, stones.id[i], true);
     const glm::dvec3 culet = stones.position[i] - shape.below * d * stones.normal[i];
-    const double metal = ring ? distance_from_axis(ring->axis, culet) - ring->inside_radius : thickness - shape.below * d;
+    const double metal =
+        ring ? distance_from_axis(ring->axis, culet) - ring->inside_radius : thickness - shape.below * d - seat_depth;
     check.least_culet_metal = std::min(check.least_culet_metal, metal);
     if (rules.culet_clearance && metal < *rules.culet_clearance)
       note_break(check.breaks, "culet clearance", *rules.culet_clearance, metal, stones.id[i]);
@@ -87,6 +96,8 @@ nlohmann::json seat_check_json(const SeatCheck& check) {
   return {{"least_culet_metal", finite(check.least_culet_metal)},
           {"least_seat_wall", finite(check.least_seat_wall)},
           {"highest_table", check.highest_table},
+          {"lowest_table", finite(check.lowest_table)},
+          {"seat_depth", check.seat_depth},
           {"broken", breaks}};
 }
 
@@ -98,13 +109,20 @@ std::vector<std::string> seat_rule_problems(const SeatCheck& check) {
       ids += (k ? ", " : "") + std::to_string(b.stone_ids[k]);
     if (b.stone_ids.size() > 10) ids += ", ...";
     const std::string count = std::to_string(b.stone_ids.size()) + (b.stone_ids.size() == 1 ? " stone" : " stones");
-    const bool culet = b.rule == "culet clearance";
-    problems.push_back(count + (culet ? " leave less than " : " stand with less than ") + significant_text(b.limit, 3) +
-                       (culet ? " of metal under their culets (--culet-clearance; the least "
-                              : " of metal between their seats (--seat-wall; the least ") +
-                       significant_text(b.worst, 3) + "; ids " + ids + "): " +
-                       (culet ? "thicken the metal or use smaller stones there"
-                              : "widen the gap or use smaller stones there"));
+    const std::string limit = significant_text(b.limit, 3), worst = significant_text(b.worst, 3);
+    const std::string have = b.stone_ids.size() == 1 ? " has" : " have";
+    if (b.rule == "culet clearance")
+      problems.push_back(count + " leave less than " + limit + " of metal under their culets (--culet-clearance; the least " +
+                         worst + "; ids " + ids + "): thicken the metal, set them less deep or use smaller stones there");
+    else if (b.rule == "seat wall")
+      problems.push_back(count + " stand with less than " + limit + " of metal between their seats (--seat-wall; the least " +
+                         worst + "; ids " + ids + "): widen the gap or use smaller stones there");
+    else if (b.rule == "table height")
+      problems.push_back(count + have + " tables more than " + limit + " above the metal (--table-height; the highest " +
+                         worst + "; ids " + ids + "): set them deeper (--seat-depth) or use smaller stones there");
+    else
+      problems.push_back(count + have + " tables below the metal (--seat-depth; the lowest " + worst + "; ids " + ids +
+                         "): set them less deep, at most their crown's height");
   }
   return problems;
 }

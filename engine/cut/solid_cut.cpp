@@ -235,12 +235,14 @@ void refuse_cut_beyond_memory(const Elements& elements, const CutOptions& option
   throw InputError(text);
 }
 
-CutSolid cut_pavement(const SurfaceMap& map, const Elements& elements, const CutOptions& options) {
+CutSolid cut_pavement(const SurfaceMap& map, const Elements& paved, const CutOptions& options) {
   const Stopwatch watch;
+  const Elements elements = seated_stones(paved, options.seat_depth);
   const auto check_stop = [&] {
     if (options.stop && options.stop->load()) throw Interrupted();
   };
   CutSolid result;
+  result.seat_depth = options.seat_depth;
   // A closed surface's metal is a hollow shell of the whole surface (its atlas's charts would each
   // get a wall at their seams).
   const bool closed = is_atlas(map);
@@ -269,8 +271,9 @@ CutSolid cut_pavement(const SurfaceMap& map, const Elements& elements, const Cut
   for (std::size_t i = 0; i < n; ++i) {
     const double d = elements.diameter[i];
     for (const glm::vec3& v : shapes[elements.shape[i]].positions)
-      result.deepest_stone = std::max(result.deepest_stone, -double(v.z) * d);
-    const SurfaceMesh unit = unit_cutter(options.cutter, shapes[elements.shape[i]], cutter_reach_above(),
+      result.deepest_stone = std::max(result.deepest_stone, -double(v.z) * d + options.seat_depth);
+    // A stone set deeper: its handle still reaches out past the metal's top face.
+    const SurfaceMesh unit = unit_cutter(options.cutter, shapes[elements.shape[i]], cutter_reach_above() + options.seat_depth / d,
                                          cutter_reach_below(deepest_metal, d));
     for (const glm::dvec3& v : unit.positions) reach = std::max(reach, d * glm::length(v));
     cutters.push_back(to_cgal(placed_cutter(unit, elements.position[i], elements.normal[i], d)));

@@ -25,6 +25,9 @@ struct CutOptions {
   // A band at a ring size (cut/finger_side.h): its finger side a cylinder, `thickness` then the
   // least metal, checked by check_finger_side before the pavement.
   const FingerSide* finger_side = nullptr;
+  // The stones set this deep (their girdles below the surface, seated_stones):
+  // the seats cut for them there; 0, at the surface.
+  double seat_depth = 0;
 };
 
 struct CutSolid {
@@ -34,7 +37,8 @@ struct CutSolid {
   int cutters = 0;
   int united_cutters = 0;       // cutters that touched another and were united with it first
   int beads = 0;                // beads joined to the metal
-  double deepest_stone = 0;     // how far the lowest stone reaches below the surface (a gem's culet), surface units
+  double deepest_stone = 0;     // how far the lowest stone reaches below the surface (a gem's culet, set), surface units
+  double seat_depth = 0;        // CutOptions::seat_depth: the stones in the cut files are set that deep
   double thinnest_metal = 0;    // the metal's least thickness: `thickness`, or a ring's at its nearest to the finger
   double thickest_metal = 0;    // and its greatest
   double inside_diameter = 0;   // a ring's finger side (surface units); 0 when the metal follows the normals

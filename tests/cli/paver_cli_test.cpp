@@ -1730,6 +1730,30 @@ TEST_F(PaverRun, InsideDiameterMakesTheFingerSideACylinderAtThatSize) {
   ASSERT_FALSE(verdict["problems"].empty());
   EXPECT_NE(verdict["problems"].back().get<std::string>().find("--seat-wall"), std::string::npos) << verdict.dump();
 
+  // Set 0.1 deeper with a 0.15 table ceiling: every culet has 0.1 less metal, the seats take more
+  // metal out, and the 1.5 mm gems' tables (0.255 above the girdle's middle) stand 0.155 high: NOT OK.
+  const fs::path deep = dir() / "deep";
+  const CliResult set_deep = paver({"run", "assets/surfaces/ring_band.obj", "--stone", "1.5", "--gap", "0.1", "--subtract",
+                                    "--thickness", "1.2", "--inside-diameter", "17.3", "--seat-depth", "0.1",
+                                    "--table-height", "0.15", "--quiet", "--formats", "ply", "--out", deep.string()});
+  EXPECT_EQ(set_deep.exit_code, 3) << describe(set_deep);
+  const json deep_cut = read_json(deep / "report.json")["cut"];
+  EXPECT_EQ(deep_cut["seat_depth"].get<double>(), 0.1);
+  // Along the stone's normal, which on the crowned band leans off the radius: a little less than
+  // 0.1 toward the finger.
+  EXPECT_NEAR(deep_cut["seats"]["least_culet_metal"].get<double>(), cut["seats"]["least_culet_metal"].get<double>() - 0.1,
+              0.01);
+  EXPECT_NEAR(deep_cut["seats"]["highest_table"].get<double>(), cut["seats"]["highest_table"].get<double>() - 0.1, 1e-9);
+  EXPECT_NEAR(deep_cut["deepest_stone"].get<double>(), cut["deepest_stone"].get<double>() + 0.1, 1e-9);
+  EXPECT_LT(deep_cut["volume_mm3"].get<double>(), cut["volume_mm3"].get<double>()) << "deeper seats take more metal";
+  ASSERT_EQ(deep_cut["seats"]["broken"].size(), 1u);
+  EXPECT_EQ(deep_cut["seats"]["broken"][0]["rule"], "table height");
+  EXPECT_EQ(deep_cut["seats"]["broken"][0]["stones"].size(), deep_cut["cutters"].get<std::size_t>()) << "every stone";
+  EXPECT_NE(set_deep.out.find("seats    set 0.1 deep; "), std::string::npos) << describe(set_deep);
+  EXPECT_NE(set_deep.out.find("have tables more than 0.15 above the metal (--table-height; the highest 0.155"),
+            std::string::npos)
+      << describe(set_deep);
+
   const fs::path us = dir() / "us7";
   const CliResult sized = paver({"run", "assets/surfaces/ring_band.obj", "--stone", "1.5", "--gap", "0.1", "--subtract",
                                  "--thickness", "1.2", "--ring-size", "US", "7", "--quiet", "--formats", "ply", "--out",
@@ -1749,8 +1773,11 @@ TEST_F(PaverRun, InsideDiameterMakesTheFingerSideACylinderAtThatSize) {
   expect_input_error(with(ring, {"--ring-size", "UK", "7"}), bad, {"--ring-size UK 7: a UK size is a letter A to Z"});
   expect_input_error(with(ring, {"--ring-size", "FR", "7"}), bad, {"--ring-size FR 7: the size's system is US, EU or UK"});
   expect_input_error(paver({"run", "assets/surfaces/ring_band.obj", "--culet-clearance", "0.2", "--out", bad.string()}),
-                     bad, {"--culet-clearance is a rule of the metal that --subtract cuts"});
+                     bad, {"--culet-clearance is a setting of the metal that --subtract cuts"});
   expect_input_error(with(ring, {"--ring-size", "US", "7", "--inside-diameter", "17"}), bad, {"give one of them"});
+  expect_input_error(with(ring, {"--seat-depth", "-0.1"}), bad, {"--seat-depth -0.1: how far below the surface", "0 or more"});
+  expect_input_error(paver({"run", "assets/surfaces/ring_band.obj", "--table-height", "0.2", "--out", bad.string()}), bad,
+                     {"--table-height is a setting of the metal that --subtract cuts"});
   expect_input_error(paver({"run", "assets/surfaces/ring_band.obj", "--inside-diameter", "17", "--out", bad.string()}),
                      bad, {"--inside-diameter 17 sets the finger side of the metal that --subtract makes"});
   expect_input_error(paver({"run", "assets/surfaces/pendant.obj", "--subtract", "--thickness", "1", "--inside-diameter",

@@ -159,6 +159,50 @@ TEST(SeatRules, CuletMetalAndSeatWallsAreMeasuredAndBrokenRulesNameTheirStones) 
   EXPECT_TRUE(check_seats(stones, shapes, CutterKind::Seat, 0.5, nullptr, {0.1, 0.15}).breaks.empty());
 }
 
+// Stones set deeper (--seat-depth) on the same plate: their culets lose that much metal and their
+// tables that much height; a table ceiling (--table-height) names the stones above it, and a
+// depth past the crown sinks the tables below the metal, which always breaks.
+TEST(SeatRules, ASeatDepthLowersTheStonesAndTheTablesAreRuled) {
+  Elements stones;
+  const double d = 0.8;
+  stones.push_back(ElementKind::Vertex, 0, 0, {0.0, 0.0}, {0.0, 0.0, 0.0}, {0, 0, 1}, d, ShapeKind::Gem);
+  stones.push_back(ElementKind::Vertex, 1, 0, {1.0, 0.0}, {1.0, 0.0, 0.0}, {0, 0, 1}, 1.2 * d, ShapeKind::Gem);
+  stones.id = {4, 7};
+  double below = 0, above = 0;
+  for (const glm::vec3& v : make_builtin_shape(ShapeKind::Gem).positions) {
+    below = std::max(below, -double(v.z));
+    above = std::max(above, double(v.z));
+  }
+  const ShapeTable shapes(stones, nullptr, "cut");
+  const Elements seated = seated_stones(stones, 0.05);
+  EXPECT_EQ(seated.position[1], glm::dvec3(1.0, 0.0, -0.05)) << "along the normal, below the surface";
+  const SeatCheck set = check_seats(stones, shapes, CutterKind::Seat, 1.0, nullptr, {}, 0.05);
+  EXPECT_NEAR(set.least_culet_metal, 1.0 - below * 1.2 * d - 0.05, 1e-6);
+  EXPECT_NEAR(set.highest_table, above * 1.2 * d - 0.05, 1e-6);
+  EXPECT_NEAR(set.lowest_table, above * d - 0.05, 1e-6);
+  EXPECT_EQ(set.seat_depth, 0.05);
+  EXPECT_TRUE(set.breaks.empty());
+  // The larger stone's table stands above a ceiling between the two.
+  const double ceiling = (above * 1.1 * d) - 0.05;
+  const SeatCheck ruled = check_seats(stones, shapes, CutterKind::Seat, 1.0, nullptr, {{}, {}, ceiling}, 0.05);
+  ASSERT_EQ(ruled.breaks.size(), 1u);
+  EXPECT_EQ(ruled.breaks[0].rule, "table height");
+  EXPECT_EQ(ruled.breaks[0].stone_ids, (std::vector<int>{7}));
+  EXPECT_NEAR(ruled.breaks[0].worst, above * 1.2 * d - 0.05, 1e-6) << "the highest table";
+  const std::vector<std::string> too_high = seat_rule_problems(ruled);
+  ASSERT_EQ(too_high.size(), 1u);
+  EXPECT_NE(too_high[0].find("1 stone has tables more than"), std::string::npos) << too_high[0];
+  EXPECT_NE(too_high[0].find("--seat-depth"), std::string::npos) << too_high[0];
+  // Deeper than the small stone's crown: its table lies under the metal.
+  const double sunk = above * 1.1 * d;
+  const SeatCheck under = check_seats(stones, shapes, CutterKind::Seat, 1.0, nullptr, {}, sunk);
+  ASSERT_EQ(under.breaks.size(), 1u);
+  EXPECT_EQ(under.breaks[0].rule, "table below the metal");
+  EXPECT_EQ(under.breaks[0].stone_ids, (std::vector<int>{4}));
+  EXPECT_LT(under.lowest_table, 0);
+  EXPECT_NE(seat_rule_problems(under)[0].find("tables below the metal"), std::string::npos);
+}
+
 // The volume the seats take out of a flat plate is worked out by hand: each seat is a stack of
 // regular-polygon frustums, of which the part between the plate's faces goes.
 TEST(SolidCut, SeatsInAFlatPlateRemoveExactlyTheirVolumeWithinIt) {
