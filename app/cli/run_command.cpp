@@ -281,39 +281,25 @@ ExtraWriter set_up_cut(const RunArgs& args, [[maybe_unused]] PipelineRequest& re
                    " cutters in one boolean, which reports no progress (3,933 took 105 s and 7,033 took 422 s "
                    "on 2 cores)");
     const Stopwatch watch;
-    const CutSolid cut = cut_pavement(*r.map, r.pavement.elements, cut_options);
+    const CheckedCut checked = cut_and_check(*r.map, r.pavement.elements, cut_options, rules, r.pavement.design.units);
+    const CutSolid& cut = checked.solid;
     write_cut_files(folder, cut, r.pavement.elements, r.custom_shape.get(), r.pavement.design.units,
                     &interrupt_requested());
     if (previews) previews->write_solid(folder / "cut.png", cut.mesh, r.map->mesh);
     timings.emplace_back("cut", watch.milliseconds());
     cut_summary = cut_json(cut, cutter, thickness, r.pavement.design.units);
     // The production rules: a broken one makes the verdict NOT OK, in report.json as in the summary.
-    const ShapeTable shapes(r.pavement.elements, r.custom_shape.get(), "cut");
-    const SeatCheck seats =
-        check_seats(r.pavement.elements, shapes, cutter, thickness, cut_options.finger_side, rules, seat_depth);
-    cut_summary["seats"] = seat_check_json(seats);
-    const std::vector<std::string> problems = seat_rule_problems(seats);
-    cut_summary["seats"]["problems"] = problems;
-    // On a ring each culet has its own metal to the finger side: the deepest stone need not stand
-    // where the metal is thinnest.
-    const bool ring = cut_options.finger_side != nullptr;
-    if (ring) cut_summary["stones_stand_out_behind"] = std::max(0.0, -seats.least_culet_metal);
+    cut_summary["seats"] = seat_check_json(checked.seats);
+    cut_summary["seats"]["problems"] = checked.problems;
+    if (cut_options.finger_side) cut_summary["stones_stand_out_behind"] = std::max(0.0, -checked.seats.least_culet_metal);
     sections["cut"] = cut_summary;
-    if (!problems.empty()) {
+    if (!checked.problems.empty()) {
       Verdict verdict = judge_pavement(r.pavement.after);
       verdict.ok = false;
-      verdict.problems.insert(verdict.problems.end(), problems.begin(), problems.end());
+      verdict.problems.insert(verdict.problems.end(), checked.problems.begin(), checked.problems.end());
       sections["verdict"] = to_json(verdict);
     }
-    const std::string unit(enum_name(r.pavement.design.units));
-    const std::string stand_out =
-        !ring ? stones_stand_out_warning(cut, thickness, r.pavement.design.units)
-        : seats.least_culet_metal < 0
-            ? "on this ring the stones' culets stand out of the finger side by up to " +
-                  significant_text(-seats.least_culet_metal, 3) + " " + unit +
-                  ": use a smaller inside diameter (more metal) or smaller stones"
-            : "";
-    if (!stand_out.empty()) warn(stand_out);
+    if (!checked.stand_out.empty()) warn(checked.stand_out);
     const std::string rounded = coordinate_rounding_warning(r.pavement.elements, "cut.stl", "cut.3mf and stones.3mf");
     if (!rounded.empty()) warn(rounded);
   };

@@ -453,13 +453,24 @@ void cut_metal(Studio& s, const fs::path& folder, double thickness) {
   if (!result_is_final(s))
     throw InputError("nothing to cut yet: the pavement for this design is not finished (run it, or wait)");
   if (!(thickness > 0) || !std::isfinite(thickness))
-    throw InputError("metal thickness " + std::to_string(thickness) + ": it needs to be above 0 (surface units)");
+    throw InputError("metal thickness " + number_text(thickness) + ": it needs to be above 0 (surface units)");
+  CutRequest request = s.ui.cut;
+  request.thickness = thickness;
+  for (const auto& [name, value] : {std::pair{"seat depth", request.seat_depth}, {"inside diameter", request.inside_diameter_mm},
+                                    {"culet clearance", request.culet_clearance}, {"seat wall", request.seat_wall},
+                                    {"table height", request.table_height}})
+    if (!(value >= 0) || !std::isfinite(value))
+      throw InputError(std::string(name) + " " + number_text(value) + ": 0 or more (0: " +
+                       (std::string_view(name) == "seat depth"        ? "the girdles at the surface"
+                        : std::string_view(name) == "inside diameter" ? "the metal follows the normals"
+                                                                     : "no such rule") +
+                       ")");
   const std::vector<fs::path> inputs = {s.doc.surface.path, s.doc.design_path, s.doc.design.elements.custom_shape};
   std::vector<fs::path> outputs;
   for (const std::string& name : cut_file_names()) outputs.push_back(folder / name);
   refuse_overwriting_inputs(inputs, outputs);
   check_output_folder(folder);
-  s.cutter.start(s.doc.surface.map, s.doc.result.pavement, shared_custom_shape(s.doc), thickness, folder);
+  s.cutter.start(s.doc.surface.map, s.doc.result.pavement, shared_custom_shape(s.doc), request, folder);
   report_status(s.doc, "cutting the seats into the metal...");
 }
 

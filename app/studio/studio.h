@@ -71,7 +71,7 @@ struct UiState {
   bool fill_sizes_editing = false;
   std::optional<std::filesystem::path> screenshot;  // write the next presented frame here
   std::string select_panel;            // a script's `panel NAME`: selected on the next frame
-  double cut_thickness = 1;            // Cut metal: the metal's thickness, surface units
+  CutRequest cut;                      // Cut metal: the thickness, seat depth, ring size and rules
   CutAxis cut_axis = CutAxis::Auto;    // the axis the surface on screen was cut across (the design's placement.cut_axis follows)
   int selected_element = -1;           // the element id selected in the views or by `select`; -1 = none
   std::vector<int> box_selected;       // more elements, from a Shift+drag box (or `select_box`): Del and P take all
@@ -147,9 +147,10 @@ void set_backend(Studio& s, const std::string& name);
 // report.json into `folder`,
 // as `paver run` does. Throws InputError (nothing to export yet, a bad folder).
 void export_outputs(Studio& s, const std::filesystem::path& folder);
-// Starts cutting the final pavement's seats into metal `thickness` thick (MetalCutter); cut.stl
-// and cut.3mf go into `folder` when it is done. Throws InputError (nothing to cut yet, a bad
-// thickness or folder, an input in the way).
+// Starts cutting the final pavement's seats into metal `thickness` thick (MetalCutter), with the
+// File panel's seat depth, ring size and rules (UiState::cut); cut.stl, cut.3mf and stones.3mf go
+// into `folder` when it is done. Throws InputError (nothing to cut yet, a bad thickness, depth,
+// diameter or rule, a bad folder, an input in the way).
 void cut_metal(Studio& s, const std::filesystem::path& folder, double thickness);
 // The 3D view as a PNG, at its current size. Throws InputError.
 void save_view_png(Studio& s, const std::filesystem::path& path);

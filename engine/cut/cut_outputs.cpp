@@ -1,7 +1,9 @@
 #include "cut/cut_outputs.h"
 
+#include "core/number_text.h"
 #include "io/element_export.h"
 #include "io/mesh_formats.h"
+#include "io/shape_table.h"
 #include "io/threemf_export.h"
 #include "report/metal_weight.h"
 #include "report/ring_size.h"
@@ -12,6 +14,25 @@
 #include <cstdio>
 
 namespace paver {
+
+CheckedCut cut_and_check(const SurfaceMap& map, const Elements& stones, const CutOptions& options,
+                         const SeatRules& rules, Units units) {
+  CheckedCut checked;
+  checked.solid = cut_pavement(map, stones, options);
+  const ShapeTable shapes(stones, options.custom, "cut");
+  checked.seats = check_seats(stones, shapes, options.cutter, options.thickness, options.finger_side, rules,
+                              options.seat_depth);
+  checked.problems = seat_rule_problems(checked.seats);
+  // On a ring each culet has its own metal to the finger side: the deepest stone need not stand
+  // where the metal is thinnest.
+  if (!options.finger_side)
+    checked.stand_out = stones_stand_out_warning(checked.solid, options.thickness, units);
+  else if (checked.seats.least_culet_metal < 0)
+    checked.stand_out = "on this ring the stones' culets stand out of the finger side by up to " +
+                        significant_text(-checked.seats.least_culet_metal, 3) + " " + std::string(enum_name(units)) +
+                        ": use a smaller inside diameter (more metal) or smaller stones";
+  return checked;
+}
 
 void write_cut_files(const std::filesystem::path& folder, const CutSolid& cut, const Elements& stones,
                      const ShapeMesh* custom, Units units, const std::atomic<bool>* stop) {

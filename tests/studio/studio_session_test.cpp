@@ -836,8 +836,9 @@ TEST_F(StudioSession, RowsAlongAnAxisWithAFittedOffsetExportWhatTheCliWrites) {
                                         exported);
 }
 
-// The studio's Cut metal (in the background) writes the metal `paver run --subtract` writes for
-// the same design, byte for byte.
+// The studio's Cut metal (in the background), with the stones set deeper and a table rule, writes
+// the metal `paver run --subtract` writes for the same design and settings, byte for byte, and
+// says NOT OK as the CLI does.
 TEST_F(StudioSession, CutMetalWritesWhatTheCliSubtractWrites) {
   const fs::path cut = dir_ / "cut", exported = dir_ / "export", script = dir_ / "cut.txt";
   std::ofstream(script) << "open assets/surfaces/pendant.obj\n"
@@ -848,19 +849,26 @@ TEST_F(StudioSession, CutMetalWritesWhatTheCliSubtractWrites) {
                            "spacing 1.6\n"
                            "optimize\n"
                            "export " << exported.string() << "\n"
+                        // The stones set 0.1 deeper, their tables (0.255 above the girdle's middle
+                        // for these 1.5 mm gems) then 0.155 high, over a ceiling of 0.15: NOT OK.
+                        << "panel file\ntype \"seat depth\" 0.1\ntype \"table height\" 0.15\n"
                         << "cut 1 " << cut.string() << "\n"
                         << "quit\n";
   const Outcome r = run_script(script);
   ASSERT_EQ(r.exit_code, 0) << describe(r);
   ASSERT_TRUE(fs::is_regular_file(cut / "cut.stl")) << describe(r);
   ASSERT_TRUE(fs::is_regular_file(cut / "cut.3mf"));
+  EXPECT_NE(r.out.find("status: NOT OK: wrote "), std::string::npos) << describe(r);
+  EXPECT_NE(r.out.find("tables more than 0.15 above the metal (--table-height; the highest 0.155"), std::string::npos)
+      << describe(r);
 
   const fs::path cli_out = dir_ / "cli";
   const Outcome cli = run_in_source(quote(PAVER_CLI) + " run assets/surfaces/pendant.obj --design " +
                                     quote((exported / "design.json").string()) +
-                                    " --backend cpu --subtract --thickness 1 --formats ply --out " + quote(cli_out.string()),
+                                    " --backend cpu --subtract --thickness 1 --seat-depth 0.1 --table-height 0.15"
+                                    " --formats ply --out " + quote(cli_out.string()),
                                 dir_);
-  ASSERT_EQ(cli.exit_code, 0) << describe(cli);
+  ASSERT_EQ(cli.exit_code, 3) << describe(cli);
   const std::string studio_stl = read_text(cut / "cut.stl");
   EXPECT_GT(studio_stl.size(), 100000u);
   EXPECT_TRUE(studio_stl == read_text(cli_out / "cut.stl")) << "cut.stl differs from paver run --subtract's";

@@ -133,12 +133,14 @@ void file_panel(Studio& s) {
   ImGui::SameLine();
   if (ImGui::Button("STL")) export_one(s, "elements.stl", write_elements_stl);
   ImGui::EndDisabled();
+  CutRequest& cut = s.ui.cut;
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6);
-  ImGui::InputDouble("metal thickness", &s.ui.cut_thickness, 0, 0, "%.3g");
+  ImGui::InputDouble("metal thickness", &cut.thickness, 0, 0, "%.3g");
+  remember_field_place("metal thickness");
   ImGui::SameLine();
   ImGui::BeginDisabled(!result_is_final(s) || s.cutter.busy() || !MetalCutter::available());
   if (ImGui::Button(s.cutter.busy() ? "cutting..." : "Cut metal"))
-    guarded(doc, [&] { cut_metal(s, s.ui.export_dir, s.ui.cut_thickness); });
+    guarded(doc, [&] { cut_metal(s, s.ui.export_dir, cut.thickness); });
   ImGui::EndDisabled();
   help_marker(MetalCutter::available()
                   ? "The surface thickened into metal this thick (surface units, against the normals) with a seat "
@@ -146,6 +148,27 @@ void file_panel(Studio& s) {
                     "folder above, as `paver "
                     "run --subtract` writes them. It runs in the background."
                   : "This studio was built without CGAL (-DPAVER_WITH_CGAL=OFF): no cut.");
+  if (ImGui::TreeNodeEx("seats, ring size and rules", ImGuiTreeNodeFlags_DefaultOpen)) {
+    const auto cut_field = [](const char* label, double& value, const char* help) {
+      ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6);
+      ImGui::InputDouble(label, &value, 0, 0, "%.3g");
+      remember_field_place(label);
+      help_marker(help);
+    };
+    cut_field("seat depth", cut.seat_depth,
+              "How far below the surface the stones are set (their girdles, surface units; 0: at the surface): the "
+              "seats are cut that deep and stones.3mf holds them there (--seat-depth).");
+    cut_field("inside diameter mm", cut.inside_diameter_mm,
+              "A band's ring size: the metal's finger side a cylinder this wide, the thickness then its least "
+              "(--inside-diameter; 0: the metal follows the normals).");
+    cut_field("culet clearance", cut.culet_clearance,
+              "A rule: at least this much metal under every culet (surface units; 0: no rule). A stone that breaks "
+              "a rule is named and the cut says NOT OK (--culet-clearance).");
+    cut_field("seat wall", cut.seat_wall, "A rule: at least this much metal between two seats (--seat-wall; 0: no rule).");
+    cut_field("table height", cut.table_height,
+              "A rule: no table more than this above the metal (--table-height; 0: no rule).");
+    ImGui::TreePop();
+  }
   path_field("##png", s.ui.png_path, {"3D view PNG"});
   ImGui::SameLine();
   if (ImGui::Button("3D view PNG")) guarded(doc, [&] { save_view_png(s, s.ui.png_path); });
