@@ -52,7 +52,11 @@ BandClosure close_band(const SurfaceMap& map, const UnitCell& cell, const Placem
   const glm::dvec2 v = double(closure.step.x) * cell.a1 + double(closure.step.y) * cell.a2;
   closure.rotation_deg = std::atan2(v.y, v.x) * 180.0 / std::numbers::pi;
   const double around_length = map.period * placement.scale;  // T in the pattern plane
-  const double steps = around_length / glm::length(v);
+  const double raw_steps = around_length / glm::length(v);
+  // A D that already closes the band (a saved design re-run) gives a whole number of steps but
+  // for rounding, 42.9999999 or 43.0000001: it must close it again at the same D, not one fewer.
+  const double whole = std::round(raw_steps);
+  const double steps = std::abs(raw_steps - whole) < 1e-9 * raw_steps ? whole : raw_steps;
   // At least three steps around: fewer would join a point to itself or twice to another. Elements
   // that may not come closer (stones, or a gap at its limit) then need room for three.
   if (never_closer && steps < 3) {
@@ -62,7 +66,10 @@ BandClosure close_band(const SurfaceMap& map, const UnitCell& cell, const Placem
                      significant_text(cell.spacing * steps / 3, 4) + ")");
   }
   closure.around = std::max(3, int(never_closer ? std::floor(steps) : std::round(steps)));
-  closure.spacing = cell.spacing * around_length / (closure.around * glm::length(v));
+  // Closed already: D stays as it is to the last bit, so a saved design paves as it did.
+  closure.spacing = double(closure.around) == steps && steps == whole
+                        ? cell.spacing
+                        : cell.spacing * around_length / (closure.around * glm::length(v));
   return closure;
 }
 

@@ -208,6 +208,29 @@ TEST(SeamlessBand, StonesKeepTheirSizeAndTheGapTakesTheChange) {
   EXPECT_FALSE(p.band_closure->stones_kept);
 }
 
+// A band's pavement carries its closed design (design.json): paved again, that design closes the
+// band at the same D with the same steps, and lays the same stones, not one step fewer.
+TEST(SeamlessBand, ItsClosedDesignPavedAgainClosesAtTheSameSpacing) {
+  for (const double stone : {0.5, 0.55, 0.6}) {
+    Design design;
+    design.pattern.tessellation = Tessellation::Triangle;
+    design.elements.gap = 0.05;
+    set_stone_size(design, stone);
+    const Pavement first = make_pavement(cylinder_map(), design, {});
+    const Pavement again = make_pavement(cylinder_map(), first.design, {});
+    ASSERT_TRUE(first.band_closure && again.band_closure);
+    const std::string what = "stone " + std::to_string(stone) + ": " + describe_band_closure(*first.band_closure) +
+                             " then " + describe_band_closure(*again.band_closure);
+    EXPECT_EQ(again.band_closure->around, first.band_closure->around) << what;
+    EXPECT_EQ(again.design.pattern.spacing, first.design.pattern.spacing) << what;
+    ASSERT_EQ(again.elements.size(), first.elements.size()) << what;
+    for (size_t i = 0; i < first.elements.size(); ++i) {
+      ASSERT_EQ(again.elements.position[i], first.elements.position[i]) << what << ", element " << i;
+      ASSERT_EQ(again.elements.diameter[i], first.elements.diameter[i]) << what << ", element " << i;
+    }
+  }
+}
+
 // The smallest free space between the stones' footprints and a rim (3D, to the rim's polyline).
 double clearance_to_rim(const SurfaceMesh& mesh, const std::vector<int>& loop, const Elements& e) {
   double clearance = std::numeric_limits<double>::infinity();
