@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <initializer_list>
 #include <numbers>
+#include <stdexcept>
 #include <utility>
 
 namespace paver::studio {
@@ -208,6 +209,7 @@ void ScriptRunner::act(Studio& s, const ScriptCommand& c) {
       const std::vector<InputFrame> frames = typing_frames(*at, c.value, c.type_end, glm::vec2(size.x - 8, size.y - 6));
       s.input_queue.insert(s.input_queue.end(), frames.begin(), frames.end());
       frames_left_ = 3;
+      typing_since_frame_ = ImGui::GetFrameCount();
       break;
     }
     case Kind::Key: {
@@ -238,10 +240,15 @@ bool ScriptRunner::settled(Studio& s, const ScriptCommand& c) {
       std::fflush(stdout);
       s.orbiting_frames.reset();
       return true;
+    case Kind::Type:
+      if (!s.input_queue.empty() || frames_left_-- > 0) return false;
+      // A click beside the box (on the label) types into nothing: say so, not go on as if it took.
+      if (!field_was_active_since(c.text, typing_since_frame_))
+        throw std::runtime_error("type: the click on field '" + c.text + "' did not give it the keyboard");
+      return true;
     case Kind::Click:
     case Kind::MouseDrag:
     case Kind::MouseDrag3d:
-    case Kind::Type:
     case Kind::Key: return s.input_queue.empty() && frames_left_-- <= 0;
     case Kind::Cut: return !s.cutter.busy() && !s.cutter.has_outcome();  // and its outcome reported
     default: return true;

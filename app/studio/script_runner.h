@@ -35,6 +35,7 @@ private:
   Phase phase_ = Phase::Ready;
   int frames_left_ = 0;                       // wait N, orbit
   float orbit_step_ = 0;                      // orbit: radians per frame
+  int typing_since_frame_ = 0;                // type: the frame its input began
   std::chrono::steady_clock::time_point since_;  // the current command started waiting
   int errors_seen_ = 0;
   bool finished_ = false;

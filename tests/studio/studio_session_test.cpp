@@ -873,6 +873,36 @@ TEST_F(StudioSession, CutMetalWritesWhatTheCliSubtractWrites) {
   EXPECT_GT(studio_stl.size(), 100000u);
   EXPECT_TRUE(studio_stl == read_text(cli_out / "cut.stl")) << "cut.stl differs from paver run --subtract's";
 }
+// A ring at its size from the studio: the inside diameter typed into Cut metal's field gives the
+// metal paver run --subtract --inside-diameter gives, byte for byte, its finger side at 8.65 mm.
+TEST_F(StudioSession, CutMetalMakesARingAtItsSizeAsTheCliDoes) {
+  const fs::path cut = dir_ / "cut", exported = dir_ / "export", script = dir_ / "ring.txt";
+  std::ofstream(script) << "open assets/surfaces/ring_band.obj\n"
+                           "pattern tri\n"
+                           "set elements.vertex.shape gem\n"
+                           "set elements.vertex.scale 0.9375\n"
+                           "set elements.gap 0.1\n"
+                           "spacing 1.6\n"
+                           "optimize\n"
+                           "export " << exported.string() << "\n"
+                        << "panel file\ntype \"inside diameter mm\" 17.3\n"
+                        << "cut 1.2 " << cut.string() << "\n"
+                        << "quit\n";
+  const Outcome r = run_script(script);
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  ASSERT_TRUE(fs::is_regular_file(cut / "cut.stl")) << describe(r);
+  const fs::path cli_out = dir_ / "cli";
+  const Outcome cli = run_in_source(quote(PAVER_CLI) + " run assets/surfaces/ring_band.obj --design " +
+                                    quote((exported / "design.json").string()) +
+                                    " --backend cpu --subtract --thickness 1.2 --inside-diameter 17.3 --formats ply --out " +
+                                    quote(cli_out.string()),
+                                dir_);
+  ASSERT_EQ(cli.exit_code, 0) << describe(cli);
+  EXPECT_NEAR(nlohmann::json::parse(read_text(cli_out / "report.json"))["cut"]["ring"]["inside_diameter_mm"].get<double>(),
+              17.3, 1e-9);
+  EXPECT_TRUE(read_text(exported / "placements.csv") == read_text(cli_out / "placements.csv")) << "the pavements differ";
+  EXPECT_TRUE(read_text(cut / "cut.stl") == read_text(cli_out / "cut.stl")) << "cut.stl differs from paver run's";
+}
 #endif
 
 TEST_F(StudioSession, AFailingCommandStopsTheSessionWithItsError) {

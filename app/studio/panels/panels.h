@@ -47,6 +47,8 @@ bool typed_number(const char* label, double& value, const char* format = "%.4g",
 // a script's `type` clicks there, as a designer does.
 void remember_field_place(const char* label);
 std::optional<glm::vec2> field_centre(std::string_view label);
+// Whether the field had the keyboard in frame `frame` or after: a script's typing reached it.
+bool field_was_active_since(std::string_view label, int frame);
 // A separator with a title under it.
 void section(const char* title);
 

@@ -86,6 +86,7 @@ namespace {
 struct FieldPlace {
   ImVec2 min, max;
   int frame = -1;
+  int active_frame = -1;  // the last frame it had the keyboard
 };
 std::map<std::string, FieldPlace, std::less<>>& field_places() {
   static std::map<std::string, FieldPlace, std::less<>> places;
@@ -95,8 +96,18 @@ std::map<std::string, FieldPlace, std::less<>>& field_places() {
 
 void remember_field_place(const char* label) {
   const std::string_view full(label);
-  field_places()[std::string(full.substr(0, full.find("##")))] = {ImGui::GetItemRectMin(), ImGui::GetItemRectMax(),
-                                                                  ImGui::GetFrameCount()};
+  const std::string shown(full.substr(0, full.find("##")));
+  // The item's rectangle holds the label on its right: the place to click is the box left of it.
+  ImVec2 box_max = ImGui::GetItemRectMax();
+  if (!shown.empty()) box_max.x -= ImGui::CalcTextSize(shown.c_str()).x + ImGui::GetStyle().ItemInnerSpacing.x;
+  FieldPlace& place = field_places()[shown];
+  place.min = ImGui::GetItemRectMin(), place.max = box_max, place.frame = ImGui::GetFrameCount();
+  if (ImGui::IsItemActive()) place.active_frame = place.frame;
+}
+
+bool field_was_active_since(std::string_view label, int frame) {
+  const auto it = field_places().find(label);
+  return it != field_places().end() && it->second.active_frame >= frame;
 }
 
 std::optional<glm::vec2> field_centre(std::string_view label) {
