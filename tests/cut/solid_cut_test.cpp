@@ -145,7 +145,7 @@ TEST(SeatRules, CuletMetalAndSeatWallsAreMeasuredAndBrokenRulesNameTheirStones) 
   EXPECT_NEAR(check_seats(stones, shapes, CutterKind::Element, 0.5, nullptr, {}).least_seat_wall, 1.0 - d, 1e-12)
       << "an element cutter is the stone itself";
 
-  const SeatCheck strict = check_seats(stones, shapes, CutterKind::Seat, 0.5, nullptr, {0.2, 0.2});
+  const SeatCheck strict = check_seats(stones, shapes, CutterKind::Seat, 0.5, nullptr, {0.2, 0.2, std::nullopt});
   ASSERT_EQ(strict.breaks.size(), 2u);
   EXPECT_EQ(strict.breaks[0].rule, "culet clearance");
   EXPECT_EQ(strict.breaks[0].stone_ids, (std::vector<int>{10, 11, 12})) << "every culet has too little metal";
@@ -156,7 +156,7 @@ TEST(SeatRules, CuletMetalAndSeatWallsAreMeasuredAndBrokenRulesNameTheirStones) 
   EXPECT_NE(problems[1].find("2 stones stand with less than 0.2 of metal between their seats"), std::string::npos)
       << problems[1];
   EXPECT_NE(problems[1].find("ids 10, 11)"), std::string::npos) << problems[1];
-  EXPECT_TRUE(check_seats(stones, shapes, CutterKind::Seat, 0.5, nullptr, {0.1, 0.15}).breaks.empty());
+  EXPECT_TRUE(check_seats(stones, shapes, CutterKind::Seat, 0.5, nullptr, {0.1, 0.15, std::nullopt}).breaks.empty());
 }
 
 // Stones set deeper (--seat-depth) on the same plate: their culets lose that much metal and their
