@@ -162,6 +162,14 @@ std::optional<std::string> grade_problem(const Design& design) {
   if (design.pattern.topology == Topology::Lattice)
     return by + ": the lattice cannot grade its stones (it has one spacing); use " + key_path(Key::pattern_topology) +
            " \"adaptive\" (or \"auto\", which grows the pattern when stones are graded)";
+  if (g.by == GradeBy::Point &&
+      (g.point.size() != 3 || !std::all_of(g.point.begin(), g.point.end(), [](double x) { return std::isfinite(x); }))) {
+    std::string point = "'";
+    point += key_path(Key::grade_point);
+    point += "'";
+    return by + " needs the point the stones grow smaller towards: give " + point + " as [x, y, z] of the surface (" +
+           std::to_string(g.point.size()) + " numbers given)";
+  }
   if (!(g.smallest > 0))
     return smallest + " is 0, and " + by + " grades towards it: give the smallest graded stone (surface units)";
   if (!(design.pattern.spacing > 0)) return std::nullopt;  // no main stone to compare with yet

@@ -81,15 +81,18 @@ struct BeadDesign {
 };
 
 // Graded stones (pattern/grade_field.h): the V-elements fall off from the main size towards
-// `smallest` where the surface bends most (curvature) or near its rims (rim: over `width` from the
-// margin inwards), in stocked steps.
-enum class GradeBy { None, Curvature, Rim };
-PAVER_ENUM_NAMES(GradeBy, {GradeBy::None, "none"}, {GradeBy::Curvature, "curvature"}, {GradeBy::Rim, "rim"});
+// `smallest` where the surface bends most (curvature), near its rims (rim: over `width` from the
+// margin inwards) or towards a point such as a pendant's tip (point: over `width` from it), in
+// stocked steps.
+enum class GradeBy { None, Curvature, Rim, Point };
+PAVER_ENUM_NAMES(GradeBy, {GradeBy::None, "none"}, {GradeBy::Curvature, "curvature"}, {GradeBy::Rim, "rim"},
+                 {GradeBy::Point, "point"});
 
 struct GradeDesign {
   GradeBy by = GradeBy::None;
   double smallest = 0;                    // the least graded stone, surface units (> 0 when graded)
-  double width = 0;                       // rim: how far in the stones reach the main size; 0 = 3 main stones
+  double width = 0;                       // rim, point: how far the stones reach the main size; 0 = 3 main stones
+  std::vector<double> point;              // point: the stones are smallest at the surface nearest [x, y, z]
 };
 
 // Fill sizes (elements.fill_sizes): at most this many, none under this share of the main stone
@@ -124,9 +127,10 @@ struct Design {
   // elements.close_spots; version 3 (before 2026-12-03) has no elements.fill_sizes,
   // elements.beads.min_diameter or elements.beads.over; version 4 (until graded stones, 2026-12-02)
   // has no elements.grade; version 5 (until 2026-12-02's pentagonal tessellations) has no pattern.cell
-  // or elements.face. All are read, so that an earlier build says which versions it reads rather
+  // or elements.face; version 6 (until 2026-12-03's grade towards a point) has no
+  // elements.grade.point. All are read, so that an earlier build says which versions it reads rather
   // than that a new key is unknown.
-  static constexpr int kVersion = 6;
+  static constexpr int kVersion = 7;
   static constexpr int kOldestVersion = 1;
   Units units = Units::Millimetre;
   PatternDesign pattern;

@@ -63,6 +63,7 @@ enum class Key {
   grade_by,
   grade_smallest,
   grade_width,
+  grade_point,
   beads_enabled,
   beads_scale,
   beads_min_diameter,
@@ -165,6 +166,7 @@ void visit_keys(D& d, Visit&& visit) {
   visit(Key::grade_by, d.elements.grade.by);
   visit(Key::grade_smallest, d.elements.grade.smallest);
   visit(Key::grade_width, d.elements.grade.width);
+  visit(Key::grade_point, d.elements.grade.point);
   visit(Key::beads_enabled, d.elements.beads.enabled);
   visit(Key::beads_scale, d.elements.beads.scale);
   visit(Key::beads_min_diameter, d.elements.beads.min_diameter);

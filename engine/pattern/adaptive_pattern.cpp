@@ -142,7 +142,9 @@ double particle_boundary_margin(const SurfaceMap& map, const Design& design, con
   const double spacing = design.pattern.spacing;
   double radius = design.elements.vertex.enabled ? 0.5 * design.elements.vertex.scale * spacing : 0;
   for (const EdgeElementDesign& e : design.elements.edge) radius = std::max(radius, 0.5 * e.scale * spacing);
-  if (grade && design.elements.grade.by == GradeBy::Rim) radius *= grade->least_share();
+  // Graded towards the rims or a point (a tip at the rim): the smallest stones may lie there.
+  const GradeBy by = design.elements.grade.by;
+  if (grade && (by == GradeBy::Rim || by == GradeBy::Point)) radius *= grade->least_share();
   // The edge margin too: the boundary's post-processing removes every element inside it. (A closed
   // surface's charts meet at seams, not rims: their particles are kept apart across them as before.)
   return radius + (is_atlas(map) ? 0 : design.elements.margin);

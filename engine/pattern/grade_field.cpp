@@ -1,5 +1,7 @@
 #include "pattern/grade_field.h"
 
+#include "mesh/triangle_geometry.h"
+
 #include "core/input_error.h"
 #include "design/design_keys.h"
 #include "core/point_hash.h"
@@ -45,6 +47,23 @@ double smooth_step(double t) {
   return t * t * (3 - 2 * t);
 }
 
+// The point of the surface nearest p: a point given a little off the surface (a tip's corner, a
+// point picked on a coarser copy) grades from where it touches, down to the smallest stone there.
+glm::dvec3 nearest_surface_point(const SurfaceMesh& mesh, const glm::dvec3& p) {
+  glm::dvec3 best = p;
+  double best_d2 = std::numeric_limits<double>::infinity();
+  for (const auto& t : mesh.triangles) {
+    const glm::dvec3 q = detail::closest_point_on_triangle(p, mesh.positions[std::size_t(t[0])],
+                                                           mesh.positions[std::size_t(t[1])], mesh.positions[std::size_t(t[2])]);
+    const double d2 = glm::dot(q - p, q - p);
+    if (d2 < best_d2) best_d2 = d2, best = q;
+  }
+  return best;
+}
+
+// From `least` at t = 0 smoothly to exactly 1 (the main size, not a rounding under it) at t >= 1.
+double rising_share(double least, double t) { return t >= 1 ? 1.0 : least + (1 - least) * smooth_step(t); }
+
 }  // namespace
 
 GradeField::GradeField(const SurfaceMap& map, const ElementsDesign& elements, double main, double mm_per_unit)
@@ -54,6 +73,9 @@ GradeField::GradeField(const SurfaceMap& map, const ElementsDesign& elements, do
       width_(std::min(elements.grade.width > 0 ? elements.grade.width : kDefaultGradeWidthStones * main,
                       bounding_box_diagonal(map.mesh))),
       ladder_(size_ladder(elements, main, mm_per_unit)) {
+  if (by_ == GradeBy::Point && elements.grade.point.size() == 3)
+    point_ = nearest_surface_point(map.mesh,
+                                   glm::dvec3(elements.grade.point[0], elements.grade.point[1], elements.grade.point[2]));
   if (by_ == GradeBy::Rim && !is_atlas(map))
     rims_ = std::make_unique<BoundaryIndex>(map.mesh, margin_ + 0.5 * main + width_);
   if (by_ == GradeBy::Curvature) smooth_curvature();
@@ -118,8 +140,12 @@ double GradeField::share(const glm::dvec3& position, double kappa) const {
       if (!rims_) return 1;
       // The rim row's centres lie half a smallest stone inside the margin: the grade starts there.
       const double in = rims_->nearest(position).distance - margin_ - 0.5 * least_ * main_;
-      return least_ + (1 - least_) * smooth_step(in / width_);
+      return rising_share(least_, in / width_);
     }
+    case GradeBy::Point:
+      // Straight from the point, not along the surface: a tip's stones lie within a few stones of
+      // it, where the two differ by the surface's bend only.
+      return rising_share(least_, glm::length(position - point_) / width_);
     case GradeBy::None: break;
   }
   return 1;

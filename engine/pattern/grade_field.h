@@ -10,6 +10,8 @@
 //              sits on it); not eq. 5's normalised curvature, which spreads a flat scan's noise
 //              over the whole range,
 //   rim        r at the margin, rising smoothly to 1 over `width` inwards,
+//   point      r at the surface's point nearest the design's (a pendant's tip), rising smoothly
+//              to 1 over `width` from it, straight-line distance,
 // with r = smallest / main. The adaptive pattern follows it (pattern/adaptive_pattern.h): its
 // particles are relaxed to the graded spacing and packed to each pair's own contact, so the
 // smaller stones lie closer instead of leaving room. Every stone is the step of the size ladder
@@ -73,6 +75,7 @@ private:
   double main_, gap_, least_, margin_, width_;
   std::vector<double> ladder_;
   std::unique_ptr<BoundaryIndex> rims_;
+  glm::dvec3 point_{0};  // point: where the share is least
   // Curvature: |H| averaged over a main stone at each vertex, its base, the vertices bucketed.
   std::vector<double> smoothed_;
   double base_ = 0;

@@ -1847,6 +1847,34 @@ TEST_F(PaverRun, StoneSizesFillWhatTheMainSizeLeavesWithStockedSizes) {
 // Graded stones (issue 43): the pierced pendant with stocked sizes 1.5, 1.3 and 1.1 mm, graded from
 // its rims down to 1.1: the grown pattern, only those sizes, a bill row for each, the grade in the
 // summary and report.json; a grade that cannot apply refused before anything is written.
+// Towards a pendant's tip: --grade point --grade-point X,Y,Z; the stones at the tip are the
+// smallest, the body's the main size, and the point is saved with the design.
+TEST_F(PaverRun, GradedStonesFallOffTowardsAPointSuchAsAPendantsTip) {
+  const fs::path out = dir() / "out";
+  const CliResult r = paver({"run", "assets/surfaces/pendant.obj", "--stone-sizes", "1.5,1.3,1.1", "--gap", "0.1",
+                             "--margin", "0.3", "--grade", "point", "--grade-point", "0,25.9,0", "--grade-smallest", "1.1",
+                             "--grade-width", "10", "--quiet", "--formats", "ply", "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  EXPECT_NE(r.out.find("graded by point: "), std::string::npos) << describe(r);
+  std::vector<double> tip, body;
+  for (const Placement& row : read_placements(out / "placements.csv")) {
+    const double d = std::hypot(row.p[0], row.p[1] - 25.9, row.p[2]);
+    if (d < 3) tip.push_back(row.diameter);
+    if (d > 12) body.push_back(row.diameter);
+  }
+  ASSERT_GE(tip.size(), 3u);
+  ASSERT_GT(body.size(), 100u);
+  EXPECT_EQ(*std::max_element(tip.begin(), tip.end()), 1.1) << "every stone at the tip is the smallest";
+  EXPECT_GT(double(std::count(body.begin(), body.end(), 1.5)), 0.8 * double(body.size())) << "the body: the main size";
+  const json saved = read_json(out / "design.json")["elements"]["grade"];
+  EXPECT_EQ(saved["by"], "point");
+  EXPECT_EQ(saved["point"], json::array({0.0, 25.9, 0.0}));
+  const fs::path bad = dir() / "bad";
+  expect_input_error(paver({"run", "assets/surfaces/pendant.obj", "--stone", "1.5", "--grade", "point",
+                            "--grade-smallest", "1.1", "--out", bad.string()}),
+                     bad, {"needs the point the stones grow smaller towards: give 'elements.grade.point' as [x, y, z]"});
+}
+
 TEST_F(PaverRun, GradedStonesFallOffTowardsTheRimsInStockedSizes) {
   const fs::path out = dir() / "out";
   const CliResult r = paver({"run", "assets/surfaces/pendant_pierced.obj", "--stone-sizes", "1.5,1.3,1.1", "--gap", "0.1",

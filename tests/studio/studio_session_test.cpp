@@ -1021,6 +1021,47 @@ TEST_F(StudioSession, ValuesTypedIntoFieldsAreRefusedAtTheFieldWithTheirRange) {
   EXPECT_TRUE(fs::exists(shot));
 }
 
+// Stones graded towards a pendant's tip from the studio: the point is typed into its field (the
+// middle box, y) and the pavement, saved, grades towards the surface's point nearest it.
+TEST_F(StudioSession, StonesGradedTowardsAPointTypedIntoItsField) {
+  const fs::path script = dir_ / "session.txt", exported = dir_ / "export";
+  std::ofstream(script) << "open assets/surfaces/pendant.obj\npattern tri\nset elements.vertex.shape gem\n"
+                           "set elements.vertex.scale 0.9375\nset elements.gap 0.1\nspacing 1.6\n"
+                           "set elements.grade.smallest 1.1\nset elements.grade.width 8\n"
+                           "set elements.grade.point [0,25.9,0]\nset elements.grade.by point\noptimize\n"
+                           "panel elements\ntype \"towards the point\" 18\noptimize\nexport "
+                        << exported.string() << "\nquit\n";
+  const Outcome r = run_script(script);
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const nlohmann::json saved = nlohmann::json::parse(read_text(exported / "design.json"))["elements"]["grade"];
+  EXPECT_EQ(saved["by"], "point");
+  EXPECT_EQ(saved["point"], nlohmann::json::array({0.0, 18.0, 0.0})) << saved.dump();
+  const nlohmann::json report = nlohmann::json::parse(read_text(exported / "report.json"));
+  EXPECT_EQ(report["grade"]["by"], "point");
+  EXPECT_GT(report["grade"]["graded"].get<int>(), 10);
+  // The small stones lie around the point typed, not the tip first given.
+  std::ifstream csv(exported / "placements.csv");
+  std::string line;
+  std::getline(csv, line);
+  double near_sum = 0, tip_sum = 0;
+  int near = 0, tip = 0;
+  while (std::getline(csv, line)) {
+    std::vector<double> f;
+    std::stringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');) f.push_back(std::atof(cell.c_str()));
+    ASSERT_GE(f.size(), 9u) << line;
+    // Seen from above (the dome is one sheet over x, y): the point typed lies under the surface,
+    // and the grade starts where the surface is nearest it, above it.
+    const double x = f[2], y = f[3], diameter = f[8];
+    if (std::hypot(x, y - 18) < 2.5) near_sum += diameter, ++near;
+    if (std::hypot(x, y - 25.9) < 3) tip_sum += diameter, ++tip;
+  }
+  ASSERT_GT(near, 2);
+  ASSERT_GT(tip, 0);
+  EXPECT_LT(near_sum / near, 1.25) << "the stones at the point typed are the small ones";
+  EXPECT_GT(tip_sum / tip, near_sum / near + 0.1) << "the tip first given is no longer the smallest";
+}
+
 // A designer's trial: a band's 2D view drew the placement's rotation ring larger than the band's
 // strip, centred off it, though a band sets its rows' direction itself. No ring on a band: the
 // view above the strip (framed in the middle) stays empty.

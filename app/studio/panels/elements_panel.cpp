@@ -97,23 +97,50 @@ void fill_sizes_field(Document& doc, Design& d, UiState& ui, const char* unit) {
 void grade_fields(Document& doc, Design& d, double stone, const char* unit) {
   GradeDesign& grade = d.elements.grade;
   if (enum_combo("graded by", grade.by, {"none (one size)", "curvature (smaller where it bends)",
-                                         "rim (smaller towards the edges)"})) {
+                                         "rim (smaller towards the edges)", "point (smaller towards a tip)"})) {
     if (grade.by != GradeBy::None && !(grade.smallest > 0) && stone > 0) {
       const double step = kGradeStepMm / millimetres_per_unit(d.units);
       grade.smallest = stone - step * std::round(0.25 * stone / step);
     }
+    // A new point grade starts at the surface's highest point, a tip on most pendants drawn upright.
+    if (grade.by == GradeBy::Point && grade.point.size() != 3 && doc.surface.map &&
+        !doc.surface.map->mesh.positions.empty()) {
+      const auto& positions = doc.surface.map->mesh.positions;
+      const glm::dvec3 top = *std::max_element(positions.begin(), positions.end(),
+                                               [](const glm::dvec3& a, const glm::dvec3& b) { return a.y < b.y; });
+      grade.point = {top.x, top.y, top.z};
+    }
     change_design(doc, d);
   }
   help_marker("Stones that fall off from the stone size towards a smaller one, as a setter grades them: where "
-              "the surface bends most, or towards every rim and hole. The pattern is grown (topology auto) so "
+              "the surface bends most, towards every rim and hole, or towards a point (a pendant's tip). The pattern is grown (topology auto) so "
               "that the smaller stones lie closer; each stone is a stocked size (the fill sizes between, else "
               "0.05 mm steps).");
   if (grade.by == GradeBy::None) return;
   if (length_field("smallest graded", grade.smallest, unit, Key::grade_smallest)) change_design(doc, d);
   help_marker("The smallest stone of the grade: under the stone size, and at least a quarter of it.");
-  if (grade.by == GradeBy::Rim) {
+  if (grade.by == GradeBy::Point) {
+    if (grade.point.size() == 3) {
+      double xyz[3] = {grade.point[0], grade.point[1], grade.point[2]};
+      ImGui::SetNextItemWidth(ImGui::GetFontSize() * 14);
+      // Taken on Enter or when the field is left, never at each keystroke (as length_field).
+      const bool entered = ImGui::InputScalarN("towards the point", ImGuiDataType_Double, xyz, 3, nullptr, nullptr,
+                                               "%.4g", ImGuiInputTextFlags_EnterReturnsTrue);
+      if (entered || ImGui::IsItemDeactivatedAfterEdit()) {
+        if (std::isfinite(xyz[0]) && std::isfinite(xyz[1]) && std::isfinite(xyz[2])) {
+          grade.point = {xyz[0], xyz[1], xyz[2]};
+          change_design(doc, d);
+        }
+      }
+      remember_field_place("towards the point");
+      help_marker("Where the stones are smallest, as x, y, z of the surface (its highest point to begin with); "
+                  "they grow back to the stone size over the grade width from it.");
+    }
+  }
+  if (grade.by == GradeBy::Rim || grade.by == GradeBy::Point) {
     if (length_field("grade width", grade.width, unit, Key::grade_width)) change_design(doc, d);
-    help_marker("How far in from the edge margin the stones grow back to the stone size (0 = three stones).");
+    help_marker(grade.by == GradeBy::Rim ? "How far in from the edge margin the stones grow back to the stone size (0 = three stones)."
+                                         : "How far from the point the stones grow back to the stone size (0 = three stones).");
   }
 }
 

@@ -31,7 +31,7 @@ Design graded_design(GradeBy by, double margin = kMargin) {
   design.pattern.tessellation = Tessellation::Triangle;
   design.elements.gap = kGap;
   design.elements.margin = margin;
-  design.elements.grade = {by, kSmallest, 0};
+  design.elements.grade = {by, kSmallest, 0, {}};
   set_stone_size(design, kStone);
   return design;
 }
@@ -78,14 +78,14 @@ void expect_a_graded_pavement(const SurfaceMap& map, const Pavement& p, double m
 TEST(StoneGrade, TheLadderStepsInStockedSizesOrInMeleeSieveSteps) {
   const SurfaceMap& map = *test::bundled_map("pendant_pierced");
   ElementsDesign elements;
-  elements.grade = {GradeBy::Rim, 1.1, 0};
+  elements.grade = {GradeBy::Rim, 1.1, 0, {}};
   const GradeField sieve(map, elements, 1.5, 1.0);
   const std::vector<double> steps = sieve.ladder();
   ASSERT_EQ(steps.size(), 9u);  // 1.5, 1.45 ... 1.1
   for (std::size_t k = 0; k < steps.size(); ++k) EXPECT_NEAR(steps[k], 1.5 - 0.05 * double(k), 1e-12);
   // In inches the steps are still 0.05 mm.
   ElementsDesign in_inches;
-  in_inches.grade = {GradeBy::Rim, 1.1 / 25.4, 0};
+  in_inches.grade = {GradeBy::Rim, 1.1 / 25.4, 0, {}};
   const GradeField inches(map, in_inches, 1.5 / 25.4, 25.4);
   EXPECT_EQ(inches.ladder().size(), 9u);
 
@@ -105,7 +105,7 @@ TEST(StoneGrade, ARimGradeIsSmallestAtTheMarginAndTheMainSizeAWidthIn) {
   const SurfaceMap& map = *test::bundled_map("pendant_pierced");
   ElementsDesign elements;
   elements.margin = kMargin;
-  elements.grade = {GradeBy::Rim, kSmallest, 2.0};
+  elements.grade = {GradeBy::Rim, kSmallest, 2.0, {}};
   const GradeField field(map, elements, kStone, 1.0);
   const SurfaceMesh& mesh = map.mesh;
   int near = 0, far = 0;
@@ -135,7 +135,7 @@ TEST(StoneGrade, ACurvatureGradeIgnoresAFlatScansNoiseAndGradesATip) {
     return glm::dvec3(30 * u, 30 * v, 0.003 * std::sin(97 * u) * std::cos(89 * v));
   }));
   ElementsDesign elements;
-  elements.grade = {GradeBy::Curvature, kSmallest, 0};
+  elements.grade = {GradeBy::Curvature, kSmallest, 0, {}};
   const GradeField flat(plate, elements, kStone, 1.0);
   for (std::size_t v = 0; v < plate.mesh.positions.size(); ++v)
     EXPECT_GT(flat.share(plate.mesh.positions[v], plate.curvature[v]), 0.98) << "vertex " << v;
@@ -149,6 +149,62 @@ TEST(StoneGrade, ACurvatureGradeIgnoresAFlatScansNoiseAndGradesATip) {
   }
   EXPECT_EQ(most, 1.0);
   EXPECT_NEAR(least, kSmallest / kStone, 1e-12) << "the tip takes the whole grade";
+}
+
+// Towards a point (the pendant's tip, its top at y 25.9): the smallest within the smallest stone's
+// radius of it, the main size from `width` on, and never smaller farther out.
+TEST(StoneGrade, APointGradeIsSmallestAtThePointAndTheMainSizeAWidthAway) {
+  const SurfaceMap& map = *test::bundled_map("pendant");
+  const glm::dvec3 tip(0, 25.9, 0);
+  ElementsDesign elements;
+  elements.grade = {GradeBy::Point, kSmallest, 8.0, {tip.x, tip.y, tip.z}};
+  const GradeField field(map, elements, kStone, 1.0);
+  std::vector<std::pair<double, double>> by_distance;  // (distance to the tip, share)
+  for (std::size_t v = 0; v < map.mesh.positions.size(); ++v) {
+    const double d = glm::length(map.mesh.positions[v] - tip);
+    by_distance.emplace_back(d, field.share(map.mesh.positions[v], map.curvature[v]));
+  }
+  std::sort(by_distance.begin(), by_distance.end());
+  ASSERT_LT(by_distance.front().first, 1.0) << "the pendant reaches its tip";
+  EXPECT_NEAR(by_distance.front().second, kSmallest / kStone, 0.02);
+  int far = 0;
+  for (std::size_t k = 0; k < by_distance.size(); ++k) {
+    const auto [d, share] = by_distance[k];
+    EXPECT_GE(share, kSmallest / kStone - 1e-12);
+    if (k > 0) {
+      EXPECT_GE(share, by_distance[k - 1].second - 1e-12) << "the share falls again " << d << " from the tip";
+    }
+    if (d >= 8.0) {
+      EXPECT_EQ(share, 1.0) << d << " from the tip";
+      ++far;
+    }
+  }
+  EXPECT_GT(far, int(by_distance.size()) / 2);
+}
+
+TEST(StoneGrade, APendantGradedTowardsItsTip) {
+  const SurfaceMap& map = *test::bundled_map("pendant");
+  Design design = graded_design(GradeBy::Point);
+  design.elements.grade.point = {0, 25.9, 0};
+  design.elements.grade.width = 10;
+  const Pavement p = make_pavement(map, design);
+  EXPECT_EQ(p.design.pattern.topology, Topology::Adaptive);
+  expect_a_graded_pavement(map, p, kMargin);
+  std::vector<double> at_tip, body;
+  for (std::size_t i = 0; i < p.elements.size(); ++i) {
+    const double d = glm::length(p.elements.position[i] - glm::dvec3(0, 25.9, 0));
+    if (d < 3) at_tip.push_back(p.elements.diameter[i]);
+    if (d > 12) body.push_back(p.elements.diameter[i]);
+  }
+  ASSERT_GE(at_tip.size(), 3u);
+  ASSERT_GT(body.size(), 100u);
+  EXPECT_LT(mean(at_tip), 1.2) << "the stones at the tip are the small ones";
+  EXPECT_GT(mean(body), 1.45) << "the body keeps the main size";
+  // Without the point the grade cannot apply: said, naming the key.
+  Design no_point = graded_design(GradeBy::Point);
+  const std::optional<std::string> problem = grade_problem(no_point);
+  ASSERT_TRUE(problem);
+  EXPECT_NE(problem->find("'elements.grade.point' as [x, y, z]"), std::string::npos) << *problem;
 }
 
 TEST(StoneGrade, APiercedPendantGradedFromItsRimsAndHoles) {

@@ -53,7 +53,7 @@ Design non_default_design() {
   d.elements.rim_rows = RimRows::Holes;
   d.elements.close_spots = true;
   d.elements.fill_sizes = {0.1 / 3, 0.025};
-  d.elements.grade = {GradeBy::None, 0.1 / 7, 0.55};  // a grade needs a tri pattern of vertex stones
+  d.elements.grade = {GradeBy::None, 0.1 / 7, 0.55, {1.25, -2.5, 1.0 / 3}};  // a grade needs a tri pattern of vertex stones
   d.elements.beads = {true, 1.25, 0.4, 0.125};
   d.placement.offset = {-1.5, 2.0 / 3.0};
   d.placement.rotation_deg = -37.5;
@@ -130,6 +130,10 @@ void expect_same(const Design& a, const Design& b) {
   EXPECT_EQ(a.elements.rim_rows, b.elements.rim_rows);
   EXPECT_EQ(a.elements.close_spots, b.elements.close_spots);
   EXPECT_EQ(a.elements.fill_sizes, b.elements.fill_sizes);
+  EXPECT_EQ(a.elements.grade.by, b.elements.grade.by);
+  EXPECT_EQ(a.elements.grade.smallest, b.elements.grade.smallest);
+  EXPECT_EQ(a.elements.grade.width, b.elements.grade.width);
+  EXPECT_EQ(a.elements.grade.point, b.elements.grade.point);
   EXPECT_EQ(a.elements.beads.enabled, b.elements.beads.enabled);
   EXPECT_EQ(a.elements.beads.scale, b.elements.beads.scale);
   EXPECT_EQ(a.elements.beads.min_diameter, b.elements.beads.min_diameter);
@@ -195,7 +199,7 @@ TEST(DesignIo, RoundTripKeepsEveryField) {
 TEST(DesignIo, WritesEveryKey) {
   const json j = design_to_json(Design{});
   EXPECT_EQ(j.at("version"), Design::kVersion);
-  EXPECT_EQ(Design::kVersion, 6);
+  EXPECT_EQ(Design::kVersion, 7);
   EXPECT_EQ(j.at("units"), "mm");
   EXPECT_EQ(j.at("pattern").size(), 6u);
   EXPECT_EQ(j.at("pattern").at("cell").at("a1"), json::array({1.0, 0.0}));
@@ -204,7 +208,8 @@ TEST(DesignIo, WritesEveryKey) {
   EXPECT_EQ(j.at("elements").size(), 12u);
   EXPECT_EQ(j.at("elements").at("face").at("enabled"), false);
   EXPECT_EQ(j.at("elements").at("face").at("scale"), 0.5);
-  EXPECT_EQ(j.at("elements").at("grade").size(), 3u);
+  EXPECT_EQ(j.at("elements").at("grade").size(), 4u);
+  EXPECT_EQ(j.at("elements").at("grade").at("point"), json::array());
   EXPECT_EQ(j.at("elements").at("grade").at("by"), "none");
   EXPECT_EQ(j.at("elements").at("close_spots"), false);
   EXPECT_EQ(j.at("elements").at("fill_sizes"), json::array());
@@ -347,9 +352,9 @@ TEST(DesignIo, NamesMustBeKnown) {
 
 TEST(DesignIo, VersionIsRequiredAndOneThisBuildReads) {
   EXPECT_TRUE(contains(json_error(R"({"pattern": {}})"), "d.json: missing key 'version'"));
-  const std::string newer = json_error(R"({"version": 7, "future_key": 1})");
-  EXPECT_TRUE(contains(newer, "'version' is 7"));
-  EXPECT_TRUE(contains(newer, "reads versions 1 to 6"));
+  const std::string newer = json_error(R"({"version": 8, "future_key": 1})");
+  EXPECT_TRUE(contains(newer, "'version' is 8"));
+  EXPECT_TRUE(contains(newer, "reads versions 1 to 7"));
   EXPECT_TRUE(contains(json_error(R"({"version": 0})"), "'version' is 0"));
   EXPECT_TRUE(contains(json_error(R"({"version": "1"})"), "'version' must be an integer, got string"));
 }
@@ -583,7 +588,7 @@ TEST_F(DesignIoFile, SaveThenLoadGivesTheSameDesign) {
 
   // Pretty-printed, 2-space indent, version first, trailing newline.
   const std::string text = read(path);
-  EXPECT_EQ(text.rfind("{\n  \"version\": 6,\n  \"units\": \"in\",\n  \"pattern\": {\n    \"tessellation\": \"grid\"", 0), 0u)
+  EXPECT_EQ(text.rfind("{\n  \"version\": 7,\n  \"units\": \"in\",\n  \"pattern\": {\n    \"tessellation\": \"grid\"", 0), 0u)
       << text;
   EXPECT_EQ(text.back(), '\n');
 
