@@ -170,6 +170,9 @@ void warn_about_flags(const RunArgs& args, const Design& design, const std::func
   if (args.flag(Key::face_scale) && !design.elements.face.enabled)
     warn(flag_name(Key::face_scale) + " sizes the F-elements, but this design places none: add " +
          flag_name(Key::face_enabled) + " (or set " + key_path(Key::face_enabled) + ")");
+  if (args.flag(Key::grade_point) && design.elements.grade.by != GradeBy::Point)
+    warn(flag_name(Key::grade_point) + " places a point grade, but the stones are graded by " +
+         std::string(enum_name(design.elements.grade.by)) + ": add " + flag_name(Key::grade_by) + " point");
   // A design.json written by a run with --align holds the turn in rotation_deg already.
   if (const KeyFlag* align = args.flag(Key::align);
       align && design.placement.align != AlignAxis::None && design.placement.rotation_deg != 0 && !args.design.empty()) {

@@ -1873,6 +1873,12 @@ TEST_F(PaverRun, GradedStonesFallOffTowardsAPointSuchAsAPendantsTip) {
   expect_input_error(paver({"run", "assets/surfaces/pendant.obj", "--stone", "1.5", "--grade", "point",
                             "--grade-smallest", "1.1", "--out", bad.string()}),
                      bad, {"needs the point the stones grow smaller towards: give 'elements.grade.point' as [x, y, z]"});
+  // A point for another grade is said, not dropped.
+  const CliResult rim = paver({"run", "assets/surfaces/pendant.obj", "--stone", "1.5", "--grade", "rim", "--grade-smallest",
+                               "1.1", "--grade-point", "0,25.9,0", "--quiet", "--formats", "ply", "--out", (dir() / "rim").string()});
+  ASSERT_EQ(rim.exit_code, 0) << describe(rim);
+  EXPECT_NE(rim.err.find("--grade-point places a point grade, but the stones are graded by rim: add --grade point"),
+            std::string::npos) << describe(rim);
 }
 
 TEST_F(PaverRun, GradedStonesFallOffTowardsTheRimsInStockedSizes) {
