@@ -152,6 +152,8 @@ void print_elements(const SurfaceMap& map, const Pavement& pavement, const Pavem
                                        : "",
               pavement.refill.added,
               pavement.spots_closed.added);
+  if (pavement.spots_closed.of_edge_size > 0)
+    std::printf(" (%d of them of the E-elements' size)", pavement.spots_closed.of_edge_size);
   if (is_atlas(map)) std::printf(" (%d across the seams)", pavement.refill.on_seams);
   if (!pavement.size_fill.sizes.empty()) {
     std::printf(", %d of smaller stocked sizes (", pavement.size_fill.added());

@@ -192,6 +192,7 @@ void add_after_the_solve(nlohmann::json& report, const Pavement& pavement) {
                       {"milliseconds", pavement.refill.milliseconds}};
   report["bare_spots_closed"] = {{"added", pavement.spots_closed.added},
                                  {"pushed_in", pavement.spots_closed.pushed},
+                                 {"of_edge_size", pavement.spots_closed.of_edge_size},
                                  {"rounds", pavement.spots_closed.rounds},
                                  {"milliseconds", pavement.spots_closed.milliseconds}};
   nlohmann::json sizes = nlohmann::json::array();

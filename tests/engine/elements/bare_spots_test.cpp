@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace paver {
 namespace {
@@ -51,6 +52,40 @@ TEST(BareSpots, TheClosingStepLeavesNoSpotWhereAStoneOfEightTenthsFits) {
     ASSERT_DOUBLE_EQ(e.diameter[i], d) << "every stone as ordered";
     EXPECT_GE(rims.nearest(e.position[i]).distance, 0.5 * d + 0.3) << "stone " << i << " inside the margin";
   }
+}
+
+// Pavé with melee on its edges (the bundled pierced pendant design: 1.44 mm V-stones, 0.84 mm
+// E-stones): the pushing moves V-stones only and closed none of its spots; the closing then puts the
+// E-elements' size where a V-stone cannot go. No sample of the surface keeps room for 0.8 d, no pair
+// breaks the contact rule, and every stone is one of the design's two sizes.
+TEST(BareSpots, AMixedDesignsSpotsTakeItsEdgeStonesSize) {
+  const SurfaceMap& map = *test::bundled_map("pendant_pierced");
+  Design design;
+  design.pattern.tessellation = Tessellation::Triangle;
+  design.pattern.spacing = 2.4;
+  design.elements.vertex.shape = ShapeKind::Gem;
+  design.elements.vertex.scale = 0.6;
+  EdgeElementDesign edge;
+  edge.t = 0.5, edge.scale = 0.35, edge.shape = ShapeKind::Gem;
+  design.elements.edge = {edge};
+  design.elements.close_spots = true;
+  const double d = 0.6 * 2.4, melee = 0.35 * 2.4, spot = 0.8 * d;
+  PaveState state = pave_until(map, design, {}, "close_spots");
+  const Elements& e = state.pavement.elements;
+  const test::SpotProbe before = test::probe_spots(map.mesh, e, 0, 0, spot, d / 20, 4 * d);
+  ASSERT_FALSE(before.fitting.empty()) << "the case: the mixed lattice leaves spots";
+
+  pave_step("close_spots", map, {}, state);
+  const SpotClosing& closed = state.pavement.spots_closed;
+  EXPECT_GT(closed.of_edge_size, 0);
+  EXPECT_GE(closed.added, closed.of_edge_size);
+  const test::SpotProbe after = test::probe_spots(map.mesh, e, 0, 0, spot, d / 20, 4 * d);
+  EXPECT_TRUE(after.fitting.empty()) << after.fitting.size() << " samples still fit a stone of 0.8 d (the widest "
+                                     << after.widest << ")";
+  EXPECT_EQ(test::all_pairs(e, 0).violations, 0);
+  for (std::size_t i = 0; i < e.size(); ++i)
+    ASSERT_TRUE(std::abs(e.diameter[i] - d) < 1e-12 || std::abs(e.diameter[i] - melee) < 1e-12)
+        << "stone " << i << " of " << e.diameter[i] << ": not one of the design's sizes";
 }
 
 TEST(BareSpots, WhereAWholeStoneFitsOneIsPutAndNothingNearItMoves) {
