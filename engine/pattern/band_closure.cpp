@@ -67,7 +67,7 @@ BandClosure close_band(const SurfaceMap& map, const UnitCell& cell, const Placem
   }
   closure.around = std::max(3, int(never_closer ? std::floor(steps) : std::round(steps)));
   // Closed already: D stays as it is to the last bit, so a saved design paves as it did.
-  closure.spacing = double(closure.around) == steps && steps == whole
+  closure.spacing = double(closure.around) == steps
                         ? cell.spacing
                         : cell.spacing * around_length / (closure.around * glm::length(v));
   return closure;

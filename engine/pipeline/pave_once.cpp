@@ -22,7 +22,6 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <functional>
 #include <limits>
 #include <map>
 #include <optional>
@@ -340,17 +339,15 @@ void close_spots(const PaveContext& c, PaveState& s) {
   closed = close_bare_spots(c.map, s.pavement.elements, spec, spacing, s.basis.edges.spots, c.options.stop);
   // A design with smaller stones on its edges (pavé with melee between) has those stones to hand:
   // where no V-stone can be pushed in, a spot takes the largest of them that fits, as stocked sizes
-  // fill (the pushing moves same-size V-stones only, and left the pierced pendant's 15 spots).
-  const double main = spec.vertex.scale * spacing;
+  // fill (the pushing moves same-size V-stones only, and left the pierced pendant's 15 spots). The
+  // fill orders the sizes and drops those not under the main stone itself.
   ElementsDesign edge_sizes = spec;
   edge_sizes.fill_sizes.clear();
   for (const EdgeElementDesign& e : spec.edge)
-    if (e.shape == spec.vertex.shape && e.scale * spacing < main) edge_sizes.fill_sizes.push_back(e.scale * spacing);
+    if (e.shape == spec.vertex.shape) edge_sizes.fill_sizes.push_back(e.scale * spacing);
   if (!spec.vertex.enabled || edge_sizes.fill_sizes.empty()) return;
-  std::sort(edge_sizes.fill_sizes.begin(), edge_sizes.fill_sizes.end(), std::greater<>());
-  edge_sizes.fill_sizes.erase(std::unique(edge_sizes.fill_sizes.begin(), edge_sizes.fill_sizes.end()),
-                              edge_sizes.fill_sizes.end());
-  const SizeFill fill = fill_with_smaller_sizes(c.map, s.pavement.elements, edge_sizes, main, c.options.stop);
+  const SizeFill fill =
+      fill_with_smaller_sizes(c.map, s.pavement.elements, edge_sizes, spec.vertex.scale * spacing, c.options.stop);
   closed.added += fill.added();
   closed.of_edge_size = fill.added();
   closed.milliseconds += fill.milliseconds;
