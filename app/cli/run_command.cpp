@@ -48,9 +48,10 @@ struct KeyFlag {
   Key key;
   std::optional<std::string> value;
   bool on = false;
+  const CLI::Option* bool_flag = nullptr;  // a bool key's flag: "--close-spots", or "--no-close-spots"
 
-  bool given() const { return value.has_value() || on; }
-  std::string text() const { return value.value_or(""); }
+  bool given() const { return value.has_value() || (bool_flag && bool_flag->count() > 0); }
+  std::string text() const { return bool_flag ? (on ? "" : "false") : value.value_or(""); }
 };
 
 struct RunArgs {
@@ -122,7 +123,8 @@ std::string apply_flags(const RunArgs& args, Design& design) {
     if (const std::optional<std::string> problem = set_key_from_text(design, f.key, f.text()))
       throw InputError(flag_name(f.key) + (f.text().empty() ? "" : " " + value_in_message(f.key, f.text())) + ": " +
                        *problem);
-    say(flag_name(f.key), f.text());
+    say(f.bool_flag && !f.on ? "--no-" + std::string(design_key(f.key).flag) : flag_name(f.key),
+        f.bool_flag ? "" : f.text());
   }
   std::optional<double> main_stone = args.stone;
   if (!args.stone_sizes.empty()) {
@@ -403,6 +405,7 @@ std::string flag_help(const DesignKey& key) {
   std::string help = std::string(key.path) + ": " + std::string(solver ? solver->help : key.help);
   if (key.type == KeyType::Choice) help += " (" + std::string(key.choices) + ")";
   help += " Default " + std::string(key.default_text);
+  if (key.type == KeyType::Bool && key.default_text == "true") help += " (--no-" + std::string(key.flag) + " turns it off)";
   if (!key.unit.empty()) help += " (" + std::string(key.unit) + ")";
   return help;
 }
@@ -412,8 +415,13 @@ void add_key_flags(CLI::App& cmd, RunArgs& args) {
     const DesignKey& row = design_key(key);
     KeyFlag& slot = args.keys.emplace_back(KeyFlag{key, std::nullopt, false});
     const std::string flag = "--" + std::string(row.flag);
-    CLI::Option* option = row.type == KeyType::Bool ? cmd.add_flag(flag, slot.on, flag_help(row))
+    // A bool key that is on by default is turned off by its --no- twin.
+    const std::string names = row.type == KeyType::Bool && row.default_text == "true"
+                                  ? flag + ",!--no-" + std::string(row.flag)
+                                  : flag;
+    CLI::Option* option = row.type == KeyType::Bool ? cmd.add_flag(names, slot.on, flag_help(row))
                                                     : cmd.add_option(flag, slot.value, flag_help(row));
+    if (row.type == KeyType::Bool) slot.bool_flag = option;
     if (row.path.starts_with("solver.")) option->group("Solver (section 5)");
     if (row.type == KeyType::Number) option->type_name("NUMBER");
     if (row.type == KeyType::Integer) option->type_name("INT");

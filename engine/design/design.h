@@ -24,9 +24,12 @@ enum class Topology { Lattice, Adaptive, Auto };
 PAVER_ENUM_NAMES(Topology, {Topology::Lattice, "lattice"}, {Topology::Adaptive, "adaptive"}, {Topology::Auto, "auto"});
 
 // Rows of elements that follow the surface's rims (elements/rim_rows.h): none (the pattern is
-// trimmed at the rims, the default), around the holes only, or along every rim (the outer edge too).
-enum class RimRows { None, Holes, All };
-PAVER_ENUM_NAMES(RimRows, {RimRows::None, "none"}, {RimRows::Holes, "holes"}, {RimRows::All, "all"});
+// trimmed at the rims, the paper's way), around the holes only, along every rim (the outer edge
+// too), or auto (the default): every rim for pave (a triangle lattice of V-stones, issue 40), none
+// for every other pattern.
+enum class RimRows { None, Holes, All, Auto };
+PAVER_ENUM_NAMES(RimRows, {RimRows::None, "none"}, {RimRows::Holes, "holes"}, {RimRows::All, "all"},
+                 {RimRows::Auto, "auto"});
 
 // The unit of the surface's coordinates (and so of D, the gap and every length in a design).
 // Stone sizes and carats are reported in millimetres from it.
@@ -112,8 +115,8 @@ struct ElementsDesign {
   bool allow_overlap = false;             // allow elements that intersect by design (paper Fig. 15)
   double gap = 0;                         // required free space between footprints, surface units
   double margin = 0;                      // free band along the boundary: no footprint nearer, surface units
-  RimRows rim_rows = RimRows::None;       // a row of V-elements along the rims (elements/rim_rows.h)
-  bool close_spots = false;               // stones pushed into the bare spots left (elements/bare_spots.h)
+  RimRows rim_rows = RimRows::Auto;       // a row of V-elements along the rims (elements/rim_rows.h)
+  bool close_spots = true;                // stones pushed into the bare spots left (elements/bare_spots.h)
   // Stocked sizes smaller than the main stone, surface units: what it leaves is filled with the
   // largest that fits (elements/stone_sizes.h).
   std::vector<double> fill_sizes;
@@ -128,9 +131,11 @@ struct Design {
   // elements.beads.min_diameter or elements.beads.over; version 4 (until graded stones, 2026-12-02)
   // has no elements.grade; version 5 (until 2026-12-02's pentagonal tessellations) has no pattern.cell
   // or elements.face; version 6 (until 2026-12-03's grade towards a point) has no
-  // elements.grade.point. All are read, so that an earlier build says which versions it reads rather
-  // than that a new key is unknown.
-  static constexpr int kVersion = 7;
+  // elements.grade.point; version 7 (until 2026-12-03's edges by default) has no rim_rows auto.
+  // All are read, so that an earlier build says which versions it reads rather than that a new key
+  // or value is unknown. A file that leaves a key out takes today's default (elements.rim_rows
+  // auto and elements.close_spots true since version 8); every saved file writes each key.
+  static constexpr int kVersion = 8;
   static constexpr int kOldestVersion = 1;
   Units units = Units::Millimetre;
   PatternDesign pattern;

@@ -113,7 +113,8 @@ constexpr Row kRows[] = {
      "free band along the boundary that no footprint enters (docs/stones.md)", "margin",
      "Elements > Stones (jewellery) > edge margin"},
     {Key::rim_rows, "elements.rim_rows", {}, {}, {},
-     "a row of stones along the rims: none, around every hole, or every rim (docs/holes_and_bands.md)", "rim-rows",
+     "a row of stones along the rims: none, around every hole, every rim, or auto (every rim for a tri lattice of "
+     "V-elements, none for other patterns; docs/holes_and_bands.md)", "rim-rows",
      "Elements > Stones (jewellery) > rim rows"},
     {Key::close_spots, "elements.close_spots", {}, {}, {},
      "after the pass, a stone pushed into every bare spot where one fits, its neighbours moving to make room "
@@ -345,7 +346,12 @@ private:
 template <class T>
 std::optional<std::string> parse_flag(const DesignKey& row, std::string_view text, T& out) {
   if constexpr (std::is_same_v<T, bool>) {
-    if (!text.empty() && text != "true") return std::string("takes no value");
+    // A bool key whose default is on is turned off by "false" (the CLI's --no- twin).
+    if (text == "false") {
+      out = false;
+      return std::nullopt;
+    }
+    if (!text.empty() && text != "true") return std::string("takes no value, or =false to turn it off");
     out = true;
     return std::nullopt;
   } else if constexpr (NamedEnum<T>) {

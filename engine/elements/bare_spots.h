@@ -105,8 +105,10 @@ struct SpotClosing {
 // smaller stone only, moves the stones around it (within two diameters, the rest held) by contact
 // packing on the surface to make room; a patch that cannot be packed is left as it was. Inputs:
 // the map the elements' uv are on, the elements (same-size V-elements only are moved), the design's
-// elements at spacing D, the basis. The added elements have source -1, as the refill's.
+// elements at spacing D, the basis, and per element whether it holds where it is (a designer's
+// moved or added stone; none when null). The added elements have source -1, as the refill's.
 SpotClosing close_bare_spots(const SurfaceMap& map, Elements& elements, const ElementsDesign& spec, double spacing,
-                             const SpotBasis& basis, const std::atomic<bool>* stop = nullptr);
+                             const SpotBasis& basis, const std::atomic<bool>* stop = nullptr,
+                             const std::vector<char>* held = nullptr);
 
 }  // namespace paver

@@ -108,9 +108,14 @@ bool band_rims_alike(const SurfaceMap& map) {
   return std::max(a, b) <= kAlikeRims * std::min(a, b);
 }
 
+RimRows concrete_rim_rows(RimRows rows, Tessellation tessellation, bool pave) {
+  if (rows != RimRows::Auto) return rows;
+  return tessellation == Tessellation::Triangle && pave ? RimRows::All : RimRows::None;
+}
+
 std::vector<int> rim_row_loops(const SurfaceMap& map, RimRows rows) {
   std::vector<int> loops;
-  if (rows == RimRows::None || is_atlas(map)) return loops;
+  if (rows == RimRows::None || rows == RimRows::Auto || is_atlas(map)) return loops;
   if (rows == RimRows::Holes && band_rims_alike(map)) return loops;
   for (int l = rows == RimRows::All ? 0 : 1; l < int(map.mesh.boundary_loops.size()); ++l) loops.push_back(l);
   return loops;

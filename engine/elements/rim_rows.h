@@ -19,6 +19,11 @@ struct RimRowReport {
   double milliseconds = 0;
 };
 
+// The rows a design's `rim_rows` lays: auto is every rim for tri pave (a triangle lattice whose
+// stones touch, `pave` from pattern/design_overlap.h: a jeweller's pave is judged at its rims,
+// issue 40), none otherwise; the others as they are.
+RimRows concrete_rim_rows(RimRows rows, Tessellation tessellation, bool pave);
+
 // Which of the map's loops are rims the design asks a row for: none, the holes (every loop but
 // the outer, the longest), or all. A band whose rims are alike (a ring) has no hole: "holes" lines
 // none of its edges there, where it once lined one and left the ring lopsided.

@@ -44,17 +44,23 @@ std::string largest_gap_text(double gap, double least_clearance, double rounding
   return "; the largest gap that fits is " + format(std::floor(fits / step) * step) + " surface units";
 }
 
-}  // namespace
+// The regular pattern's elements in the cells around the origin cell, and which are the origin's.
+struct RegularLayout {
+  std::vector<LayoutElement> all;
+  std::vector<size_t> own;  // indices of the origin cell's elements
+  std::vector<char> vertex;  // per element: a V-element
+};
 
-void check_design_overlaps(const UnitCell& cell, const ElementsDesign& design, double spacing, double gap) {
+RegularLayout regular_layout(const UnitCell& cell, const ElementsDesign& design, double spacing) {
   // Elements of the cells around the origin cell: enough to see every neighbour of its own. An
   // edge reaching k cells away carries elements up to k cells out, whose neighbours lie up to two
   // cells further (a lattice cell is no smaller than an element).
   int range = 2;
   for (const CellEdge& edge : cell.edges)
     if (!edge.is_virtual) range = std::max(range, 2 + std::max(std::abs(edge.offset.x), std::abs(edge.offset.y)));
-  std::vector<LayoutElement> all;
-  std::vector<size_t> own;  // indices of the origin cell's elements
+  RegularLayout layout;
+  std::vector<LayoutElement>& all = layout.all;
+  std::vector<size_t>& own = layout.own;
   const std::vector<CellFace> faces = design.face.enabled ? cell_faces(cell) : std::vector<CellFace>{};
   for (int cy = -range; cy <= range; ++cy)
     for (int cx = -range; cx <= range; ++cx) {
@@ -65,6 +71,8 @@ void check_design_overlaps(const UnitCell& cell, const ElementsDesign& design, d
           if (origin) own.push_back(all.size());
           all.push_back({cell.position(v, c), 0.5 * design.vertex.scale * spacing,
                          "the V-element on cell vertex " + std::to_string(v) + of_cell(c)});
+          layout.vertex.resize(all.size(), 0);
+          layout.vertex.back() = 1;
         }
       for (int s = 0; s < int(design.edge.size()); ++s) {
         const EdgeElementDesign& spec = design.edge[s];
@@ -85,6 +93,15 @@ void check_design_overlaps(const UnitCell& cell, const ElementsDesign& design, d
                        "the F-element in cell face " + std::to_string(f) + of_cell(c)});
       }
     }
+  layout.vertex.resize(all.size(), 0);
+  return layout;
+}
+
+}  // namespace
+
+void check_design_overlaps(const UnitCell& cell, const ElementsDesign& design, double spacing, double gap) {
+  const RegularLayout layout = regular_layout(cell, design, spacing);
+  const std::vector<LayoutElement>& all = layout.all;
   // The pair that misses its distance by the most, not the first found: the figures and the
   // largest scale that fits must be those of the nearest neighbours.
   size_t worst_i = 0, worst_j = 0;
@@ -93,7 +110,7 @@ void check_design_overlaps(const UnitCell& cell, const ElementsDesign& design, d
   // The lattice's positions come from cos/sin: elements that touch by design (scale 1 on a
   // triangle lattice) sit at D up to rounding, which must not read as an overlap.
   const double rounding = 1e-9 * spacing;
-  for (size_t i : own)
+  for (size_t i : layout.own)
     for (size_t j = 0; j < all.size(); ++j) {
       if (j == i) continue;
       const double d = glm::length(all[i].centre - all[j].centre);
@@ -120,6 +137,21 @@ void check_design_overlaps(const UnitCell& cell, const ElementsDesign& design, d
                     largest_gap_text(gap, least_clearance, rounding) +
                     "; reduce their scales, move t" + (gap > 0 ? ", reduce the gap or raise the spacing" : "") +
                     " (or set elements.allow_overlap to allow it)");
+}
+
+bool stones_touch(const UnitCell& cell, const ElementsDesign& design, double gap) {
+  if (!design.vertex.enabled || design.allow_overlap || !(design.vertex.scale > 0)) return false;
+  const RegularLayout layout = regular_layout(cell, design, cell.spacing);
+  for (size_t i : layout.own) {
+    if (!layout.vertex[i]) continue;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (size_t j = 0; j < layout.all.size(); ++j)
+      if (j != i)
+        nearest = std::min(nearest, glm::length(layout.all[i].centre - layout.all[j].centre) -
+                                        contact_distance(2 * layout.all[i].radius, 2 * layout.all[j].radius, gap));
+    if (!(nearest <= kTouchingShare * 2 * layout.all[i].radius)) return false;
+  }
+  return true;
 }
 
 }  // namespace paver

@@ -12,6 +12,7 @@
 #include "pattern/band_closure.h"
 #include "pattern/default_spacing.h"
 #include "pattern/design_cell.h"
+#include "pattern/design_overlap.h"
 #include "pattern/pattern_edits.h"
 #include "pipeline/offset_fit.h"
 #include "report/verdict.h"
@@ -25,6 +26,7 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -64,6 +66,15 @@ void lay_out_pattern(const PaveContext& c, PaveState& s) {
   if (design.pattern.spacing <= 0) design.pattern.spacing = default_spacing(c.map.mesh, design.pattern);
   if (map_wraps(c.map) && !s.adaptive()) close_the_band(c, s);
   pavement.cell = check_design_cell(design);
+  // Auto rim rows are the pattern's: every rim for tri pave (elements/rim_rows.h), but for a band
+  // whose lattice rows run along its rims already (closed with rows along): there the rows of the
+  // pattern are the rim rows, and rows laid over them fought them (a ring of 12 large stones kept 7).
+  // The adaptive pattern grows against the rims already (packed to the margin): rows laid over it
+  // made way for 4 and left 15 spots on a narrow band.
+  const bool rows_along_rims = pavement.band_closure && !pavement.band_closure->rows_across;
+  design.elements.rim_rows = concrete_rim_rows(
+      design.elements.rim_rows, design.pattern.tessellation,
+      !rows_along_rims && !s.adaptive() && stones_touch(pavement.cell, design.elements, design.elements.gap));
   if (design.placement.align != AlignAxis::None && !pavement.seamless)
     pavement.row_alignment = fold_row_alignment(c.map, pavement.cell, design.placement);
   if (pavement.seamless)
@@ -336,7 +347,16 @@ void close_spots(const PaveContext& c, PaveState& s) {
   const ElementsDesign& spec = s.design.elements;
   const double spacing = s.design.pattern.spacing;
   SpotClosing& closed = s.pavement.spots_closed;
-  closed = close_bare_spots(c.map, s.pavement.elements, spec, spacing, s.basis.edges.spots, c.options.stop);
+  // The designer's moved and added stones hold: the pushing moves the pattern's own around them.
+  const Elements& elements = s.pavement.elements;
+  const int designed = s.pavement.pattern.designed_point_count();
+  std::set<int> moved;
+  for (const MovedParticle& m : s.design.edits.moved) moved.insert(m.id);
+  std::vector<char> held(elements.size(), 0);
+  for (std::size_t i = 0; i < elements.size(); ++i)
+    held[i] = elements.kind[i] == ElementKind::Vertex && elements.source[i] >= 0 &&
+              (elements.source[i] >= designed || moved.count(elements.source[i]) > 0);
+  closed = close_bare_spots(c.map, s.pavement.elements, spec, spacing, s.basis.edges.spots, c.options.stop, &held);
   // A design with smaller stones on its edges (pavé with melee between) has those stones to hand:
   // where no V-stone can be pushed in, a spot takes the largest of them that fits, as stocked sizes
   // fill (the pushing moves same-size V-stones only, and left the pierced pendant's 15 spots). The
@@ -408,12 +428,12 @@ constexpr Applies kWithoutOverlap = [](const PaveState& s, const PavementOptions
   return !s.design.elements.allow_overlap;
 };
 
-// Spots are closed when the design asks, in a pavement the optimizer made that holds together: a
-// torn lattice or one with bare patches is the adaptive pattern's to mend (pattern.topology auto
-// tries it), not the spots'.
+// Spots are closed when the design asks, for pave (report/edge_quality.h), in a pavement the
+// optimizer made that holds together: a torn lattice or one with bare patches is the adaptive
+// pattern's to mend (pattern.topology auto tries it), not the spots'.
 constexpr Applies closes_spots = [](const PaveState& s, const PavementOptions& o) {
   const double ideal = s.basis.ideal_count;
-  return s.design.elements.close_spots && s.optimized && o.refill && kWithoutOverlap(s, o) &&
+  return s.design.elements.close_spots && s.basis.edges.pave && s.optimized && o.refill && kWithoutOverlap(s, o) &&
          !pattern_is_torn(s.pavement.paper) && !(ideal > 0 && double(s.pavement.elements.size()) < kBareFill * ideal);
 };
 

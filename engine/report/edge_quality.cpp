@@ -1,6 +1,7 @@
 #include "report/edge_quality.h"
 
 #include "elements/rim_rows.h"
+#include "pattern/design_overlap.h"
 
 #include <nlohmann/json.hpp>
 
@@ -49,6 +50,7 @@ EdgeQuality measure_edges(const SurfaceMap& map, const Elements& elements, const
   const SpotBasis& spots = basis.spots;
   if (!(spots.stone > 0) || elements.size() == 0) return q;
   q.measured = true;
+  q.pave = basis.pave;
   q.stone = spots.stone;
   q.spot_stone = spots.spot_stone;
   SpotSearch search = find_bare_spots(map, elements, spots);
@@ -112,6 +114,11 @@ EdgeBasis edge_basis(const SurfaceMap& map, const UnitCell& cell, const Elements
   spots.gap = elements.gap;
   spots.margin = is_atlas(map) ? 0 : elements.margin;
   basis.rims = rim_row_loops(map, elements.rim_rows);
+  // Pave: a triangle lattice of stones that touch, dense enough that its own holes are narrower
+  // than a spot (with edge gems between, the bundled pendants' melee). Other patterns (a honeycomb,
+  // whose hexagons' centres are its design; Cairo's pentagons; a grid) are judged by their fill.
+  basis.pave = cell.tessellation == Tessellation::Triangle && stones_touch(cell, elements, elements.gap) &&
+               kSpotStoneShare * spots.stone >= kSpotOverHole * hole;
   return basis;
 }
 
@@ -124,6 +131,7 @@ nlohmann::json to_json(const EdgeQuality& q) {
                      {"fits", s.fits}});
   }
   return {{"stone", q.stone},
+          {"pave", q.pave},
           {"spot_stone", q.spot_stone},
           {"bare_spots", q.bare_spots},
           {"largest_stone_that_fits", q.largest_fit},

@@ -30,10 +30,12 @@ inline constexpr int kRimSamplesPerStone = 10;
 struct EdgeBasis {
   SpotBasis spots;        // d, the spot stone, gap and margin (elements/bare_spots.h); d 0 = not measured
   std::vector<int> rims;  // the boundary loops whose rim metal is measured (those with rows)
+  bool pave = false;      // the regular pattern's stones touch (pattern/design_overlap.h): judged by its edges
 };
 
 struct EdgeQuality {
   bool measured = false;
+  bool pave = false;             // the verdict and the choosers judge pave by these figures (report/verdict.h)
   double stone = 0, spot_stone = 0;
   long bare_spots = 0;
   double largest_fit = 0;        // the largest stone diameter that fits anywhere, surface units

@@ -208,6 +208,10 @@ QualityBasis quality_basis(const SurfaceMap& map, const UnitCell& cell, const El
   basis.edges = edge_basis(map, cell, elements);
   basis.edges.spots.c = solver.c, basis.edges.spots.m = solver.m, basis.edges.spots.guidance = guidance;
   basis.edges.spots.grade = std::move(grade);
+  // A design spaced wider on purpose somewhere (eq. 5 by curvature, a painted field) has stones
+  // that do not touch there: room between them is its design, not a bare spot to close. Graded
+  // stones are judged by their own fill instead: no place where the ladder's smallest size fits.
+  basis.edges.pave = basis.edges.pave && guidance.empty() && !(solver.c > 0) && !basis.edges.spots.grade;
   return basis;
 }
 

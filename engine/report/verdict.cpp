@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdio>
 
 namespace paver {
@@ -39,6 +40,17 @@ Verdict judge_pavement(const PavementQuality& q) {
     v.problems.push_back(format("bare patches: %.0f%% of the elements that the pattern's density puts on this "
                                 "surface (below %.0f%%)",
                                 100 * q.fill, 100 * kBareFill));
+  if (has_bare_spots(q)) {
+    const EdgeQuality& e = q.edges;
+    const glm::dvec3 at = e.spots.empty() ? glm::dvec3(0) : e.spots.front().position;
+    v.problems.push_back(count_text(e.bare_spots, "bare spot", "bare spots") +
+                         format(" where a stone of %.3g still fits (the widest fits %.3g", e.spot_stone, e.largest_fit) +
+                         format(", at %.4g, %.4g", at.x, at.y) + format(", %.4g; report.json edges.spots lists them)", at.z));
+  }
+  if (has_uneven_rim(q))
+    v.problems.push_back(format("an uneven rim: the metal between the rim less its margin and the nearest girdle is "
+                                "%.2f d at p95 (max %.2f d; above 0.3 d: teeth along it)",
+                                q.edges.rim_metal_p95, q.edges.rim_metal_max));
   v.ok = v.problems.empty();
   return v;
 }
@@ -48,8 +60,20 @@ nlohmann::json to_json(const Verdict& verdict) {
 }
 
 bool paves_better(const PavementQuality& candidate, const PavementQuality& incumbent) {
-  const std::size_t mine = judge_pavement(candidate).problems.size(), theirs = judge_pavement(incumbent).problems.size();
-  return mine < theirs || (mine == theirs && candidate.fill > incumbent.fill);
+  // The pavement's soundness first (contact, crossings, a torn or bare pattern), then its edges: a
+  // torn lattice with its spots closed lost the vase band to nothing better than it (issue 40).
+  const auto sound_problems = [](const PavementQuality& q) {
+    return judge_pavement(q).problems.size() - std::size_t(has_bare_spots(q)) - std::size_t(has_uneven_rim(q));
+  };
+  const std::size_t mine = sound_problems(candidate), theirs = sound_problems(incumbent);
+  if (mine != theirs) return mine < theirs;
+  if (has_uneven_rim(candidate) != has_uneven_rim(incumbent)) return !has_uneven_rim(candidate);
+  const auto spots = [](const PavementQuality& q) { return q.edges.measured && q.edges.pave ? q.edges.bare_spots : 0; };
+  if (spots(candidate) != spots(incumbent)) return spots(candidate) < spots(incumbent);
+  if (candidate.edges.pave && incumbent.edges.pave && candidate.edges.rim_samples > 0 && incumbent.edges.rim_samples > 0 &&
+      std::abs(candidate.edges.rim_metal_p95 - incumbent.edges.rim_metal_p95) > kRimEvenTie)
+    return candidate.edges.rim_metal_p95 < incumbent.edges.rim_metal_p95;
+  return candidate.fill > incumbent.fill;
 }
 
 }  // namespace paver

@@ -1,7 +1,8 @@
 #pragma once
 // Whether a pavement is fit to use, in one word and a list of reasons: what the summary prints
 // first and report.json carries as `verdict`. A pavement is ok when no pair violates the contact
-// rule, no element crosses the boundary, the pattern is not torn and it is not mostly bare.
+// rule, no element crosses the boundary, the pattern is not torn, it is not mostly bare, and, as a
+// jeweller judges it at its edges (issue 40), no bare spot is left and no rim is uneven.
 #include "report/pavement_quality.h"
 
 #include <nlohmann/json_fwd.hpp>
@@ -23,6 +24,19 @@ inline constexpr double kBareFill = 0.85;
 inline bool pattern_is_torn(const PavementQuality& q) { return q.spring_deviation_p95 > kTornSpringDeviation; }
 // A fill that could not be measured (0) is not a pass: the verdict can never say ok under kBareFill.
 inline bool has_bare_patches(const PavementQuality& q) { return q.elements > 0 && !(q.fill >= kBareFill); }
+// A place inside the margin where another stone of the spot size still fits (report/edge_quality.h).
+// Judged for pave only (stones that touch, report/edge_quality.h): a pattern spaced wider has room
+// between its elements by design.
+inline bool has_bare_spots(const PavementQuality& q) {
+  return q.edges.measured && q.edges.pave && q.edges.bare_spots > 0;
+}
+// A rim the design lays rows along whose metal, girdle to rim less the margin, has teeth: p95 > 0.3 d.
+inline bool has_uneven_rim(const PavementQuality& q) {
+  return q.edges.measured && q.edges.pave && q.edges.rim_samples > 0 && q.edges.rim_metal_p95 > kUnevenRim;
+}
+
+// Rim metal p95 figures closer than this (in d) rank as even, and the fill decides.
+inline constexpr double kRimEvenTie = 0.05;
 
 struct Verdict {
   bool ok = true;
@@ -32,8 +46,11 @@ struct Verdict {
 Verdict judge_pavement(const PavementQuality& final_quality);
 
 // Of two pavements of one surface tried for one design (topology auto, a band's annulus, its rows
-// both ways): whether `candidate` is better than `incumbent`: fewer verdict problems, then a
-// higher fill (elements over the ideal count at each one's own D). Equal: not better.
+// both ways): whether `candidate` is better than `incumbent`: fewer verdict problems of soundness
+// (contact, crossings, torn, bare patches), then an even rim over an uneven one, then fewer bare
+// spots (what the eye sees before it counts stones), then a lower rim metal p95 where both
+// measure rims and differ by more than kRimEvenTie d, then a higher fill (elements over the ideal
+// count at each one's own D). Equal: not better.
 bool paves_better(const PavementQuality& candidate, const PavementQuality& incumbent);
 
 nlohmann::json to_json(const Verdict& verdict);

@@ -89,6 +89,29 @@ inline std::string describe(const CliResult& r) {
          "--- stderr ---\n" + r.err;
 }
 
+// A run whose pavement is sound: exit 0, or exit 3 (NOT OK) for the edges' problems only, bare
+// spots or an uneven rim (report/verdict.h). For the tests of another feature (a bill, a seat, a
+// margin) on pave whose spots the closing cannot all reach yet: docs/contact.md has the figures,
+// and the edges' own tests hold them.
+inline ::testing::AssertionResult sound_run(const CliResult& r) {
+  if (r.exit_code == 0) return ::testing::AssertionSuccess();
+  if (r.exit_code != 3) return ::testing::AssertionFailure() << describe(r);
+  const std::size_t verdict = r.out.find("verdict  NOT OK:\n");
+  if (verdict == std::string::npos) return ::testing::AssertionFailure() << "no NOT OK verdict: " << describe(r);
+  std::size_t at = verdict + 17;
+  int problems = 0;
+  while (r.out.compare(at, 11, "         - ") == 0) {
+    const std::size_t end = r.out.find('\n', at);
+    const std::string problem = r.out.substr(at + 11, end - at - 11);
+    if (problem.find(" bare spot") == std::string::npos && !problem.starts_with("an uneven rim"))
+      return ::testing::AssertionFailure() << "a problem not of the edges: " << problem << "\n" << describe(r);
+    ++problems;
+    at = end + 1;
+  }
+  if (problems == 0) return ::testing::AssertionFailure() << "NOT OK without a problem listed: " << describe(r);
+  return ::testing::AssertionSuccess();
+}
+
 // A fresh folder per test under the system temp folder, removed afterwards.
 class CliTest : public ::testing::Test {
 protected:

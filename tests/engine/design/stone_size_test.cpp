@@ -2,6 +2,8 @@
 // D = stone + gap; a design with edge stones between them keeps its proportions, so the bundled
 // gem pendants take a stone size instead of refusing it.
 #include "design/design.h"
+
+#include <cmath>
 #include "io/design_io.h"
 #include "pipeline/pavement.h"
 #include "surface_maps.h"
@@ -30,15 +32,20 @@ TEST(StoneSize, ADesignWithEdgeStonesKeepsItsProportions) {
   EXPECT_DOUBLE_EQ(design.pattern.spacing, 1.2 / vertex_scale);
   EXPECT_EQ(design.elements.vertex.scale, vertex_scale);
   EXPECT_EQ(design.elements.edge.at(0).scale, edge_scale);
-  // It paves: every vertex stone is 1.2, and no pair is in contact.
+  // It paves: every vertex stone is 1.2 but those the bare spots took at the edge stones' own size
+  // (elements/bare_spots.h), and no pair is in contact.
   const Pavement p = make_pavement(*test::bundled_map("pendant_pierced"), design);
-  long vertex_stones = 0;
+  const double edge_stone = edge_scale * design.pattern.spacing;
+  long vertex_stones = 0, of_edge_size = 0;
   for (std::size_t i = 0; i < p.elements.size(); ++i)
     if (p.elements.kind[i] == ElementKind::Vertex) {
-      ++vertex_stones;
-      EXPECT_NEAR(p.elements.diameter[i], 1.2, 1e-9);
+      const bool main = std::abs(p.elements.diameter[i] - 1.2) <= 1e-9;
+      vertex_stones += main;
+      of_edge_size += !main;
+      if (!main) EXPECT_NEAR(p.elements.diameter[i], edge_stone, 1e-9);
     }
   EXPECT_GT(vertex_stones, 100);
+  EXPECT_EQ(of_edge_size, p.spots_closed.of_edge_size);
   EXPECT_EQ(p.after.contact_violations, 0);
 }
 

@@ -4,6 +4,7 @@
 #include "elements/beads.h"
 
 #include "pipeline/pavement.h"
+#include "plain_edges.h"
 #include "surface_maps.h"
 
 #include <gtest/gtest.h>
@@ -24,6 +25,7 @@ Pavement paved(const std::string& surface, Tessellation tessellation, bool beads
   design.elements.margin = margin;
   set_stone_size(design, 1.5);
   design.elements.beads = {beads, scale, min_diameter, over};
+  test::with_plain_edges(design);  // the beads of the lattice as laid: their sizes are its own
   PavementOptions options;
   options.threads = 1;
   return make_pavement(*test::bundled_map(surface), design, options);

@@ -199,7 +199,7 @@ TEST(DesignIo, RoundTripKeepsEveryField) {
 TEST(DesignIo, WritesEveryKey) {
   const json j = design_to_json(Design{});
   EXPECT_EQ(j.at("version"), Design::kVersion);
-  EXPECT_EQ(Design::kVersion, 7);
+  EXPECT_EQ(Design::kVersion, 8);
   EXPECT_EQ(j.at("units"), "mm");
   EXPECT_EQ(j.at("pattern").size(), 6u);
   EXPECT_EQ(j.at("pattern").at("cell").at("a1"), json::array({1.0, 0.0}));
@@ -211,9 +211,9 @@ TEST(DesignIo, WritesEveryKey) {
   EXPECT_EQ(j.at("elements").at("grade").size(), 4u);
   EXPECT_EQ(j.at("elements").at("grade").at("point"), json::array());
   EXPECT_EQ(j.at("elements").at("grade").at("by"), "none");
-  EXPECT_EQ(j.at("elements").at("close_spots"), false);
+  EXPECT_EQ(j.at("elements").at("close_spots"), true);
   EXPECT_EQ(j.at("elements").at("fill_sizes"), json::array());
-  EXPECT_EQ(j.at("elements").at("rim_rows"), "none");
+  EXPECT_EQ(j.at("elements").at("rim_rows"), "auto");
   EXPECT_EQ(j.at("elements").at("beads").size(), 4u);
   EXPECT_EQ(j.at("elements").at("beads").at("min_diameter"), 0.5);
   EXPECT_EQ(j.at("elements").at("vertex").size(), 3u);
@@ -352,9 +352,9 @@ TEST(DesignIo, NamesMustBeKnown) {
 
 TEST(DesignIo, VersionIsRequiredAndOneThisBuildReads) {
   EXPECT_TRUE(contains(json_error(R"({"pattern": {}})"), "d.json: missing key 'version'"));
-  const std::string newer = json_error(R"({"version": 8, "future_key": 1})");
-  EXPECT_TRUE(contains(newer, "'version' is 8"));
-  EXPECT_TRUE(contains(newer, "reads versions 1 to 7"));
+  const std::string newer = json_error(R"({"version": 9, "future_key": 1})");
+  EXPECT_TRUE(contains(newer, "'version' is 9"));
+  EXPECT_TRUE(contains(newer, "reads versions 1 to 8"));
   EXPECT_TRUE(contains(json_error(R"({"version": 0})"), "'version' is 0"));
   EXPECT_TRUE(contains(json_error(R"({"version": "1"})"), "'version' must be an integer, got string"));
 }
@@ -588,7 +588,7 @@ TEST_F(DesignIoFile, SaveThenLoadGivesTheSameDesign) {
 
   // Pretty-printed, 2-space indent, version first, trailing newline.
   const std::string text = read(path);
-  EXPECT_EQ(text.rfind("{\n  \"version\": 7,\n  \"units\": \"in\",\n  \"pattern\": {\n    \"tessellation\": \"grid\"", 0), 0u)
+  EXPECT_EQ(text.rfind("{\n  \"version\": 8,\n  \"units\": \"in\",\n  \"pattern\": {\n    \"tessellation\": \"grid\"", 0), 0u)
       << text;
   EXPECT_EQ(text.back(), '\n');
 

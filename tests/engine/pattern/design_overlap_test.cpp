@@ -4,6 +4,7 @@
 // spacing. Covers V/E, E/E on one edge, E-elements restricted to some cell edges, bracing (virtual
 // edges carry no elements) and elements on long added edges.
 #include "pattern/design_overlap.h"
+#include "pattern/unit_cell.h"
 
 #include "pipeline/pavement.h"
 
@@ -163,6 +164,33 @@ TEST(DesignOverlap, ElementsOnALongAddedEdgeAreChecked) {
     check_design_overlaps(cell, elements_with(1, {edge_element(0.9, 0.2, {2})}), 6);
   });
   EXPECT_TRUE(Contains(message, "the V-element on cell vertex 0 and elements.edge[0] on cell edge 2"));
+}
+
+// Pave (issue 40): the stones of the regular pattern touch, within 5% of d, with the gap. Touching
+// spheres and gems with the gap do; spheres at 0.8 D do not; the pendants' gems with melee on the
+// edges between them do (0.025 D apart); a honeycomb's touching stones do too (the edges' rule
+// then leaves it out of pave for its wide holes, report/edge_quality.cpp).
+TEST(DesignOverlap, StonesTouchInPaveNotInAPatternSpacedWider) {
+  const UnitCell tri = make_unit_cell(Tessellation::Triangle, 1.6);
+  ElementsDesign elements;
+  EXPECT_TRUE(stones_touch(tri, elements, 0));
+  elements.vertex.scale = 1.5 / 1.6;
+  elements.gap = 0.1;
+  EXPECT_TRUE(stones_touch(tri, elements, elements.gap)) << "1.5 mm gems 0.1 apart";
+  elements.gap = 0;
+  EXPECT_FALSE(stones_touch(tri, elements, 0)) << "0.1 mm apart without a gap asked: 6.7% of d";
+  elements.vertex.scale = 0.8;
+  EXPECT_FALSE(stones_touch(tri, elements, 0));
+  elements.vertex.scale = 0.6;
+  elements.edge.push_back({});
+  elements.edge.back().scale = 0.35;
+  EXPECT_TRUE(stones_touch(tri, elements, 0)) << "V 0.6 D and E 0.35 D gems at the middles";
+  elements.allow_overlap = true;
+  EXPECT_FALSE(stones_touch(tri, elements, 0)) << "overlapping by design is not pave";
+  EXPECT_TRUE(stones_touch(make_unit_cell(Tessellation::Hexagon, 1), ElementsDesign{}, 0));
+  ElementsDesign no_vertex;
+  no_vertex.vertex.enabled = false;
+  EXPECT_FALSE(stones_touch(tri, no_vertex, 0));
 }
 
 }  // namespace

@@ -38,7 +38,15 @@ TEST(PaveOnce, TheStepsRunInThePapersOrderEachTimedOnce) {
   const Pavement p = pave_once(*test::bundled_map("saddle"), design);
   std::vector<std::string> timed;
   for (const auto& [stage, ms] : p.timings) timed.push_back(stage);
-  // No edits, rim rows, deletions or beads asked: those steps do not apply.
+  // No edits, deletions or beads asked: those steps do not apply. Touching spheres on a tri
+  // lattice are pave: rows along the rims and the spots closed, by default.
+  EXPECT_EQ(timed, (std::vector<std::string>{"pattern", "measure_initial", "optimize", "measure_paper",
+                                             "resolve_collisions", "rim_rows", "refill", "close_spots", "ids",
+                                             "measure"}));
+  EXPECT_EQ(p.design.elements.rim_rows, RimRows::All) << "auto, resolved for this pattern";
+  design.elements.vertex.scale = 0.8;  // spaced wider: not pave, neither step
+  timed.clear();
+  for (const auto& [stage, ms] : pave_once(*test::bundled_map("saddle"), design).timings) timed.push_back(stage);
   EXPECT_EQ(timed, (std::vector<std::string>{"pattern", "measure_initial", "optimize", "measure_paper",
                                              "resolve_collisions", "refill", "ids", "measure"}));
   EXPECT_EQ(p.design.pattern.spacing, 18);

@@ -3,6 +3,9 @@
 // flat square paved with a triangle lattice by hand, one stone taken out of its middle.
 #include "report/edge_quality.h"
 
+#include "all_pairs.h"
+#include "pipeline/pavement.h"
+#include "report/verdict.h"
 #include "spot_probe.h"
 #include "surface_maps.h"
 
@@ -10,6 +13,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <string>
 #include <cmath>
 #include <vector>
 
@@ -81,6 +85,46 @@ TEST(EdgeQuality, TheRimMetalIsTheGirdlesDistanceFromTheRimAsSampledApart) {
 TEST(EdgeQuality, NoStoneDesignNoFigures) {
   EdgeBasis none;
   EXPECT_FALSE(measure_edges(test::flat_unit_square(), Elements{}, none).measured);
+}
+
+// Issue 40's runs, by default (tri pave: rows along every rim, the spots closed): a ring band at
+// 1.3 mm and a pierced pendant at 1.5 mm with a 0.3 mm margin, gap 0.1. No place inside the margin
+// fits another stone of 0.8 d and the rims are even, by the engine's figures and by this test's
+// own sampling (d / 40 over the surface, d / 100 along the rims, every element); every stone is
+// the size asked; the verdict is ok.
+TEST(EdgeQuality, TriPaveByDefaultLeavesNoSpotAndEvenRims) {
+  struct Run {
+    std::string surface;
+    double stone, margin;
+  };
+  for (const Run& run : {Run{"ring_band", 1.3, 0}, Run{"pendant_pierced", 1.5, 0.3}}) {
+    const auto map = test::bundled_map(run.surface);
+    Design design;
+    design.pattern.tessellation = Tessellation::Triangle;
+    design.elements.gap = 0.1;
+    design.elements.margin = run.margin;
+    set_stone_size(design, run.stone);
+    const Pavement p = make_pavement(*map, design);
+    const Elements& e = p.elements;
+    EXPECT_EQ(p.design.elements.rim_rows, RimRows::All) << run.surface;
+    ASSERT_TRUE(p.after.edges.measured && p.after.edges.pave) << run.surface;
+    EXPECT_EQ(p.after.edges.bare_spots, 0) << run.surface;
+    EXPECT_LE(p.after.edges.rim_metal_p95, kUnevenRim) << run.surface;
+    const Verdict verdict = judge_pavement(p.after);
+    EXPECT_TRUE(verdict.ok) << run.surface << ": " << (verdict.problems.empty() ? "" : verdict.problems.front());
+    for (const double d : e.diameter) ASSERT_NEAR(d, run.stone, 1e-3 * run.stone) << run.surface;
+    EXPECT_EQ(test::all_pairs(e, 0.1).violations, 0) << run.surface;
+    const double spot = kSpotStoneShare * run.stone;
+    const test::SpotProbe probe = test::probe_spots(map->mesh, e, 0.1, run.margin, spot, run.stone / 40, 4 * run.stone);
+    EXPECT_TRUE(probe.fitting.empty()) << run.surface << ": " << probe.fitting.size() << " samples fit " << spot
+                                       << " (the widest " << probe.widest << ")";
+    std::vector<int> rims(map->mesh.boundary_loops.size());
+    for (std::size_t l = 0; l < rims.size(); ++l) rims[l] = int(l);
+    std::vector<double> metal = test::probe_rim_metal(map->mesh, e, rims, run.margin, run.stone / 100);
+    ASSERT_FALSE(metal.empty());
+    std::sort(metal.begin(), metal.end());
+    EXPECT_LE(metal[std::size_t(0.95 * double(metal.size()))] / run.stone, kUnevenRim) << run.surface;
+  }
 }
 
 }  // namespace

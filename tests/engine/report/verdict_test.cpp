@@ -65,5 +65,70 @@ TEST(Verdict, NeverOkWithTheFillUnderItsThreshold) {
   EXPECT_EQ(judge_pavement(q).problems, (std::vector<std::string>{"no elements were placed"}));
 }
 
+// Issue 40: pave is judged at its edges as the eye does. A bare spot and an uneven rim are each a
+// problem with its figures and where it is; for a pattern that is not pave neither is.
+TEST(Verdict, PaveWithABareSpotOrAnUnevenRimIsNotOk) {
+  PavementQuality q = sound();
+  q.edges.measured = true;
+  q.edges.pave = true;
+  q.edges.spot_stone = 1.2;
+  q.edges.largest_fit = 1.3;
+  q.edges.bare_spots = 3;
+  q.edges.spots = {BareSpot{{1, 2, 3}, {0, 0}, 0, 1.3, 1.2}};
+  q.edges.rim_samples = 500;
+  q.edges.rim_metal_p95 = 0.31;
+  q.edges.rim_metal_max = 0.6;
+  Verdict v = judge_pavement(q);
+  EXPECT_FALSE(v.ok);
+  ASSERT_EQ(v.problems.size(), 2u);
+  EXPECT_EQ(v.problems[0].rfind("3 bare spots where a stone of 1.2 still fits (the widest fits 1.3, at 1, 2, 3", 0), 0u)
+      << v.problems[0];
+  EXPECT_EQ(v.problems[1].rfind("an uneven rim: ", 0), 0u) << v.problems[1];
+  EXPECT_NE(v.problems[1].find("0.31 d at p95 (max 0.60 d"), std::string::npos) << v.problems[1];
+
+  q.edges.bare_spots = 0;
+  q.edges.spots.clear();
+  q.edges.rim_metal_p95 = 0.3;  // at the bound: even
+  EXPECT_TRUE(judge_pavement(q).ok) << judge_pavement(q).problems.front();
+  q.edges.bare_spots = 1;
+  q.edges.rim_metal_p95 = 0.9;
+  q.edges.pave = false;  // a honeycomb, a grid, spheres spaced wider: judged by the fill
+  EXPECT_TRUE(judge_pavement(q).ok);
+}
+
+// The one ranking: soundness, then an even rim, then fewer bare spots, then the rims' evenness
+// beyond a tie, then the fill, which alone ranked pavements before.
+TEST(Verdict, TheBetterPavementHasFewerSpotsBeforeMoreStones) {
+  PavementQuality spotless = sound(), spotted = sound();
+  for (PavementQuality* q : {&spotless, &spotted}) q->edges.measured = q->edges.pave = true;
+  spotted.edges.bare_spots = 4;
+  spotted.fill = 1.1;  // more stones
+  EXPECT_TRUE(paves_better(spotless, spotted));
+  EXPECT_FALSE(paves_better(spotted, spotless));
+  // A torn lattice with no spot loses to a sound pattern with one.
+  PavementQuality torn = spotless;
+  torn.spring_deviation_p95 = 0.7;
+  spotted.edges.bare_spots = 1;
+  EXPECT_TRUE(paves_better(spotted, torn));
+  // An uneven rim loses to an even one with more spots.
+  PavementQuality ragged = spotless;
+  ragged.edges.rim_samples = spotted.edges.rim_samples = 100;
+  ragged.edges.rim_metal_p95 = 0.5;
+  spotted.edges.rim_metal_p95 = 0.2;
+  EXPECT_TRUE(paves_better(spotted, ragged));
+  // Even rims within the tie: the fill decides.
+  PavementQuality a = spotless, b = spotless;
+  a.edges.rim_samples = b.edges.rim_samples = 100;
+  a.edges.rim_metal_p95 = 0.20, b.edges.rim_metal_p95 = 0.22, a.fill = 0.95, b.fill = 0.97;
+  EXPECT_TRUE(paves_better(b, a));
+  b.edges.rim_metal_p95 = 0.29;
+  EXPECT_TRUE(paves_better(a, b)) << "0.09 d more metal at the rims outweighs the fill";
+  // Not pave: spots do not rank.
+  spotless.edges.pave = spotted.edges.pave = false;
+  spotted.edges.bare_spots = 9;
+  spotted.edges.rim_samples = spotless.edges.rim_samples = 0;
+  EXPECT_TRUE(paves_better(spotted, spotless));
+}
+
 }  // namespace
 }  // namespace paver
