@@ -9,6 +9,7 @@
 #include "elements/element_proximity.h"
 #include "core/input_error.h"
 #include "core/number_text.h"
+#include "report/verdict.h"
 
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
@@ -145,9 +146,11 @@ std::string run_status_text(const PavementResult& r) {
   for (const std::string& problem : r.verdict.problems) text += problem + "; ";
   text += count_text(long(p.elements.size()), "element", "elements") + ", " +
           count_text(p.after.contact_violations, "contact violation", "contact violations");
+  // The views mark the bare spots; for pave the verdict names them (count, the widest, where), for
+  // other patterns this line does.
   const EdgeQuality& edges = p.after.edges;
   const bool spots = edges.measured && edges.bare_spots > 0;
-  if (spots) {
+  if (spots && !has_bare_spots(p.after)) {
     char size[32];
     std::snprintf(size, sizeof size, "%.3g", edges.spot_stone);
     text += "; " + count_text(edges.bare_spots, "bare spot", "bare spots") + " where a " +

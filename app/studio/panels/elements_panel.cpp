@@ -187,11 +187,15 @@ void jewellery_section(Document& doc, Design& d, UiState& ui) {
               "D and the proportions stay.");
   if (length_field("edge margin", d.elements.margin, unit.c_str(), Key::margin)) change_design(doc, d);
   help_marker("No stone comes nearer the surface's edge than this (0 = its edge may touch the rim).");
-  if (enum_combo("rim rows", d.elements.rim_rows, {"none (trimmed)", "around the holes", "along every rim"}))
+  if (enum_combo("rim rows", d.elements.rim_rows, {"none (trimmed)", "around the holes", "along every rim", "auto (every rim for tri pave)"}))
     change_design(doc, d);
   help_marker("A row of stones that follows the surface's rims, so a hole's edge looks designed, not "
-              "trimmed: around the holes (every rim but the outer edge) or along every rim. The pattern's "
+              "trimmed: around the holes (every rim but the outer edge) or along every rim; auto lines every rim "
+              "of a tri lattice of stones (pave) and trims other patterns. The pattern's "
               "stones that the row would touch make way. A closed surface has no rims.");
+  if (ImGui::Checkbox("close bare spots", &d.elements.close_spots)) change_design(doc, d);
+  help_marker("After the pass, a stone of the design's size pushed into every place where one still fits, its "
+              "neighbours moving to make room (on by default; the verdict names the spots left).");
   if (ImGui::Checkbox("beads between stones", &d.elements.beads.enabled)) change_design(doc, d);
   help_marker("Small beads of metal (shared prongs) that hold every stone from at least three sides: one in the "
               "gap between every three stones in contact, more around the stones that need them (rim stones, "
