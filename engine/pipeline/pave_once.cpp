@@ -434,7 +434,8 @@ constexpr Applies kWithoutOverlap = [](const PaveState& s, const PavementOptions
 constexpr Applies closes_spots = [](const PaveState& s, const PavementOptions& o) {
   const double ideal = s.basis.ideal_count;
   return s.design.elements.close_spots && s.basis.edges.pave && s.optimized && o.refill && kWithoutOverlap(s, o) &&
-         !pattern_is_torn(s.pavement.paper) && !(ideal > 0 && double(s.pavement.elements.size()) < kBareFill * ideal);
+         !pattern_is_torn(s.pavement.paper) && !(ideal > 0 && double(s.pavement.elements.size()) < kBareFill * ideal) &&
+         s.pavement.elements.size() <= kMostStonesClosed;
 };
 
 constexpr PaveStep kSteps[] = {
