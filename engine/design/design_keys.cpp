@@ -351,7 +351,7 @@ std::optional<std::string> parse_flag(const DesignKey& row, std::string_view tex
       out = false;
       return std::nullopt;
     }
-    if (!text.empty() && text != "true") return std::string("takes no value, or =false to turn it off");
+    if (!text.empty() && text != "true") return std::string("is true or false");
     out = true;
     return std::nullopt;
   } else if constexpr (NamedEnum<T>) {

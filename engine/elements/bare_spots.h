@@ -101,6 +101,7 @@ struct SpotClosing {
   int pushed = 0;      // of them, into spots their neighbours were moved to widen
   int shared = 0;      // zones spread out to share a spot's room, where no stone could be pushed in
   int of_edge_size = 0;  // of them, stones of the design's E-element size, where no V-stone could go
+  bool too_many_stones = false;  // more than kMostStonesClosed: the spots were left as they were
   int rounds = 0;
   double milliseconds = 0;
 };

@@ -108,9 +108,9 @@ bool band_rims_alike(const SurfaceMap& map) {
   return std::max(a, b) <= kAlikeRims * std::min(a, b);
 }
 
-RimRows concrete_rim_rows(RimRows rows, Tessellation tessellation, bool pave) {
+RimRows concrete_rim_rows(RimRows rows, bool rows_for_pave) {
   if (rows != RimRows::Auto) return rows;
-  return tessellation == Tessellation::Triangle && pave ? RimRows::All : RimRows::None;
+  return rows_for_pave ? RimRows::All : RimRows::None;
 }
 
 std::vector<int> rim_row_loops(const SurfaceMap& map, RimRows rows) {

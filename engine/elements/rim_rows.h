@@ -19,10 +19,10 @@ struct RimRowReport {
   double milliseconds = 0;
 };
 
-// The rows a design's `rim_rows` lays: auto is every rim for tri pave (a triangle lattice whose
-// stones touch, `pave` from pattern/design_overlap.h: a jeweller's pave is judged at its rims,
-// issue 40), none otherwise; the others as they are.
-RimRows concrete_rim_rows(RimRows rows, Tessellation tessellation, bool pave);
+// The rows a design's `rim_rows` lays: auto is every rim where `rows_for_pave` (tri pave, which a
+// jeweller judges at its rims: the caller's rule, pipeline/pave_once.cpp), none otherwise; the
+// others as they are.
+RimRows concrete_rim_rows(RimRows rows, bool rows_for_pave);
 
 // Which of the map's loops are rims the design asks a row for: none, the holes (every loop but
 // the outer, the longest), or all. A band whose rims are alike (a ring) has no hole: "holes" lines

@@ -12,7 +12,6 @@
 #include "pattern/band_closure.h"
 #include "pattern/default_spacing.h"
 #include "pattern/design_cell.h"
-#include "pattern/design_overlap.h"
 #include "pattern/pattern_edits.h"
 #include "pipeline/offset_fit.h"
 #include "report/verdict.h"
@@ -66,15 +65,6 @@ void lay_out_pattern(const PaveContext& c, PaveState& s) {
   if (design.pattern.spacing <= 0) design.pattern.spacing = default_spacing(c.map.mesh, design.pattern);
   if (map_wraps(c.map) && !s.adaptive()) close_the_band(c, s);
   pavement.cell = check_design_cell(design);
-  // Auto rim rows are the pattern's: every rim for tri pave (elements/rim_rows.h), but for a band
-  // whose lattice rows run along its rims already (closed with rows along): there the rows of the
-  // pattern are the rim rows, and rows laid over them fought them (a ring of 12 large stones kept 7).
-  // The adaptive pattern grows against the rims already (packed to the margin): rows laid over it
-  // made way for 4 and left 15 spots on a narrow band.
-  const bool rows_along_rims = pavement.band_closure && !pavement.band_closure->rows_across;
-  design.elements.rim_rows = concrete_rim_rows(
-      design.elements.rim_rows, design.pattern.tessellation,
-      !rows_along_rims && !s.adaptive() && stones_touch(pavement.cell, design.elements, design.elements.gap));
   if (design.placement.align != AlignAxis::None && !pavement.seamless)
     pavement.row_alignment = fold_row_alignment(c.map, pavement.cell, design.placement);
   if (pavement.seamless)
@@ -83,6 +73,15 @@ void lay_out_pattern(const PaveContext& c, PaveState& s) {
   s.grade = make_grade_field(c.map, design);
   if (s.grade) pavement.grade.ladder = s.grade->ladder();
   s.basis = quality_basis(c.map, pavement.cell, design.elements, design.solver, design.guidance, s.grade);
+  // Auto rim rows: every rim for pave as the edges judge it (report/edge_quality.h), but for a band
+  // whose lattice rows run along its rims already (closed with rows along): there the rows of the
+  // pattern are the rim rows, and rows laid over them fought them (a ring of 12 large stones kept 7).
+  // The adaptive pattern grows against the rims already (packed to the margin): rows laid over it
+  // made way for 4 and left 15 spots on a narrow band. The rims measured are the rows' then.
+  const bool rows_along_rims = pavement.band_closure && !pavement.band_closure->rows_across;
+  design.elements.rim_rows =
+      concrete_rim_rows(design.elements.rim_rows, s.basis.edges.pave && !rows_along_rims && !s.adaptive());
+  s.basis.edges.rims = rim_row_loops(c.map, design.elements.rim_rows);
   // The adaptive pattern is grown instead of the lattice (docs/topology.md).
   if (s.adaptive()) {
     AdaptivePattern grown = build_adaptive_pattern(c.map, pavement.cell, design, c.options.stop, s.grade.get());
@@ -347,8 +346,12 @@ void close_spots(const PaveContext& c, PaveState& s) {
   const ElementsDesign& spec = s.design.elements;
   const double spacing = s.design.pattern.spacing;
   SpotClosing& closed = s.pavement.spots_closed;
-  // The designer's moved and added stones hold: the pushing moves the pattern's own around them.
   const Elements& elements = s.pavement.elements;
+  if (elements.size() > kMostStonesClosed) {
+    closed.too_many_stones = true;  // said by run_pipeline's warnings
+    return;
+  }
+  // The designer's moved and added stones hold: the pushing moves the pattern's own around them.
   const int designed = s.pavement.pattern.designed_point_count();
   std::set<int> moved;
   for (const MovedParticle& m : s.design.edits.moved) moved.insert(m.id);
@@ -434,8 +437,7 @@ constexpr Applies kWithoutOverlap = [](const PaveState& s, const PavementOptions
 constexpr Applies closes_spots = [](const PaveState& s, const PavementOptions& o) {
   const double ideal = s.basis.ideal_count;
   return s.design.elements.close_spots && s.basis.edges.pave && s.optimized && o.refill && kWithoutOverlap(s, o) &&
-         !pattern_is_torn(s.pavement.paper) && !(ideal > 0 && double(s.pavement.elements.size()) < kBareFill * ideal) &&
-         s.pavement.elements.size() <= kMostStonesClosed;
+         !pattern_is_torn(s.pavement.paper) && !(ideal > 0 && double(s.pavement.elements.size()) < kBareFill * ideal);
 };
 
 constexpr PaveStep kSteps[] = {

@@ -297,8 +297,7 @@ void warn_about_pavement(const Design& design, const PipelineResult& result, con
                                                 measure_bead_hold(result.pavement.elements, result.pavement.beads)))
       warn(*w);
   const Pavement& p = result.pavement;
-  if (p.design.elements.close_spots && p.after.edges.pave && p.elements.size() > kMostStonesClosed &&
-      p.after.edges.bare_spots > 0)
+  if (p.spots_closed.too_many_stones && p.after.edges.bare_spots > 0)
     warn(key_and_flag(Key::close_spots) + ": the bare spots of a pavement of " + std::to_string(p.elements.size()) +
          " stones are not closed (the closing packs each spot on its own; up to " +
          std::to_string(kMostStonesClosed) + " stones): the verdict names them");

@@ -194,6 +194,7 @@ void add_after_the_solve(nlohmann::json& report, const Pavement& pavement) {
                                  {"pushed_in", pavement.spots_closed.pushed},
                                  {"of_edge_size", pavement.spots_closed.of_edge_size},
                                  {"rounds", pavement.spots_closed.rounds},
+                                 {"too_many_stones", pavement.spots_closed.too_many_stones},
                                  {"milliseconds", pavement.spots_closed.milliseconds}};
   nlohmann::json sizes = nlohmann::json::array();
   for (const SizeFill::Size& size : pavement.size_fill.sizes)
