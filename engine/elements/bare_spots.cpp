@@ -20,6 +20,8 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <numeric>
+#include <optional>
 #include <tuple>
 
 namespace paver {
@@ -210,13 +212,18 @@ namespace {
 // it is must close too.
 constexpr double kCloseBelow = 1.0 / kSpotSamplesPerStone;
 constexpr double kZone = 3.0;   // stones within this many d of a spot move to make room for it
+constexpr double kWideZone = 5.0;  // the last try for a spot the verdict counts
 constexpr double kFrame = 2.0;  // and those within this many d + g beyond the zone hold it
 constexpr int kRounds = 8;
 constexpr int kSpotPackIterations = 600;
 constexpr int kAttempts = 5;
+// A packing whose overlaps sum to less than this share of d is settled on, up to this many rounds.
+constexpr double kNearMiss = 0.02;
+constexpr int kSettleRounds = 2;
 constexpr double kPackAim = 1e-4;  // relative: beyond float32 rounding, far below what an eye sees
-// A zone no stone can be pushed into is pushed apart by this much more than contact instead.
-constexpr double kSpread[] = {1.05, 1.12};
+// A zone no stone can be pushed into is pushed apart to these multiples of the contact rule
+// instead, the gentlest first (a push too strong for the frame jams the zone).
+constexpr double kSpread[] = {1.01, 1.02, 1.035, 1.05, 1.08, 1.12};
 
 // Stones of the design's size that may move: the V-elements of diameter d.
 bool movable_stone(const Elements& e, int i, double stone) {
@@ -229,8 +236,9 @@ bool movable_stone(const Elements& e, int i, double stone) {
 class ZonePacking {
 public:
   ZonePacking(const SurfaceMap& map, Elements& elements, const ElementsDesign& spec, const SpotBasis& basis,
-              const BoundaryIndex& boundary, bool hold_rows, const std::vector<char>* held)
-      : map_(map), e_(elements), spec_(spec), basis_(basis), boundary_(boundary), hold_rows_(hold_rows), held_(held) {}
+              const BoundaryIndex& boundary, bool hold_rows, const std::vector<char>* held, double zone = kZone)
+      : map_(map), e_(elements), spec_(spec), basis_(basis), boundary_(boundary), hold_rows_(hold_rows), held_(held),
+        zone_(zone) {}
 
   // Returns the stones added, and through `shared` whether the zone was spread out instead.
   int close(const std::vector<BareSpot>& spots, bool& shared) {
@@ -267,9 +275,20 @@ private:
     options.movable = &movable;
     options.boundary = &boundary_;
     pack_by_contact(map_, p.uv, options);
+    // Spread out, the zone may press a stone against the held ones below the rule itself: settled
+    // back to the rule from there, the spreading kept. A packing that came within a hair of the rule
+    // is settled on for a few more rounds (a jammed zone is left as it is).
+    options.contact = rule * (1 + kPackAim);
+    options.settled = rule * (1 + 0.1 * kPackAim);
+    if (push > 1) pack_by_contact(map_, p.uv, options);
     p.lifted.resize(p.uv.size());
-    lift_points(map_, p.uv, p.lifted);
-    p.breach = breaches(p.used, movable, p.lifted);
+    for (int settle = 0;; ++settle) {
+      lift_points(map_, p.uv, p.lifted);
+      p.breach = breaches(p.used, movable, p.lifted);
+      const double total = std::accumulate(p.breach.begin(), p.breach.end(), 0.0);
+      if (total == 0 || total > kNearMiss * basis_.stone || settle == kSettleRounds) break;
+      pack_by_contact(map_, p.uv, options);
+    }
     return p;
   }
 
@@ -285,7 +304,7 @@ private:
       for (std::size_t k = 0; k < p.used.size(); ++k) {
         if (member_[p.used[k]] < 0 || p.breach[k] == 0) continue;
         std::size_t nearest = p.used.size();
-        double best = kZone * basis_.stone;
+        double best = zone_ * basis_.stone;
         for (std::size_t j = 0; j < p.used.size(); ++j)
           if (member_[p.used[j]] < 0 && glm::length(p.lifted.position[j] - p.lifted.position[k]) < best)
             best = glm::length(p.lifted.position[j] - p.lifted.position[k]), nearest = j;
@@ -307,21 +326,28 @@ private:
   bool share_out(const std::vector<BareSpot>& spots) {
     std::vector<glm::dvec3> centres;
     for (const BareSpot& s : spots) centres.push_back(s.position);
-    const std::vector<int> faces = faces_near(map_, centres, kZone * basis_.stone);
+    const std::vector<int> faces = faces_near(map_, centres, zone_ * basis_.stone);
+    std::optional<Elements> uncounted;  // a spread that leaves only spots the verdict does not count
     for (const double push : kSpread) {
-      const Packed p = pack(false, 1 + push);
+      const Packed p = pack(false, push);
       if (std::any_of(p.breach.begin(), p.breach.end(), [](double b) { return b > 0; })) continue;
       Elements after = e_;
       apply(p, after);
-      if (!search_faces(map_, after, basis_, kCloseBelow * basis_.stone, faces).spots.empty()) continue;
-      e_ = std::move(after);
-      return true;
+      const std::vector<BareSpot> left = search_faces(map_, after, basis_, kCloseBelow * basis_.stone, faces).spots;
+      if (left.empty()) {
+        e_ = std::move(after);
+        return true;
+      }
+      if (!uncounted && std::none_of(left.begin(), left.end(), [&](const BareSpot& s) { return s.fits >= s.wanted + kCloseBelow * basis_.stone; }))
+        uncounted = std::move(after);
     }
-    return false;
+    if (!uncounted) return false;
+    e_ = std::move(*uncounted);
+    return true;
   }
 
   void gather(const std::vector<BareSpot>& spots) {
-    const double zone = kZone * basis_.stone, hold = zone + kFrame * (basis_.stone + basis_.gap);
+    const double zone = zone_ * basis_.stone, hold = zone + kFrame * (basis_.stone + basis_.gap);
     glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
     for (const BareSpot& s : spots) lo = glm::min(lo, s.position), hi = glm::max(hi, s.position);
     std::vector<glm::dvec3> centres;
@@ -413,6 +439,7 @@ private:
   const BoundaryIndex& boundary_;
   bool hold_rows_;
   const std::vector<char>* held_;
+  double zone_;
   std::vector<int> member_;  // element index, -1 for a new stone
   std::vector<char> movable_;
   std::vector<glm::dvec2> uv_;
@@ -510,6 +537,10 @@ SpotClosing close_bare_spots(const SurfaceMap& map, Elements& elements, const El
             if (s.fits >= s.wanted + slack) counted.push_back(s);
           if (!counted.empty())
             pushed = ZonePacking(map, elements, spec, basis, boundary, false, held).close(counted, shared);
+          // A vacancy in a lattice at contact: its six neighbours cannot close in on it (they would
+          // touch each other first), and a stone pushed in needs the slack of a wider zone.
+          if (!counted.empty() && pushed == 0 && !shared)
+            pushed = ZonePacking(map, elements, spec, basis, boundary, false, held, kWideZone).close(counted, shared);
         }
         added += pushed;
         report.pushed += pushed;

@@ -88,6 +88,9 @@ long fire_descent(const SurfaceMap& map, SurfaceParticles& p, const BoundaryInde
     overlap.assign(n, 0);
     overlapping = 0;
     for (const Pair& pair : pairs) {
+      // Two held particles neither move nor count: a held frame's own pairs, nearer than a pushed
+      // contact, would keep the descent running to its last iteration.
+      if (options.movable && !(*options.movable)[pair.a] && !(*options.movable)[pair.b]) continue;
       const glm::dvec3 d = p.lifted.position[pair.b] - p.lifted.position[pair.a];
       const double length = glm::length(d);
       const double pair_factor = 0.5 * (factor[pair.a] + factor[pair.b]);

@@ -30,28 +30,33 @@ Design pave_design(double stone) {
   return design;
 }
 
-TEST(BareSpots, TheClosingStepLeavesNoSpotWhereAStoneOfEightTenthsFits) {
-  const SurfaceMap& map = *test::bundled_map("pendant_pierced");
-  const Design design = pave_design(1.5);
-  const double d = 1.5, spot = 0.8 * d;
+// Paves `design` up to the closing, checks by the test's own sampling that spots are left, closes
+// them and checks that none is: no sample fits 0.8 d, no pair breaks the rule, every stone is d and
+// inside the margin. Returns what the closing did.
+SpotClosing expect_closing_leaves_no_spot(const SurfaceMap& map, const Design& design, double d) {
+  const double spot = 0.8 * d, gap = design.elements.gap, margin = design.elements.margin;
   PaveState state = pave_until(map, design, {}, "close_spots");
   const Elements& e = state.pavement.elements;
-  const test::SpotProbe before = test::probe_spots(map.mesh, e, 0.1, 0.3, spot, d / 20, 4 * d);
-  ASSERT_FALSE(before.fitting.empty()) << "the case: rows along the rims and the lattice leave spots between them";
+  const test::SpotProbe before = test::probe_spots(map.mesh, e, gap, margin, spot, d / 20, 4 * d);
+  EXPECT_FALSE(before.fitting.empty()) << "the case: the pass leaves spots";
 
   pave_step("close_spots", map, {}, state);
-  const SpotClosing& closed = state.pavement.spots_closed;
-  EXPECT_GT(closed.added, 0);
-  EXPECT_GT(closed.pushed, 0) << "some spots were narrower than a stone: their neighbours made room";
-  const test::SpotProbe after = test::probe_spots(map.mesh, e, 0.1, 0.3, spot, d / 20, 4 * d);
+  const test::SpotProbe after = test::probe_spots(map.mesh, e, gap, margin, spot, d / 20, 4 * d);
   EXPECT_TRUE(after.fitting.empty()) << after.fitting.size() << " samples still fit a stone of 0.8 d (the widest "
                                      << after.widest << ")";
-  EXPECT_EQ(test::all_pairs(e, 0.1).violations, 0);
+  EXPECT_EQ(test::all_pairs(e, gap).violations, 0);
   const BoundaryIndex rims(map.mesh, 2 * d);
   for (std::size_t i = 0; i < e.size(); ++i) {
-    ASSERT_DOUBLE_EQ(e.diameter[i], d) << "every stone as ordered";
-    EXPECT_GE(rims.nearest(e.position[i]).distance, 0.5 * d + 0.3) << "stone " << i << " inside the margin";
+    EXPECT_DOUBLE_EQ(e.diameter[i], d) << "every stone as ordered";
+    EXPECT_GE(rims.nearest(e.position[i]).distance, 0.5 * d + margin) << "stone " << i << " inside the margin";
   }
+  return state.pavement.spots_closed;
+}
+
+TEST(BareSpots, TheClosingStepLeavesNoSpotWhereAStoneOfEightTenthsFits) {
+  const SpotClosing closed = expect_closing_leaves_no_spot(*test::bundled_map("pendant_pierced"), pave_design(1.5), 1.5);
+  EXPECT_GT(closed.added, 0);
+  EXPECT_GT(closed.pushed, 0) << "some spots were narrower than a stone: their neighbours made room";
 }
 
 // Pavé with melee on its edges (the bundled pierced pendant design: 1.44 mm V-stones, 0.84 mm
@@ -109,6 +114,16 @@ TEST(BareSpots, WhereAWholeStoneFitsOneIsPutAndNothingNearItMoves) {
   EXPECT_EQ(test::all_pairs(e, 0.01).violations, 0);
   for (const BareSpot& s : find_bare_spots(map, e, basis).spots)
     EXPECT_GT(glm::length(s.position - hole), 0.3) << "a spot left by the hole";
+}
+
+// The spots the closing used to leave on the domed pendant (5 at 1.3 mm) were vacancies: a lattice
+// site empty, its six neighbours nearer its centre than on a plane (the dome's positive curvature)
+// and the lattice around at contact. No spreading closes one (the six touch each other before the
+// hole shrinks); a stone goes in once the zone making room for it is wide enough to hold the slack.
+TEST(BareSpots, TheDomesVacanciesTakeAStoneEach) {
+  Design design = pave_design(1.3);
+  design.elements.margin = 0;
+  EXPECT_GT(expect_closing_leaves_no_spot(*test::bundled_map("pendant"), design, 1.3).pushed, 0);
 }
 
 }  // namespace
