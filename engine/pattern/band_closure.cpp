@@ -73,10 +73,21 @@ BandClosure close_band(const SurfaceMap& map, const UnitCell& cell, const Placem
   return closure;
 }
 
+namespace {
+
+// "0.1 -> 0.128 (+1.3% of D)": the lattice's gap once the band is closed.
+std::string gap_change(const BandClosure& c) {
+  const double widened = c.spacing - c.spacing_before;
+  return significant_text(c.gap_asked, 4) + " -> " + significant_text(c.gap_asked + widened, 4) + " (+" +
+         rounded_figure_text(100 * widened / c.spacing_before) + "% of D)";
+}
+
+}  // namespace
+
 std::string describe_band_closure(const BandClosure& closure) {
   return "D " + significant_text(closure.spacing_before, 4) + " -> " + significant_text(closure.spacing, 4) + ": " + std::to_string(closure.around) +
          " lattice steps close the band (rows " + (closure.rows_across ? "across" : "along") + " it)" +
-         (closure.stones_kept ? "; the stones keep their size, the gap takes the change" : "") +
+         (closure.stones_kept ? "; the stones keep their size, the gap takes the change: " + gap_change(closure) : "") +
          band_rows_choice(closure);
 }
 
@@ -100,6 +111,7 @@ ClosedBand close_band_design(const SurfaceMap& map, Design design, BandRows rows
   if (stones) {
     keep_stone_sizes(design.elements, closure.spacing_before, closure.spacing);
     closure.stones_kept = true;
+    closure.gap_asked = design.elements.gap;
   } else if (closure.spacing < design.pattern.spacing) {
     // Closer elements may break the design's gap, which is in surface units: then one step fewer.
     Design closer = design;

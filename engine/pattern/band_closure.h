@@ -22,6 +22,7 @@ struct BandClosure {
   double rotation_deg = 0;    // the placement rotation that lines it up with the band
   bool rows_across = false;   // the rows run across the band (else along it)
   bool stones_kept = false;   // gem elements kept their diameter; the gap took the change in D
+  double gap_asked = 0;       // elements.gap, surface units: the lattice's gap is this plus the change in D
   // band_rows auto: the elements each way laid out (before optimization) at its best shift across
   // the band, and kept once paved (0 when a band too large to pave twice took the way that laid
   // out more); all 0 when the design named the rows.
@@ -51,7 +52,7 @@ struct ClosedBand {
 ClosedBand close_band_design(const SurfaceMap& map, Design design, BandRows rows);
 
 // "D 0.630 -> 0.628: 90 elements close the band (rows along it)", and "; the stones keep their
-// size" when they did.
+// size, the gap takes the change: 0.1 -> 0.128 (+1.3% of D)" when they did.
 std::string describe_band_closure(const BandClosure& closure);
 // "; rows auto: along kept 13 elements, across 7" for band_rows auto; "" when the rows were named.
 std::string band_rows_choice(const BandClosure& closure);

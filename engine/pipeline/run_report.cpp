@@ -76,6 +76,8 @@ nlohmann::json band_json(const SurfaceMap& map, const Pavement& pavement) {
                        {"lattice_steps_around", c->around},    {"step_cells", {c->step.x, c->step.y}},
                        {"rotation_deg", c->rotation_deg},       {"rows", c->rows_across ? "across" : "along"},
                        {"stones_kept", c->stones_kept},         {"text", describe_band_closure(*c)}};
+  if (const auto& c = pavement.band_closure; c && c->stones_kept)
+    band["closure"]["gap"] = {{"asked", c->gap_asked}, {"lattice", c->gap_asked + c->spacing - c->spacing_before}};
   if (const auto& c = pavement.band_closure; c && c->laid_out_across + c->laid_out_along > 0)
     band["closure"]["rows_auto"] = {{"laid_out_across", c->laid_out_across}, {"laid_out_along", c->laid_out_along},
                                     {"kept_across", c->kept_across},         {"kept_along", c->kept_along}};

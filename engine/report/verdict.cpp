@@ -70,7 +70,9 @@ bool paves_better(const PavementQuality& candidate, const PavementQuality& incum
   if (has_uneven_rim(candidate) != has_uneven_rim(incumbent)) return !has_uneven_rim(candidate);
   const auto spots = [](const PavementQuality& q) { return q.edges.measured && q.edges.pave ? q.edges.bare_spots : 0; };
   if (spots(candidate) != spots(incumbent)) return spots(candidate) < spots(incumbent);
-  if (candidate.edges.pave && incumbent.edges.pave && candidate.edges.rim_samples > 0 && incumbent.edges.rim_samples > 0 &&
+  const bool both_pave = candidate.edges.pave && incumbent.edges.pave;
+  if (both_pave && gap_as_asked(candidate) != gap_as_asked(incumbent)) return gap_as_asked(candidate);
+  if (both_pave && candidate.edges.rim_samples > 0 && incumbent.edges.rim_samples > 0 &&
       std::abs(candidate.edges.rim_metal_p95 - incumbent.edges.rim_metal_p95) > kRimEvenTie)
     return candidate.edges.rim_metal_p95 < incumbent.edges.rim_metal_p95;
   return candidate.fill > incumbent.fill;

@@ -35,6 +35,15 @@ inline bool has_uneven_rim(const PavementQuality& q) {
   return q.edges.measured && q.edges.pave && q.edges.rim_samples > 0 && q.edges.rim_metal_p95 > kUnevenRim;
 }
 
+// Stones as ordered (issue 40): the median nearest-neighbour gap of pave at most this share of D
+// beyond the gap asked (a band's closure widens it; the rest of the pass brings stones to contact).
+inline constexpr double kGapOverAsked = 0.03;
+inline bool gap_as_asked(const PavementQuality& q) {
+  if (!(q.edges.measured && q.edges.pave && q.edges.stone > 0 && q.elements > 1)) return true;
+  const double median_gap = (q.neighbor_ratio.median - 1) * q.edges.stone;
+  return median_gap - q.gap <= kGapOverAsked * (q.edges.stone + q.gap);
+}
+
 // Rim metal p95 figures closer than this (in d) rank as even, and the fill decides.
 inline constexpr double kRimEvenTie = 0.05;
 
@@ -48,9 +57,10 @@ Verdict judge_pavement(const PavementQuality& final_quality);
 // Of two pavements of one surface tried for one design (topology auto, a band's annulus, its rows
 // both ways): whether `candidate` is better than `incumbent`: fewer verdict problems of soundness
 // (contact, crossings, torn, bare patches), then an even rim over an uneven one, then fewer bare
-// spots (what the eye sees before it counts stones), then a lower rim metal p95 where both
-// measure rims and differ by more than kRimEvenTie d, then a higher fill (elements over the ideal
-// count at each one's own D). Equal: not better.
+// spots (what the eye sees before it counts stones), then, where both are pave, the gap as asked
+// (gap_as_asked) over a wider one and a lower rim metal p95 where both measure rims and differ by
+// more than kRimEvenTie d, then a higher fill (elements over the ideal count at each one's own D).
+// Equal: not better.
 bool paves_better(const PavementQuality& candidate, const PavementQuality& incumbent);
 
 nlohmann::json to_json(const Verdict& verdict);

@@ -12,6 +12,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <cstdlib>
 #include <filesystem>
@@ -234,6 +235,31 @@ TEST_F(PaverRun, EveryStoneIsTheSizeOrderedWhicheverPatternWins) {
   ASSERT_GT(rows.size(), 1000u);
   for (const Placement& row : rows) ASSERT_NEAR(row.diameter, 3.0, 1e-9) << "stone " << row.id;
   EXPECT_NE(r.out.find("gem of 3.00 mm"), std::string::npos) << describe(r);
+}
+
+// Where the band's closure widens D, the band line says by how much the gap grew (issue 40,
+// "stones as ordered": at most +3% of D), report.json carries it, and the stones end at the gap
+// asked: the median nearest-neighbour gap within 3% of D of it.
+TEST_F(PaverRun, TheBandLineSaysTheGapTheClosureLeaves) {
+  const fs::path out = dir() / "out";
+  const CliResult r = paver({"run", "assets/surfaces/ring_band.obj", "--stone", "1.3", "--gap", "0.1", "--formats", "ply",
+                             "--quiet", "--out", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << describe(r);
+  const json closure = read_json(out / "report.json")["pattern"]["band"]["closure"];
+  const double before = closure["spacing_before"].get<double>(), after = closure["spacing"].get<double>();
+  EXPECT_DOUBLE_EQ(closure["gap"]["asked"].get<double>(), 0.1);
+  EXPECT_NEAR(closure["gap"]["lattice"].get<double>(), 0.1 + after - before, 1e-12);
+  EXPECT_LE(after - before, 0.03 * before) << "the closure nearest the gap asked";
+  char gap[32], share[32];
+  std::snprintf(gap, sizeof gap, "%.4g", 0.1 + after - before);
+  std::snprintf(share, sizeof share, "%.1f", 100 * (after - before) / before);
+  std::string percent = share;
+  if (percent.size() > 2 && percent.substr(percent.size() - 2) == ".0") percent.resize(percent.size() - 2);
+  const std::string said = std::string("the gap takes the change: 0.1 -> ") + gap + " (+" + percent + "% of D)";
+  EXPECT_NE(r.out.find(said), std::string::npos) << said << "\n" << describe(r);
+  const json quality = read_json(out / "report.json")["quality_after"];
+  const double median_gap = (quality["neighbor_ratio"]["median"].get<double>() - 1) * 1.3;
+  EXPECT_LE(std::abs(median_gap - 0.1), 0.03 * before) << median_gap;
 }
 
 TEST_F(PaverRun, RimRowsRingThePendantsPiercingsOnRequest) {
@@ -609,8 +635,10 @@ TEST_F(PaverRun, ARingsSpacingAndRimRowsAreSaidAsGiven) {
   EXPECT_NE(rows.err.find("paver: warning: elements.rim_rows (--rim-rows) holes: this band's two rims are its edges"),
             std::string::npos)
       << describe(rows);
-  // Along keeps more stones but leaves 4 bare spots at the rims; across none: the eye first.
-  EXPECT_NE(rows.out.find("rows auto: across kept"), std::string::npos) << describe(rows);
+  // Both ways are paved and the one kept leaves no bare spot: the eye first (along once kept 4
+  // spots at the rims and lost to across; its spots closed now, it keeps the most stones).
+  EXPECT_NE(rows.out.find("rows auto: "), std::string::npos) << describe(rows);
+  EXPECT_NE(rows.out.find("edges    0 bare spots"), std::string::npos) << describe(rows);
 }
 
 // The hint to grow the adaptive pattern is for a lattice asked for by name; under auto, which tried
@@ -1483,6 +1511,9 @@ TEST_F(PaverRun, StonesAndGapInMillimetresGiveTheBillOfStones) {
   for (const std::string flag : {"--fit-offset", "--png"})
     expect_input_error(paver({"run", "assets/surfaces/pendant.obj", flag + "=2", "--out", bad.string()}), bad,
                        {"paver: error: " + flag + " takes no value: give it alone to turn it on"});
+  // A `--no-` twin turns its key off, and says so.
+  expect_input_error(paver({"run", "assets/surfaces/pendant.obj", "--no-close-spots=1", "--out", bad.string()}), bad,
+                     {"paver: error: --no-close-spots takes no value: give it alone to turn it off"});
 }
 
 // The boundary of an OBJ surface as segments (edges of one face only), read here from the file,
