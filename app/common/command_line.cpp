@@ -38,8 +38,11 @@ std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, cons
     }
     // CLI11: "png was given a disallowed flag override".
     const std::size_t overridden = what.find(" was given a disallowed flag override");
-    if (overridden != std::string::npos)
-      what = "--" + what.substr(0, overridden) + " takes no value: give it alone to turn it on";
+    if (overridden != std::string::npos) {
+      const std::string flag = what.substr(0, overridden);
+      // A `--no-X` twin turns its key off (KeyFlag.bool_flag, app/cli/run_command.cpp).
+      what = "--" + flag + " takes no value: give it alone to turn it " + (flag.rfind("no-", 0) == 0 ? "off" : "on");
+    }
     // An unexpected flag that is a near miss of a real one: name the real one.
     // CLI11: "The following argument(s) were not expected: 3 --lambdar".
     const std::size_t listed = what.find("not expected: ");
