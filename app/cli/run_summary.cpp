@@ -110,10 +110,23 @@ void print_choices(const PipelineResult& result) {
                   c.laid_out, f->at_design.laid_out, f->tries);
   }
   if (!is_band(map)) return;
-  if (pavement.band_closure)
-    std::printf("band     seamless (period %.6g, map s1/s2 mean %.3f): %s\n", map.seamless->period,
+  if (pavement.band_closure) {
+    // The closure widens the lattice's gap; the pass brings stones back to contact where it can:
+    // the gap they end at is what was ordered (issue 40, "stones as ordered").
+    std::string ended;
+    const PavementQuality& q = pavement.after;
+    if (pavement.band_closure->stones_kept && q.edges.stone > 0 && q.elements > 1) {
+      const double median_gap = (q.neighbor_ratio.median - 1) * q.edges.stone;
+      const double beyond = (median_gap - pavement.band_closure->gap_asked) / pavement.band_closure->spacing_before;
+      char text[96];
+      std::snprintf(text, sizeof text, "; paved, the median gap between neighbours is %.4g (%+.1f%% of D)", median_gap,
+                    100 * beyond);
+      ended = text;
+    }
+    std::printf("band     seamless (period %.6g, map s1/s2 mean %.3f): %s%s\n", map.seamless->period,
                 map.seamless->parameterization.quality.stretch_mean,
-                describe_band_closure(*pavement.band_closure).c_str());
+                describe_band_closure(*pavement.band_closure).c_str(), ended.c_str());
+  }
   else
     std::printf("band     paved as an annulus: %s\n", band_annulus_reason(map, pavement).c_str());
 }

@@ -260,6 +260,9 @@ TEST_F(PaverRun, TheBandLineSaysTheGapTheClosureLeaves) {
   const json quality = read_json(out / "report.json")["quality_after"];
   const double median_gap = (quality["neighbor_ratio"]["median"].get<double>() - 1) * 1.3;
   EXPECT_LE(std::abs(median_gap - 0.1), 0.03 * before) << median_gap;
+  char ended[64];
+  std::snprintf(ended, sizeof ended, "; paved, the median gap between neighbours is %.4g", median_gap);
+  EXPECT_NE(r.out.find(ended), std::string::npos) << ended << "\n" << describe(r);
 }
 
 TEST_F(PaverRun, RimRowsRingThePendantsPiercingsOnRequest) {
