@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstddef>
 #include <utility>
 #include <vector>
@@ -320,6 +321,35 @@ Mesh ring_band(int target) {
   return fit_faces([&](double h) { return band_of_revolution(radius, -3.0, 3.0, h); }, 0.5, target);
 }
 
+// A value in [-1, 1] fixed by `key`: a scanner's noise, the same on every run (no randomness).
+double scan_noise(std::uint32_t key) {
+  key ^= key >> 16, key *= 0x7feb352dU, key ^= key >> 15, key *= 0x846ca68bU, key ^= key >> 16;
+  return key / 2147483647.5 - 1.0;
+}
+
+// The ring band as a scanner writes it (issue 40's "scanned band"): the same crowned 6 mm band,
+// out of round by 0.02 mm (three lobes, a hand-finished ring), every vertex moved by noise (0.012
+// mm along the normal, a quarter of an edge along the surface) so the triangles are uneven, and the
+// rims wavy by 0.03 mm. Normals outward.
+Mesh ring_scan(int target) {
+  const auto radius = [](double z) { return 10.65 + 0.6 * std::cos(kPi * z / 6.0); };
+  return fit_faces(
+      [&](double h) {
+        Mesh m = band_of_revolution(radius, -3.0, 3.0, h);
+        for (std::size_t i = 0; i < m.v.size(); ++i) {
+          const dvec3 p = m.v[i];
+          const bool rim = std::abs(std::abs(p.z) - 3.0) < 1e-9;
+          const double theta = std::atan2(p.y, p.x) + 0.1 * h * scan_noise(3 * std::uint32_t(i)) / radius(p.z);
+          const double z = rim ? p.z + 0.03 * scan_noise(3 * std::uint32_t(i) + 1)
+                               : std::clamp(p.z + 0.1 * h * scan_noise(3 * std::uint32_t(i) + 1), -2.99, 2.99);
+          const double r = radius(z) + 0.02 * std::sin(3 * theta + 0.4) + 0.012 * scan_noise(3 * std::uint32_t(i) + 2);
+          m.v[i] = dvec3(r * std::cos(theta), r * std::sin(theta), z);
+        }
+        return m;
+      },
+      0.5, target);
+}
+
 // An open vase all the way round: the vase's profile (belly r = 42, neck 24, lip 32, 120 high)
 // revolved a full turn with no bottom, so its foot and its lip are two rims: a band whose girth
 // changes 1.75-fold, which no seamless lattice follows without tearing (docs/holes_and_bands.md).
@@ -428,6 +458,7 @@ std::vector<Surface> small_set() {
       {"facade", [] { return facade(1200); }, up},
       {"bangle", [] { return bangle(2400); }, [](dvec3 p) { return dvec3(p.x, p.y, 0.0); }, 2},
       {"ring_band", [] { return ring_band(1200); }, [](dvec3 p) { return dvec3(p.x, p.y, 0.0); }, 2},
+      {"ring_scan", [] { return ring_scan(3000); }, [](dvec3 p) { return dvec3(p.x, p.y, 0.0); }, 2},
       {"vase_band", [] { return vase_band(2400); }, [](dvec3 p) { return dvec3(p.x, p.y, 0.0); }, 2},
       {"facade_windows", [] { return facade_windows(2400); }, up, 13},
       {"pendant_pierced", [] { return pendant_pierced(3000); }, up, 4},
