@@ -77,10 +77,12 @@ void lay_out_pattern(const PaveContext& c, PaveState& s) {
   // whose lattice rows run along its rims already (closed with rows along): there the rows of the
   // pattern are the rim rows, and rows laid over them fought them (a ring of 12 large stones kept 7).
   // The adaptive pattern grows against the rims already (packed to the margin): rows laid over it
-  // made way for 4 and left 15 spots on a narrow band. The rims measured are the rows' then.
+  // made way for 4 and left 15 spots on a narrow band. The rims measured are the rows' then. A
+  // closed surface has seams, no rims: none (its summary said "rim rows all: 0 of 0 rims").
   const bool rows_along_rims = pavement.band_closure && !pavement.band_closure->rows_across;
-  design.elements.rim_rows =
-      concrete_rim_rows(design.elements.rim_rows, s.basis.edges.pave && !rows_along_rims && !s.adaptive());
+  const bool has_rims = !is_atlas(c.map) && !c.map.mesh.boundary_loops.empty();
+  design.elements.rim_rows = concrete_rim_rows(design.elements.rim_rows,
+                                               has_rims && s.basis.edges.pave && !rows_along_rims && !s.adaptive());
   s.basis.edges.rims = rim_row_loops(c.map, design.elements.rim_rows);
   // The adaptive pattern is grown instead of the lattice (docs/topology.md).
   if (s.adaptive()) {

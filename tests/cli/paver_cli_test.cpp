@@ -304,6 +304,12 @@ TEST_F(PaverRun, AClosedBeadIsCutIntoChartsAndPavedAsOneSurface) {
   for (const Placement& row : rows) below += row.p[2] < 0;
   EXPECT_GT(below, int(rows.size()) / 3);
   EXPECT_LT(below, 2 * int(rows.size()) / 3);
+  // Tri pave on it: a closed surface has seams, no rims, so auto lays no rim row and says none.
+  const fs::path tri = dir() / "tri";
+  const CliResult pave = paver({"run", "assets/surfaces/bead.obj", "--pattern", "tri", "--formats", "ply", "--out", tri.string()});
+  ASSERT_TRUE(pave.exit_code == 0 || pave.exit_code == 3) << describe(pave);
+  EXPECT_EQ(pave.out.find("rim rows"), std::string::npos) << describe(pave);
+  EXPECT_EQ(read_json(tri / "design.json")["elements"]["rim_rows"], "none");
   // --cut picks the plane: across x, the halves are x < 0 and x > 0.
   const CliResult across = paver({"run", "assets/surfaces/bead.obj", "--cut", "x", "--out", (dir() / "x").string()});
   ASSERT_EQ(across.exit_code, 0) << describe(across);
