@@ -115,11 +115,11 @@ void print_choices(const PipelineResult& result) {
     // the gap they end at is what was ordered (issue 40, "stones as ordered").
     std::string ended;
     const PavementQuality& q = pavement.after;
-    if (pavement.band_closure->stones_kept && q.edges.stone > 0 && q.elements > 1) {
-      const double median_gap = (q.neighbor_ratio.median - 1) * q.edges.stone;
-      const double beyond = (median_gap - pavement.band_closure->gap_asked) / pavement.band_closure->spacing_before;
+    const std::optional<double> median_gap = median_neighbour_gap(q);
+    if (pavement.band_closure->stones_kept && median_gap) {
+      const double beyond = (*median_gap - pavement.band_closure->gap_asked) / pavement.band_closure->spacing_before;
       char text[96];
-      std::snprintf(text, sizeof text, "; paved, the median gap between neighbours is %.4g (%+.1f%% of D)", median_gap,
+      std::snprintf(text, sizeof text, "; paved, the median gap between neighbours is %.4g (%+.1f%% of D)", *median_gap,
                     100 * beyond);
       ended = text;
     }

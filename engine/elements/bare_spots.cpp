@@ -228,6 +228,9 @@ constexpr double kPackAim = 1e-4;  // relative: beyond float32 rounding, far bel
 // instead, the gentlest first (a push too strong for the frame jams the zone).
 constexpr double kSpread[] = {1.01, 1.02, 1.035, 1.05, 1.08, 1.12};
 
+// Whether the verdict counts a spot found `slack` narrower than its spot stone (SpotBasis).
+bool verdict_counts(const BareSpot& s, double slack) { return s.fits >= s.wanted + slack; }
+
 // Stones of the design's size that may move: the V-elements of diameter d.
 bool movable_stone(const Elements& e, int i, double stone) {
   return e.kind[i] == ElementKind::Vertex && std::abs(e.diameter[i] - stone) <= 1e-9 * stone;
@@ -341,7 +344,7 @@ private:
         e_ = std::move(after);
         return true;
       }
-      if (!uncounted && std::none_of(left.begin(), left.end(), [&](const BareSpot& s) { return s.fits >= s.wanted + kCloseBelow * basis_.stone; }))
+      if (!uncounted && std::none_of(left.begin(), left.end(), [&](const BareSpot& s) { return verdict_counts(s, kCloseBelow * basis_.stone); }))
         uncounted = std::move(after);
     }
     if (!uncounted) return false;
@@ -537,7 +540,7 @@ SpotClosing close_bare_spots(const SurfaceMap& map, Elements& elements, const El
         if (pushed == 0 && !shared) {
           std::vector<BareSpot> counted;
           for (const BareSpot& s : cluster)
-            if (s.fits >= s.wanted + slack) counted.push_back(s);
+            if (verdict_counts(s, slack)) counted.push_back(s);
           if (!counted.empty())
             pushed = ZonePacking(map, elements, spec, basis, boundary, false, held).close(counted, shared);
           // A vacancy in a lattice at contact: its six neighbours cannot close in on it (they would

@@ -77,9 +77,8 @@ namespace {
 
 // "0.1 -> 0.128 (+1.3% of D)": the lattice's gap once the band is closed.
 std::string gap_change(const BandClosure& c) {
-  const double widened = c.spacing - c.spacing_before;
-  return significant_text(c.gap_asked, 4) + " -> " + significant_text(c.gap_asked + widened, 4) + " (+" +
-         rounded_figure_text(100 * widened / c.spacing_before) + "% of D)";
+  return significant_text(c.gap_asked, 4) + " -> " + significant_text(c.lattice_gap(), 4) + " (+" +
+         rounded_figure_text(100 * (c.spacing - c.spacing_before) / c.spacing_before) + "% of D)";
 }
 
 }  // namespace

@@ -23,6 +23,7 @@ struct BandClosure {
   bool rows_across = false;   // the rows run across the band (else along it)
   bool stones_kept = false;   // gem elements kept their diameter; the gap took the change in D
   double gap_asked = 0;       // elements.gap, surface units: the lattice's gap is this plus the change in D
+  double lattice_gap() const { return gap_asked + spacing - spacing_before; }
   // band_rows auto: the elements each way laid out (before optimization) at its best shift across
   // the band, and kept once paved (0 when a band too large to pave twice took the way that laid
   // out more); all 0 when the design named the rows.

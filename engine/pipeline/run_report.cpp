@@ -77,7 +77,7 @@ nlohmann::json band_json(const SurfaceMap& map, const Pavement& pavement) {
                        {"rotation_deg", c->rotation_deg},       {"rows", c->rows_across ? "across" : "along"},
                        {"stones_kept", c->stones_kept},         {"text", describe_band_closure(*c)}};
   if (const auto& c = pavement.band_closure; c && c->stones_kept)
-    band["closure"]["gap"] = {{"asked", c->gap_asked}, {"lattice", c->gap_asked + c->spacing - c->spacing_before}};
+    band["closure"]["gap"] = {{"asked", c->gap_asked}, {"lattice", c->lattice_gap()}};
   if (const auto& c = pavement.band_closure; c && c->laid_out_across + c->laid_out_along > 0)
     band["closure"]["rows_auto"] = {{"laid_out_across", c->laid_out_across}, {"laid_out_along", c->laid_out_along},
                                     {"kept_across", c->kept_across},         {"kept_along", c->kept_along}};

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,10 +39,16 @@ inline bool has_uneven_rim(const PavementQuality& q) {
 // Stones as ordered (issue 40): the median nearest-neighbour gap of pave at most this share of D
 // beyond the gap asked (a band's closure widens it; the rest of the pass brings stones to contact).
 inline constexpr double kGapOverAsked = 0.03;
+// The median nearest-neighbour gap (surface units) of stones of the edges' size d: the ratios are
+// centre distance over the radii summed. None where no stone size was measured.
+inline std::optional<double> median_neighbour_gap(const PavementQuality& q) {
+  if (!(q.edges.measured && q.edges.stone > 0 && q.elements > 1)) return std::nullopt;
+  return (q.neighbor_ratio.median - 1) * q.edges.stone;
+}
 inline bool gap_as_asked(const PavementQuality& q) {
-  if (!(q.edges.measured && q.edges.pave && q.edges.stone > 0 && q.elements > 1)) return true;
-  const double median_gap = (q.neighbor_ratio.median - 1) * q.edges.stone;
-  return median_gap - q.gap <= kGapOverAsked * (q.edges.stone + q.gap);
+  const std::optional<double> median_gap = median_neighbour_gap(q);
+  if (!q.edges.pave || !median_gap) return true;
+  return *median_gap - q.gap <= kGapOverAsked * (q.edges.stone + q.gap);
 }
 
 // Rim metal p95 figures closer than this (in d) rank as even, and the fill decides.
